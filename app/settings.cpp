@@ -1,0 +1,122 @@
+#include "app/settings.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+#include "lev/methods.h"
+#include "scenes/scene_models.h"
+
+namespace app {
+
+std::vector<std::string> method_options() {
+  std::vector<std::string> names;
+  for (const lev::MethodInfo& m : lev::method_table()) names.emplace_back(m.name);
+  return names;
+}
+
+std::vector<std::string> scene_options() {
+  std::vector<std::string> names;
+  for (const scenes::SceneModel& m : scenes::scene_models()) names.emplace_back(m.name);
+  return names;
+}
+
+const std::vector<SettingSpec>& setting_table() {
+  static const std::vector<SettingSpec> table = {
+      {"scene", "Scene", "scene model", Choice{&Settings::scene, scene_options}},
+      {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
+      {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
+      {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
+       RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true}},
+      {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, 16384}},
+      {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, 16384}},
+      {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
+      {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
+      {"threads", "Threads", "worker threads (0 = all cores)", IntRange{&Settings::threads, 0, 1024}},
+      {"subsample", "Subsample", "render every n-th pixel in x and y", IntRange{&Settings::subsample, 1, 64}},
+  };
+  return table;
+}
+
+const SettingSpec* find_setting(const std::string& name) {
+  for (const SettingSpec& s : setting_table()) {
+    if (name == s.name) return &s;
+  }
+  return nullptr;
+}
+
+namespace {
+
+[[noreturn]] void reject(const SettingSpec& spec, const std::string& what, const std::string& text) {
+  throw UsageError(std::string("--") + spec.name + ": " + what + ", got '" + text + "'");
+}
+
+}  // namespace
+
+void set_setting(Settings& settings, const SettingSpec& spec, const std::string& text) {
+  if (const auto* r = std::get_if<IntRange>(&spec.kind)) {
+    const std::string what = "must be an integer in [" + std::to_string(r->min) + ", " + std::to_string(r->max) + "]";
+    if (text.empty()) reject(spec, what, text);
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(text.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || v < r->min || v > r->max) reject(spec, what, text);
+    settings.*(r->field) = static_cast<int>(v);
+  } else if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
+    std::ostringstream range;
+    range << "must be a finite number in [" << d->min << ", " << d->max << "]";
+    if (text.empty()) reject(spec, range.str(), text);
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(text.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(v) || v < d->min || v > d->max || (errno == ERANGE && v != 0.0)) {
+      reject(spec, range.str(), text);
+    }
+    settings.*(d->field) = v;
+  } else {
+    const auto& c = std::get<Choice>(spec.kind);
+    std::string valid;
+    for (const std::string& o : c.options()) {
+      if (o == text) {
+        settings.*(c.field) = text;
+        return;
+      }
+      valid += (valid.empty() ? "" : "|") + o;
+    }
+    reject(spec, "must be one of " + valid, text);
+  }
+}
+
+std::string setting_text(const Settings& settings, const SettingSpec& spec) {
+  if (const auto* r = std::get_if<IntRange>(&spec.kind)) return std::to_string(settings.*(r->field));
+  if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
+    std::ostringstream s;
+    s << settings.*(d->field);
+    return s.str();
+  }
+  return settings.*(std::get<Choice>(spec.kind).field);
+}
+
+}  // namespace app
+
+namespace app {
+
+renderer::RenderSettings render_settings_from(const Settings& settings) {
+  renderer::RenderSettings rs;
+  rs.width = settings.width;
+  rs.height = settings.height;
+  rs.max_depth = settings.depth;
+  rs.threads = settings.threads;
+  rs.pixel_stride = settings.subsample;
+  const auto method = lev::parse_method(settings.method);
+  if (!method) throw UsageError("--method: must be one of " + lev::method_names("|") + ", got '" + settings.method + "'");
+  rs.method = *method;
+  // Tolerances below the smallest float become 0 (no culling) and above the largest become
+  // +inf (everything culled): both are the limits the user asked for.
+  rs.tolerance = static_cast<float>(settings.tolerance);
+  return rs;
+}
+
+}  // namespace app

@@ -1,0 +1,72 @@
+// Every user setting of levrt in one struct with defaults, and one table that describes each
+// setting once (flag, label, range, help). The CLI flags and the viewer's controls are both
+// generated from this table, so they cannot drift apart.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace app {
+
+struct Settings {
+  std::string scene = "building";
+  int level = 3;                // model level; --lights picks it by light count instead
+  std::string method = "lev";
+  double tolerance = 0.01;      // colour units, 1.0 = 255
+  int width = 320;
+  int height = 240;
+  int spp = 1;                  // passes (one sample per pixel each)
+  int depth = 5;                // reflection/refraction depth
+  int threads = 0;              // 0 = all cores
+  int subsample = 1;            // render every n-th pixel in x and y (for slow references)
+};
+
+// A command-line or input mistake: reported as one line, exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct IntRange {
+  int Settings::*field;
+  int min, max;
+};
+struct RealRange {
+  double Settings::*field;
+  double min, max;
+  bool logarithmic;  // the viewer's slider
+};
+struct Choice {
+  std::string Settings::*field;
+  std::vector<std::string> (*options)();  // valid values
+};
+
+struct SettingSpec {
+  const char* name;   // CLI flag without dashes, JSON key
+  const char* label;  // viewer
+  const char* help;
+  std::variant<IntRange, RealRange, Choice> kind;
+};
+
+const std::vector<SettingSpec>& setting_table();
+const SettingSpec* find_setting(const std::string& name);
+
+// Parses text for the setting and stores it; throws UsageError "--name: ..., got 'text'".
+void set_setting(Settings& settings, const SettingSpec& spec, const std::string& text);
+std::string setting_text(const Settings& settings, const SettingSpec& spec);
+
+std::vector<std::string> method_options();
+std::vector<std::string> scene_options();
+
+}  // namespace app
+
+#include "renderer/render.h"
+
+namespace app {
+
+// The renderer's view of the settings (method name resolved, tolerance as the hierarchy's float).
+renderer::RenderSettings render_settings_from(const Settings& settings);
+
+}  // namespace app

@@ -1,0 +1,44 @@
+// The query of thesis fig. 3.5: walk the hierarchy from the root with a world-space point, skip
+// every subtree whose extent volume does not contain the point, and return the lights whose
+// irradiance at the point reaches the tolerance, in world space, in the hierarchy's depth-first
+// order. Next to it, the brute-force reference the tests compare it with.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lev/light.h"
+#include "lev/light_hierarchy.h"
+
+namespace lev {
+
+struct WalkCounters {
+  std::uint64_t nodes_visited = 0;  // extent volumes tested (master, extent-volume and light nodes)
+};
+
+struct WalkFrame {
+  Similarity world_from_local;
+  glm::vec3 local_point{0.0f};
+  std::uint32_t node = 0;
+};
+
+// Reused between queries so that a walk allocates nothing once warm.
+struct WalkScratch {
+  std::vector<WalkFrame> stack;
+};
+
+// Appends to important_lights every light with irradiance >= hierarchy.tolerance at point.
+void find_important_lights(const LightHierarchy& hierarchy, const glm::vec3& point,
+                           WalkScratch& scratch, std::vector<Light>& important_lights,
+                           WalkCounters& counters);
+
+// Every light of the scene in world space, instances expanded, in the same depth-first order as
+// the walk and through the same arithmetic, so a light here is bit-identical to the one the walk
+// returns.
+std::vector<Light> flatten_lights(const LightHierarchy& hierarchy);
+
+// Reference: the lights of a flattened list that pass is_important (for tests).
+std::vector<Light> important_lights_brute_force(const std::vector<Light>& world_lights,
+                                                const glm::vec3& point, float tolerance);
+
+}  // namespace lev

@@ -1,0 +1,61 @@
+// Point lights and Warn spotlights (thesis 2.2, eq. 1-6) and their unshadowed irradiance.
+// The same struct describes a light in its own frame (inside the hierarchy) and in world space
+// (what a query returns); transform_light maps one to the other.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "lev/transform.h"
+
+namespace lev {
+
+enum class LightKind : std::uint8_t { point, spot };
+
+struct Light {
+  glm::vec3 position{0.0f};
+  glm::vec3 intensity{1.0f};          // RGB, irradiance at distance 1 on the axis
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot axis (unit)
+  float cos_cone_half_angle = -1.0f;  // spot: lit where cos(gamma) >= this (Warn's cone, fig. 2.4)
+  float dropoff = 0.0f;               // spot: Warn exponent P in cos(gamma)^P (eq. 5)
+  LightKind kind = LightKind::point;
+};
+
+// Distances below this are clamped when evaluating 1/d^2: a shading point that sits on the light
+// gets the (finite) irradiance of a point 1e-6 units away instead of Inf/NaN. Clamping only lowers
+// irradiance, so every extent volume stays conservative.
+inline constexpr float kMinLightDistance = 1e-6f;
+
+Light make_point_light(const glm::vec3& position, const glm::vec3& intensity);
+// cone_half_angle_rad in [0, pi]; a cone of pi lights every direction. dropoff >= 0.
+Light make_spot_light(const glm::vec3& position, const glm::vec3& direction,
+                      const glm::vec3& intensity, float cone_half_angle_rad, float dropoff);
+
+// The light seen through xf: moved, turned, and with intensity times scale^2 (the 1/d^2 law
+// in the scaled frame), so irradiance(transform_light(l, xf), apply_point(xf, x)) equals
+// irradiance(l, x).
+Light transform_light(const Light& light, const Similarity& xf);
+
+// Scalar strength used for culling: the brightest channel (DESIGN.md).
+inline float strength(const Light& light) {
+  return glm::max(glm::max(light.intensity.x, light.intensity.y), light.intensity.z);
+}
+
+// The geometric factor of eq. 1/5: cos(gamma)^P / d^2 (spot) or 1 / d^2 (point), zero outside
+// the cone. Multiply by intensity for the RGB irradiance.
+float irradiance_falloff(const Light& light, const glm::vec3& x);
+
+inline glm::vec3 irradiance(const Light& light, const glm::vec3& x) {
+  return light.intensity * irradiance_falloff(light, x);
+}
+
+// True when the light's unshadowed irradiance at x is non-zero and at least tolerance: the
+// exact extent volume of one light (thesis 3.3). With tolerance 0 it selects every light that
+// can contribute at all, which is what `rt` shadow-tests.
+inline bool is_important(const Light& light, const glm::vec3& x, float tolerance) {
+  const float e = strength(light) * irradiance_falloff(light, x);
+  return e > 0.0f && e >= tolerance;
+}
+
+}  // namespace lev

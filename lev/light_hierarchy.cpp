@@ -1,0 +1,168 @@
+#include "lev/light_hierarchy.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "lev/extent_volume.h"
+
+namespace lev {
+namespace {
+
+// Rounding in the walk (the query point travels through inverse transforms) must never cull a
+// light whose world-space irradiance passes; every volume is grown by this relative margin.
+constexpr float kVolumePadding = 1e-5f;
+
+class Flattener {
+ public:
+  explicit Flattener(LightHierarchy& h) : h_(h) {}
+
+  std::uint32_t add(const LightTreeNode& src, int depth, std::uint32_t current_master) {
+    if (depth > kMaxTreeDepth) {
+      throw std::invalid_argument("light tree nested deeper than " + std::to_string(kMaxTreeDepth));
+    }
+    const auto index = static_cast<std::uint32_t>(h_.nodes.size());
+    h_.nodes.push_back({});
+    h_.nodes[index].kind = src.kind;
+    auto expect_children = [&](std::size_t n) {
+      if (src.children.size() != n) {
+        throw std::invalid_argument(std::string(node_kind_name(src.kind)) + " node needs " +
+                                    std::to_string(n) + " child(ren), has " +
+                                    std::to_string(src.children.size()));
+      }
+    };
+    switch (src.kind) {
+      case NodeKind::point_light:
+      case NodeKind::spot_light: {
+        expect_children(0);
+        const bool spot = src.light.kind == LightKind::spot;
+        if (spot != (src.kind == NodeKind::spot_light)) {
+          throw std::invalid_argument("light node kind does not match its light");
+        }
+        h_.nodes[index].payload = static_cast<std::uint32_t>(h_.lights.size());
+        h_.lights.push_back(src.light);
+        light_count_ += 1;
+        break;
+      }
+      case NodeKind::affine: {
+        expect_children(1);
+        const Similarity& xf = src.transform;
+        if (!(xf.scale > 0.0f) || !std::isfinite(xf.scale)) {
+          throw std::invalid_argument("affine scale must be finite and > 0, got " +
+                                      std::to_string(xf.scale));
+        }
+        h_.nodes[index].payload = static_cast<std::uint32_t>(h_.transforms.size());
+        h_.transforms.push_back(xf);
+        add(src.children[0], depth + 1, current_master);
+        break;
+      }
+      case NodeKind::extent_volume:
+        expect_children(1);
+        add(src.children[0], depth + 1, current_master);
+        break;
+      case NodeKind::set_union: {
+        const auto offset = static_cast<std::uint32_t>(h_.union_children.size());
+        h_.nodes[index].payload = offset;
+        h_.union_children.push_back(static_cast<std::uint32_t>(src.children.size()));
+        h_.union_children.resize(h_.union_children.size() + src.children.size());
+        for (std::size_t k = 0; k < src.children.size(); ++k) {
+          const std::uint32_t child = add(src.children[k], depth + 1, current_master);
+          h_.union_children[offset + 1 + k] = child;
+        }
+        break;
+      }
+      case NodeKind::instance:
+        expect_children(0);
+        if (src.master >= current_master) {
+          throw std::invalid_argument("instance of master " + std::to_string(src.master) +
+                                      " which is not defined before its use");
+        }
+        h_.nodes[index].payload = h_.master_ranges[src.master].begin;
+        light_count_ += h_.master_light_counts[src.master];
+        break;
+      case NodeKind::master:
+        throw std::invalid_argument("master nodes are declared in LightTree::masters only");
+    }
+    return index;
+  }
+
+  std::uint64_t take_light_count() {
+    const std::uint64_t n = light_count_;
+    light_count_ = 0;
+    return n;
+  }
+
+ private:
+  LightHierarchy& h_;
+  std::uint64_t light_count_ = 0;
+};
+
+}  // namespace
+
+LightHierarchy build_hierarchy(const LightTree& tree, float tolerance) {
+  LightHierarchy h;
+  Flattener flattener(h);
+  for (std::uint32_t m = 0; m < tree.masters.size(); ++m) {
+    NodeRange range;
+    range.begin = static_cast<std::uint32_t>(h.nodes.size());
+    h.nodes.push_back({});
+    h.nodes.back().kind = NodeKind::master;
+    flattener.add(tree.masters[m], 1, m);
+    range.end = static_cast<std::uint32_t>(h.nodes.size());
+    h.master_ranges.push_back(range);
+    h.master_light_counts.push_back(flattener.take_light_count());
+  }
+  NodeRange root_range;
+  root_range.begin = static_cast<std::uint32_t>(h.nodes.size());
+  flattener.add(tree.root, 0, static_cast<std::uint32_t>(tree.masters.size()));
+  root_range.end = static_cast<std::uint32_t>(h.nodes.size());
+  h.master_ranges.push_back(root_range);
+  h.root = root_range.begin;
+  h.light_count = flattener.take_light_count();
+  refit_hierarchy(h, tolerance);
+  return h;
+}
+
+void refit_hierarchy(LightHierarchy& h, float tolerance) {
+  for (const NodeRange& range : h.master_ranges) {
+    for (std::uint32_t i = range.end; i-- > range.begin;) {
+      HierarchyNode& node = h.nodes[i];
+      switch (node.kind) {
+        case NodeKind::point_light:
+        case NodeKind::spot_light:
+          node.volume = pad_bounds(light_extent_bounds(h.lights[node.payload], tolerance), kVolumePadding);
+          break;
+        case NodeKind::affine:
+          node.volume = pad_bounds(transform_bounds(h.nodes[i + 1].volume, h.transforms[node.payload]),
+                                   kVolumePadding);
+          break;
+        case NodeKind::extent_volume:
+        case NodeKind::master:
+          node.volume = h.nodes[i + 1].volume;
+          break;
+        case NodeKind::set_union: {
+          Bounds b;
+          const std::uint32_t count = h.union_children[node.payload];
+          for (std::uint32_t k = 0; k < count; ++k) {
+            b = merge(b, h.nodes[h.union_children[node.payload + 1 + k]].volume);
+          }
+          node.volume = b;
+          break;
+        }
+        case NodeKind::instance:
+          node.volume = h.nodes[node.payload].volume;
+          break;
+      }
+    }
+  }
+  h.tolerance = tolerance;
+}
+
+std::size_t hierarchy_bytes(const LightHierarchy& h) {
+  return h.nodes.size() * sizeof(HierarchyNode) + h.union_children.size() * sizeof(std::uint32_t) +
+         h.transforms.size() * sizeof(Similarity) + h.lights.size() * sizeof(Light) +
+         h.master_ranges.size() * sizeof(NodeRange) +
+         h.master_light_counts.size() * sizeof(std::uint64_t);
+}
+
+}  // namespace lev

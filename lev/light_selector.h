@@ -1,0 +1,91 @@
+// The interface every many-light method implements: given a shading point, decide which lights
+// get a shadow ray and return the direct radiance (the sum term of eq. 7). The renderer supplies
+// the surface (ShadingPoint) and stays the same for every method; new methods (error-bounded or
+// stochastic LEV, LEV + AST) plug in here and get a per-sample random stream for free.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lev/important_lights.h"
+#include "lev/light.h"
+
+namespace lev {
+
+// What a method may ask of the surface being shaded. Implemented by the renderer.
+class ShadingPoint {
+ public:
+  virtual ~ShadingPoint() = default;
+  virtual glm::vec3 position() const = 0;
+  // Radiance the light would add toward the viewer if unoccluded: eq. 6 without the ambient
+  // term. Zero when the light is behind the surface.
+  virtual glm::vec3 unshadowed_radiance(const Light& world_light) const = 0;
+  // Casts one shadow ray; true when nothing blocks the light.
+  virtual bool visible(const Light& world_light) = 0;
+};
+
+struct SelectionCounters {
+  std::uint64_t lights_tested = 0;  // lights selected for a shadow test
+  std::uint64_t nodes_visited = 0;  // extent volumes tested (LEV walks)
+  std::uint64_t shadow_rays = 0;    // rays actually cast (a selected light behind the surface needs none)
+};
+
+// A small random stream seeded per (pixel, sample) by the renderer, so that methods that sample
+// stay independent of thread count and tile order. splitmix64.
+struct RandomStream {
+  std::uint64_t state = 0;
+  std::uint64_t next_u64() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  float next_float() { return static_cast<float>(next_u64() >> 40) * 0x1.0p-24f; }
+};
+
+struct AstCandidate {
+  float potential = 0.0f;  // scalar (brightest channel) unshadowed contribution
+  std::uint32_t light = 0;
+  glm::vec3 radiance{0.0f};
+};
+
+// Per-thread buffers a method may reuse between shading points.
+struct SelectorScratch {
+  std::vector<Light> lights;
+  WalkScratch walk;
+  std::vector<AstCandidate> candidates;
+  RandomStream random;
+};
+
+class LightSelector {
+ public:
+  virtual ~LightSelector() = default;
+  virtual glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                                    SelectionCounters& counters) const = 0;
+  // Called by the renderer after every complete pass (never concurrently with direct_radiance).
+  virtual void end_pass() {}
+  // Memory the method keeps besides the light hierarchy (AST's per-light statistics).
+  virtual std::size_t bookkeeping_bytes() const { return 0; }
+};
+
+// The shading loop shared by rt and lev: every selected light is counted as tested and, when it
+// can light the surface at all, gets a shadow ray. Summation order is the order of `lights`.
+template <typename LightRange, typename Filter>
+glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
+                             SelectionCounters& counters) {
+  glm::vec3 sum(0.0f);
+  for (const Light& light : lights) {
+    if (!selected(light)) continue;
+    ++counters.lights_tested;
+    const glm::vec3 radiance = point.unshadowed_radiance(light);
+    if (radiance == glm::vec3(0.0f)) continue;
+    ++counters.shadow_rays;
+    if (point.visible(light)) sum += radiance;
+  }
+  return sum;
+}
+
+}  // namespace lev

@@ -1,0 +1,88 @@
+#include "lev/selector_ast.h"
+
+#include <algorithm>
+
+#include "lev/important_lights.h"
+
+namespace lev {
+
+AstSelector::AstSelector(const LightHierarchy& hierarchy)
+    : hierarchy_(hierarchy),
+      world_lights_(flatten_lights(hierarchy)),
+      hits_(world_lights_.size(), 0),
+      tests_(world_lights_.size(), 0),
+      pass_hits_(new std::atomic<std::uint32_t>[world_lights_.size()]),
+      pass_tests_(new std::atomic<std::uint32_t>[world_lights_.size()]) {
+  for (std::size_t i = 0; i < world_lights_.size(); ++i) {
+    pass_hits_[i].store(0, std::memory_order_relaxed);
+    pass_tests_[i].store(0, std::memory_order_relaxed);
+  }
+}
+
+glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                                       SelectionCounters& counters) const {
+  const glm::vec3 x = point.position();
+  // Step 1: potential contributions of every light in front of the point.
+  std::vector<AstCandidate>& heap = scratch.candidates;
+  heap.clear();
+  double untested = 0.0;
+  for (std::uint32_t i = 0; i < world_lights_.size(); ++i) {
+    const Light& light = world_lights_[i];
+    if (!is_important(light, x, 0.0f)) continue;
+    const glm::vec3 radiance = point.unshadowed_radiance(light);
+    const float potential = glm::max(glm::max(radiance.x, radiance.y), radiance.z);
+    if (potential <= 0.0f) continue;
+    heap.push_back({potential, i, radiance});
+    untested += potential;
+  }
+  // Step 2: instead of a full sort, a heap yields the largest contributions in order; the test
+  // loop usually stops long before the heap is empty. Ties break on the light index so the
+  // order is a pure function of the inputs.
+  auto smaller = [](const AstCandidate& a, const AstCandidate& b) {
+    return a.potential < b.potential || (a.potential == b.potential && a.light > b.light);
+  };
+  std::make_heap(heap.begin(), heap.end(), smaller);
+  std::size_t remaining = heap.size();
+  // Step 4: test the largest until the untested rest is below the tolerance.
+  glm::vec3 sum(0.0f);
+  std::uint32_t point_hits = 0, point_tests = 0;
+  const double tolerance = hierarchy_.tolerance;
+  while (remaining > 0 && untested >= tolerance) {
+    std::pop_heap(heap.begin(), heap.begin() + static_cast<std::ptrdiff_t>(remaining), smaller);
+    --remaining;
+    const AstCandidate& c = heap[remaining];
+    untested -= c.potential;
+    ++point_tests;
+    ++counters.lights_tested;
+    ++counters.shadow_rays;
+    pass_tests_[c.light].fetch_add(1, std::memory_order_relaxed);
+    if (point.visible(world_lights_[c.light])) {
+      ++point_hits;
+      pass_hits_[c.light].fetch_add(1, std::memory_order_relaxed);
+      sum += c.radiance;
+    }
+  }
+  // Step 5: estimate the untested rest from visibility statistics.
+  const float point_ratio = point_tests > 0 ? static_cast<float>(point_hits) / point_tests : 1.0f;
+  for (std::size_t k = 0; k < remaining; ++k) {
+    const AstCandidate& c = heap[k];
+    const float ratio = tests_[c.light] > 0
+                            ? static_cast<float>(hits_[c.light]) / static_cast<float>(tests_[c.light])
+                            : point_ratio;
+    sum += c.radiance * ratio;
+  }
+  return sum;
+}
+
+void AstSelector::end_pass() {
+  for (std::size_t i = 0; i < world_lights_.size(); ++i) {
+    hits_[i] += pass_hits_[i].exchange(0, std::memory_order_relaxed);
+    tests_[i] += pass_tests_[i].exchange(0, std::memory_order_relaxed);
+  }
+}
+
+std::size_t AstSelector::bookkeeping_bytes() const {
+  return world_lights_.size() * (sizeof(Light) + 4 * sizeof(std::uint32_t));
+}
+
+}  // namespace lev

@@ -1,0 +1,38 @@
+// `ast`: Ward's adaptive shadow testing (thesis 2.5.1, fig. 2.8). At each point the potential
+// contributions of all lights are ordered, the largest are shadow-tested until the untested rest
+// sums (brightest channel) below the tolerance, and the rest is added scaled by how often that
+// light was found visible before (or, for a light never tested, by this point's hit ratio).
+//
+// Determinism under threads: the per-light hit/test counters read while shading are a snapshot
+// frozen at the start of the pass; tests made during the pass go to separate atomic counters and
+// are folded into the snapshot in end_pass(). Integer sums do not depend on the order in which
+// threads add them, so every pass, and the image, is the same whatever the thread count or
+// tile order.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "lev/light_hierarchy.h"
+#include "lev/light_selector.h"
+
+namespace lev {
+
+class AstSelector final : public LightSelector {
+ public:
+  explicit AstSelector(const LightHierarchy& hierarchy);
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                            SelectionCounters& counters) const override;
+  void end_pass() override;
+  std::size_t bookkeeping_bytes() const override;
+
+ private:
+  const LightHierarchy& hierarchy_;
+  std::vector<Light> world_lights_;
+  std::vector<std::uint32_t> hits_, tests_;  // snapshot: previous passes
+  std::unique_ptr<std::atomic<std::uint32_t>[]> pass_hits_, pass_tests_;  // this pass
+};
+
+}  // namespace lev

@@ -1,0 +1,16 @@
+#include "lev/selector_rt.h"
+
+#include "lev/important_lights.h"
+
+namespace lev {
+
+RtSelector::RtSelector(const LightHierarchy& hierarchy) : world_lights_(flatten_lights(hierarchy)) {}
+
+glm::vec3 RtSelector::direct_radiance(ShadingPoint& point, SelectorScratch&,
+                                      SelectionCounters& counters) const {
+  const glm::vec3 x = point.position();
+  return sum_visible_lights(
+      world_lights_, [&](const Light& l) { return is_important(l, x, 0.0f); }, point, counters);
+}
+
+}  // namespace lev

@@ -1,0 +1,40 @@
+// What a render accumulates per pixel: the radiance of every sample, the sample count, and the
+// work counters behind the heatmaps and statistics. Each pixel is written by one tile task at a
+// time, so no locks are needed and sums never depend on thread interleaving.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace renderer {
+
+struct Framebuffer {
+  int width = 0;
+  int height = 0;
+  std::vector<glm::vec3> radiance_sum;
+  std::vector<std::uint32_t> samples;
+  std::vector<std::uint64_t> shading_points;  // per pixel, summed over samples and bounces
+  std::vector<std::uint64_t> lights_tested;
+  std::vector<std::uint64_t> nodes_visited;
+  std::vector<std::uint64_t> shadow_rays;
+};
+
+Framebuffer make_framebuffer(int width, int height);
+void clear_framebuffer(Framebuffer& framebuffer);
+
+// 8-bit RGB of the mean radiance, clamped to [0, 1] (1.0 = 255, the units of the tolerance).
+std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& framebuffer);
+
+struct FramebufferTotals {
+  std::uint64_t samples = 0;
+  std::uint64_t shading_points = 0;
+  std::uint64_t lights_tested = 0;
+  std::uint64_t nodes_visited = 0;
+  std::uint64_t shadow_rays = 0;
+  std::uint32_t lights_tested_max = 0;  // per shading point, over pixels (pixel mean)
+};
+FramebufferTotals sum_framebuffer(const Framebuffer& framebuffer);
+
+}  // namespace renderer

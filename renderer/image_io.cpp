@@ -1,0 +1,57 @@
+#include "renderer/image_io.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include <stb/stb_image_write.h>
+
+namespace renderer {
+namespace {
+
+std::string temporary_name(const std::string& path) {
+  return path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
+}
+
+void write_bytes_atomically(const std::string& path, const std::string& bytes) {
+  const std::string tmp = temporary_name(path);
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const bool closed = std::fclose(f) == 0;
+  if (!written || !closed) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": write failed");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot rename into place (" + reason + ")");
+  }
+}
+
+void append_to_string(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+}
+
+}  // namespace
+
+void write_png_rgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
+  if (rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {
+    throw std::invalid_argument(path + ": image size does not match its pixels");
+  }
+  std::string png;
+  if (!stbi_write_png_to_func(append_to_string, &png, width, height, 3, rgb.data(), width * 3)) {
+    throw std::runtime_error(path + ": PNG encoding failed");
+  }
+  write_bytes_atomically(path, png);
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  write_bytes_atomically(path, text);
+}
+
+}  // namespace renderer

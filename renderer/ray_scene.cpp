@@ -1,0 +1,190 @@
+#include "renderer/ray_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace renderer {
+
+glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude) {
+  const glm::vec3 a = glm::abs(position);
+  const float magnitude = std::max(std::max(a.x, a.y), a.z) + extra_magnitude;
+  return position + normal * (1e-5f + 4e-6f * magnitude);
+}
+
+void RayScene::record_error(void* user, RTCError code, const char* message) {
+  auto* log = static_cast<ErrorLog*>(user);
+  std::lock_guard<std::mutex> lock(log->mutex);
+  if (log->first_message.empty()) {
+    log->first_message = "embree error " + std::to_string(static_cast<int>(code)) + ": " +
+                         (message ? message : "(no message)");
+  }
+}
+
+void RayScene::throw_if_error(const char* stage) const {
+  std::lock_guard<std::mutex> lock(errors_->mutex);
+  if (!errors_->first_message.empty()) {
+    throw std::runtime_error(std::string(stage) + ": " + errors_->first_message);
+  }
+}
+
+RayScene::RayScene(const Geometry& geometry)
+    : errors_(std::make_unique<ErrorLog>()), geometry_(geometry), instances_(geometry.instances) {
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) {
+    throw std::runtime_error("embree: cannot create a device (error " +
+                             std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
+  }
+  rtcSetDeviceErrorFunction(device_, &RayScene::record_error, errors_.get());
+
+  for (const Prototype& prototype : geometry.prototypes) {
+    RTCScene scene = rtcNewScene(device_);
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    for (const TriangleMesh& mesh : prototype.meshes) {
+      RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+          g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+      auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+          g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+      if (!v || !t) {
+        rtcReleaseGeometry(g);
+        throw_if_error("embree mesh buffers");
+        throw std::runtime_error("embree: cannot allocate mesh buffers");
+      }
+      for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        for (int c = 0; c < 3; ++c) v[3 * i + c] = mesh.positions[i][c];
+      }
+      for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        for (int c = 0; c < 3; ++c) t[3 * i + c] = mesh.triangles[i][c];
+      }
+      rtcCommitGeometry(g);
+      rtcAttachGeometry(scene, g);  // geomID = index in prototype.meshes
+      rtcReleaseGeometry(g);
+    }
+    if (!prototype.spheres.empty()) {
+      RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+          g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), prototype.spheres.size()));
+      if (!v) {
+        rtcReleaseGeometry(g);
+        throw_if_error("embree sphere buffer");
+        throw std::runtime_error("embree: cannot allocate the sphere buffer");
+      }
+      for (std::size_t i = 0; i < prototype.spheres.size(); ++i) {
+        const Sphere& s = prototype.spheres[i];
+        v[4 * i + 0] = s.centre.x;
+        v[4 * i + 1] = s.centre.y;
+        v[4 * i + 2] = s.centre.z;
+        v[4 * i + 3] = s.radius;
+      }
+      rtcCommitGeometry(g);
+      rtcAttachGeometry(scene, g);  // geomID = meshes.size()
+      rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(scene);
+    prototype_scenes_.push_back(scene);
+    throw_if_error("embree prototype build");
+  }
+
+  top_ = rtcNewScene(device_);
+  for (const PlacedPrototype& placed : instances_) {
+    if (placed.prototype >= prototype_scenes_.size()) {
+      throw std::invalid_argument("instance of prototype " + std::to_string(placed.prototype) +
+                                  " which does not exist");
+    }
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, prototype_scenes_[placed.prototype]);
+    const lev::Similarity& xf = placed.world_from_object;
+    float m[12];  // 3x4 column major: the three columns of rotation * scale, then translation
+    for (int col = 0; col < 3; ++col) {
+      for (int row = 0; row < 3; ++row) m[3 * col + row] = xf.rotation[col][row] * xf.scale;
+    }
+    m[9] = xf.translation.x;
+    m[10] = xf.translation.y;
+    m[11] = xf.translation.z;
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(top_, g);  // instID = index in instances_
+    rtcReleaseGeometry(g);
+  }
+  rtcCommitScene(top_);
+  throw_if_error("embree scene build");
+}
+
+RayScene::~RayScene() {
+  if (top_) rtcReleaseScene(top_);
+  for (RTCScene s : prototype_scenes_) rtcReleaseScene(s);
+  if (device_) rtcReleaseDevice(device_);
+}
+
+bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = ray.origin.x;
+  rh.ray.org_y = ray.origin.y;
+  rh.ray.org_z = ray.origin.z;
+  rh.ray.dir_x = ray.direction.x;
+  rh.ray.dir_y = ray.direction.y;
+  rh.ray.dir_z = ray.direction.z;
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = std::numeric_limits<float>::infinity();
+  rh.ray.time = 0.0f;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(top_, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+  const PlacedPrototype& placed = instances_[rh.hit.instID[0]];
+  const Prototype& prototype = geometry_.prototypes[placed.prototype];
+  const glm::mat3& rotation = placed.world_from_object.rotation;
+  // Embree reports Ng in the instance's object space; similarities need only the rotation.
+  glm::vec3 ng = rotation * glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  ng = glm::normalize(ng);
+  glm::vec3 ns = ng;
+  if (rh.hit.geomID < prototype.meshes.size()) {
+    const TriangleMesh& mesh = prototype.meshes[rh.hit.geomID];
+    const glm::uvec3 tri = mesh.triangles[rh.hit.primID];
+    const float u = rh.hit.u, v = rh.hit.v;
+    const glm::vec3 n =
+        (1.0f - u - v) * mesh.normals[tri.x] + u * mesh.normals[tri.y] + v * mesh.normals[tri.z];
+    const float len = glm::length(n);
+    if (len > 0.0f) ns = rotation * (n / len);
+    hit.material = mesh.material;
+  } else {
+    hit.material = prototype.spheres[rh.hit.primID].material;
+  }
+  // Keep the interpolated normal on the geometric normal's side.
+  if (glm::dot(ns, ng) < 0.0f) ns = -ns;
+  hit.distance = rh.ray.tfar;
+  hit.position = ray.origin + rh.ray.tfar * ray.direction;
+  hit.geometric_normal = ng;
+  hit.shading_normal = ns;
+  return true;
+}
+
+bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r;
+  r.org_x = origin.x;
+  r.org_y = origin.y;
+  r.org_z = origin.z;
+  r.dir_x = direction.x;
+  r.dir_y = direction.y;
+  r.dir_z = direction.z;
+  r.tnear = 0.0f;
+  r.tfar = max_distance;
+  r.time = 0.0f;
+  r.mask = 0xFFFFFFFFu;
+  r.id = 0;
+  r.flags = 0;
+  rtcOccluded1(top_, &context, &r);
+  return r.tfar < 0.0f;  // Embree writes -inf on a hit
+}
+
+}  // namespace renderer

@@ -1,0 +1,62 @@
+// Every ray of levrt goes through Embree 3 here: the scene's prototypes become Embree scenes,
+// placed once each by single-level instances. Embree reports errors through one callback that
+// records the message; construction throws it, so a failure is never a silent black image.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "renderer/camera.h"
+#include "renderer/geometry.h"
+
+namespace renderer {
+
+struct SurfaceHit {
+  float distance = 0.0f;
+  glm::vec3 position{0.0f};
+  glm::vec3 geometric_normal{0.0f};  // world space, unit, as the surface is oriented
+  glm::vec3 shading_normal{0.0f};    // world space, unit, interpolated
+  std::uint32_t material = 0;
+};
+
+// Origin offset along the normal that keeps a secondary ray off the surface it leaves: a fixed
+// floor plus ~32 float ulps of the largest coordinate, so it holds at large coordinates too.
+glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude);
+
+class RayScene {
+ public:
+  explicit RayScene(const Geometry& geometry);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  // Closest hit along the ray, or false.
+  bool intersect(const Ray& ray, SurfaceHit& hit) const;
+  // True when something lies on the segment origin + t * direction, t in (0, max_distance).
+  bool occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const;
+
+  std::size_t instance_count() const { return instances_.size(); }
+
+ private:
+  struct ErrorLog {
+    std::mutex mutex;
+    std::string first_message;
+  };
+  static void record_error(void* user, RTCError code, const char* message);
+  void throw_if_error(const char* stage) const;
+
+  std::unique_ptr<ErrorLog> errors_;
+  RTCDevice device_ = nullptr;
+  RTCScene top_ = nullptr;
+  std::vector<RTCScene> prototype_scenes_;
+  const Geometry& geometry_;
+  std::vector<PlacedPrototype> instances_;
+};
+
+}  // namespace renderer

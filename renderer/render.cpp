@@ -1,0 +1,170 @@
+#include "renderer/render.h"
+
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "renderer/shading.h"
+
+namespace renderer {
+
+struct RenderState {
+  Scene& scene;
+  const RayScene& rays;
+  RenderSettings settings;
+  std::unique_ptr<lev::LightSelector> selector;
+  Framebuffer framebuffer;
+  int passes_done = 0;
+  double seconds = 0.0;
+  int tiles_x = 0, tiles_y = 0;
+  std::unique_ptr<std::atomic<TileStatus>[]> tiles;
+  // Passes each tile has completed: a pass resumed after a cancel skips the tiles it already
+  // finished, so no pixel gets the same sample twice.
+  std::vector<int> tile_passes;
+  std::unique_ptr<tbb::task_arena> arena;
+  tbb::enumerable_thread_specific<lev::SelectorScratch> scratch;
+
+  RenderState(Scene& s, const RayScene& r, const RenderSettings& settings_in)
+      : scene(s), rays(r), settings(settings_in) {}
+};
+
+void RenderStateDeleter::operator()(RenderState* state) const { delete state; }
+
+namespace {
+
+// Flush-to-zero and denormals-are-zero for the tile being rendered (Embree's advice), restored
+// afterwards so the calling thread's mode is left as it was.
+class DenormalModeGuard {
+ public:
+  DenormalModeGuard() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
+  ~DenormalModeGuard() { _mm_setcsr(saved_); }
+  DenormalModeGuard(const DenormalModeGuard&) = delete;
+  DenormalModeGuard& operator=(const DenormalModeGuard&) = delete;
+
+ private:
+  unsigned saved_;
+};
+
+std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
+  lev::RandomStream s{a ^ (b * 0xD1B54A32D192ED03ull)};
+  return s.next_u64();
+}
+
+void render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch) {
+  DenormalModeGuard denormals;
+  const RenderSettings& rs = state.settings;
+  int x0, y0, x1, y1;
+  render_tile_rect(state, tile, x0, y0, x1, y1);
+  Framebuffer& fb = state.framebuffer;
+  TraceContext context{state.scene, state.rays, *state.selector, scratch, rs.max_depth};
+  const auto pass = static_cast<std::uint64_t>(state.passes_done);
+  for (int y = y0; y < y1; ++y) {
+    if (y % rs.pixel_stride != 0) continue;
+    for (int x = x0; x < x1; ++x) {
+      if (x % rs.pixel_stride != 0) continue;
+      const auto pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(rs.width) +
+                         static_cast<std::size_t>(x);
+      lev::RandomStream random{mix(mix(rs.seed, pixel), pass)};
+      float jx = 0.5f, jy = 0.5f;
+      if (pass > 0) {
+        jx = random.next_float();
+        jy = random.next_float();
+      }
+      scratch.random.state = random.next_u64();
+      const Ray ray = primary_ray(state.scene.camera, rs.width, rs.height,
+                                  static_cast<float>(x) + jx, static_cast<float>(y) + jy);
+      PathCounters counters;
+      const glm::vec3 radiance = trace_radiance(context, ray, 0, counters);
+      fb.radiance_sum[pixel] += radiance;
+      fb.samples[pixel] += 1;
+      fb.shading_points[pixel] += counters.shading_points;
+      fb.lights_tested[pixel] += counters.selection.lights_tested;
+      fb.nodes_visited[pixel] += counters.selection.nodes_visited;
+      fb.shadow_rays[pixel] += counters.selection.shadow_rays;
+    }
+  }
+}
+
+}  // namespace
+
+RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings) {
+  if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
+      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0) {
+    throw std::invalid_argument("render settings out of range");
+  }
+  RenderStatePtr state(new RenderState(scene, rays, settings));
+  if (scene.lights.tolerance != settings.tolerance) lev::refit_hierarchy(scene.lights, settings.tolerance);
+  state->selector = lev::make_selector(settings.method, scene.lights);
+  state->framebuffer = make_framebuffer(settings.width, settings.height);
+  state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
+  state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
+  const int tile_count = state->tiles_x * state->tiles_y;
+  state->tiles.reset(new std::atomic<TileStatus>[static_cast<std::size_t>(tile_count)]);
+  for (int i = 0; i < tile_count; ++i) state->tiles[i].store(TileStatus::waiting);
+  state->tile_passes.assign(static_cast<std::size_t>(tile_count), 0);
+  state->arena = settings.threads > 0 ? std::make_unique<tbb::task_arena>(settings.threads)
+                                      : std::make_unique<tbb::task_arena>();
+  return state;
+}
+
+bool render_pass(RenderState& state, const std::atomic<bool>* cancel) {
+  const int tile_count = render_tile_count(state);
+  for (int i = 0; i < tile_count; ++i) {
+    const bool finished = state.tile_passes[static_cast<std::size_t>(i)] > state.passes_done;
+    state.tiles[i].store(finished ? TileStatus::done : TileStatus::waiting);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  std::atomic<bool> cancelled{false};
+  state.arena->execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tile_count, 1),
+        [&](const tbb::blocked_range<int>& range) {
+          for (int tile = range.begin(); tile != range.end(); ++tile) {
+            if (cancel && cancel->load(std::memory_order_relaxed)) {
+              cancelled.store(true, std::memory_order_relaxed);
+              return;
+            }
+            int& passes = state.tile_passes[static_cast<std::size_t>(tile)];
+            if (passes > state.passes_done) continue;
+            state.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
+            render_tile(state, tile, state.scratch.local());
+            passes += 1;
+            state.tiles[tile].store(TileStatus::done, std::memory_order_release);
+          }
+        },
+        tbb::simple_partitioner());
+  });
+  state.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (cancelled.load()) return false;
+  state.selector->end_pass();
+  state.passes_done += 1;
+  return true;
+}
+
+const Framebuffer& render_framebuffer(const RenderState& state) { return state.framebuffer; }
+const RenderSettings& render_settings(const RenderState& state) { return state.settings; }
+int render_passes_done(const RenderState& state) { return state.passes_done; }
+double render_seconds(const RenderState& state) { return state.seconds; }
+const lev::LightSelector& render_selector(const RenderState& state) { return *state.selector; }
+int render_tile_count(const RenderState& state) { return state.tiles_x * state.tiles_y; }
+TileStatus render_tile_status(const RenderState& state, int tile) {
+  return state.tiles[tile].load(std::memory_order_acquire);
+}
+void render_tile_rect(const RenderState& state, int tile, int& x0, int& y0, int& x1, int& y1) {
+  const int ts = state.settings.tile_size;
+  x0 = (tile % state.tiles_x) * ts;
+  y0 = (tile / state.tiles_x) * ts;
+  x1 = std::min(x0 + ts, state.settings.width);
+  y1 = std::min(y0 + ts, state.settings.height);
+}
+
+}  // namespace renderer

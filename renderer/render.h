@@ -1,0 +1,57 @@
+// The one progressive render step every front end calls (viewer, `levrt render`, benchmarks):
+// a RenderState plus render_pass, which renders one more sample per pixel over all tiles on a
+// oneTBB arena. Pass 0 samples pixel centres, pass k > 0 a jittered position drawn from the
+// (pixel, pass) random stream, so images never depend on thread count or tile order. A pass can
+// be cancelled between tiles; finished tiles keep their sample.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+#include "lev/methods.h"
+#include "renderer/framebuffer.h"
+#include "renderer/ray_scene.h"
+#include "renderer/scene.h"
+
+namespace renderer {
+
+struct RenderSettings {
+  int width = 320;
+  int height = 240;
+  int max_depth = 5;
+  int threads = 0;  // 0 = all cores
+  int tile_size = 16;
+  int pixel_stride = 1;  // > 1: render only every stride-th pixel in x and y (a subsample)
+  lev::Method method = lev::Method::lev;
+  float tolerance = 0.01f;
+  std::uint64_t seed = 0;
+};
+
+enum class TileStatus : std::uint8_t { waiting, rendering, done };
+
+struct RenderState;  // defined in render.cpp (holds the TBB arena and per-thread scratch)
+
+struct RenderStateDeleter {
+  void operator()(RenderState* state) const;
+};
+using RenderStatePtr = std::unique_ptr<RenderState, RenderStateDeleter>;
+
+// Refits scene.lights for settings.tolerance (the structure is not rebuilt) and makes the
+// method's selector. The state refers to scene and rays; they must outlive it.
+RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings);
+
+// One more pass. Returns false when *cancel became true before every tile was done.
+bool render_pass(RenderState& state, const std::atomic<bool>* cancel = nullptr);
+
+const Framebuffer& render_framebuffer(const RenderState& state);
+const RenderSettings& render_settings(const RenderState& state);
+int render_passes_done(const RenderState& state);
+double render_seconds(const RenderState& state);  // wall time spent in render_pass
+const lev::LightSelector& render_selector(const RenderState& state);
+// Tile grid and the live status of each tile (for the viewer's in-flight markers).
+int render_tile_count(const RenderState& state);
+TileStatus render_tile_status(const RenderState& state, int tile);
+void render_tile_rect(const RenderState& state, int tile, int& x0, int& y0, int& x1, int& y1);
+
+}  // namespace renderer

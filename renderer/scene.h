@@ -1,0 +1,30 @@
+// A renderable scene as scenes/ builds it: camera, light hierarchy (its description and the
+// flattened structure), geometry and materials.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lev/light_hierarchy.h"
+#include "lev/light_tree.h"
+#include "renderer/camera.h"
+#include "renderer/geometry.h"
+#include "renderer/material.h"
+
+namespace renderer {
+
+struct Scene {
+  std::string name;
+  int level = 0;  // model level (0 for scenes without one)
+  Camera camera;
+  lev::LightTree light_tree;
+  lev::LightHierarchy lights;
+  Geometry geometry;
+  std::vector<Material> materials;
+  glm::vec3 ambient{1.0f};     // I_a of eq. 3
+  glm::vec3 background{0.0f};  // radiance of rays that leave the scene
+};
+
+}  // namespace renderer

@@ -1,0 +1,93 @@
+#include "renderer/shading.h"
+
+#include <cmath>
+
+namespace renderer {
+namespace {
+
+class SurfacePoint final : public lev::ShadingPoint {
+ public:
+  // normal: the shading normal on the viewer's side; side: the geometric normal on that side,
+  // along which shadow rays leave the surface.
+  SurfacePoint(const RayScene& rays, const SurfaceHit& hit, const Material& material,
+               const glm::vec3& normal, const glm::vec3& side, const glm::vec3& to_viewer)
+      : rays_(rays), material_(material), normal_(normal), to_viewer_(to_viewer),
+        position_(hit.position),
+        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance)) {}
+
+  glm::vec3 position() const override { return position_; }
+
+  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
+    const glm::vec3 to_light = light.position - position_;
+    const float d2 = glm::dot(to_light, to_light);
+    // A light exactly at the shading point has no direction to arrive from: it adds nothing
+    // (and the irradiance clamp in lev keeps its neighbourhood finite).
+    if (!(d2 > 0.0f)) return glm::vec3(0.0f);
+    const glm::vec3 l = to_light / std::sqrt(d2);
+    const float cos_theta = glm::dot(normal_, l);
+    if (cos_theta <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 e = lev::irradiance(light, position_);
+    glm::vec3 response = material_.kd * cos_theta * material_.colour;
+    if (material_.ks > 0.0f) {
+      const glm::vec3 mirror = 2.0f * cos_theta * normal_ - l;
+      const float cos_alpha = glm::dot(mirror, to_viewer_);
+      if (cos_alpha > 0.0f) response += glm::vec3(material_.ks * std::pow(cos_alpha, material_.shininess));
+    }
+    return e * response;
+  }
+
+  bool visible(const lev::Light& light) override {
+    const glm::vec3 to_light = light.position - shadow_origin_;
+    const float d = glm::length(to_light);
+    if (!(d > 0.0f)) return true;
+    // Stop just short of the light so a light resting on a surface is not hidden by it.
+    return !rays_.occluded(shadow_origin_, to_light / d, d * (1.0f - 1e-5f));
+  }
+
+ private:
+  const RayScene& rays_;
+  const Material& material_;
+  glm::vec3 normal_, to_viewer_, position_, shadow_origin_;
+};
+
+}  // namespace
+
+glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathCounters& counters) {
+  SurfaceHit hit;
+  if (!context.rays.intersect(ray, hit)) return context.scene.background;
+  ++counters.shading_points;
+  const Material& material = context.scene.materials[hit.material];
+  const bool entering = glm::dot(hit.geometric_normal, ray.direction) < 0.0f;
+  // Surfaces are two-sided: shade with the normal that faces the incoming ray.
+  const glm::vec3 facing = entering ? hit.shading_normal : -hit.shading_normal;
+  const glm::vec3 side = entering ? hit.geometric_normal : -hit.geometric_normal;
+  const glm::vec3 to_viewer = -ray.direction;
+
+  glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
+  SurfacePoint point(context.rays, hit, material, facing, side, to_viewer);
+  radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+
+  if (depth >= context.max_depth) return radiance;
+  const float cos_i = glm::dot(to_viewer, facing);
+  if (material.kr > 0.0f) {
+    const Ray reflected{offset_ray_origin(hit.position, side, hit.distance),
+                        glm::normalize(2.0f * cos_i * facing - to_viewer)};
+    radiance += material.kr * trace_radiance(context, reflected, depth + 1, counters);
+  }
+  if (material.kt > 0.0f) {
+    const float eta = entering ? 1.0f / material.ior : material.ior;
+    const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
+    Ray transmitted;
+    if (k < 0.0f) {  // total internal reflection
+      transmitted = {offset_ray_origin(hit.position, side, hit.distance),
+                     glm::normalize(2.0f * cos_i * facing - to_viewer)};
+    } else {
+      transmitted = {offset_ray_origin(hit.position, -side, hit.distance),
+                     glm::normalize(eta * ray.direction + (eta * cos_i - std::sqrt(k)) * facing)};
+    }
+    radiance += material.kt * trace_radiance(context, transmitted, depth + 1, counters);
+  }
+  return radiance;
+}
+
+}  // namespace renderer

@@ -1,0 +1,24 @@
+// Scene Model 1 (thesis 5.3, fig. 5.1): a square building of rooms, instanced 2x2 per level, with
+// no roof. Every room has walls with doorways, one ceiling point light and two robots on
+// unicycles. Level L has 4^L rooms and lights; both the light hierarchy and the geometry are
+// instanced, so the hierarchy grows by a constant per level.
+#pragma once
+
+#include <cstdint>
+
+#include "renderer/scene.h"
+
+namespace scenes {
+
+inline constexpr float kRoomSize = 10.0f;
+inline constexpr float kWallHeight = 4.0f;
+inline constexpr float kCeilingLightHeight = 3.8f;
+// Calibrated so that at tolerance 0.01 a floor point tests about 40 lights inside a large
+// building (extent radius sqrt(12.7 / 0.01) = 35.6 units, about 40 rooms), at 0.1 about 4 and
+// at 0.001 about 400, as in thesis Table 12.
+inline constexpr float kCeilingLightIntensity = 12.7f;
+
+std::uint64_t building_light_count(int level);
+renderer::Scene build_building(int level);
+
+}  // namespace scenes

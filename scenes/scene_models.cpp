@@ -1,0 +1,46 @@
+#include "scenes/scene_models.h"
+
+#include "scenes/building.h"
+
+namespace scenes {
+
+const std::vector<SceneModel>& scene_models() {
+  static const std::vector<SceneModel> models = {
+      {"building", "Building (Scene Model 1)", 1, 10, 3, building_light_count, build_building},
+  };
+  return models;
+}
+
+const SceneModel* find_scene_model(std::string_view name) {
+  for (const SceneModel& m : scene_models()) {
+    if (name == m.name) return &m;
+  }
+  return nullptr;
+}
+
+std::string scene_model_names(const char* separator) {
+  std::string s;
+  for (const SceneModel& m : scene_models()) {
+    if (!s.empty()) s += separator;
+    s += m.name;
+  }
+  return s;
+}
+
+int level_for_light_count(const SceneModel& model, std::uint64_t lights) {
+  for (int level = model.min_level; level <= model.max_level; ++level) {
+    if (model.light_count(level) == lights) return level;
+  }
+  return -1;
+}
+
+std::string light_counts_text(const SceneModel& model) {
+  std::string s;
+  for (int level = model.min_level; level <= model.max_level; ++level) {
+    if (!s.empty()) s += ", ";
+    s += std::to_string(model.light_count(level));
+  }
+  return s;
+}
+
+}  // namespace scenes

@@ -1,0 +1,33 @@
+// The table of built-in scene models (thesis 5.3): name, levels and light counts, and the
+// function that builds a level. The CLI, the viewer and the benchmarks all read this table.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "renderer/scene.h"
+
+namespace scenes {
+
+struct SceneModel {
+  const char* name;
+  const char* label;
+  int min_level;
+  int max_level;
+  int default_level;
+  std::function<std::uint64_t(int level)> light_count;
+  std::function<renderer::Scene(int level)> build;
+};
+
+const std::vector<SceneModel>& scene_models();
+const SceneModel* find_scene_model(std::string_view name);
+std::string scene_model_names(const char* separator);
+// The level of `model` with exactly `lights` lights, or -1.
+int level_for_light_count(const SceneModel& model, std::uint64_t lights);
+// "64, 256, 1024, ..." for error messages.
+std::string light_counts_text(const SceneModel& model);
+
+}  // namespace scenes

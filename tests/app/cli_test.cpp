@@ -1,0 +1,145 @@
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+CliRun run_levrt(const std::vector<std::string>& args) {
+  std::string command = LEVRT_BINARY;
+  for (const std::string& a : args) command += " " + quote(a);
+  command += " 2>&1";
+  CliRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("levrt_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  bool folder_is_empty() const { return fs::is_empty(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"--width", {"0", "-1", "abc", "", "1e9", "nan", "3.5", "99999999999999999999"}},
+      {"--height", {"0", "-4", "x", "", "16385"}},
+      {"--spp", {"0", "-1", "two", "", "1.5"}},
+      {"--depth", {"-1", "65", "deep", ""}},
+      {"--threads", {"-1", "x", "", "100000"}},
+      {"--subsample", {"0", "-2", "x"}},
+      {"--tolerance", {"-1", "-0.001", "nan", "inf", "-inf", "abc", "", "1e999", "0.01x"}},
+      {"--method", {"foo", "", "RT"}},
+      {"--scene", {"castle", ""}},
+      {"--level", {"0", "11", "x", ""}},
+      {"--lights", {"1000", "-64", "abc", "", "65"}},
+      {"--reference", {"lev", ""}},
+  };
+  const std::string out = path("image.png");
+  for (const auto& [flag, values] : cases) {
+    for (const std::string& value : values) {
+      const CliRun r = run_levrt({"render", flag, value, "--width", "8", "--height", "8", "--out", out});
+      const std::string label = flag + " '" + value + "': " + r.output;
+      EXPECT_EQ(r.exit_code, 2) << label;
+      EXPECT_NE(r.output.find(flag), std::string::npos) << label;
+      EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << label;
+      EXPECT_TRUE(folder_is_empty()) << label;
+    }
+  }
+}
+
+TEST_F(Cli, LightsListsTheValidCounts) {
+  const CliRun r = run_levrt({"render", "--lights", "100", "--out", path("a.png")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("64, 256, 1024, 4096, 16384"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, LevelAndLightsTogetherAreRejected) {
+  const CliRun r = run_levrt({"render", "--level", "3", "--lights", "64"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+TEST_F(Cli, BadOutputPathsExitTwoAndWriteNothing) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--out", path("missing/a.png")},
+      {"--stats", path("nope/s.json")},
+      {"--heatmap-lights", dir_.string()},
+      {"--heatmap-nodes", ""},
+      {"--out", path("same.png"), "--heatmap-lights", path("same.png")},
+      {"--out", path("x.png"), "--stats", path("./x.png")},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {"render", "--width", "8", "--height", "8"};
+    args.insert(args.end(), c.begin(), c.end());
+    const CliRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 2) << c[0] << " " << c[1] << ": " << r.output;
+    EXPECT_NE(r.output.find(c.size() > 2 ? c[2] : c[0]), std::string::npos) << r.output;
+    EXPECT_TRUE(folder_is_empty()) << r.output;
+  }
+  if (::geteuid() != 0) {  // root writes anywhere; the check only means something for users
+    fs::create_directories(dir_ / "locked");
+    fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+    const CliRun r = run_levrt({"render", "--out", path("locked/a.png")});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+  }
+}
+
+TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
+  EXPECT_EQ(run_levrt({"render", "--colour", "red"}).exit_code, 2);
+  EXPECT_EQ(run_levrt({"paint"}).exit_code, 2);
+  EXPECT_EQ(run_levrt({"render", "--help"}).exit_code, 0);
+}
+
+TEST_F(Cli, RenderWritesEveryOutputWithTheDocumentedStats) {
+  const CliRun r = run_levrt({"render", "--scene", "building", "--lights", "64", "--method", "lev",
+                           "--tolerance", "0.01", "--width", "40", "--height", "30", "--spp", "2",
+                           "--out", path("i.png"), "--heatmap-lights", path("l.png"), "--heatmap-nodes",
+                           path("n.png"), "--stats", path("s.json"), "--reference", "rt"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {"i.png", "l.png", "n.png", "s.json"}) EXPECT_TRUE(fs::exists(path(f))) << f;
+  std::FILE* f = std::fopen(path("s.json").c_str(), "r");
+  ASSERT_NE(f, nullptr);
+  std::string json;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), f)) json += buffer.data();
+  std::fclose(f);
+  for (const char* key : {"\"scene\"", "\"level\"", "\"lights\": 64", "\"method\": \"lev\"", "\"tolerance\"",
+                          "\"width\": 40", "\"height\": 30", "\"spp\": 2", "\"threads\"", "\"time_build_s\"",
+                          "\"time_render_s\"", "\"shading_points\"", "\"shadow_rays\"", "\"lights_tested_avg\"",
+                          "\"nodes_visited_avg\"", "\"hierarchy_bytes\"", "\"pixel_error_avg_pct\"",
+                          "\"pixel_error_max_pct\""}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  }
+}
+
+}  // namespace

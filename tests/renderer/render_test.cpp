@@ -1,0 +1,110 @@
+#include "renderer/render.h"
+
+#include <atomic>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "renderer/ray_scene.h"
+#include "scenes/building.h"
+
+namespace {
+
+struct TestScene {
+  renderer::Scene scene;
+  std::unique_ptr<renderer::RayScene> rays;
+  explicit TestScene(int level) : scene(scenes::build_building(level)) {
+    rays = std::make_unique<renderer::RayScene>(scene.geometry);
+  }
+};
+
+renderer::Framebuffer render(TestScene& t, lev::Method method, float tolerance, int threads, int passes,
+                             int width = 64, int height = 48) {
+  renderer::RenderSettings rs;
+  rs.width = width;
+  rs.height = height;
+  rs.method = method;
+  rs.tolerance = tolerance;
+  rs.threads = threads;
+  rs.tile_size = 8;
+  auto state = renderer::make_render_state(t.scene, *t.rays, rs);
+  for (int i = 0; i < passes; ++i) EXPECT_TRUE(renderer::render_pass(*state));
+  return renderer::render_framebuffer(*state);
+}
+
+bool bitwise_equal(const renderer::Framebuffer& a, const renderer::Framebuffer& b) {
+  return a.radiance_sum.size() == b.radiance_sum.size() &&
+         std::memcmp(a.radiance_sum.data(), b.radiance_sum.data(), a.radiance_sum.size() * sizeof(glm::vec3)) == 0 &&
+         a.samples == b.samples;
+}
+
+TEST(Render, LevAtToleranceZeroEqualsRtBitForBit) {
+  for (int level : {2, 3}) {
+    TestScene t(level);
+    const renderer::Framebuffer rt = render(t, lev::Method::rt, 0.0f, 0, 1, 80, 60);
+    const renderer::Framebuffer lev = render(t, lev::Method::lev, 0.0f, 0, 1, 80, 60);
+    EXPECT_TRUE(bitwise_equal(rt, lev)) << "level " << level;
+    EXPECT_EQ(renderer::framebuffer_rgb8(rt), renderer::framebuffer_rgb8(lev));
+    EXPECT_EQ(rt.lights_tested, lev.lights_tested);
+    EXPECT_EQ(rt.shadow_rays, lev.shadow_rays);
+    // The image is not trivially black.
+    const renderer::FramebufferTotals totals = renderer::sum_framebuffer(rt);
+    EXPECT_GT(totals.shading_points, 0u);
+    EXPECT_GT(totals.shadow_rays, 0u);
+  }
+}
+
+TEST(Render, LevAtPositiveToleranceTestsFewerLights) {
+  TestScene t(3);
+  const auto rt = renderer::sum_framebuffer(render(t, lev::Method::rt, 0.0f, 0, 1));
+  const auto lev = renderer::sum_framebuffer(render(t, lev::Method::lev, 0.01f, 0, 1));
+  EXPECT_EQ(rt.shading_points, lev.shading_points);
+  EXPECT_LT(lev.lights_tested * 2, rt.lights_tested);
+  EXPECT_GT(lev.nodes_visited, 0u);
+}
+
+TEST(Render, SameImageWhateverTheThreadCount) {
+  TestScene t(3);
+  for (lev::Method method : {lev::Method::rt, lev::Method::lev, lev::Method::ast}) {
+    const renderer::Framebuffer one = render(t, method, 0.01f, 1, 3);
+    const renderer::Framebuffer two = render(t, method, 0.01f, 2, 3);
+    EXPECT_TRUE(bitwise_equal(one, two)) << lev::method_info(method).name;
+    EXPECT_EQ(one.lights_tested, two.lights_tested);
+    EXPECT_EQ(one.nodes_visited, two.nodes_visited);
+  }
+}
+
+TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
+  TestScene t(2);
+  renderer::RenderSettings rs;
+  rs.width = 64;
+  rs.height = 48;
+  rs.tile_size = 8;
+  auto state = renderer::make_render_state(t.scene, *t.rays, rs);
+  std::atomic<bool> cancel{true};
+  EXPECT_FALSE(renderer::render_pass(*state, &cancel));
+  EXPECT_EQ(renderer::render_passes_done(*state), 0);
+  cancel = false;
+  EXPECT_TRUE(renderer::render_pass(*state, &cancel));
+  EXPECT_TRUE(renderer::render_pass(*state, &cancel));
+  for (std::uint32_t s : renderer::render_framebuffer(*state).samples) ASSERT_EQ(s, 2u);
+  const renderer::Framebuffer uninterrupted = render(t, lev::Method::lev, 0.01f, 0, 2);
+  EXPECT_TRUE(bitwise_equal(renderer::render_framebuffer(*state), uninterrupted));
+  for (int tile = 0; tile < renderer::render_tile_count(*state); ++tile) {
+    EXPECT_EQ(renderer::render_tile_status(*state, tile), renderer::TileStatus::done);
+  }
+}
+
+TEST(Render, HugeToleranceLeavesOnlyAmbient) {
+  TestScene t(2);
+  const renderer::Framebuffer fb = render(t, lev::Method::lev, 1e30f, 0, 1);
+  const auto totals = renderer::sum_framebuffer(fb);
+  EXPECT_EQ(totals.lights_tested, 0u);
+  EXPECT_EQ(totals.shadow_rays, 0u);
+  for (const glm::vec3& c : fb.radiance_sum) {
+    ASSERT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+    ASSERT_LT(glm::max(c.x, glm::max(c.y, c.z)), 0.2f);  // ambient only (with reflections of it)
+  }
+}
+
+}  // namespace
