@@ -116,7 +116,7 @@ RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const Rende
   return state;
 }
 
-bool render_pass(RenderState& state, const std::atomic<bool>* cancel) {
+bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const TileDoneCallback& on_tile_done) {
   const int tile_count = render_tile_count(state);
   for (int i = 0; i < tile_count; ++i) {
     const bool finished = state.tile_passes[static_cast<std::size_t>(i)] > state.passes_done;
@@ -138,6 +138,7 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel) {
             state.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
             render_tile(state, tile, state.scratch.local());
             passes += 1;
+            if (on_tile_done) on_tile_done(tile);
             state.tiles[tile].store(TileStatus::done, std::memory_order_release);
           }
         },

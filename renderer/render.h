@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include "lev/methods.h"
@@ -41,8 +42,14 @@ using RenderStatePtr = std::unique_ptr<RenderState, RenderStateDeleter>;
 // method's selector. The state refers to scene and rays; they must outlive it.
 RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings);
 
+// Called on the worker thread right after a tile's pixels are final for this pass; it may read
+// that tile's framebuffer pixels (nothing else writes them until the next pass). The viewer
+// copies finished tiles to its display buffer here, so the UI never reads pixels in flight.
+using TileDoneCallback = std::function<void(int tile)>;
+
 // One more pass. Returns false when *cancel became true before every tile was done.
-bool render_pass(RenderState& state, const std::atomic<bool>* cancel = nullptr);
+bool render_pass(RenderState& state, const std::atomic<bool>* cancel = nullptr,
+                 const TileDoneCallback& on_tile_done = nullptr);
 
 const Framebuffer& render_framebuffer(const RenderState& state);
 const RenderSettings& render_settings(const RenderState& state);
