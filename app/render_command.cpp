@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <set>
 
+#include <tbb/info.h>
+
 #include "lev/light_hierarchy.h"
 #include "renderer/heatmap.h"
 #include "renderer/image_io.h"
@@ -94,7 +96,7 @@ nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& s
   j["width"] = settings.width;
   j["height"] = settings.height;
   j["spp"] = settings.spp;
-  j["threads"] = settings.threads;
+  j["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   j["subsample"] = settings.subsample;
   j["time_build_s"] = loaded.build_seconds;
   j["time_render_s"] = result.seconds;
@@ -116,6 +118,7 @@ nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& s
 }
 
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
+  render_settings_from(settings);  // validates the combination of settings before any work
   check_output_paths(outputs);
   std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   const RenderResult result = render_image(*loaded, settings, settings.method);

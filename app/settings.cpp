@@ -104,6 +104,12 @@ std::string setting_text(const Settings& settings, const SettingSpec& spec) {
 namespace app {
 
 renderer::RenderSettings render_settings_from(const Settings& settings) {
+  // Each pixel costs about 50 bytes of framebuffer; cap the image well below the machine's memory.
+  constexpr long long kMaxPixels = 8192LL * 8192LL;
+  if (static_cast<long long>(settings.width) * settings.height > kMaxPixels) {
+    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                     " exceeds the " + std::to_string(kMaxPixels) + "-pixel limit");
+  }
   renderer::RenderSettings rs;
   rs.width = settings.width;
   rs.height = settings.height;

@@ -40,7 +40,7 @@ RayScene::RayScene(const Geometry& geometry)
 
   for (const Prototype& prototype : geometry.prototypes) {
     RTCScene scene = rtcNewScene(device_);
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
     for (const TriangleMesh& mesh : prototype.meshes) {
       RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
       auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(

@@ -14,6 +14,7 @@
 #include <tbb/task_arena.h>
 
 #include "renderer/shading.h"
+#include "renderer/thread_annotations.h"
 
 namespace renderer {
 
@@ -32,6 +33,8 @@ struct RenderState {
   std::vector<int> tile_passes;
   std::unique_ptr<tbb::task_arena> arena;
   tbb::enumerable_thread_specific<lev::SelectorScratch> scratch;
+  // Addresses that only name the two edges of a pass for ThreadSanitizer (thread_annotations.h).
+  char pass_start_edge = 0, pass_end_edge = 0;
 
   RenderState(Scene& s, const RayScene& r, const RenderSettings& settings_in)
       : scene(s), rays(r), settings(settings_in) {}
@@ -124,14 +127,16 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const Tile
   }
   const auto start = std::chrono::steady_clock::now();
   std::atomic<bool> cancelled{false};
+  annotate_release(&state.pass_start_edge);
   state.arena->execute([&] {
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tile_count, 1),
         [&](const tbb::blocked_range<int>& range) {
+          annotate_acquire(&state.pass_start_edge);
           for (int tile = range.begin(); tile != range.end(); ++tile) {
             if (cancel && cancel->load(std::memory_order_relaxed)) {
               cancelled.store(true, std::memory_order_relaxed);
-              return;
+              break;
             }
             int& passes = state.tile_passes[static_cast<std::size_t>(tile)];
             if (passes > state.passes_done) continue;
@@ -141,9 +146,11 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const Tile
             if (on_tile_done) on_tile_done(tile);
             state.tiles[tile].store(TileStatus::done, std::memory_order_release);
           }
+          annotate_release(&state.pass_end_edge);
         },
         tbb::simple_partitioner());
   });
+  annotate_acquire(&state.pass_end_edge);
   state.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled.load()) return false;
   state.selector->end_pass();

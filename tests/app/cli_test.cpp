@@ -78,6 +78,13 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
   }
 }
 
+TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
+  const CliRun r = run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--width"), std::string::npos) << r.output;
+  EXPECT_TRUE(folder_is_empty());
+}
+
 TEST_F(Cli, LightsListsTheValidCounts) {
   const CliRun r = run_levrt({"render", "--lights", "100", "--out", path("a.png")});
   EXPECT_EQ(r.exit_code, 2);
