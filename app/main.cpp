@@ -3,11 +3,15 @@
 #include <exception>
 
 #include "app/cli.h"
+#include "app/interrupt.h"
 #include "app/settings.h"
 
 int main(int argc, char** argv) {
   try {
     return app::run_cli(argc, argv);
+  } catch (const app::Interrupted& e) {
+    std::fprintf(stderr, "levrt: %s\n", e.what());
+    return 130;
   } catch (const app::UsageError& e) {
     std::fprintf(stderr, "levrt: %s\n", e.what());
     return 2;

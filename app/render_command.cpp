@@ -8,6 +8,7 @@
 
 #include <tbb/info.h>
 
+#include "app/interrupt.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/heatmap.h"
 #include "renderer/image_io.h"
@@ -70,12 +71,15 @@ void check_output_paths(const RenderOutputs& o) {
   }
 }
 
-RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method) {
+RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
+                          const std::atomic<bool>* cancel) {
   Settings s = settings;
   s.method = method;
   renderer::RenderStatePtr state =
       renderer::make_render_state(loaded.scene, *loaded.rays, render_settings_from(s));
-  for (int pass = 0; pass < settings.spp; ++pass) renderer::render_pass(*state);
+  for (int pass = 0; pass < settings.spp; ++pass) {
+    if (!renderer::render_pass(*state, cancel)) throw Interrupted();
+  }
   RenderResult result;
   result.framebuffer = renderer::render_framebuffer(*state);
   result.seconds = renderer::render_seconds(*state);
@@ -120,15 +124,19 @@ nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& s
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
   render_settings_from(settings);  // validates the combination of settings before any work
   check_output_paths(outputs);
+  const InterruptScope interrupt_scope;
+  const std::atomic<bool>* cancel = &InterruptScope::flag();
   std::unique_ptr<LoadedScene> loaded = load_scene(settings);
-  const RenderResult result = render_image(*loaded, settings, settings.method);
+  InterruptScope::throw_if_interrupted();
+  const RenderResult result = render_image(*loaded, settings, settings.method, cancel);
   RenderResult reference;
   if (outputs.reference_rt) {
-    reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt");
+    reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt", cancel);
   }
   nlohmann::ordered_json stats =
       render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 
+  InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
   if (!outputs.image.empty()) {
     renderer::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));

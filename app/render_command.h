@@ -2,6 +2,7 @@
 // the statistics (DESIGN.md metric names), optionally against an `rt` reference.
 #pragma once
 
+#include <atomic>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -30,8 +31,10 @@ struct RenderResult {
   std::size_t method_bytes = 0;  // the method's own bookkeeping (AST)
 };
 
-// Renders settings.spp passes of `method` over the loaded scene.
-RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method);
+// Renders settings.spp passes of `method` over the loaded scene. Throws Interrupted when
+// *cancel is raised (Ctrl-C) before the last pass completes.
+RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
+                          const std::atomic<bool>* cancel = nullptr);
 
 // The stats JSON of a finished render (reference may be null).
 nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& settings,

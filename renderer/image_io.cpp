@@ -1,6 +1,9 @@
 #include "renderer/image_io.h"
 
+#include <pthread.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cerrno>
 #include <cstdio>
@@ -16,7 +19,26 @@ std::string temporary_name(const std::string& path) {
   return path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
 }
 
+// Blocks the termination signals while the temporary exists, so Ctrl-C cannot leave it behind;
+// a signal that arrives meanwhile is delivered when the file is complete and renamed.
+class TerminationSignalsBlocked {
+ public:
+  TerminationSignalsBlocked() {
+    sigset_t block;
+    sigemptyset(&block);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&block, s);
+    pthread_sigmask(SIG_BLOCK, &block, &saved_);
+  }
+  ~TerminationSignalsBlocked() { pthread_sigmask(SIG_SETMASK, &saved_, nullptr); }
+  TerminationSignalsBlocked(const TerminationSignalsBlocked&) = delete;
+  TerminationSignalsBlocked& operator=(const TerminationSignalsBlocked&) = delete;
+
+ private:
+  sigset_t saved_;
+};
+
 void write_bytes_atomically(const std::string& path, const std::string& bytes) {
+  const TerminationSignalsBlocked blocked;
   const std::string tmp = temporary_name(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
