@@ -8,8 +8,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/bench/bench.h"
+#include "app/export_command.h"
 #include "app/render_command.h"
 #include "app/settings.h"
+#include "app/view_command.h"
 
 namespace app {
 namespace {
@@ -31,6 +34,9 @@ Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_opti
   Settings settings;
   for (const SettingSpec& spec : setting_table()) {
     if (flags.options.at(spec.name)->count() > 0) set_setting(settings, spec, flags.text.at(spec.name));
+  }
+  if (flags.options.at("level")->count() > 0 && is_scene_file(settings)) {
+    throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
   }
   if (lights_option->count() > 0) {
     if (flags.options.at("level")->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
@@ -82,7 +88,24 @@ int run_cli(int argc, char** argv) {
   CLI::Option* reference_option =
       render->add_option("--reference", reference, "also render this method's image and report pixel errors (rt)");
 
+  CLI::App* export_command = cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
+  ExportFlags export_flags;
+  add_export_flags(*export_command, export_flags);
+
+  CLI::App* bench = cli.add_subcommand("bench", "the thesis' experiments: results.md, CSVs and plots");
+  BenchFlags bench_flags;
+  add_bench_flags(*bench, bench_flags);
+
   CLI::App* snapshot = cli.add_subcommand("snapshot", "the default job headless: building snapshot into out/");
+
+  CLI::App* view = cli.add_subcommand("view", "the interactive viewer (the default when a display is available)");
+  SettingFlags view_flags;
+  add_setting_flags(*view, view_flags);
+  std::string view_lights_text;
+  CLI::Option* view_lights_option =
+      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)");
+  ViewFlags view_options;
+  add_view_flags(*view, view_options);
 
   try {
     cli.parse(argc, argv);
@@ -107,7 +130,23 @@ int run_cli(int argc, char** argv) {
     }
     return run_render(settings, outputs);
   }
+  if (export_command->parsed()) return run_export(export_flags);
+  if (bench->parsed()) return run_bench(bench_flags);
   if (snapshot->parsed()) return run_snapshot();
+  if (view->parsed()) {
+    Settings settings = apply_setting_flags(view_flags, view_lights_option, view_lights_text);
+    if (view_flags.options.at("spp")->count() == 0) settings.spp = kViewerDefaultPasses;
+    return run_view(settings, view_options);
+  }
+  if (viewer_display_available()) {
+    Settings settings;
+    settings.spp = kViewerDefaultPasses;
+    try {
+      return run_view(settings, ViewFlags{});
+    } catch (const NoDisplayError&) {
+      // The display DISPLAY names cannot be opened: the headless job instead.
+    }
+  }
   return run_snapshot();
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "lev/methods.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_models.h"
 
 namespace app {
@@ -17,6 +18,12 @@ std::vector<std::string> method_options() {
   return names;
 }
 
+namespace {
+
+bool is_scene_file_setting(const std::string& text) { return scenes::is_scene_file_name(text); }
+
+}  // namespace
+
 std::vector<std::string> scene_options() {
   std::vector<std::string> names;
   for (const scenes::SceneModel& m : scenes::scene_models()) names.emplace_back(m.name);
@@ -25,7 +32,8 @@ std::vector<std::string> scene_options() {
 
 const std::vector<SettingSpec>& setting_table() {
   static const std::vector<SettingSpec> table = {
-      {"scene", "Scene", "scene model", Choice{&Settings::scene, scene_options}},
+      {"scene", "Scene", "scene model, or a scene file FILE.json (format: scenes/README.md)",
+       Choice{&Settings::scene, scene_options, is_scene_file_setting, "a FILE.json scene file"}},
       {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
       {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
@@ -85,6 +93,11 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
       }
       valid += (valid.empty() ? "" : "|") + o;
     }
+    if (c.also_accepts && c.also_accepts(text)) {
+      settings.*(c.field) = text;
+      return;
+    }
+    if (c.also_accepts_label) valid += std::string(" or ") + c.also_accepts_label;
     reject(spec, "must be one of " + valid, text);
   }
 }

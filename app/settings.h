@@ -41,6 +41,10 @@ struct RealRange {
 struct Choice {
   std::string Settings::*field;
   std::vector<std::string> (*options)();  // valid values
+  // Values outside `options` this choice also takes (the scene: a .json scene file), and how
+  // the error message names them.
+  bool (*also_accepts)(const std::string& text) = nullptr;
+  const char* also_accepts_label = nullptr;
 };
 
 struct SettingSpec {

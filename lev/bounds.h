@@ -16,9 +16,11 @@ struct Bounds {
 };
 
 inline bool is_empty(const Bounds& b) { return b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z; }
+// Branch-free: the walk's outcome per box is unpredictable, so one branch on the result is
+// cheaper than six short-circuit ones.
 inline bool contains(const Bounds& b, const glm::vec3& p) {
-  return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y && p.z >= b.lo.z &&
-         p.z <= b.hi.z;
+  return (p.x >= b.lo.x) & (p.x <= b.hi.x) & (p.y >= b.lo.y) & (p.y <= b.hi.y) & (p.z >= b.lo.z) &
+         (p.z <= b.hi.z);
 }
 inline Bounds merge(const Bounds& a, const Bounds& b) {
   return {glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)};

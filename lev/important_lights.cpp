@@ -5,26 +5,63 @@
 namespace lev {
 namespace {
 
+// Frames are written field by field straight into the stack, and the world transform of the
+// subtree being walked stays in locals: a struct assembled in memory with narrow stores and read
+// back whole stalls on store forwarding, which was the walk's largest cost.
+void push_frame(std::vector<WalkFrame>& stack, const glm::vec3& local_point, std::uint32_t node,
+                const glm::vec3& world_translation, std::uint32_t linear, bool volume_tested) {
+  stack.push_back(WalkFrame{local_point, node, world_translation, linear, volume_tested});
+}
+
+// The light seen through world_from_local = (linear, translation). With the identity linear part
+// this is transform_light's arithmetic without the products by one (which are exact), so the
+// floats are the same either way.
+Light world_light(const Light& light, const WalkLinear& linear, bool identity, const glm::vec3& translation) {
+  if (!identity) return transform_light(light, Similarity{linear.rotation, linear.scale, translation});
+  Light l = light;
+  l.position = light.position + translation;
+  if (light.kind == LightKind::spot) l.direction = glm::normalize(light.direction);
+  return l;
+}
+
 // One walk for both the query (cull = true) and the flattening (cull = false): sharing it is what
 // makes `lev` at tolerance 0 and `rt` see bit-identical world-space lights.
+//
+// Culling happens as early as possible: a union tests each child's box (which every node keeps
+// in the frame it is entered with) before pushing it, so a culled child costs one box test, no
+// frame and no transform composition (thesis fig. 3.5 tests the volumes the same way, one level
+// earlier). The box a child passed at the union is, up to padding, the box of the first node
+// with a volume inside it (moved by a translation), so that node does not test it again.
 template <bool kCull>
 void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
           std::vector<Light>& out, WalkCounters& counters) {
   std::vector<WalkFrame>& stack = scratch.stack;
+  std::vector<WalkLinear>& linear = scratch.linear;
+  std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
   stack.clear();
-  stack.push_back({Similarity{}, point, h.root});
+  linear.clear();
+  linear.emplace_back();
+  push_frame(stack, point, h.root, glm::vec3(0.0f), 0, false);
   while (!stack.empty()) {
-    WalkFrame f = stack.back();
+    const WalkFrame& top = stack.back();
+    glm::vec3 local_point = top.local_point;
+    std::uint32_t index = top.node;
+    glm::vec3 translation = top.world_translation;
+    std::uint32_t linear_index = top.linear;
+    bool volume_tested = top.volume_tested;
     stack.pop_back();
+    // Linear indices never decrease up the stack, so nothing below this frame needs a later one.
+    linear.resize(linear_index + 1);
     for (;;) {
-      const HierarchyNode& node = h.nodes[f.node];
+      const HierarchyNode& node = h.nodes[index];
       bool descend = false;
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light: {
-          const Light world = transform_light(h.lights[node.payload], f.world_from_local);
+          const Light world =
+              world_light(h.lights[node.payload], linear[linear_index], linear_index == 0, translation);
           if constexpr (kCull) {
-            ++counters.nodes_visited;
+            ++visited;
             if (is_important(world, point, h.tolerance)) out.push_back(world);
           } else {
             out.push_back(world);
@@ -33,32 +70,76 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
         }
         case NodeKind::affine: {
           const Similarity& xf = h.transforms[node.payload];
-          f.world_from_local = compose(f.world_from_local, xf);
-          if constexpr (kCull) f.local_point = apply_inverse_point(xf, f.local_point);
-          f.node += 1;
+          const bool translation_only = (node.flags & kTranslationOnly) != 0;
+          // compose(world_from_local, xf), in two parts.
+          if (linear_index == 0) {
+            translation = xf.translation + translation;
+          } else {
+            const WalkLinear& outer = linear[linear_index];
+            translation = outer.rotation * (outer.scale * xf.translation) + translation;
+          }
+          if (!translation_only) {
+            const WalkLinear outer = linear[linear_index];
+            WalkLinear& inner = linear.emplace_back();
+            inner.rotation = outer.rotation * xf.rotation;
+            inner.scale = outer.scale * xf.scale;
+            linear_index = static_cast<std::uint32_t>(linear.size() - 1);
+            // Only a translation keeps the child's box the parent's test stood for.
+            volume_tested = false;
+          }
+          if constexpr (kCull) {
+            local_point = translation_only ? local_point - xf.translation : apply_inverse_point(xf, local_point);
+          }
+          index += 1;
           descend = true;
           break;
         }
         case NodeKind::extent_volume:
         case NodeKind::master:
           if constexpr (kCull) {
-            ++counters.nodes_visited;
-            if (!contains(node.volume, f.local_point)) break;
+            if (volume_tested) {
+              volume_tested = false;
+            } else {
+              ++visited;
+              if (!contains(node.volume, local_point)) break;
+            }
           }
-          f.node += 1;
+          index += 1;
           descend = true;
           break;
         case NodeKind::instance:
-          f.node = node.payload;
+          index = node.payload;
           descend = true;
           break;
         case NodeKind::set_union: {
-          const std::uint32_t count = h.union_children[node.payload];
-          // Pushed last-first so the first child is walked first (depth-first, left to right).
-          for (std::uint32_t k = count; k-- > 0;) {
-            WalkFrame child = f;
-            child.node = h.union_children[node.payload + 1 + k];
-            stack.push_back(child);
+          const std::uint32_t* children = &h.union_children[node.payload];
+          const std::uint32_t count = children[0];
+          // The first child that passes is walked right away; the later ones are pushed
+          // last-first so that they come off the stack in order (depth-first, left to right).
+          constexpr std::uint32_t kNone = ~0u;
+          std::uint32_t first = kNone;
+          bool first_tested = false;
+          for (std::uint32_t k = count; k > 0; --k) {
+            const std::uint32_t child = children[k];
+            bool tested = false;
+            if constexpr (kCull) {
+              const HierarchyNode& c = h.nodes[child];
+              // Lights get their exact test instead; a union's box is only its children's.
+              if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light &&
+                  c.kind != NodeKind::set_union) {
+                ++visited;
+                if (!contains(c.volume, local_point)) continue;
+                tested = true;
+              }
+            }
+            if (first != kNone) push_frame(stack, local_point, first, translation, linear_index, first_tested);
+            first = child;
+            first_tested = tested;
+          }
+          if (first != kNone) {
+            index = first;
+            volume_tested = first_tested;
+            descend = true;
           }
           break;
         }
@@ -66,6 +147,7 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
       if (!descend) break;
     }
   }
+  counters.nodes_visited += visited;
 }
 
 }  // namespace

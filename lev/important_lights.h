@@ -13,18 +13,33 @@
 namespace lev {
 
 struct WalkCounters {
-  std::uint64_t nodes_visited = 0;  // extent volumes tested (master, extent-volume and light nodes)
+  // Extent volumes tested: every box test (a union's children, extent-volume and master nodes)
+  // and every light's exact irradiance test.
+  std::uint64_t nodes_visited = 0;
 };
 
+// The rotation and scale of a world_from_local transform. The walk keeps them apart from the
+// translation: translations (most affine nodes of instanced scenes) only move the translation,
+// which travels in the frame, and a new entry is made only below a rotating or scaling node.
+struct WalkLinear {
+  glm::mat3 rotation{1.0f};
+  float scale = 1.0f;
+};
+
+// A subtree still to walk: its node, the query point in its frame, and the frame's
+// world_from_local transform (rotation and scale by index, translation by value).
 struct WalkFrame {
-  Similarity world_from_local;
   glm::vec3 local_point{0.0f};
   std::uint32_t node = 0;
+  glm::vec3 world_translation{0.0f};
+  std::uint32_t linear = 0;      // index into WalkScratch::linear; 0 is the identity
+  bool volume_tested = false;    // the subtree's box was tested by its parent (skip one test)
 };
 
 // Reused between queries so that a walk allocates nothing once warm.
 struct WalkScratch {
   std::vector<WalkFrame> stack;
+  std::vector<WalkLinear> linear;
 };
 
 // Appends to important_lights every light with irradiance >= hierarchy.tolerance at point.

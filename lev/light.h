@@ -3,7 +3,10 @@
 // (what a query returns); transform_light maps one to the other.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <glm/glm.hpp>
 
@@ -35,7 +38,14 @@ Light make_spot_light(const glm::vec3& position, const glm::vec3& direction,
 // The light seen through xf: moved, turned, and with intensity times scale^2 (the 1/d^2 law
 // in the scaled frame), so irradiance(transform_light(l, xf), apply_point(xf, x)) equals
 // irradiance(l, x).
-Light transform_light(const Light& light, const Similarity& xf);
+// Inline, like irradiance_falloff: the walk and every shading loop call them once per light.
+inline Light transform_light(const Light& light, const Similarity& xf) {
+  Light l = light;
+  l.position = apply_point(xf, light.position);
+  l.intensity = light.intensity * (xf.scale * xf.scale);
+  if (light.kind == LightKind::spot) l.direction = glm::normalize(apply_direction(xf, light.direction));
+  return l;
+}
 
 // Scalar strength used for culling: the brightest channel (DESIGN.md).
 inline float strength(const Light& light) {
@@ -44,17 +54,37 @@ inline float strength(const Light& light) {
 
 // The geometric factor of eq. 1/5: cos(gamma)^P / d^2 (spot) or 1 / d^2 (point), zero outside
 // the cone. Multiply by intensity for the RGB irradiance.
-float irradiance_falloff(const Light& light, const glm::vec3& x);
+inline float irradiance_falloff(const Light& light, const glm::vec3& x) {
+  const glm::vec3 to_point = x - light.position;
+  const float d2_raw = glm::dot(to_point, to_point);
+  const float d2 = std::max(d2_raw, kMinLightDistance * kMinLightDistance);
+  if (light.kind == LightKind::point) return 1.0f / d2;
+  // At the apex itself the direction is undefined; the point counts as on the axis.
+  const float cos_gamma = d2_raw > 0.0f ? glm::dot(light.direction, to_point) / std::sqrt(d2_raw) : 1.0f;
+  if (cos_gamma < light.cos_cone_half_angle) return 0.0f;
+  if (light.dropoff == 0.0f) return 1.0f / d2;
+  // Warn's cos^P is defined for the front hemisphere; behind the light (cone wider than 90
+  // degrees) a spot with a dropoff contributes nothing. pow underflows to 0 for huge P, never NaN.
+  if (cos_gamma <= 0.0f) return 0.0f;
+  return std::pow(cos_gamma, light.dropoff) / d2;
+}
 
+// RGB irradiance, finite for every finite or infinite intensity: zero where the falloff is zero
+// (no 0 * inf), and at most the largest float where 1/d^2 meets a huge intensity.
 inline glm::vec3 irradiance(const Light& light, const glm::vec3& x) {
-  return light.intensity * irradiance_falloff(light, x);
+  const float falloff = irradiance_falloff(light, x);
+  if (falloff == 0.0f) return glm::vec3(0.0f);
+  constexpr float kLargest = std::numeric_limits<float>::max();
+  const glm::vec3 e = light.intensity * falloff;
+  return {e.x < kLargest ? e.x : kLargest, e.y < kLargest ? e.y : kLargest, e.z < kLargest ? e.z : kLargest};
 }
 
 // True when the light's unshadowed irradiance at x is non-zero and at least tolerance: the
 // exact extent volume of one light (thesis 3.3). With tolerance 0 it selects every light that
 // can contribute at all, which is what `rt` shadow-tests.
 inline bool is_important(const Light& light, const glm::vec3& x, float tolerance) {
-  const float e = strength(light) * irradiance_falloff(light, x);
+  // Clamped like irradiance(), so an infinite tolerance culls every light.
+  const float e = std::min(strength(light) * irradiance_falloff(light, x), std::numeric_limits<float>::max());
   return e > 0.0f && e >= tolerance;
 }
 

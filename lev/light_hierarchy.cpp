@@ -52,6 +52,7 @@ class Flattener {
                                       std::to_string(xf.scale));
         }
         h_.nodes[index].payload = static_cast<std::uint32_t>(h_.transforms.size());
+        if (xf.rotation == glm::mat3(1.0f) && xf.scale == 1.0f) h_.nodes[index].flags |= kTranslationOnly;
         h_.transforms.push_back(xf);
         add(src.children[0], depth + 1, current_master);
         break;

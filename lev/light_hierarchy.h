@@ -17,11 +17,17 @@
 
 namespace lev {
 
+// HierarchyNode::flags bits.
+// An affine node whose transform is a pure translation: the walk composes and inverts it with
+// three additions instead of matrix products (the results are the same floats).
+inline constexpr std::uint8_t kTranslationOnly = 1;
+
 struct HierarchyNode {
   Bounds volume;               // extent volume of this subtree in this node's frame (refit)
   std::uint32_t payload = 0;   // light | transform | master node | offset into union_children
   NodeKind kind = NodeKind::set_union;
-  std::uint8_t unused[3] = {0, 0, 0};
+  std::uint8_t flags = 0;      // kTranslationOnly
+  std::uint8_t unused[2] = {0, 0};
 };
 static_assert(sizeof(HierarchyNode) == 32, "hierarchy nodes are 32 bytes");
 

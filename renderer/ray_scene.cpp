@@ -118,9 +118,9 @@ RayScene::~RayScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+namespace {
+
+RTCRayHit make_ray_hit(const Ray& ray) {
   RTCRayHit rh;
   rh.ray.org_x = ray.origin.x;
   rh.ray.org_y = ray.origin.y;
@@ -136,6 +136,23 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
+}  // namespace
+
+float RayScene::closest_distance(const Ray& ray) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh = make_ray_hit(ray);
+  rtcIntersect1(top_, &context, &rh);
+  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity() : rh.ray.tfar;
+}
+
+bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh = make_ray_hit(ray);
   rtcIntersect1(top_, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 

@@ -40,6 +40,9 @@ class RayScene {
   bool intersect(const Ray& ray, SurfaceHit& hit) const;
   // True when something lies on the segment origin + t * direction, t in (0, max_distance).
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const;
+  // The bare Embree query behind intersect: the closest hit's distance (+inf for a miss), with
+  // none of the hit record work. For measuring Embree alone (ray_log.h).
+  float closest_distance(const Ray& ray) const;
 
   std::size_t instance_count() const { return instances_.size(); }
 

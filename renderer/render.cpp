@@ -1,8 +1,5 @@
 #include "renderer/render.h"
 
-#include <pmmintrin.h>
-#include <xmmintrin.h>
-
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -13,6 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "renderer/denormal_mode.h"
 #include "renderer/shading.h"
 #include "renderer/thread_annotations.h"
 
@@ -33,6 +31,7 @@ struct RenderState {
   std::vector<int> tile_passes;
   std::unique_ptr<tbb::task_arena> arena;
   tbb::enumerable_thread_specific<lev::SelectorScratch> scratch;
+  RayLog* ray_log = nullptr;
   // Addresses that only name the two edges of a pass for ThreadSanitizer (thread_annotations.h).
   char pass_start_edge = 0, pass_end_edge = 0;
 
@@ -43,19 +42,6 @@ struct RenderState {
 void RenderStateDeleter::operator()(RenderState* state) const { delete state; }
 
 namespace {
-
-// Flush-to-zero and denormals-are-zero for the tile being rendered (Embree's advice), restored
-// afterwards so the calling thread's mode is left as it was.
-class DenormalModeGuard {
- public:
-  DenormalModeGuard() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
-  ~DenormalModeGuard() { _mm_setcsr(saved_); }
-  DenormalModeGuard(const DenormalModeGuard&) = delete;
-  DenormalModeGuard& operator=(const DenormalModeGuard&) = delete;
-
- private:
-  unsigned saved_;
-};
 
 std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
   lev::RandomStream s{a ^ (b * 0xD1B54A32D192ED03ull)};
@@ -68,7 +54,8 @@ void render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch) {
   int x0, y0, x1, y1;
   render_tile_rect(state, tile, x0, y0, x1, y1);
   Framebuffer& fb = state.framebuffer;
-  TraceContext context{state.scene, state.rays, *state.selector, scratch, rs.max_depth};
+  TraceContext context{state.scene, state.rays, *state.selector, scratch, rs.max_depth,
+                       state.ray_log ? &state.ray_log->tiles[static_cast<std::size_t>(tile)] : nullptr};
   const auto pass = static_cast<std::uint64_t>(state.passes_done);
   for (int y = y0; y < y1; ++y) {
     if (y % rs.pixel_stride != 0) continue;
@@ -156,6 +143,11 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const Tile
   state.selector->end_pass();
   state.passes_done += 1;
   return true;
+}
+
+void record_rays(RenderState& state, RayLog* log) {
+  state.ray_log = log;
+  if (log) log->tiles.resize(static_cast<std::size_t>(render_tile_count(state)));
 }
 
 const Framebuffer& render_framebuffer(const RenderState& state) { return state.framebuffer; }

@@ -12,6 +12,7 @@
 
 #include "lev/methods.h"
 #include "renderer/framebuffer.h"
+#include "renderer/ray_log.h"
 #include "renderer/ray_scene.h"
 #include "renderer/scene.h"
 
@@ -50,6 +51,10 @@ using TileDoneCallback = std::function<void(int tile)>;
 // One more pass. Returns false when *cancel became true before every tile was done.
 bool render_pass(RenderState& state, const std::atomic<bool>* cancel = nullptr,
                  const TileDoneCallback& on_tile_done = nullptr);
+
+// From the next pass on, every ray the passes cast is appended to *log, per tile (null stops
+// recording). The log must outlive the passes that write it.
+void record_rays(RenderState& state, RayLog* log);
 
 const Framebuffer& render_framebuffer(const RenderState& state);
 const RenderSettings& render_settings(const RenderState& state);

@@ -10,10 +10,11 @@ class SurfacePoint final : public lev::ShadingPoint {
   // normal: the shading normal on the viewer's side; side: the geometric normal on that side,
   // along which shadow rays leave the surface.
   SurfacePoint(const RayScene& rays, const SurfaceHit& hit, const Material& material,
-               const glm::vec3& normal, const glm::vec3& side, const glm::vec3& to_viewer)
+               const glm::vec3& normal, const glm::vec3& side, const glm::vec3& to_viewer,
+               std::vector<LoggedRay>* ray_log)
       : rays_(rays), material_(material), normal_(normal), to_viewer_(to_viewer),
         position_(hit.position),
-        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance)) {}
+        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance)), ray_log_(ray_log) {}
 
   glm::vec3 position() const override { return position_; }
 
@@ -41,19 +42,24 @@ class SurfacePoint final : public lev::ShadingPoint {
     const float d = glm::length(to_light);
     if (!(d > 0.0f)) return true;
     // Stop just short of the light so a light resting on a surface is not hidden by it.
-    return !rays_.occluded(shadow_origin_, to_light / d, d * (1.0f - 1e-5f));
+    const glm::vec3 direction = to_light / d;
+    const float max_distance = d * (1.0f - 1e-5f);
+    if (ray_log_) ray_log_->push_back({shadow_origin_, max_distance, direction, RayKind::shadow});
+    return !rays_.occluded(shadow_origin_, direction, max_distance);
   }
 
  private:
   const RayScene& rays_;
   const Material& material_;
   glm::vec3 normal_, to_viewer_, position_, shadow_origin_;
+  std::vector<LoggedRay>* ray_log_;
 };
 
 }  // namespace
 
 glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathCounters& counters) {
   SurfaceHit hit;
+  if (context.ray_log) context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
   if (!context.rays.intersect(ray, hit)) return context.scene.background;
   ++counters.shading_points;
   const Material& material = context.scene.materials[hit.material];
@@ -64,7 +70,7 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   const glm::vec3 to_viewer = -ray.direction;
 
   glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
-  SurfacePoint point(context.rays, hit, material, facing, side, to_viewer);
+  SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
   radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
 
   if (depth >= context.max_depth) return radiance;

@@ -8,6 +8,7 @@
 
 #include "lev/light_selector.h"
 #include "renderer/camera.h"
+#include "renderer/ray_log.h"
 #include "renderer/ray_scene.h"
 #include "renderer/scene.h"
 
@@ -24,6 +25,7 @@ struct TraceContext {
   const lev::LightSelector& selector;
   lev::SelectorScratch& scratch;
   int max_depth = 5;  // secondary bounces after the primary hit
+  std::vector<LoggedRay>* ray_log = nullptr;  // when set, every ray cast is appended (ray_log.h)
 };
 
 // Radiance arriving along the ray; depth 0 is the primary ray.

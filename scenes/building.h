@@ -1,12 +1,13 @@
 // Scene Model 1 (thesis 5.3, fig. 5.1): a square building of rooms, instanced 2x2 per level, with
 // no roof. Every room has walls with doorways, one ceiling point light and two robots on
-// unicycles. Level L has 4^L rooms and lights; both the light hierarchy and the geometry are
-// instanced, so the hierarchy grows by a constant per level.
+// unicycles. Level L has 4^L rooms and lights. The description instances a room master 2x2 per
+// level (thesis fig. 3.4), so the light hierarchy grows by a constant per level.
 #pragma once
 
 #include <cstdint>
 
 #include "renderer/scene.h"
+#include "scenes/scene_description.h"
 
 namespace scenes {
 
@@ -19,6 +20,8 @@ inline constexpr float kCeilingLightHeight = 3.8f;
 inline constexpr float kCeilingLightIntensity = 12.7f;
 
 std::uint64_t building_light_count(int level);
-renderer::Scene build_building(int level);
+// Levels 1..10; throws std::invalid_argument otherwise.
+SceneDescription describe_building(int level);
+renderer::Scene build_building(int level);  // instantiate_scene(describe_building(level))
 
 }  // namespace scenes

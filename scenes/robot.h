@@ -1,11 +1,11 @@
 // A robot riding a unicycle (the figure every thesis scene places under its lights): wheel,
-// seat post, body, arms and head, built from cylinders, boxes and a sphere.
+// seat post, body, arms and head, built from cylinders, boxes and a sphere. Scenes define it once
+// as a master and instance it.
 #pragma once
 
 #include <cstdint>
 
-#include "lev/transform.h"
-#include "renderer/geometry.h"
+#include "scenes/scene_description.h"
 
 namespace scenes {
 
@@ -16,9 +16,7 @@ struct RobotMaterials {
   std::uint32_t tyre = 0;
 };
 
-// Adds one robot standing on z = 0, about 2.7 units tall, facing +y in its own frame, placed
-// in the prototype by world_from_robot.
-void add_robot(renderer::Prototype& prototype, const lev::Similarity& world_from_robot,
-               const RobotMaterials& materials);
+// One robot standing on z = 0, about 2.7 units tall, facing +y, arms held out along x.
+SceneNode robot_node(const RobotMaterials& materials);
 
 }  // namespace scenes

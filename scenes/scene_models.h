@@ -1,5 +1,6 @@
-// The table of built-in scene models (thesis 5.3): name, levels and light counts, and the
-// function that builds a level. The CLI, the viewer and the benchmarks all read this table.
+// The table of built-in scene models (thesis 5.3): name, levels and light counts, the function
+// that describes a level (what `levrt export` writes) and the one that builds it (the description
+// instantiated). The CLI, the viewer and the benchmarks all read this table.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "renderer/scene.h"
+#include "scenes/scene_description.h"
 
 namespace scenes {
 
@@ -20,6 +22,7 @@ struct SceneModel {
   int default_level;
   std::function<std::uint64_t(int level)> light_count;
   std::function<renderer::Scene(int level)> build;
+  std::function<SceneDescription(int level)> describe;
 };
 
 const std::vector<SceneModel>& scene_models();

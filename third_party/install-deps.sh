@@ -8,6 +8,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libgl-dev libopengl-dev libegl-dev libx11-dev
   xvfb xauth mesa-utils
+  clang
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,210 @@
+#include "app/bench/bench.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "app/bench/experiments.h"
+#include "app/bench/runner.h"
+#include "app/settings.h"
+#include "renderer/image_io.h"
+
+namespace app {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BenchOptions {
+  bool quick = false;
+  std::string out;
+  std::vector<std::string> only;  // empty: every experiment
+  int threads = 0;
+};
+
+std::vector<std::string> split_names(const std::string& text) {
+  std::vector<std::string> names;
+  std::string current;
+  for (char ch : text + ",") {
+    if (ch != ',') {
+      current += ch;
+      continue;
+    }
+    names.push_back(current);
+    current.clear();
+  }
+  return names;
+}
+
+// Every check happens here, before the output folder is created.
+BenchOptions parse_options(const BenchFlags& flags) {
+  BenchOptions o;
+  if (flags.suite != "thesis") throw UsageError("--suite: must be thesis, got '" + flags.suite + "'");
+  if (flags.out.empty()) throw UsageError("--out: needs a folder for the results, got ''");
+  std::error_code ec;
+  const fs::path out(flags.out);
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+    throw UsageError("--out: is not a folder, got '" + flags.out + "'");
+  }
+  fs::path existing = fs::absolute(out, ec);
+  while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
+  if (existing.empty() || ::access(existing.c_str(), W_OK) != 0) {
+    throw UsageError("--out: folder is not writable, got '" + flags.out + "'");
+  }
+  o.out = flags.out;
+  o.quick = flags.quick;
+  if (flags.only_given) {
+    const std::vector<std::string> valid = bench_experiment_names();
+    std::string valid_text;
+    for (const std::string& v : valid) valid_text += (valid_text.empty() ? "" : "|") + v;
+    for (const std::string& name : split_names(flags.only)) {
+      if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
+        throw UsageError("--only: must be one or more of " + valid_text + " (comma-separated), got '" + flags.only + "'");
+      }
+      o.only.push_back(name);
+    }
+  }
+  if (flags.threads_given) {
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(flags.threads.c_str(), &end, 10);
+    if (flags.threads.empty() || errno != 0 || *end != '\0' || v < 0 || v > 1024) {
+      throw UsageError("--threads: must be an integer in [0, 1024], got '" + flags.threads + "'");
+    }
+    o.threads = static_cast<int>(v);
+  }
+  return o;
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const std::size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  }
+  return "unknown CPU";
+}
+
+std::string utc_date() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", &tm);
+  return buffer;
+}
+
+std::string command_text(const BenchOptions& o) {
+  std::string c = "levrt bench --suite thesis --out " + o.out;
+  if (o.quick) c += " --quick";
+  if (!o.only.empty()) {
+    c += " --only ";
+    for (std::size_t i = 0; i < o.only.size(); ++i) c += (i ? "," : "") + o.only[i];
+  }
+  if (o.threads > 0) c += " --threads " + std::to_string(o.threads);
+  return c;
+}
+
+bool selected(const BenchOptions& o, const std::string& name) {
+  return o.only.empty() || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
+}
+
+}  // namespace
+
+std::vector<std::string> bench_experiment_names() {
+  std::vector<std::string> names;
+  for (const bench::ExperimentInfo& e : bench::experiments()) names.emplace_back(e.name);
+  return names;
+}
+
+void add_bench_flags(CLI::App& command, BenchFlags& flags) {
+  command.add_option("--suite", flags.suite, "experiment suite (thesis)");
+  command.add_option("--out", flags.out, "folder for results.md, the CSVs and the plots (created if missing)");
+  command.add_flag("--quick", flags.quick, "small sizes, for CI: checks the harness, not the figures");
+  std::string names;
+  for (const std::string& n : bench_experiment_names()) names += (names.empty() ? "" : ", ") + n;
+  command.add_option("--only", flags.only, "run only these experiments (comma-separated: " + names + ")")
+      ->each([&flags](const std::string&) { flags.only_given = true; });
+  command.add_option("--threads", flags.threads, "worker threads (0 = all cores)")
+      ->each([&flags](const std::string&) { flags.threads_given = true; });
+}
+
+int run_bench(const BenchFlags& flags) {
+  const BenchOptions options = parse_options(flags);
+#ifndef NDEBUG
+  std::fprintf(stderr, "levrt bench: warning: not a Release build, the timings are not representative\n");
+#endif
+  const auto started = std::chrono::steady_clock::now();
+  bench::BenchRun run(bench::thesis_suite(options.quick), options.threads);
+
+  // Planning pass: every selected experiment walks its measurements without rendering, so the
+  // progress estimate knows the whole suite.
+  for (const bench::ExperimentInfo& e : bench::experiments()) {
+    if (!selected(options, e.name)) continue;
+    run.begin_experiment(e.name);
+    e.run(run, options.out);
+  }
+  run.start_running();
+  fs::create_directories(options.out);
+
+  std::vector<bench::Section> sections;
+  std::vector<std::string> names;
+  for (const bench::ExperimentInfo& e : bench::experiments()) {
+    if (!selected(options, e.name)) continue;
+    run.begin_experiment(e.name);
+    sections.push_back(e.run(run, options.out));
+    names.emplace_back(e.name);
+  }
+
+  const bench::SuiteConfig& c = run.config();
+  const unsigned hardware = std::thread::hardware_concurrency();
+  std::string md = "# levrt bench: the thesis' experiments\n\n";
+  md += "Produced by `" + command_text(options) + "` on " + utc_date() + ": " + cpu_model() + ", " +
+        std::to_string(hardware) + " hardware threads, " +
+        (options.threads > 0 ? std::to_string(options.threads) : "all (" + std::to_string(hardware) + ")") +
+        " worker threads, " +
+#ifdef NDEBUG
+        "Release build.\n\n";
+#else
+        "**not a Release build: timings are not representative**.\n\n";
+#endif
+  if (c.quick) md += "**Quick run** (`--quick`): small images and light counts. It checks the harness; its figures are not the experiments'.\n\n";
+  md += "Every figure is from one " + std::to_string(c.width) + "x" + std::to_string(c.height) +
+        " frame, one sample per pixel at the pixel centres, Whitted recursion to depth 5. Times are wall-clock "
+        "seconds of the render passes (the scene, its light hierarchy and its Embree BVH are built before and "
+        "not counted; refitting and selector set-up are), the median of " +
+        std::to_string(c.runs) +
+        " runs; every ratio compares measurements of this same run. Counts (lights tested, volumes checked) are "
+        "averages per shading point, primary and secondary hits alike. The thesis' figures (Appendix B) were "
+        "measured on a 300 MHz SUN ULTRA10: compare its ratios and counts, not its seconds.\n\n";
+  md += "## Headline: where each target stands\n\n| target | goal | thesis | measured | status |\n|---|---|---|---|---|\n";
+  for (const bench::Section& s : sections) {
+    for (const bench::HeadlineRow& r : s.headline) {
+      md += "| " + r.target + " | " + r.goal + " | " + r.thesis + " | " + r.measured + " | " + r.status + " |\n";
+    }
+  }
+  md += "\nExperiments:";
+  for (std::size_t i = 0; i < names.size(); ++i) md += std::string(i ? "," : "") + " [" + names[i] + "](#" + names[i] + ")";
+  md += ". Each has its CSV (`" + (names.empty() ? std::string("name") : names.front()) + ".csv`, ...) next to this file.\n\n";
+  for (std::size_t i = 0; i < sections.size(); ++i) md += "<a id=\"" + names[i] + "\"></a>\n\n" + sections[i].markdown + "\n";
+  renderer::write_text_file(options.out + "/results.md", md);
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::printf("levrt bench: wrote %s/results.md and %zu experiments' CSVs and plots in %.0f s\n", options.out.c_str(),
+              sections.size(), seconds);
+  return 0;
+}
+
+}  // namespace app

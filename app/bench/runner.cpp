@@ -1,0 +1,292 @@
+#include "app/bench/runner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/bench/table.h"
+#include "app/render_command.h"
+#include "lev/light_hierarchy.h"
+#include "renderer/pixel_error.h"
+#include "scenes/scene_models.h"
+
+namespace app::bench {
+
+SuiteConfig thesis_suite(bool quick) {
+  SuiteConfig c;
+  if (!quick) return c;
+  // The same experiments at sizes that finish in seconds; the figures mean little, the files
+  // and their columns are what CI checks.
+  c.quick = true;
+  c.width = 64;
+  c.height = 48;
+  c.max_lights = 256;
+  c.max_scaling_lights = 1024;
+  c.max_memory_lights = 4096;
+  c.subsample_above = 64;  // so that the subsampled path runs too
+  c.subsample_stride = 2;
+  c.lev_subsample_tests = 150.0;
+  c.fraction_tolerances = {0.0, 0.002, 0.01};
+  c.error_tolerances = {0.002, 0.01};
+  c.trade_lights.clear();
+  c.trade_default_lights = 64;
+  c.trade_lev_tolerances = {0.1, 0.01, 0.001};
+  c.trade_ast_tolerances = {0.1, 0.01};
+  c.scaling_base_lights = 64;
+  return c;
+}
+
+double Measurement::full_frame_seconds() const {
+  if (pixels == 0) return kNaN;
+  return seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
+}
+
+double Measurement::lights_tested_avg() const {
+  return totals.shading_points ? static_cast<double>(totals.lights_tested) / totals.shading_points : kNaN;
+}
+
+double Measurement::nodes_visited_avg() const {
+  return totals.shading_points ? static_cast<double>(totals.nodes_visited) / totals.shading_points : kNaN;
+}
+
+double Measurement::shadow_rays_avg() const {
+  return totals.shading_points ? static_cast<double>(totals.shadow_rays) / totals.shading_points : kNaN;
+}
+
+PixelErrors pixel_errors(const Measurement& image, const Measurement& reference) {
+  PixelErrors e;
+  if (image.rgb.empty() || image.rgb.size() != reference.rgb.size()) return e;
+  const renderer::PixelErrorStats s =
+      renderer::summarize_pixel_error(renderer::pixel_error_pct(image.rgb, reference.rgb));
+  e.average_pct = s.average_pct;
+  e.max_pct = s.max_pct;
+  return e;
+}
+
+std::string pixels_text(int stride) { return stride <= 1 ? "all" : "1/" + std::to_string(stride * stride); }
+
+BenchRun::BenchRun(SuiteConfig config, int threads) : config_(std::move(config)), threads_(threads) {
+  placeholder_.planned_only = true;
+}
+
+void BenchRun::start_running() {
+  planning_ = false;
+  started_ = std::chrono::steady_clock::now();
+}
+
+void BenchRun::begin_experiment(const std::string& name) { experiment_ = name; }
+
+std::vector<std::string> BenchRun::available_scenes() const {
+  std::vector<std::string> names;
+  for (const std::string& s : config_.scenes) {
+    if (scenes::find_scene_model(s)) names.push_back(s);
+  }
+  return names;
+}
+
+std::vector<std::string> BenchRun::missing_scenes() const {
+  std::vector<std::string> names;
+  for (const std::string& s : config_.scenes) {
+    if (!scenes::find_scene_model(s)) names.push_back(s);
+  }
+  return names;
+}
+
+std::vector<int> BenchRun::levels(const std::string& scene, std::uint64_t lo, std::uint64_t hi) const {
+  std::vector<int> out;
+  const scenes::SceneModel* model = scenes::find_scene_model(scene);
+  if (!model) return out;
+  for (int level = model->min_level; level <= model->max_level; ++level) {
+    const std::uint64_t n = model->light_count(level);
+    if (n >= lo && n <= hi) out.push_back(level);
+  }
+  return out;
+}
+
+std::uint64_t BenchRun::light_count(const std::string& scene, int level) const {
+  const scenes::SceneModel* model = scenes::find_scene_model(scene);
+  return model ? model->light_count(level) : 0;
+}
+
+namespace {
+
+// Lights shadow-tested per shading point, roughly (thesis Tables 12, 14 and our own runs): what
+// the progress estimate and the subsample policy go by, not a figure of the report.
+double estimated_tests(const std::string& method, std::uint64_t lights, double tolerance) {
+  const double all = 0.8 * static_cast<double>(lights);  // the lights above the surface
+  if (method == "rt") return all;
+  if (method == "ast") return 0.25 * all;  // evaluates every light, tests a fraction of them
+  if (tolerance <= 0.0) return all;
+  return std::min(all, 40.0 * 0.01 / tolerance);
+}
+
+}  // namespace
+
+int BenchRun::stride_for(const std::string& scene, int level, const std::string& method, double tolerance) {
+  const std::uint64_t lights = light_count(scene, level);
+  if (method != "lev") return lights > config_.subsample_above ? config_.subsample_stride : 1;
+  return lev_tests_per_point(scene, level, tolerance) > config_.lev_subsample_tests ? config_.subsample_stride : 1;
+}
+
+double BenchRun::lev_tests_per_point(const std::string& scene, int level, double tolerance) {
+  constexpr int kProbeStride = 8;
+  if (planning_) return estimated_tests("lev", light_count(scene, level), tolerance);
+  return measure({scene, level, "lev", tolerance, kProbeStride, 1}).lights_tested_avg();
+}
+
+double BenchRun::render_cost(const std::string& method, std::uint64_t lights, double tolerance, int stride) const {
+  const double pixels = std::ceil(static_cast<double>(config_.width) / stride) *
+                        std::ceil(static_cast<double>(config_.height) / stride);
+  return pixels * 1.25 * (3.0 + 1.2 * estimated_tests(method, lights, tolerance));
+}
+
+BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
+  // rt does not depend on the tolerance: one reference serves every tolerance.
+  return {r.scene, r.level, r.method, r.method == "rt" ? 0.0 : r.tolerance, r.stride};
+}
+
+LoadedScene& BenchRun::scene(const std::string& name, int level) {
+  if (!loaded_ || loaded_name_ != name || loaded_level_ != level) {
+    loaded_.reset();  // free the previous scene first: the largest ones are big
+    Settings s;
+    s.scene = name;
+    s.level = level;
+    loaded_ = load_scene(s);
+    loaded_name_ = name;
+    loaded_level_ = level;
+  }
+  return *loaded_;
+}
+
+const Measurement& BenchRun::measure(const MeasureRequest& request) { return *measure_together({request}).front(); }
+
+std::vector<const Measurement*> BenchRun::measure_together(const std::vector<MeasureRequest>& requests) {
+  std::vector<const Measurement*> out(requests.size(), &placeholder_);
+  if (planning_) {
+    for (const MeasureRequest& r : requests) {
+      int& planned = planned_runs_[key_of(r)];
+      if (planned >= r.runs) continue;
+      planned = r.runs;
+      units_planned_ += render_cost(r.method, light_count(r.scene, r.level), r.tolerance, r.stride) * r.runs;
+      jobs_planned_[experiment_] += 1;
+    }
+    if (!requests.empty()) {
+      placeholder_.request = requests.back();
+      placeholder_.lights = light_count(requests.back().scene, requests.back().level);
+    }
+    return out;
+  }
+
+  // What is not cached yet, with its settings.
+  struct Pending {
+    std::size_t index;
+    Settings settings;
+    Measurement m;
+    RenderResult last;
+    double spent = 0.0;
+  };
+  std::vector<Pending> pending;
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    const MeasureRequest& r = requests[i];
+    const auto found = cache_.find(key_of(r));
+    if (found != cache_.end() && found->second.request.runs >= r.runs) {
+      out[i] = &found->second;
+      continue;
+    }
+    Pending p{i, Settings{}, Measurement{}, RenderResult{}, 0.0};
+    p.settings.scene = r.scene;
+    p.settings.level = r.level;
+    p.settings.method = r.method;
+    p.settings.tolerance = r.tolerance;
+    p.settings.width = config_.width;
+    p.settings.height = config_.height;
+    p.settings.threads = threads_;
+    p.settings.subsample = r.stride;
+    p.m.request = r;
+    pending.push_back(std::move(p));
+  }
+  // Round-robin: run k of every request before run k+1 of any, so a change in the machine's load
+  // (it is shared) falls on all the methods of a comparison alike. Quick renders get extra runs,
+  // up to kMaxRuns or kCheapSeconds spent, for a steadier median.
+  constexpr int kMaxRuns = 9;
+  constexpr double kCheapSeconds = 2.0;
+  for (int round = 0;; ++round) {
+    bool any = false;
+    for (Pending& p : pending) {
+      const bool base = round < p.m.request.runs;
+      const bool extra = p.m.request.runs > 1 && round < kMaxRuns && p.spent < kCheapSeconds;
+      if (!base && !extra) continue;
+      const MeasureRequest& r = p.m.request;
+      LoadedScene& loaded = scene(r.scene, r.level);
+      p.last = render_image(loaded, p.settings, r.method);
+      p.m.run_seconds.push_back(p.last.seconds);
+      p.spent += p.last.seconds;
+      any = true;
+    }
+    if (!any) break;
+  }
+
+  for (Pending& p : pending) {
+    Measurement& m = p.m;
+    const MeasureRequest& r = m.request;
+    LoadedScene& loaded = scene(r.scene, r.level);
+    m.lights = loaded.scene.lights.light_count;
+    std::vector<double> sorted = m.run_seconds;
+    std::sort(sorted.begin(), sorted.end());
+    m.seconds = sorted[sorted.size() / 2];
+    m.full_pixels = static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
+    m.totals = renderer::sum_framebuffer(p.last.framebuffer);
+    m.pixels = m.totals.samples;
+    m.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
+    const std::vector<std::uint8_t> all = renderer::framebuffer_rgb8(p.last.framebuffer);
+    for (std::size_t i = 0; i < p.last.framebuffer.samples.size(); ++i) {
+      if (p.last.framebuffer.samples[i] == 0) continue;
+      m.rgb.insert(m.rgb.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * i),
+                   all.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+    }
+    const int runs = static_cast<int>(m.run_seconds.size());
+    Measurement& stored = cache_[key_of(r)] = std::move(m);
+    out[p.index] = &stored;
+
+    char what[256];
+    std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s", r.scene.c_str(),
+                  format_count(stored.lights).c_str(), r.method.c_str(), r.tolerance, pixels_text(r.stride).c_str(),
+                  stored.seconds, runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
+    report(what, render_cost(r.method, stored.lights, r.tolerance, r.stride) * r.runs);
+  }
+  return out;
+}
+
+bool BenchRun::run_job(const std::string& what, double cost_units, const std::function<void()>& body) {
+  if (planning_) {
+    units_planned_ += cost_units;
+    jobs_planned_[experiment_] += 1;
+    return false;
+  }
+  body();
+  report(what, cost_units);
+  return true;
+}
+
+void BenchRun::report(const std::string& what, double cost_units) {
+  units_done_ += cost_units;
+  const int done = ++jobs_done_[experiment_];
+  const int planned = std::max(done, jobs_planned_[experiment_]);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  const double fraction = units_planned_ > 0.0 ? std::min(1.0, units_done_ / units_planned_) : 1.0;
+  std::string eta;
+  if (fraction >= 1.0) {
+    eta = "finishing";
+  } else if (units_done_ > 0.0 && elapsed > 0.5) {
+    const double left = elapsed * (units_planned_ - units_done_) / units_done_;
+    eta = left >= 90.0 ? "about " + std::to_string(static_cast<int>(std::lround(left / 60.0))) + " min left"
+                       : "about " + std::to_string(static_cast<int>(std::lround(left))) + " s left";
+  } else {
+    eta = "estimating";
+  }
+  std::fprintf(stderr, "levrt bench: [%s %d/%d] %s | %d%% done, %s\n", experiment_.c_str(), done, planned,
+               what.c_str(), static_cast<int>(100.0 * fraction), eta.c_str());
+  std::fflush(stderr);
+}
+
+}  // namespace app::bench

@@ -1,0 +1,161 @@
+// The machinery every experiment of `levrt bench` shares: the suite's sizes, one scene loaded at
+// a time, measurements cached by what they measured (an rt reference or a lev run serves several
+// experiments), medians of repeated runs, and progress on stderr with an estimate of the time
+// left. The suite runs twice: a planning pass walks every experiment without rendering (each
+// measurement only adds its estimated cost), then the real pass renders, so the estimate covers
+// the whole suite from the first line.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "app/scene_loading.h"
+#include "renderer/framebuffer.h"
+
+namespace app::bench {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct SuiteConfig {
+  bool quick = false;
+  int width = 320;  // thesis 5.4: every image is 320x240
+  int height = 240;
+  int runs = 3;  // every timing is the median of this many runs
+  std::vector<std::string> scenes{"building", "maze", "hall"};
+  std::uint64_t min_lights = 40;     // the thesis starts at 45 (maze) and 64 lights
+  std::uint64_t max_lights = 16384;  // speed, fraction, error: the thesis' range
+  std::uint64_t max_scaling_lights = 1u << 20;
+  std::uint64_t max_memory_lights = 1u << 20;
+  // rt and ast above this many lights render one pixel of every subsample_stride^2 block and are
+  // scaled to the whole frame; lev too when it shadow-tests more than lev_subsample_tests lights
+  // per point (tolerance 0, or the hall, where most lights reach every point).
+  std::uint64_t subsample_above = 4096;
+  int subsample_stride = 4;
+  double lev_subsample_tests = 1500.0;
+  double tolerance = 0.01;  // thesis Test 1.1
+  std::vector<double> scaling_tolerances{0.001, 0.01, 0.1};                              // Tables 4, 5
+  std::vector<double> fraction_tolerances{0.0, 0.0001, 0.002, 0.004, 0.006, 0.008, 0.01};  // Tables 6-9
+  std::vector<double> error_tolerances{0.002, 0.004, 0.006, 0.008, 0.01};               // Tables 10, 11
+  // trade: per scene, the level nearest this many lights (the hall, where every light reaches
+  // everything, at fewer: its rt and ast frames take minutes at 1,024).
+  std::map<std::string, std::uint64_t> trade_lights{{"building", 1024}, {"maze", 765}, {"hall", 256}};
+  std::uint64_t trade_default_lights = 1024;
+  std::vector<double> trade_lev_tolerances{0.1, 0.03, 0.01, 0.003, 0.001};
+  std::vector<double> trade_ast_tolerances{1.0, 0.3, 0.1, 0.03, 0.01};
+  std::uint64_t scaling_base_lights = 1024;  // the scaling target compares with this count
+};
+
+SuiteConfig thesis_suite(bool quick);
+
+struct MeasureRequest {
+  std::string scene;
+  int level = 0;
+  std::string method = "lev";
+  double tolerance = 0.01;
+  int stride = 1;  // RenderSettings::pixel_stride
+  int runs = 1;    // 1 for counts and images (deterministic); config.runs for timings, which take
+                   // more runs (up to 9) when they are quick
+};
+
+struct Measurement {
+  MeasureRequest request;  // runs = how many were made
+  std::uint64_t lights = 0;
+  bool planned_only = false;  // the planning pass: no figures
+  double seconds = kNaN;      // median wall time of the render passes
+  std::vector<double> run_seconds;
+  std::uint64_t pixels = 0;  // pixels rendered
+  std::uint64_t full_pixels = 0;
+  renderer::FramebufferTotals totals;
+  std::size_t hierarchy_bytes = 0;
+  std::vector<std::uint8_t> rgb;  // the rendered pixels, 8-bit RGB, for pixel errors
+
+  // The median time scaled to every pixel of the frame (the identity without a subsample).
+  double full_frame_seconds() const;
+  double lights_tested_avg() const;
+  double nodes_visited_avg() const;
+  double shadow_rays_avg() const;
+};
+
+struct PixelErrors {
+  double average_pct = kNaN;
+  double max_pct = kNaN;
+};
+// Thesis 5.4.2.4 against the reference on the same pixels; NaN when they do not match.
+PixelErrors pixel_errors(const Measurement& image, const Measurement& reference);
+
+// "all" or "1/16" for a stride.
+std::string pixels_text(int stride);
+
+class BenchRun {
+ public:
+  BenchRun(SuiteConfig config, int threads);
+
+  const SuiteConfig& config() const { return config_; }
+  int threads() const { return threads_; }
+  bool planning() const { return planning_; }
+  // Ends the planning pass: from now on measurements render.
+  void start_running();
+  void begin_experiment(const std::string& name);
+
+  // The suite's scenes present in this build (the table may not have them all yet).
+  std::vector<std::string> available_scenes() const;
+  std::vector<std::string> missing_scenes() const;
+  // Levels of `scene` whose light count lies in [lo, hi].
+  std::vector<int> levels(const std::string& scene, std::uint64_t lo, std::uint64_t hi) const;
+  std::uint64_t light_count(const std::string& scene, int level) const;
+  // The pixel stride a measurement uses: rt and ast subsample above config.subsample_above lights;
+  // lev when it would shadow-test more than config.lev_subsample_tests lights per point (found by
+  // a probe render while running, estimated while planning).
+  int stride_for(const std::string& scene, int level, const std::string& method, double tolerance);
+  // lev's lights tested per shading point. Its cost depends on how many lights the scene puts in
+  // reach, which only a render tells (the hall puts most of them in reach): a probe render on one
+  // pixel of every 8x8 block counts them. Counts are deterministic, so every decision made from
+  // them is the same on every run of the suite.
+  double lev_tests_per_point(const std::string& scene, int level, double tolerance);
+
+  // Renders (or, while planning, only counts) the request; cached by what it measured, so asking
+  // again with no more runs than before returns the earlier measurement.
+  const Measurement& measure(const MeasureRequest& request);
+  // Several requests on one scene and level, their runs interleaved (run k of each before run
+  // k+1 of any), so that the ratios between them see the same machine load.
+  std::vector<const Measurement*> measure_together(const std::vector<MeasureRequest>& requests);
+
+  // The loaded scene (built on first use; one scene is kept at a time). Not while planning.
+  LoadedScene& scene(const std::string& name, int level);
+
+  // A job that is not a render: while planning only its estimated cost counts; otherwise it
+  // runs and reports progress. Returns whether it ran.
+  bool run_job(const std::string& what, double cost_units, const std::function<void()>& body);
+
+  // Estimated cost of a render in the units the progress estimate uses (about one per ray).
+  double render_cost(const std::string& method, std::uint64_t lights, double tolerance, int stride) const;
+
+ private:
+  using Key = std::tuple<std::string, int, std::string, double, int>;
+  Key key_of(const MeasureRequest& request) const;
+  void report(const std::string& what, double cost_units);
+
+  SuiteConfig config_;
+  int threads_;
+  bool planning_ = true;
+  std::map<Key, Measurement> cache_;
+  std::map<Key, int> planned_runs_;
+  Measurement placeholder_;
+  std::unique_ptr<LoadedScene> loaded_;
+  std::string loaded_name_;
+  int loaded_level_ = -1;
+  std::string experiment_;
+  std::map<std::string, int> jobs_planned_, jobs_done_;
+  double units_planned_ = 0.0, units_done_ = 0.0;
+  std::chrono::steady_clock::time_point started_;
+};
+
+}  // namespace app::bench

@@ -1,0 +1,45 @@
+#include "app/export_command.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "app/render_command.h"
+#include "app/scene_loading.h"
+#include "renderer/image_io.h"
+#include "scenes/scene_file.h"
+
+namespace app {
+
+void add_export_flags(CLI::App& command, ExportFlags& flags) {
+  flags.scene_option = command.add_option("--scene", flags.scene, find_setting("scene")->help);
+  flags.level_option = command.add_option("--level", flags.level, find_setting("level")->help);
+  flags.lights_option =
+      command.add_option("--lights", flags.lights, "light count (selects the level with that many lights)");
+  flags.out_option = command.add_option("--out", flags.out, "scene file to write (JSON)");
+}
+
+int run_export(const ExportFlags& flags) {
+  Settings settings;
+  if (flags.scene_option->count() > 0) set_setting(settings, *find_setting("scene"), flags.scene);
+  if (flags.level_option->count() > 0) set_setting(settings, *find_setting("level"), flags.level);
+  if (flags.lights_option->count() > 0) {
+    if (flags.level_option->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
+    char* end = nullptr;
+    const unsigned long long n = std::strtoull(flags.lights.c_str(), &end, 10);
+    if (flags.lights.empty() || *end != '\0' || flags.lights[0] == '-') {
+      throw UsageError("--lights: must be a light count of the scene, got '" + flags.lights + "'");
+    }
+    apply_light_count(settings, n);
+  }
+  if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
+  RenderOutputs outputs;
+  outputs.image = flags.out;  // the same checks as render's --out
+  check_output_paths(outputs);
+  const scenes::SceneDescription description = describe_scene(settings);
+  renderer::write_text_file(flags.out, scenes::scene_file_json(description));
+  std::printf("wrote %s: %s level %d, %zu masters\n", flags.out.c_str(), description.name.c_str(),
+              description.level, description.masters.size());
+  return 0;
+}
+
+}  // namespace app

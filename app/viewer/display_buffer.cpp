@@ -1,0 +1,82 @@
+#include "app/viewer/display_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace app::viewer {
+
+void mean_rgb8(const renderer::Framebuffer& f, std::size_t pixel, std::uint8_t* rgb) {
+  if (f.samples[pixel] == 0) {
+    rgb[0] = rgb[1] = rgb[2] = 0;
+    return;
+  }
+  const glm::vec3 mean = f.radiance_sum[pixel] / static_cast<float>(f.samples[pixel]);
+  for (int c = 0; c < 3; ++c) {
+    const float v = std::isnan(mean[c]) ? 0.0f : std::clamp(mean[c], 0.0f, 1.0f);
+    rgb[c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+  }
+}
+
+TileUpdate copy_tile(const renderer::Framebuffer& f, std::uint64_t generation, int tile, int pass,
+                     const TileRect& rect) {
+  TileUpdate u;
+  u.generation = generation;
+  u.image_width = f.width;
+  u.image_height = f.height;
+  u.tile = tile;
+  u.pass = pass;
+  u.rect = rect;
+  const auto count = static_cast<std::size_t>(rect.x1 - rect.x0) * static_cast<std::size_t>(rect.y1 - rect.y0);
+  u.rgb.resize(3 * count);
+  u.samples.resize(count);
+  u.lights_tested.resize(count);
+  u.nodes_visited.resize(count);
+  std::size_t k = 0;
+  for (int y = rect.y0; y < rect.y1; ++y) {
+    for (int x = rect.x0; x < rect.x1; ++x, ++k) {
+      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(f.width) + static_cast<std::size_t>(x);
+      mean_rgb8(f, i, &u.rgb[3 * k]);
+      const std::uint32_t n = f.samples[i];
+      u.samples[k] = n;
+      u.lights_tested[k] = n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;
+      u.nodes_visited[k] = n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
+      TileTotals& t = u.totals;
+      t.samples += n;
+      t.shading_points += f.shading_points[i];
+      t.lights_tested += f.lights_tested[i];
+      t.nodes_visited += f.nodes_visited[i];
+      t.shadow_rays += f.shadow_rays[i];
+      if (f.shading_points[i] > 0) {
+        const auto per_point = static_cast<std::uint32_t>(f.lights_tested[i] / f.shading_points[i]);
+        t.lights_tested_max = std::max(t.lights_tested_max, per_point);
+      }
+    }
+  }
+  return u;
+}
+
+void DisplayBuffer::raise_floor(std::uint64_t generation) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (generation <= floor_) return;
+  floor_ = generation;
+  updates_.erase(std::remove_if(updates_.begin(), updates_.end(),
+                                [&](const TileUpdate& u) { return u.generation < floor_; }),
+                 updates_.end());
+}
+
+void DisplayBuffer::post(TileUpdate update) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (update.generation < floor_) return;
+  updates_.push_back(std::move(update));
+}
+
+TakenTiles DisplayBuffer::take_all() {
+  TakenTiles taken;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  taken.floor = floor_;
+  taken.updates.swap(updates_);
+  return taken;
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,72 @@
+// How finished tiles travel from the tile workers to the UI thread. The tile-done callback runs
+// on a worker right after a tile's pixels are final; it copies them (colour, samples, counters)
+// out of the framebuffer into a TileUpdate and posts it to a DisplayBuffer under a mutex. The UI
+// thread takes everything posted so far in one swap each frame. Either side holds the lock only
+// for a push or a swap, so the UI never waits for the tracer and never reads framebuffer pixels
+// that a worker may be writing.
+#pragma once
+
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include "renderer/framebuffer.h"
+
+namespace app::viewer {
+
+// Sums over a tile's pixels, every pass so far (the same quantities as FramebufferTotals).
+struct TileTotals {
+  std::uint64_t samples = 0;
+  std::uint64_t shading_points = 0;
+  std::uint64_t lights_tested = 0;
+  std::uint64_t nodes_visited = 0;
+  std::uint64_t shadow_rays = 0;
+  std::uint32_t lights_tested_max = 0;  // per shading point, over pixels (pixel mean)
+};
+
+struct TileRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixels, x1 and y1 exclusive
+};
+
+struct TileUpdate {
+  std::uint64_t generation = 0;  // the render it belongs to (the request serial)
+  int image_width = 0;
+  int image_height = 0;
+  int tile = 0;
+  int pass = 0;  // the pass that just finished this tile
+  TileRect rect;
+  std::vector<std::uint8_t> rgb;  // mean colour, 8-bit RGB, rows of the tile
+  std::vector<std::uint32_t> samples;
+  std::vector<float> lights_tested;  // per sample
+  std::vector<float> nodes_visited;  // per sample
+  TileTotals totals;
+};
+
+// 8-bit colour of a mean radiance exactly as renderer::framebuffer_rgb8 computes it, so that
+// the viewer's pixel errors equal `levrt render --reference rt`'s.
+void mean_rgb8(const renderer::Framebuffer& framebuffer, std::size_t pixel, std::uint8_t* rgb);
+
+// Copies one tile out of the framebuffer; call only while that tile's pixels are final.
+TileUpdate copy_tile(const renderer::Framebuffer& framebuffer, std::uint64_t generation, int tile, int pass,
+                     const TileRect& rect);
+
+struct TakenTiles {
+  std::uint64_t floor = 0;  // renders older than this are gone: their pixels are stale
+  std::vector<TileUpdate> updates;
+};
+
+class DisplayBuffer {
+ public:
+  // Drops updates of renders older than `generation`, queued or posted later. The worker raises
+  // the floor whenever it ends a render, so the UI never sees tiles of a render that is gone.
+  void raise_floor(std::uint64_t generation);
+  void post(TileUpdate update);
+  TakenTiles take_all();
+
+ private:
+  std::mutex mutex_;
+  std::uint64_t floor_ = 0;
+  std::vector<TileUpdate> updates_;
+};
+
+}  // namespace app::viewer

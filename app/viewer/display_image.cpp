@@ -1,0 +1,197 @@
+#include "app/viewer/display_image.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "renderer/pixel_error.h"
+
+namespace app::viewer {
+namespace {
+
+constexpr std::uint8_t kNotRendered[3] = {38, 38, 42};
+
+std::size_t pixel_count(const DisplayImage& image) {
+  return static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+}
+
+void start_generation(DisplayImage& image, std::uint64_t generation, int width, int height) {
+  const bool same_size = width == image.width && height == image.height;
+  image.width = width;
+  image.height = height;
+  image.generation = generation;
+  const std::size_t n = pixel_count(image);
+  if (!same_size) image.rgb.assign(3 * n, 0);
+  image.first_pass_rgb.assign(3 * n, 0);
+  image.samples.assign(n, 0);
+  image.lights_tested.assign(n, 0.0f);
+  image.nodes_visited.assign(n, 0.0f);
+  image.tile_totals.clear();
+  image.tile_seen.clear();
+  image.tiles_seen = 0;
+  image.pass = 0;
+  image.tiles_done_in_pass = 0;
+}
+
+void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
+  const auto tile = static_cast<std::size_t>(u.tile);
+  if (tile >= image.tile_totals.size()) {
+    image.tile_totals.resize(tile + 1);
+    image.tile_seen.resize(tile + 1, 0);
+  }
+  image.tile_totals[tile] = u.totals;
+  if (!image.tile_seen[tile]) {
+    image.tile_seen[tile] = 1;
+    image.tiles_seen += 1;
+  }
+  if (u.pass != image.pass) {
+    image.pass = u.pass;
+    image.tiles_done_in_pass = 0;
+  }
+  image.tiles_done_in_pass += 1;
+  std::size_t k = 0;
+  for (int y = u.rect.y0; y < u.rect.y1; ++y) {
+    for (int x = u.rect.x0; x < u.rect.x1; ++x, ++k) {
+      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x);
+      image.samples[i] = u.samples[k];
+      image.lights_tested[i] = u.lights_tested[k];
+      image.nodes_visited[i] = u.nodes_visited[k];
+      // Pixels skipped by a subsample keep the backdrop.
+      if (u.samples[k] == 0) continue;
+      for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
+      if (u.samples[k] == 1) {
+        for (int c = 0; c < 3; ++c) image.first_pass_rgb[3 * i + c] = u.rgb[3 * k + c];
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void clear_display_image(DisplayImage& image) {
+  const std::uint64_t version = image.version;
+  image = DisplayImage{};
+  image.version = version + 1;
+}
+
+bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& updates) {
+  bool changed = false;
+  for (const TileUpdate& u : updates) {
+    if (u.generation < image.generation) continue;
+    if (u.generation > image.generation || image.width != u.image_width || image.height != u.image_height) {
+      start_generation(image, u.generation, u.image_width, u.image_height);
+    }
+    apply_tile_update(image, u);
+    changed = true;
+  }
+  if (changed) image.version += 1;
+  return changed;
+}
+
+TileTotals sum_tile_totals(const DisplayImage& image) {
+  TileTotals sum;
+  for (const TileTotals& t : image.tile_totals) {
+    sum.samples += t.samples;
+    sum.shading_points += t.shading_points;
+    sum.lights_tested += t.lights_tested;
+    sum.nodes_visited += t.nodes_visited;
+    sum.shadow_rays += t.shadow_rays;
+    sum.lights_tested_max = std::max(sum.lights_tested_max, t.lights_tested_max);
+  }
+  return sum;
+}
+
+ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference) {
+  ErrorImage e;
+  e.image_version = image.version;
+  e.reference_version = reference.version;
+  e.pct.assign(pixel_count(image), -1.0f);
+  if (image.width != reference.width || image.height != reference.height) return e;
+  std::vector<std::size_t> compared;
+  std::vector<std::uint8_t> a, b;
+  for (std::size_t i = 0; i < e.pct.size(); ++i) {
+    if (image.samples[i] == 0 || reference.samples[i] == 0) continue;
+    compared.push_back(i);
+    a.insert(a.end(), image.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i),
+             image.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+    b.insert(b.end(), reference.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i),
+             reference.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+  }
+  const std::vector<double> pct = renderer::pixel_error_pct(a, b);
+  const renderer::PixelErrorStats stats = renderer::summarize_pixel_error(pct);
+  for (std::size_t k = 0; k < compared.size(); ++k) e.pct[compared[k]] = static_cast<float>(pct[k]);
+  e.average_pct = stats.average_pct;
+  e.max_pct = stats.max_pct;
+  e.pixels_compared = compared.size();
+  return e;
+}
+
+std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
+                                    renderer::HeatmapRange& range) {
+  const std::size_t n = pixel_count(image);
+  std::vector<std::uint8_t> rgb(3 * n);
+  range = {};
+  if (mode == ViewMode::image) {
+    for (std::size_t i = 0; i < n; ++i) {
+      // Colours of the previous render (same size) stay visible, dimmed, until redrawn.
+      const bool fresh = image.samples[i] > 0;
+      for (int c = 0; c < 3; ++c) {
+        const int v = image.rgb[3 * i + c];
+        rgb[3 * i + c] = static_cast<std::uint8_t>(fresh ? v : v * 2 / 5);
+      }
+    }
+    return rgb;
+  }
+  std::vector<double> values(n, 0.0);
+  std::vector<std::uint8_t> known(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (mode == ViewMode::error) {
+      known[i] = i < error.pct.size() && error.pct[i] >= 0.0f;
+      if (known[i]) values[i] = error.pct[i];
+    } else {
+      known[i] = image.samples[i] > 0;
+      if (known[i]) values[i] = mode == ViewMode::lights ? image.lights_tested[i] : image.nodes_visited[i];
+    }
+  }
+  double lo = std::numeric_limits<double>::max(), hi = 0.0;
+  bool any = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!known[i]) continue;
+    any = true;
+    lo = std::min(lo, values[i]);
+    hi = std::max(hi, values[i]);
+  }
+  if (any) range = {lo, hi};
+  const std::vector<std::uint8_t> heat = renderer::heatmap_rgb8(values, range, true);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[3 * i + c] : kNotRendered[c];
+  }
+  return rgb;
+}
+
+void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
+                       std::vector<std::uint8_t>& rgba, renderer::HeatmapRange& range) {
+  const std::vector<std::uint8_t> rgb = view_rgb8(image, error, mode, range);
+  const std::size_t n = rgb.size() / 3;
+  rgba.resize(4 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    rgba[4 * i] = rgb[3 * i];
+    rgba[4 * i + 1] = rgb[3 * i + 1];
+    rgba[4 * i + 2] = rgb[3 * i + 2];
+    rgba[4 * i + 3] = 255;
+  }
+}
+
+PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y) {
+  PixelInfo p;
+  if (x < 0 || y < 0 || x >= image.width || y >= image.height) return p;
+  const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x);
+  p.samples = image.samples[i];
+  p.rendered = p.samples > 0;
+  for (int c = 0; c < 3; ++c) p.rgb[c] = image.rgb[3 * i + c];
+  p.lights_tested = image.lights_tested[i];
+  p.nodes_visited = image.nodes_visited[i];
+  if (i < error.pct.size() && error.pct[i] >= 0.0f) p.error_pct = error.pct[i];
+  return p;
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,74 @@
+// The UI thread's own copy of a render: finished tiles taken from a DisplayBuffer are written
+// into these per-pixel arrays, and everything the panel shows (texture, hover values, totals,
+// pixel errors) is computed from them on the UI thread. When a new render starts at the same
+// size, the previous colours stay as a dimmed backdrop until their tiles arrive again.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "app/viewer/display_buffer.h"
+#include "app/viewer/view_mode.h"
+#include "renderer/heatmap.h"
+
+namespace app::viewer {
+
+struct DisplayImage {
+  int width = 0;
+  int height = 0;
+  std::uint64_t generation = 0;
+  std::vector<std::uint8_t> rgb;             // latest mean colour
+  std::vector<std::uint8_t> first_pass_rgb;  // pass 0 (pixel centres): what the error compares
+  std::vector<std::uint32_t> samples;        // 0: not rendered yet in this generation
+  std::vector<float> lights_tested;          // per sample
+  std::vector<float> nodes_visited;          // per sample
+  std::vector<TileTotals> tile_totals;       // by tile index
+  std::vector<std::uint8_t> tile_seen;       // by tile index
+  int tiles_seen = 0;
+  int pass = 0;                // the pass the latest tile belongs to
+  int tiles_done_in_pass = 0;  // tiles of that pass received so far
+  std::uint64_t version = 0;   // bumped whenever anything above changes
+};
+
+// Forgets everything (no render to show).
+void clear_display_image(DisplayImage& image);
+
+// Applies updates of this generation, starts a newer one when an update belongs to it, and drops
+// updates of older generations. Returns true when the image changed.
+bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& updates);
+
+TileTotals sum_tile_totals(const DisplayImage& image);
+
+// Pixel error of the pass-0 image against the reference (DESIGN.md: |dR|+|dG|+|dB| of 765, in
+// percent), over the pixels both have rendered.
+struct ErrorImage {
+  std::vector<float> pct;  // per pixel; negative where not comparable (yet)
+  double average_pct = 0.0;
+  double max_pct = 0.0;
+  std::size_t pixels_compared = 0;
+  std::uint64_t image_version = 0;
+  std::uint64_t reference_version = 0;
+};
+ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference);
+
+// RGBA texels of one view. Heatmaps are viridis on log(1 + value) over the rendered pixels'
+// range (returned in `range`); pixels not rendered yet are dark grey, stale colours dimmed.
+void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
+                       std::vector<std::uint8_t>& rgba, renderer::HeatmapRange& range);
+
+// 8-bit RGB of one view for a snapshot file (the texture without alpha).
+std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
+                                    renderer::HeatmapRange& range);
+
+struct PixelInfo {
+  bool rendered = false;
+  std::uint8_t rgb[3] = {0, 0, 0};
+  std::uint32_t samples = 0;
+  float lights_tested = 0.0f;
+  float nodes_visited = 0.0f;
+  std::optional<float> error_pct;
+};
+PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y);
+
+}  // namespace app::viewer

@@ -1,0 +1,73 @@
+#include "app/viewer/frame_log.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace app::viewer {
+
+void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_busy) {
+  log.frame_ms.push_back(frame_ms);
+  log.work_ms.push_back(work_ms);
+  if (tracer_busy) log.busy_frame_ms.push_back(frame_ms);
+}
+
+void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
+                 std::chrono::steady_clock::time_point when) {
+  log.latencies.push_back({label, serial, when, -1.0});
+}
+
+void record_first_tile(FrameLog& log, std::uint64_t generation, std::chrono::steady_clock::time_point when) {
+  for (LatencyRecord& r : log.latencies) {
+    if (r.first_tile_ms >= 0.0 || r.serial > generation) continue;
+    r.first_tile_ms = std::chrono::duration<double, std::milli>(when - r.posted).count();
+  }
+}
+
+FrameTimeSummary summarize_frames(const std::vector<double>& frame_ms) {
+  FrameTimeSummary s;
+  s.frames = frame_ms.size();
+  if (frame_ms.empty()) return s;
+  std::vector<double> sorted = frame_ms;
+  std::sort(sorted.begin(), sorted.end());
+  s.median_ms = sorted[sorted.size() / 2];
+  s.p95_ms = sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)];
+  s.max_ms = sorted.back();
+  return s;
+}
+
+namespace {
+
+std::string summary_line(const char* what, const FrameTimeSummary& s) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "levrt view: %s: %zu frames, frame time median %.1f ms (%.1f fps), 95th percentile %.1f ms, "
+                "max %.1f ms\n",
+                what, s.frames, s.median_ms, s.median_ms > 0.0 ? 1000.0 / s.median_ms : 0.0, s.p95_ms, s.max_ms);
+  return line;
+}
+
+}  // namespace
+
+std::string frame_report(const FrameLog& log) {
+  std::string report = summary_line("all frames", summarize_frames(log.frame_ms));
+  report += summary_line("frames while tracing", summarize_frames(log.busy_frame_ms));
+  const FrameTimeSummary work = summarize_frames(log.work_ms);
+  char work_line[160];
+  std::snprintf(work_line, sizeof work_line, "levrt view: UI work per frame: median %.1f ms, 95th percentile %.1f ms\n",
+                work.median_ms, work.p95_ms);
+  report += work_line;
+  for (const LatencyRecord& r : log.latencies) {
+    char line[256];
+    if (r.first_tile_ms >= 0.0) {
+      std::snprintf(line, sizeof line, "levrt view: %s: first tile on screen after %.1f ms\n", r.label.c_str(),
+                    r.first_tile_ms);
+    } else {
+      std::snprintf(line, sizeof line, "levrt view: %s: no new tile (render unchanged or superseded)\n",
+                    r.label.c_str());
+    }
+    report += line;
+  }
+  return report;
+}
+
+}  // namespace app::viewer

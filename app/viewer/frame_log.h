@@ -1,0 +1,43 @@
+// What --report-fps prints: the UI's frame times (all frames, and the frames during which the
+// tracer was busy) and, for each change, how long until its first tile reached the screen.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace app::viewer {
+
+struct FrameTimeSummary {
+  std::size_t frames = 0;
+  double median_ms = 0.0;
+  double p95_ms = 0.0;
+  double max_ms = 0.0;
+};
+
+struct LatencyRecord {
+  std::string label;
+  std::uint64_t serial = 0;
+  std::chrono::steady_clock::time_point posted;
+  double first_tile_ms = -1.0;  // negative until a tile of this or a later render arrives
+};
+
+struct FrameLog {
+  std::vector<double> frame_ms;       // from one frame's start to the next's
+  std::vector<double> busy_frame_ms;  // the same, while the worker was loading, refitting or rendering
+  std::vector<double> work_ms;        // the UI thread's own work per frame, pacing excluded
+  std::vector<LatencyRecord> latencies;
+};
+
+void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_busy);
+void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
+                 std::chrono::steady_clock::time_point when);
+// A tile of render `generation` reached the screen at `when`.
+void record_first_tile(FrameLog& log, std::uint64_t generation, std::chrono::steady_clock::time_point when);
+
+FrameTimeSummary summarize_frames(const std::vector<double>& frame_ms);
+// The report, one line per item.
+std::string frame_report(const FrameLog& log);
+
+}  // namespace app::viewer

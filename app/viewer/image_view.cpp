@@ -1,0 +1,119 @@
+#include "app/viewer/image_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <imgui.h>
+
+#include "app/viewer/camera_control.h"
+
+namespace app::viewer {
+namespace {
+
+constexpr float kOrbitRadiansPerPixel = 0.006f;
+constexpr float kZoomPerWheelStep = 0.88f;
+
+void move_camera(ViewerState& state, const ImVec2& image_size) {
+  if (!scene_ready(state) || !state.mouse_input) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  renderer::Camera camera = current_camera(state);
+  bool moved = false;
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) &&
+      (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    camera = orbit_camera(camera, -io.MouseDelta.x * kOrbitRadiansPerPixel, io.MouseDelta.y * kOrbitRadiansPerPixel);
+    moved = true;
+  }
+  const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) ||
+                       ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f);
+  if (ImGui::IsItemActive() && panning && image_size.y > 0.0f &&
+      (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    camera = pan_camera(camera, -io.MouseDelta.x / image_size.y, io.MouseDelta.y / image_size.y);
+    moved = true;
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    camera = zoom_camera(camera, std::pow(kZoomPerWheelStep, io.MouseWheel));
+    moved = true;
+  }
+  if (moved) set_camera(state, camera);
+}
+
+void draw_hover(const ViewerState& state, int x, int y, const ImVec2& tooltip_at) {
+  if (x < 0 || y < 0 || x >= state.image.width || y >= state.image.height) return;
+  const PixelInfo p = pixel_info(state.image, state.error, x, y);
+  ImGui::SetNextWindowPos(tooltip_at);
+  ImGui::BeginTooltip();
+  ImGui::Text("pixel %d, %d", x, y);
+  if (!p.rendered) {
+    ImGui::TextDisabled("not rendered yet");
+    ImGui::EndTooltip();
+    return;
+  }
+  ImGui::ColorButton("##colour", ImVec4(p.rgb[0] / 255.0f, p.rgb[1] / 255.0f, p.rgb[2] / 255.0f, 1.0f),
+                     ImGuiColorEditFlags_NoTooltip, ImVec2(14.0f, 14.0f));
+  ImGui::SameLine();
+  ImGui::Text("colour %d %d %d", p.rgb[0], p.rgb[1], p.rgb[2]);
+  ImGui::Text("lights tested  %.1f per sample", p.lights_tested);
+  ImGui::Text("nodes visited  %.1f per sample", p.nodes_visited);
+  if (p.error_pct) {
+    ImGui::Text("error          %.3f%% (pass 0 vs rt)", *p.error_pct);
+  } else {
+    ImGui::TextDisabled("error          needs the rt reference");
+  }
+  ImGui::Text("samples        %u", p.samples);
+  ImGui::EndTooltip();
+}
+
+}  // namespace
+
+void draw_image_view(ViewerState& state, const GlTexture& texture) {
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("image", ImVec2(std::max(avail.x, 1.0f), std::max(avail.y, 1.0f)),
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  const int w = state.image.width, h = state.image.height;
+  float scale = 1.0f;
+  ImVec2 image_min = origin, image_max = origin;
+  if (w > 0 && h > 0) {
+    scale = std::min(avail.x / static_cast<float>(w), avail.y / static_cast<float>(h));
+    // Whole multiples keep pixels square and sharp for hovering (and cost less to draw).
+    if (scale >= 1.0f) scale = std::floor(scale);
+    const ImVec2 size(scale * static_cast<float>(w), scale * static_cast<float>(h));
+    image_min = ImVec2(origin.x + 0.5f * (avail.x - size.x), origin.y + 0.5f * (avail.y - size.y));
+    image_max = ImVec2(image_min.x + size.x, image_min.y + size.y);
+  }
+  move_camera(state, ImVec2(image_max.x - image_min.x, image_max.y - image_min.y));
+
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  if (texture.id != 0 && w > 0) {
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture.id)), image_min, image_max);
+    // Tiles being traced; the rects belong to the render in flight, which has the settings' size.
+    if (state.status.width == w && state.status.height == h) {
+      for (const TileRect& r : state.in_flight) {
+        draw->AddRect(ImVec2(image_min.x + r.x0 * scale, image_min.y + r.y0 * scale),
+                      ImVec2(image_min.x + r.x1 * scale, image_min.y + r.y1 * scale), IM_COL32(255, 150, 40, 255),
+                      0.0f, 0, 2.0f);
+      }
+    }
+  }
+  const WorkerStatus& st = state.status;
+  if (st.phase == WorkerPhase::loading || st.phase == WorkerPhase::preparing) {
+    draw->AddText(ImVec2(origin.x + 12.0f, origin.y + 10.0f), IM_COL32(255, 255, 255, 255),
+                  worker_phase_text(st.phase));
+  }
+  if (w > 0 && state.mouse_input && hovered) {
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    draw_hover(state, static_cast<int>(std::floor((mouse.x - image_min.x) / scale)),
+               static_cast<int>(std::floor((mouse.y - image_min.y) / scale)), ImVec2(mouse.x + 16.0f, mouse.y + 8.0f));
+  } else if (w > 0 && state.scripted_hover) {
+    const TileRect& p = *state.scripted_hover;
+    const ImVec2 at(image_min.x + (static_cast<float>(p.x0) + 0.5f) * scale,
+                    image_min.y + (static_cast<float>(p.y0) + 0.5f) * scale);
+    draw->AddCircle(at, 6.0f, IM_COL32(255, 255, 255, 255), 12, 2.0f);
+    draw_hover(state, p.x0, p.y0, ImVec2(at.x + 16.0f, at.y + 8.0f));
+  }
+}
+
+}  // namespace app::viewer

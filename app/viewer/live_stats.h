@@ -1,0 +1,40 @@
+// The statistics the panel shows and a snapshot writes, computed on the UI thread from the tiles
+// it has received and the worker's status. Names follow DESIGN.md's metrics.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "app/settings.h"
+#include "app/viewer/display_image.h"
+#include "app/viewer/render_worker.h"
+#include "renderer/camera.h"
+
+namespace app::viewer {
+
+struct LiveStats {
+  std::uint64_t samples = 0;  // primary rays
+  std::uint64_t shading_points = 0;
+  std::uint64_t shadow_rays = 0;
+  double lights_tested_avg = 0.0;  // per shading point
+  std::uint32_t lights_tested_max = 0;
+  double nodes_visited_avg = 0.0;
+  double render_seconds = 0.0;  // this render so far
+  double pass_seconds = 0.0;    // the last complete pass, or the running first pass so far
+  double mrays_per_second = 0.0;  // primary and shadow rays
+  std::optional<double> error_avg_pct;
+  std::optional<double> error_max_pct;
+  std::size_t error_pixels = 0;
+};
+
+// `error` is used when it has compared pixels.
+LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status, const ErrorImage& error,
+                             std::chrono::steady_clock::time_point now);
+
+nlohmann::ordered_json live_stats_json(const LiveStats& stats, const WorkerStatus& status,
+                                       const Settings& settings, const renderer::Camera& camera);
+
+}  // namespace app::viewer

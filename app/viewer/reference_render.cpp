@@ -1,0 +1,66 @@
+#include "app/viewer/reference_render.h"
+
+#include <exception>
+#include <utility>
+
+namespace app::viewer {
+
+ReferenceRender::ReferenceRender(DisplayBuffer& tiles, Finished on_finished)
+    : tiles_(tiles), on_finished_(std::move(on_finished)) {}
+
+ReferenceRender::~ReferenceRender() { discard(); }
+
+void ReferenceRender::begin(renderer::RenderStatePtr state, std::uint64_t generation) {
+  discard();
+  state_ = std::move(state);
+  generation_ = generation;
+}
+
+void ReferenceRender::resume() {
+  if (!state_ || running_.load() || complete_.load() || failed_.load()) return;
+  if (thread_.joinable()) thread_.join();
+  cancel_.store(false);
+  running_.store(true);
+  thread_ = std::thread([this] { run(); });
+}
+
+void ReferenceRender::stop() {
+  cancel_.store(true);
+  if (thread_.joinable()) thread_.join();
+  cancel_.store(false);
+}
+
+void ReferenceRender::discard() {
+  stop();
+  state_.reset();
+  complete_.store(false);
+  failed_.store(false);
+  generation_ = 0;
+}
+
+int ReferenceRender::tile_count() const { return state_ ? renderer::render_tile_count(*state_) : 0; }
+
+void ReferenceRender::run() {
+  renderer::RenderState& state = *state_;
+  const renderer::Framebuffer& framebuffer = renderer::render_framebuffer(state);
+  const std::uint64_t generation = generation_;
+  const auto on_tile_done = [&](int tile) {
+    TileRect r;
+    renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
+    tiles_.post(copy_tile(framebuffer, generation, tile, 0, r));
+  };
+  std::string error;
+  bool done = false;
+  try {
+    done = renderer::render_pass(state, &cancel_, on_tile_done);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  const double seconds = renderer::render_seconds(state);
+  if (done) complete_.store(true);
+  if (!error.empty()) failed_.store(true);
+  running_.store(false);
+  if (done || !error.empty()) on_finished_(seconds, error);
+}
+
+}  // namespace app::viewer

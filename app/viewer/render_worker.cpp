@@ -1,0 +1,415 @@
+#include "app/viewer/render_worker.h"
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <utility>
+
+#include "app/scene_loading.h"
+#include "app/viewer/reference_render.h"
+#include "lev/light_hierarchy.h"
+#include "renderer/render.h"
+
+namespace app::viewer {
+
+using Clock = std::chrono::steady_clock;
+
+struct WorkerShared {
+  std::mutex mutex;  // guards everything below but the atomics and the display buffers
+  std::condition_variable wake;
+  std::optional<ViewRequest> pending;
+  std::uint64_t pending_serial = 0;
+  std::uint64_t last_serial = 0;
+  bool quit = false;
+  WorkerStatus status;
+  std::atomic<bool> cancel{false};  // the main render's pass in flight
+
+  DisplayBuffer tiles;
+  DisplayBuffer reference_tiles;
+
+  // The main render state, for the UI's in-flight markers. The worker swaps the pointer under
+  // slot_mutex and never destroys a state that is still published.
+  mutable std::mutex slot_mutex;
+  const renderer::RenderState* slot = nullptr;
+};
+
+namespace {
+
+// What makes two renders show the same picture of the same scene (the reference stays valid).
+struct ViewKey {
+  renderer::Camera camera;
+  int width = 0, height = 0, depth = 0, stride = 0;
+};
+
+bool same_camera(const renderer::Camera& a, const renderer::Camera& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.vertical_fov_deg == b.vertical_fov_deg;
+}
+
+bool same_view(const ViewKey& a, const ViewKey& b) {
+  return same_camera(a.camera, b.camera) && a.width == b.width && a.height == b.height && a.depth == b.depth &&
+         a.stride == b.stride;
+}
+
+// Everything the worker thread owns. Members are torn down explicitly (reference, then main
+// state, then scene) because the states refer to the scene.
+struct Worker {
+  WorkerShared& shared;
+  std::unique_ptr<LoadedScene> loaded;
+  std::string scene;
+  int level = -1;
+  renderer::Camera preset;
+  std::optional<ViewKey> view;
+  renderer::RenderStatePtr main;
+  renderer::RenderSettings main_settings;
+  std::uint64_t generation = 0;
+  std::uint64_t last_serial = 0;  // the latest request applied; every generation is <= it
+  int passes_target = 1;
+  double seconds_at_last_pass = 0.0;
+  ReferenceRender reference;
+
+  explicit Worker(WorkerShared& s)
+      : shared(s), reference(s.reference_tiles, [this](double seconds, const std::string& error) {
+          reference_finished(seconds, error);
+        }) {}
+  Worker(const Worker&) = delete;
+  Worker& operator=(const Worker&) = delete;
+
+  template <typename F>
+  void update_status(F&& change) {
+    const std::lock_guard<std::mutex> lock(shared.mutex);
+    change(shared.status);
+  }
+
+  // Runs on the reference thread.
+  void reference_finished(double seconds, const std::string& error) {
+    {
+      const std::lock_guard<std::mutex> lock(shared.mutex);
+      shared.status.reference = error.empty() ? ReferencePhase::done : ReferencePhase::failed;
+      shared.status.reference_seconds = seconds;
+      if (!error.empty()) shared.status.error = "rt reference: " + error;
+    }
+    shared.wake.notify_all();
+  }
+
+  void publish_main(renderer::RenderStatePtr state) {
+    {
+      const std::lock_guard<std::mutex> lock(shared.slot_mutex);
+      shared.slot = state.get();
+    }
+    main = std::move(state);
+  }
+
+  void drop_main(std::uint64_t floor) {
+    {
+      const std::lock_guard<std::mutex> lock(shared.slot_mutex);
+      shared.slot = nullptr;
+    }
+    main.reset();
+    shared.tiles.raise_floor(floor);
+  }
+
+  void drop_reference(std::uint64_t floor) {
+    reference.discard();
+    shared.reference_tiles.raise_floor(floor);
+    update_status([](WorkerStatus& s) {
+      s.reference = ReferencePhase::none;
+      s.reference_generation = 0;
+      s.reference_tile_count = 0;
+    });
+  }
+
+  void tear_down(std::uint64_t floor) {
+    drop_reference(floor);
+    drop_main(floor);
+    loaded.reset();
+    view.reset();
+  }
+
+  int passes_done() const { return main ? renderer::render_passes_done(*main) : 0; }
+
+  // Refinement passes wait while the reference renders: they would share its cores, and the
+  // user asked for the reference.
+  bool wants_pass() const {
+    if (!main || passes_done() >= passes_target) return false;
+    return passes_done() == 0 || !reference.running();
+  }
+
+  WorkerPhase resting_phase() const {
+    if (wants_pass()) return WorkerPhase::rendering;
+    if (main && passes_done() < passes_target) return WorkerPhase::waiting_for_reference;
+    return WorkerPhase::idle;
+  }
+
+  void load(const Settings& s, std::uint64_t serial) {
+    tear_down(serial);
+    scene = s.scene;
+    level = s.level;
+    update_status([&](WorkerStatus& st) {
+      st.phase = WorkerPhase::loading;
+      st.scene = s.scene;
+      st.level = s.level;
+      st.generation = 0;
+    });
+    loaded = load_scene(s);
+    preset = loaded->scene.camera;
+    update_status([&](WorkerStatus& st) {
+      st.scene_serial += 1;
+      st.scene_name = loaded->scene.name;
+      st.light_count = loaded->scene.lights.light_count;
+      st.preset_camera = preset;
+      st.build_seconds = loaded->build_seconds;
+      st.hierarchy_bytes = lev::hierarchy_bytes(loaded->scene.lights);
+    });
+  }
+
+  void apply(const ViewRequest& request, std::uint64_t serial) {
+    const Settings& s = request.settings;
+    last_serial = serial;
+    update_status([](WorkerStatus& st) { st.error.clear(); });
+    const bool scene_changed = !loaded || s.scene != scene || s.level != level;
+    if (scene_changed) load(s, serial);
+    renderer::Scene& sc = loaded->scene;
+    const renderer::RenderSettings rs = render_settings_from(s);
+    const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth, rs.pixel_stride};
+    const bool view_changed = !view || !same_view(key, *view);
+    const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
+                              rs.tolerance != main_settings.tolerance || rs.threads != main_settings.threads;
+    const bool refits = main_changed && rs.tolerance != sc.lights.tolerance;
+
+    // Nothing may render on the scene while it changes: the reference is joined (or dropped
+    // when its view is gone) and the main state destroyed before the camera or the refit.
+    if (view_changed || !request.want_reference) {
+      if (reference.has_state()) drop_reference(serial);
+    } else if (refits) {
+      reference.stop();
+    }
+    if (main_changed) drop_main(serial);
+    if (!same_camera(key.camera, sc.camera)) sc.camera = key.camera;
+    view = key;
+    passes_target = s.spp;
+
+    if (main_changed) {
+      update_status([](WorkerStatus& st) { st.phase = WorkerPhase::preparing; });
+      const auto start = Clock::now();
+      renderer::RenderStatePtr state = renderer::make_render_state(sc, *loaded->rays, rs);
+      const double refit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      const int tiles = renderer::render_tile_count(*state);
+      const std::size_t method_bytes = renderer::render_selector(*state).bookkeeping_bytes();
+      publish_main(std::move(state));
+      main_settings = rs;
+      generation = serial;
+      seconds_at_last_pass = 0.0;
+      update_status([&](WorkerStatus& st) {
+        st.generation = serial;
+        st.width = rs.width;
+        st.height = rs.height;
+        st.tile_count = tiles;
+        st.method = s.method;
+        st.tolerance = s.tolerance;
+        st.refit_seconds = refit_seconds;
+        st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
+        st.method_bytes = method_bytes;
+        st.passes_done = 0;
+        st.render_seconds = 0.0;
+        st.pass_running = false;
+        st.last_pass_seconds = 0.0;
+        st.first_pass_seconds = -1.0;
+        st.first_pass_shared = false;
+      });
+    }
+    update_status([&](WorkerStatus& st) { st.passes_target = s.spp; });
+
+    if (request.want_reference && !reference.complete()) {
+      if (!reference.has_state()) {
+        // rt ignores the tolerance; giving it the scene's current one means no refit.
+        renderer::RenderSettings ref = rs;
+        ref.method = lev::Method::rt;
+        ref.tolerance = sc.lights.tolerance;
+        shared.reference_tiles.raise_floor(serial);
+        reference.begin(renderer::make_render_state(sc, *loaded->rays, ref), serial);
+        update_status([&](WorkerStatus& st) {
+          st.reference = ReferencePhase::rendering;
+          st.reference_generation = serial;
+          st.reference_tile_count = reference.tile_count();
+          st.reference_started = Clock::now();
+          st.reference_seconds = 0.0;
+        });
+      }
+      reference.resume();
+    }
+  }
+
+  void render_one_pass() {
+    renderer::RenderState& state = *main;
+    const int pass = renderer::render_passes_done(state);
+    const bool shared_cpu = pass == 0 && reference.running();
+    update_status([&](WorkerStatus& st) {
+      st.phase = WorkerPhase::rendering;
+      st.pass_running = true;
+      st.pass_started = Clock::now();
+      if (shared_cpu) st.first_pass_shared = true;
+    });
+    const renderer::Framebuffer& framebuffer = renderer::render_framebuffer(state);
+    const std::uint64_t gen = generation;
+    const auto on_tile_done = [&](int tile) {
+      TileRect r;
+      renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
+      shared.tiles.post(copy_tile(framebuffer, gen, tile, pass, r));
+    };
+    const bool complete = renderer::render_pass(state, &shared.cancel, on_tile_done);
+    const double seconds = renderer::render_seconds(state);
+    const std::size_t method_bytes = renderer::render_selector(state).bookkeeping_bytes();
+    double pass_seconds = 0.0;
+    if (complete) {
+      pass_seconds = seconds - seconds_at_last_pass;
+      seconds_at_last_pass = seconds;
+    }
+    update_status([&](WorkerStatus& st) {
+      st.pass_running = false;
+      st.render_seconds = seconds;
+      st.passes_done = renderer::render_passes_done(state);
+      st.method_bytes = method_bytes;
+      if (complete) {
+        st.last_pass_seconds = pass_seconds;
+        if (pass == 0) st.first_pass_seconds = seconds;
+      }
+    });
+  }
+
+  void fail(const std::string& message, std::uint64_t serial) {
+    drop_reference(serial);
+    drop_main(serial);
+    view.reset();
+    update_status([&](WorkerStatus& st) {
+      st.phase = WorkerPhase::failed;
+      st.error = message;
+      st.generation = 0;
+    });
+  }
+};
+
+// Linux nice values are per thread and inherited by the threads a thread creates, so the tile
+// workers that oneTBB and Embree start from this thread (and the reference thread) inherit it
+// too. The UI thread and the GL driver's threads keep the normal priority: they get a core the
+// moment they need one, and the tracer still gets every cycle they leave.
+void lower_this_thread_priority() {
+  constexpr int kTracerNice = 10;
+  const auto tid = static_cast<id_t>(::syscall(SYS_gettid));
+  const int current = ::getpriority(PRIO_PROCESS, tid);
+  if (current < kTracerNice) ::setpriority(PRIO_PROCESS, tid, kTracerNice);
+}
+
+void run_worker(WorkerShared& shared) {
+  lower_this_thread_priority();
+  Worker w(shared);
+  for (;;) {
+    std::optional<ViewRequest> request;
+    std::uint64_t serial = 0;
+    {
+      std::unique_lock<std::mutex> lock(shared.mutex);
+      shared.wake.wait(lock, [&] { return shared.quit || shared.pending || w.wants_pass(); });
+      if (shared.quit) break;
+      if (shared.pending) {
+        request = std::move(shared.pending);
+        shared.pending.reset();
+        serial = shared.pending_serial;
+        shared.cancel.store(false);
+      }
+    }
+    try {
+      if (request) {
+        w.apply(*request, serial);
+      } else {
+        w.render_one_pass();
+      }
+      // The serial and the phase change together, so "request taken and idle" means done.
+      w.update_status([&](WorkerStatus& st) {
+        st.phase = w.resting_phase();
+        if (request) st.request_serial = serial;
+      });
+    } catch (const std::exception& e) {
+      w.fail(e.what(), w.last_serial + 1);
+      if (request) w.update_status([&](WorkerStatus& st) { st.request_serial = serial; });
+    }
+  }
+  w.tear_down(w.last_serial + 1);
+}
+
+}  // namespace
+
+const char* worker_phase_text(WorkerPhase phase) {
+  switch (phase) {
+    case WorkerPhase::idle: return "idle";
+    case WorkerPhase::loading: return "building the scene";
+    case WorkerPhase::preparing: return "refitting the hierarchy";
+    case WorkerPhase::rendering: return "rendering";
+    case WorkerPhase::waiting_for_reference: return "refinement paused while the rt reference renders";
+    case WorkerPhase::failed: return "failed";
+  }
+  return "";
+}
+
+double elapsed_render_seconds(const WorkerStatus& status, Clock::time_point now) {
+  double seconds = status.render_seconds;
+  if (status.pass_running) seconds += std::chrono::duration<double>(now - status.pass_started).count();
+  return seconds;
+}
+
+RenderWorker::RenderWorker() : shared_(std::make_unique<WorkerShared>()) {
+  thread_ = std::thread([shared = shared_.get()] { run_worker(*shared); });
+}
+
+RenderWorker::~RenderWorker() {
+  {
+    const std::lock_guard<std::mutex> lock(shared_->mutex);
+    shared_->quit = true;
+    shared_->cancel.store(true);
+  }
+  shared_->wake.notify_all();
+  thread_.join();
+}
+
+std::uint64_t RenderWorker::post(const ViewRequest& request) {
+  std::uint64_t serial = 0;
+  {
+    const std::lock_guard<std::mutex> lock(shared_->mutex);
+    serial = ++shared_->last_serial;
+    shared_->pending = request;
+    shared_->pending_serial = serial;
+    shared_->cancel.store(true);
+  }
+  shared_->wake.notify_all();
+  return serial;
+}
+
+WorkerStatus RenderWorker::status() const {
+  const std::lock_guard<std::mutex> lock(shared_->mutex);
+  return shared_->status;
+}
+
+TakenTiles RenderWorker::take_tiles() { return shared_->tiles.take_all(); }
+
+TakenTiles RenderWorker::take_reference_tiles() { return shared_->reference_tiles.take_all(); }
+
+std::vector<TileRect> RenderWorker::tiles_in_flight() const {
+  std::vector<TileRect> rects;
+  const std::lock_guard<std::mutex> lock(shared_->slot_mutex);
+  if (!shared_->slot) return rects;
+  const renderer::RenderState& state = *shared_->slot;
+  const int count = renderer::render_tile_count(state);
+  for (int tile = 0; tile < count; ++tile) {
+    if (renderer::render_tile_status(state, tile) != renderer::TileStatus::rendering) continue;
+    TileRect r;
+    renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
+    rects.push_back(r);
+  }
+  return rects;
+}
+
+}  // namespace app::viewer

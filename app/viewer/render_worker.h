@@ -1,0 +1,104 @@
+// The viewer's background side. One worker thread owns the scene: it loads (rebuilds) it, sets
+// the camera, makes the render states (which refit the hierarchy for the tolerance) and drives
+// renderer::render_pass pass after pass, posting every finished tile to a DisplayBuffer from the
+// tile-done callback. The UI thread only posts requests (the whole view it wants), reads a status
+// snapshot and takes tiles; posting sets the cancel flag, so the pass in flight stops between
+// tiles and the worker picks the request up at once. A render state whose settings did not change
+// is kept, and its interrupted pass resumes. The `rt` reference of the same view renders on a
+// second thread (ReferenceRender), which the worker stops and joins before anything changes the
+// scene and resumes afterwards when the view is the same.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/settings.h"
+#include "app/viewer/display_buffer.h"
+#include "renderer/camera.h"
+
+namespace app::viewer {
+
+struct ViewRequest {
+  Settings settings;
+  std::optional<renderer::Camera> camera;  // empty: the scene's preset view
+  bool want_reference = false;             // render the rt reference of this view
+};
+
+enum class WorkerPhase { idle, loading, preparing, rendering, waiting_for_reference, failed };
+const char* worker_phase_text(WorkerPhase phase);
+
+enum class ReferencePhase { none, rendering, done, failed };
+
+struct WorkerStatus {
+  WorkerPhase phase = WorkerPhase::idle;
+  std::string error;
+  std::uint64_t request_serial = 0;  // the latest request the worker has fully applied
+
+  // The loaded scene.
+  std::uint64_t scene_serial = 0;  // bumps with every (re)load
+  std::string scene;       // as the request named it (model name or file)
+  std::string scene_name;  // as the scene calls itself
+  int level = 0;
+  std::uint64_t light_count = 0;
+  renderer::Camera preset_camera;
+  double build_seconds = 0.0;  // model, hierarchy and Embree build
+  std::size_t hierarchy_bytes = 0;
+
+  // The render being shown; generation is the serial of the request that started it.
+  std::uint64_t generation = 0;
+  int width = 0;
+  int height = 0;
+  int tile_count = 0;
+  std::string method;
+  double tolerance = 0.0;
+  double refit_seconds = 0.0;  // making the render state: refit and selector
+  std::size_t method_bytes = 0;
+  int passes_done = 0;
+  int passes_target = 0;
+  double render_seconds = 0.0;  // inside render_pass, up to the last call's end
+  bool pass_running = false;
+  std::chrono::steady_clock::time_point pass_started;
+  double last_pass_seconds = 0.0;
+  double first_pass_seconds = -1.0;  // pass 0's time once it is complete
+  bool first_pass_shared = false;    // the reference rendered while pass 0 did
+
+  // The rt reference of the same view.
+  ReferencePhase reference = ReferencePhase::none;
+  std::uint64_t reference_generation = 0;
+  int reference_tile_count = 0;
+  std::chrono::steady_clock::time_point reference_started;
+  double reference_seconds = 0.0;
+};
+
+// Render time so far, the running pass included.
+double elapsed_render_seconds(const WorkerStatus& status, std::chrono::steady_clock::time_point now);
+
+struct WorkerShared;  // the mutex-guarded mailbox between the UI and the worker thread
+
+class RenderWorker {
+ public:
+  RenderWorker();
+  ~RenderWorker();  // cancels everything and joins
+  RenderWorker(const RenderWorker&) = delete;
+  RenderWorker& operator=(const RenderWorker&) = delete;
+
+  // Replaces any request not taken yet and cancels the pass in flight; returns the request's
+  // serial (the generation of the render it starts, if it starts one).
+  std::uint64_t post(const ViewRequest& request);
+  WorkerStatus status() const;
+  TakenTiles take_tiles();
+  TakenTiles take_reference_tiles();
+  // Tiles of the current render that a worker is tracing right now.
+  std::vector<TileRect> tiles_in_flight() const;
+
+ private:
+  std::unique_ptr<WorkerShared> shared_;
+  std::thread thread_;
+};
+
+}  // namespace app::viewer

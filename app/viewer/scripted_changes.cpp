@@ -1,0 +1,129 @@
+#include "app/viewer/scripted_changes.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+#include "app/scene_loading.h"
+
+namespace app::viewer {
+namespace {
+
+[[noreturn]] void reject(const std::string& text, const std::string& why) {
+  throw UsageError("--set: " + why + ", got '" + text + "'");
+}
+
+std::uint64_t parse_count(const std::string& text, const std::string& change) {
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long n = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0) reject(change, "lights needs a light count");
+  return n;
+}
+
+bool parse_pixel(const std::string& text, int& x, int& y) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) return false;
+  const std::string xs = text.substr(0, comma), ys = text.substr(comma + 1);
+  char* end_x = nullptr;
+  char* end_y = nullptr;
+  const long lx = std::strtol(xs.c_str(), &end_x, 10);
+  const long ly = std::strtol(ys.c_str(), &end_y, 10);
+  if (xs.empty() || ys.empty() || *end_x != '\0' || *end_y != '\0' || lx < 0 || ly < 0 || lx > 16384 ||
+      ly > 16384) {
+    return false;
+  }
+  x = static_cast<int>(lx);
+  y = static_cast<int>(ly);
+  return true;
+}
+
+}  // namespace
+
+ScriptedChange parse_scripted_change(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  const std::size_t at = text.rfind('@');
+  if (eq == std::string::npos || eq == 0 || at == std::string::npos || at < eq) {
+    reject(text, "must be key=value@frame");
+  }
+  ScriptedChange c;
+  c.key = text.substr(0, eq);
+  c.value = text.substr(eq + 1, at - eq - 1);
+  const std::string frame = text.substr(at + 1);
+  char* end = nullptr;
+  errno = 0;
+  const long f = std::strtol(frame.c_str(), &end, 10);
+  if (frame.empty() || *end != '\0' || errno != 0 || f < 0 || f > 100000000) {
+    reject(text, "the frame must be a non-negative integer");
+  }
+  c.frame = static_cast<int>(f);
+
+  if (const SettingSpec* spec = find_setting(c.key)) {
+    Settings scratch;
+    try {
+      set_setting(scratch, *spec, c.value);
+    } catch (const UsageError& e) {
+      reject(text, e.what());
+    }
+  } else if (c.key == "lights") {
+    parse_count(c.value, text);
+  } else if (c.key == "view") {
+    if (!parse_view_mode(c.value)) reject(text, "view must be one of " + view_mode_names("|"));
+  } else if (c.key == "reference") {
+    if (c.value != "on" && c.value != "off") reject(text, "reference must be on or off");
+  } else if (c.key == "hover") {
+    int x = 0, y = 0;
+    if (!parse_pixel(c.value, x, y)) reject(text, "hover needs a pixel X,Y");
+  } else if (c.key == "snapshot" || c.key == "screenshot") {
+    if (c.value.empty()) reject(text, c.key + " needs a path");
+  } else if (c.key == "await") {
+    if (c.value != "idle") reject(text, "await must be idle");
+  } else {
+    std::string keys;
+    for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
+    reject(text, "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await");
+  }
+  return c;
+}
+
+std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string>& texts) {
+  std::vector<ScriptedChange> changes;
+  for (const std::string& t : texts) changes.push_back(parse_scripted_change(t));
+  return changes;
+}
+
+ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) {
+  const std::string label = c.key + "=" + c.value + " (frame " + std::to_string(c.frame) + ")";
+  if (const SettingSpec* spec = find_setting(c.key)) {
+    const Settings before = state.settings;
+    set_setting(state.settings, *spec, c.value);
+    settings_changed(state, before, label);
+    return ScriptAction::none;
+  }
+  if (c.key == "lights") {
+    const Settings before = state.settings;
+    apply_light_count(state.settings, parse_count(c.value, c.key));
+    settings_changed(state, before, label);
+    return ScriptAction::none;
+  }
+  if (c.key == "view") {
+    select_view(state, *parse_view_mode(c.value));
+    return ScriptAction::none;
+  }
+  if (c.key == "reference") {
+    set_want_reference(state, c.value == "on");
+    return ScriptAction::none;
+  }
+  if (c.key == "hover") {
+    TileRect pixel;
+    parse_pixel(c.value, pixel.x0, pixel.y0);
+    pixel.x1 = pixel.x0 + 1;
+    pixel.y1 = pixel.y0 + 1;
+    state.scripted_hover = pixel;
+    return ScriptAction::none;
+  }
+  if (c.key == "snapshot") return ScriptAction::snapshot;
+  if (c.key == "screenshot") return ScriptAction::screenshot;
+  return ScriptAction::await_idle;
+}
+
+}  // namespace app::viewer

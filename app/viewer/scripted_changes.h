@@ -1,0 +1,32 @@
+// Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
+// the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
+// scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y: show that
+// pixel's tooltip; scripted mode ignores the real mouse), and three actions: `snapshot`
+// (save into a folder), `screenshot` (write the window to a PNG) and `await=idle` (hold the
+// frame count until the render, and the reference if requested, are complete).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/viewer/viewer_state.h"
+
+namespace app::viewer {
+
+enum class ScriptAction { none, snapshot, screenshot, await_idle };
+
+struct ScriptedChange {
+  std::string key;
+  std::string value;
+  int frame = 0;
+};
+
+// Throws UsageError ("--set: ...") for a malformed change or a value its key rejects.
+ScriptedChange parse_scripted_change(const std::string& text);
+std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string>& texts);
+
+// Applies a control change to the state, or returns the action the frame loop must perform.
+// Throws UsageError for a light count the current scene does not have.
+ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& change);
+
+}  // namespace app::viewer

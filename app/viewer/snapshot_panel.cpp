@@ -1,0 +1,56 @@
+#include "app/viewer/snapshot_panel.h"
+
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/viewer/live_stats.h"
+
+namespace app::viewer {
+
+SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_clock::time_point now) {
+  SnapshotJob job;
+  const WorkerStatus& st = state.status;
+  job.folder = state.snapshot_folder;
+  char base[160];
+  std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.c_str(),
+                static_cast<unsigned long long>(st.light_count), st.method.c_str(), st.tolerance);
+  job.base = base;
+  for (char& c : job.base) {
+    if (c == '/' || c == '\\' || c == ' ') c = '_';
+  }
+  job.width = state.image.width;
+  job.height = state.image.height;
+  renderer::HeatmapRange range;
+  job.image_rgb = view_rgb8(state.image, state.error, ViewMode::image, range);
+  const ViewMode heat = state.view == ViewMode::image ? ViewMode::lights : state.view;
+  job.heatmap_name = view_mode_info(heat).name;
+  job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
+  nlohmann::ordered_json stats =
+      live_stats_json(collect_live_stats(state.image, st, state.error, now), st, state.settings, current_camera(state));
+  stats["heatmap"] = job.heatmap_name;
+  stats["heatmap_range"] = {range.min, range.max};
+  stats["heatmap_scale"] = "log(1 + value per sample), viridis";
+  job.stats_json = stats.dump(2) + "\n";
+  return job;
+}
+
+void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer, std::chrono::steady_clock::time_point now) {
+  char folder[512];
+  std::snprintf(folder, sizeof folder, "%s", state.snapshot_folder.c_str());
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
+  if (ImGui::InputText("folder", folder, sizeof folder)) state.snapshot_folder = folder;
+  const bool ready = state.image.width > 0 && !writer.busy();
+  if (!ready) ImGui::BeginDisabled();
+  if (ImGui::Button("Save snapshot")) writer.start(make_snapshot_job(state, now));
+  if (!ready) ImGui::EndDisabled();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("image, current heatmap and stats JSON");
+  if (writer.busy()) {
+    ImGui::SameLine();
+    ImGui::ProgressBar(writer.progress(), ImVec2(-1.0f, 0.0f), "writing");
+  } else if (!writer.message().empty()) {
+    ImGui::TextWrapped("%s", writer.message().c_str());
+  }
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,52 @@
+// Saving a snapshot from the panel: the image, the current heatmap and the stats JSON, written on
+// a thread of its own (PNG encoding of a large image takes a while) with a progress fraction the
+// panel shows. The job carries copies of the pixels, so the UI keeps drawing meanwhile.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace app::viewer {
+
+struct SnapshotJob {
+  std::string folder = "out";
+  std::string base;  // file name stem
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> image_rgb;
+  std::string heatmap_name;  // file name suffix (view name)
+  std::vector<std::uint8_t> heatmap_rgb;
+  std::string stats_json;
+};
+
+class SnapshotWriter {
+ public:
+  SnapshotWriter() = default;
+  ~SnapshotWriter();  // waits for the files in progress
+  SnapshotWriter(const SnapshotWriter&) = delete;
+  SnapshotWriter& operator=(const SnapshotWriter&) = delete;
+
+  // Starts writing; false (and nothing happens) while a previous job still runs.
+  bool start(SnapshotJob job);
+  bool busy() const { return busy_.load(); }
+  float progress() const;
+  // The last job's outcome: the files written, or the error.
+  std::string message() const;
+  // Waits for the job in progress (scripted mode, exit).
+  void wait();
+
+ private:
+  void run(const SnapshotJob& job);
+
+  std::thread thread_;
+  std::atomic<bool> busy_{false};
+  std::atomic<int> steps_done_{0};
+  mutable std::mutex mutex_;
+  std::string message_;
+};
+
+}  // namespace app::viewer

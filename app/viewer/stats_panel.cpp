@@ -1,0 +1,125 @@
+#include "app/viewer/stats_panel.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/viewer/live_stats.h"
+
+namespace app::viewer {
+namespace {
+
+void row(const char* name, const char* format, ...) IM_FMTARGS(2);
+
+void row(const char* name, const char* format, ...) {
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextUnformatted(name);
+  ImGui::TableSetColumnIndex(1);
+  va_list args;
+  va_start(args, format);
+  ImGui::TextV(format, args);
+  va_end(args);
+}
+
+std::string bytes_text(std::size_t bytes) {
+  char text[32];
+  if (bytes < 10 * 1024) {
+    std::snprintf(text, sizeof text, "%zu B", bytes);
+  } else if (bytes < 10 * 1024 * 1024) {
+    std::snprintf(text, sizeof text, "%.1f KB", static_cast<double>(bytes) / 1024.0);
+  } else {
+    std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  }
+  return text;
+}
+
+}  // namespace
+
+void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_point now) {
+  const WorkerStatus& st = state.status;
+  if (st.phase == WorkerPhase::failed) {
+    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "error: %s", st.error.c_str());
+    return;
+  }
+  if (!st.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", st.error.c_str());
+  if (st.phase == WorkerPhase::loading || st.phase == WorkerPhase::preparing) {
+    const float t = static_cast<float>(std::chrono::duration<double>(now.time_since_epoch()).count());
+    ImGui::ProgressBar(-1.0f * t, ImVec2(-1.0f, 0.0f), worker_phase_text(st.phase));
+    return;
+  }
+  const bool current = state.image.generation == st.generation && st.tile_count > 0;
+  const int done = current && state.image.pass == st.passes_done ? state.image.tiles_done_in_pass : 0;
+  char text[128];
+  if (st.passes_done >= st.passes_target) {
+    std::snprintf(text, sizeof text, "done: %d passes", st.passes_done);
+    ImGui::ProgressBar(1.0f, ImVec2(-1.0f, 0.0f), text);
+  } else {
+    const float fraction = st.tile_count > 0 ? static_cast<float>(done) / static_cast<float>(st.tile_count) : 0.0f;
+    std::snprintf(text, sizeof text, "pass %d of %d: %d/%d tiles%s", st.passes_done + 1, st.passes_target, done,
+                  st.tile_count, st.phase == WorkerPhase::waiting_for_reference ? " (paused for rt)" : "");
+    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), text);
+  }
+}
+
+void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::time_point now) {
+  const WorkerStatus& st = state.status;
+  const LiveStats s = collect_live_stats(state.image, st, state.error, now);
+  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
+  row("scene", "%s, %llu lights", st.scene_name.c_str(), static_cast<unsigned long long>(st.light_count));
+  row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
+  row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
+  row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
+  row("Mrays/s", "%.2f (primary + shadow)", s.mrays_per_second);
+  row("shading points", "%llu", static_cast<unsigned long long>(s.shading_points));
+  row("shadow rays", "%llu", static_cast<unsigned long long>(s.shadow_rays));
+  row("lights tested/point", "%.2f avg, %u max", s.lights_tested_avg, s.lights_tested_max);
+  row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
+  row("hierarchy", "%s", bytes_text(st.hierarchy_bytes).c_str());
+  if (st.method_bytes > 0) row("method memory", "%s", bytes_text(st.method_bytes).c_str());
+  row("build / refit", "%.3f s / %.4f s", st.build_seconds, st.refit_seconds);
+  if (s.error_avg_pct) {
+    row("pixel error", "%.4f%% avg, %.3f%% max", *s.error_avg_pct, *s.error_max_pct);
+  } else {
+    row("pixel error", "needs the rt reference");
+  }
+  row("UI", "%.0f fps", state.ui_fps);
+  ImGui::EndTable();
+}
+
+void draw_reference_section(ViewerState& state, std::chrono::steady_clock::time_point now) {
+  const WorkerStatus& st = state.status;
+  const bool live = st.reference != ReferencePhase::none && state.want_reference;
+  if (!live) {
+    if (ImGui::Button("Compute rt reference")) set_want_reference(state, true);
+    ImGui::SameLine();
+    ImGui::TextDisabled("same view, every light: slow");
+    return;
+  }
+  if (st.reference == ReferencePhase::rendering) {
+    const int done = state.reference.generation == st.reference_generation ? state.reference.tiles_seen : 0;
+    const float fraction =
+        st.reference_tile_count > 0 ? static_cast<float>(done) / static_cast<float>(st.reference_tile_count) : 0.0f;
+    const double seconds = std::chrono::duration<double>(now - st.reference_started).count();
+    char text[96];
+    std::snprintf(text, sizeof text, "rt: %d/%d tiles, %.1f s", done, st.reference_tile_count, seconds);
+    ImGui::ProgressBar(fraction, ImVec2(ImGui::GetContentRegionAvail().x - 70.0f, 0.0f), text);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) set_want_reference(state, false);
+  } else if (st.reference == ReferencePhase::done) {
+    ImGui::Text("rt reference done in %.2f s", st.reference_seconds);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Drop")) set_want_reference(state, false);
+  } else {
+    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "rt reference failed");
+  }
+  if (state.error.pixels_compared > 0) {
+    const std::size_t total = state.error.pct.size();
+    ImGui::Text("error avg %.4f%%, max %.3f%% over %.0f%% of pixels", state.error.average_pct, state.error.max_pct,
+                total > 0 ? 100.0 * static_cast<double>(state.error.pixels_compared) / static_cast<double>(total) : 0.0);
+  }
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,40 @@
+#include "app/viewer/view_mode.h"
+
+#include <stdexcept>
+
+namespace app::viewer {
+
+const std::vector<ViewModeInfo>& view_mode_table() {
+  static const std::vector<ViewModeInfo> table = {
+      {ViewMode::image, "image", "Image", ""},
+      {ViewMode::lights, "lights", "Lights tested", "lights tested per sample"},
+      {ViewMode::nodes, "nodes", "Nodes visited", "nodes visited per sample"},
+      {ViewMode::error, "error", "Error vs rt", "pixel error, % of 765 (pass 0)"},
+  };
+  return table;
+}
+
+const ViewModeInfo& view_mode_info(ViewMode mode) {
+  for (const ViewModeInfo& info : view_mode_table()) {
+    if (info.mode == mode) return info;
+  }
+  throw std::logic_error("view mode missing from view_mode_table");
+}
+
+std::optional<ViewMode> parse_view_mode(std::string_view name) {
+  for (const ViewModeInfo& info : view_mode_table()) {
+    if (name == info.name) return info.mode;
+  }
+  return std::nullopt;
+}
+
+std::string view_mode_names(const char* separator) {
+  std::string s;
+  for (const ViewModeInfo& info : view_mode_table()) {
+    if (!s.empty()) s += separator;
+    s += info.name;
+  }
+  return s;
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,27 @@
+// The four pictures the viewer can show of one render: the image itself and three heatmaps
+// (lights tested, nodes visited, and the error against the `rt` reference of the same view).
+// One table names them for the panel, for --set view=... and for snapshot file names.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace app::viewer {
+
+enum class ViewMode { image, lights, nodes, error };
+
+struct ViewModeInfo {
+  ViewMode mode;
+  const char* name;   // --set view=NAME, file names
+  const char* label;  // panel
+  const char* unit;   // heatmap legend (empty for the image)
+};
+
+const std::vector<ViewModeInfo>& view_mode_table();
+const ViewModeInfo& view_mode_info(ViewMode mode);
+std::optional<ViewMode> parse_view_mode(std::string_view name);
+std::string view_mode_names(const char* separator);
+
+}  // namespace app::viewer

@@ -1,0 +1,440 @@
+#include "app/viewer/viewer_app.h"
+
+#include <unistd.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <GL/gl.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "app/viewer/frame_log.h"
+#include "app/viewer/gl_texture.h"
+#include "app/viewer/image_view.h"
+#include "app/viewer/render_worker.h"
+#include "app/viewer/scripted_changes.h"
+#include "app/viewer/settings_panel.h"
+#include "app/viewer/snapshot_panel.h"
+#include "app/viewer/snapshot_writer.h"
+#include "app/viewer/stats_panel.h"
+#include "app/viewer/trade_plot.h"
+#include "app/viewer/view_panel.h"
+#include "app/viewer/viewer_state.h"
+#include "renderer/image_io.h"
+
+namespace app::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kFrameSeconds = 1.0 / 60.0;      // display rate the loop paces itself to
+constexpr double kComposeSeconds = 1.0 / 30.0;    // the texture is rebuilt at most this often
+constexpr double kErrorSeconds = 0.25;            // and the error image at most this often
+constexpr float kPanelWidth = 430.0f;
+
+double seconds_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+struct WindowSize {
+  int width = 0;
+  int height = 0;
+};
+
+WindowSize parse_window_size(const std::string& text) {
+  const std::size_t x = text.find('x');
+  WindowSize size;
+  if (x != std::string::npos) {
+    const std::string w = text.substr(0, x), h = text.substr(x + 1);
+    char* end_w = nullptr;
+    char* end_h = nullptr;
+    const long lw = std::strtol(w.c_str(), &end_w, 10);
+    const long lh = std::strtol(h.c_str(), &end_h, 10);
+    if (!w.empty() && !h.empty() && *end_w == '\0' && *end_h == '\0' && lw >= 320 && lw <= 16384 && lh >= 240 &&
+        lh <= 16384) {
+      size.width = static_cast<int>(lw);
+      size.height = static_cast<int>(lh);
+      return size;
+    }
+  }
+  throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
+}
+
+void check_png_path(const char* flag, const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw UsageError(std::string(flag) + ": needs a file name, got ''");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw UsageError(std::string(flag) + ": is a folder, got '" + path + "'");
+  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  if (!fs::is_directory(parent, ec)) throw UsageError(std::string(flag) + ": folder does not exist, got '" + path + "'");
+  if (::access(parent.c_str(), W_OK) != 0) {
+    throw UsageError(std::string(flag) + ": folder is not writable, got '" + path + "'");
+  }
+}
+
+// GLFW for the lifetime of the viewer. Without a display it throws NoDisplayError, whose one
+// line names the headless route.
+class GlfwLibrary {
+ public:
+  GlfwLibrary() {
+    const char* display = std::getenv("DISPLAY");
+    if (display == nullptr || display[0] == '\0') {
+      throw NoDisplayError("view: no display (DISPLAY is not set); use `levrt render` to render headless");
+    }
+    if (glfwInit() != GLFW_TRUE) {
+      const char* description = nullptr;
+      glfwGetError(&description);
+      throw NoDisplayError(std::string("view: cannot open display '") + display + "' (" +
+                           (description ? description : "glfwInit failed") +
+                           "); use `levrt render` to render headless");
+    }
+  }
+  ~GlfwLibrary() { glfwTerminate(); }
+  GlfwLibrary(const GlfwLibrary&) = delete;
+  GlfwLibrary& operator=(const GlfwLibrary&) = delete;
+};
+
+class Window {
+ public:
+  Window(int width, int height) {
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    handle_ = glfwCreateWindow(width, height, "levrt", nullptr, nullptr);
+    if (!handle_) {
+      const char* description = nullptr;
+      glfwGetError(&description);
+      throw std::runtime_error(std::string("cannot create a GL 3.3 core window: ") +
+                               (description ? description : "unknown GLFW error"));
+    }
+    glfwMakeContextCurrent(handle_);
+    glfwSwapInterval(1);
+  }
+  ~Window() { glfwDestroyWindow(handle_); }
+  Window(const Window&) = delete;
+  Window& operator=(const Window&) = delete;
+  GLFWwindow* get() const { return handle_; }
+
+ private:
+  GLFWwindow* handle_ = nullptr;
+};
+
+class ImGuiSession {
+ public:
+  explicit ImGuiSession(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 0.0f;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiSession(const ImGuiSession&) = delete;
+  ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+// The texture on screen and what it was composed from.
+struct Picture {
+  GlTexture texture;
+  std::uint64_t image_version = ~0ull;
+  std::uint64_t error_version = ~0ull;
+  ViewMode view = ViewMode::image;
+  Clock::time_point composed;
+  std::vector<std::uint8_t> rgba;
+};
+
+struct ErrorClock {
+  std::uint64_t image_version = ~0ull;
+  std::uint64_t reference_version = ~0ull;
+  std::uint64_t computed = 0;  // bumps with every new error image
+  Clock::time_point at;
+};
+
+void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log, Clock::time_point now) {
+  // Status first: every tile a status refers to was posted before it, so it is in the buffer.
+  state.status = worker.status();
+  // Tiles of renders that are gone never arrive (the buffers' floors); the previous render's
+  // colours stay as the new one's backdrop.
+  if (apply_tile_updates(state.image, worker.take_tiles().updates)) {
+    record_first_tile(log, state.image.generation, now);
+  }
+
+  const TakenTiles reference = worker.take_reference_tiles();
+  if (state.reference.generation != 0 && state.reference.generation < reference.floor) {
+    clear_display_image(state.reference);
+  }
+  apply_tile_updates(state.reference, reference.updates);
+  state.in_flight = worker.tiles_in_flight();
+  follow_reference(state.trade, state.status.reference_generation);
+}
+
+void update_error(ViewerState& state, ErrorClock& clock, Clock::time_point now, bool force) {
+  if (clock.image_version == state.image.version && clock.reference_version == state.reference.version) return;
+  if (!force && seconds_between(clock.at, now) < kErrorSeconds) return;
+  clock.image_version = state.image.version;
+  clock.reference_version = state.reference.version;
+  clock.at = now;
+  clock.computed += 1;
+  if (state.reference.generation == 0) {
+    state.error = ErrorImage{};
+  } else {
+    state.error = compute_error_image(state.image, state.reference);
+  }
+}
+
+// A finished pass 0 and a finished reference of the same view make one trade point.
+void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::time_point now) {
+  const WorkerStatus& st = state.status;
+  const bool reference_done = st.reference == ReferencePhase::done &&
+                              state.reference.generation == st.reference_generation &&
+                              state.reference.tiles_seen == st.reference_tile_count;
+  const bool pass0_done = st.generation != 0 && state.image.generation == st.generation && st.first_pass_seconds >= 0.0;
+  if (!reference_done || !pass0_done || has_trade_point(state.trade, st.generation)) return;
+  update_error(state, clock, now, true);
+  TradePoint p;
+  p.method = st.method;
+  p.tolerance = st.tolerance;
+  p.seconds = st.first_pass_seconds;
+  p.error_avg_pct = state.error.average_pct;
+  p.error_max_pct = state.error.max_pct;
+  p.shared_cpu = st.first_pass_shared;
+  p.generation = st.generation;
+  add_trade_point(state.trade, p);
+}
+
+void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clock, Clock::time_point now,
+                     bool force) {
+  const bool uses_error = state.view == ViewMode::error;
+  const std::uint64_t error_version = uses_error ? clock.computed : 0;
+  if (picture.image_version == state.image.version && picture.error_version == error_version &&
+      picture.view == state.view) {
+    return;
+  }
+  if (!force && seconds_between(picture.composed, now) < kComposeSeconds) return;
+  compose_view_rgba(state.image, state.error, state.view, picture.rgba, state.heatmap_range);
+  upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
+  picture.image_version = state.image.version;
+  picture.error_version = error_version;
+  picture.view = state.view;
+  picture.composed = now;
+}
+
+// All the work is done when the worker has taken the last request, has nothing left to render
+// (the reference included, when asked for) and the UI holds every tile.
+bool render_settled(const ViewerState& state, std::uint64_t last_posted) {
+  const WorkerStatus& st = state.status;
+  if (state.request_dirty || st.request_serial < last_posted) return false;
+  if (st.phase == WorkerPhase::failed) return true;
+  if (st.phase != WorkerPhase::idle) return false;
+  if (state.want_reference && st.reference == ReferencePhase::rendering) return false;
+  return st.generation == 0 || state.image.generation == st.generation;
+}
+
+void write_screenshot(GLFWwindow* window, const std::string& path) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window, &width, &height);
+  renderer::write_png_rgb8(path, width, height, read_window_rgb8(width, height));
+}
+
+// The window's layout: the panel on the left; on the right the picture above the results
+// (statistics next to the speed/accuracy plot).
+struct Layout {
+  ImVec2 panel_size, picture_pos, picture_size, results_pos, results_size;
+};
+
+Layout window_layout(const ImVec2& display) {
+  Layout l;
+  const float panel_width = std::min(kPanelWidth, display.x * 0.5f);
+  const float results_height = std::clamp(display.y * 0.36f, 180.0f, 330.0f);
+  l.panel_size = ImVec2(panel_width, display.y);
+  l.picture_pos = ImVec2(panel_width, 0.0f);
+  l.picture_size = ImVec2(display.x - panel_width, display.y - results_height);
+  l.results_pos = ImVec2(panel_width, display.y - results_height);
+  l.results_size = ImVec2(display.x - panel_width, results_height);
+  return l;
+}
+
+constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                          ImGuiWindowFlags_NoCollapse;
+
+void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point now, const Layout& layout) {
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+  ImGui::SetNextWindowSize(layout.panel_size);
+  ImGui::Begin("levrt", nullptr, kFixedWindow);
+  draw_status_line(state, now);
+  if (ImGui::CollapsingHeader("Scene and method", ImGuiTreeNodeFlags_DefaultOpen)) draw_settings_section(state);
+  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) draw_view_section(state);
+  if (ImGui::CollapsingHeader("rt reference", ImGuiTreeNodeFlags_DefaultOpen)) draw_reference_section(state, now);
+  if (ImGui::CollapsingHeader("Snapshot", ImGuiTreeNodeFlags_DefaultOpen)) {
+    draw_snapshot_section(state, snapshots, now);
+  }
+  ImGui::End();
+}
+
+void draw_results(const ViewerState& state, Clock::time_point now, const Layout& layout) {
+  ImGui::SetNextWindowPos(layout.results_pos);
+  ImGui::SetNextWindowSize(layout.results_size);
+  ImGui::Begin("Statistics and the speed/accuracy trade", nullptr, kFixedWindow);
+  if (ImGui::BeginTable("results", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame)) {
+    ImGui::TableNextColumn();
+    draw_stats_section(state, now);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("Pass-0 time vs average error against rt");
+    draw_trade_plot(state.trade, state.status.generation);
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+void draw_picture_window(ViewerState& state, const Picture& picture, const Layout& layout) {
+  ImGui::SetNextWindowPos(layout.picture_pos);
+  ImGui::SetNextWindowSize(layout.picture_size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4.0f, 4.0f));
+  ImGui::Begin("picture", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                   ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground);
+  draw_image_view(state, picture.texture);
+  ImGui::End();
+  ImGui::PopStyleVar();
+}
+
+}  // namespace
+
+int run_viewer(const Settings& settings, const ViewFlags& flags) {
+  const WindowSize window_size = parse_window_size(flags.window);
+  const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
+  if (!flags.screenshot.empty()) check_png_path("--screenshot", flags.screenshot);
+  if (!flags.screenshot.empty() && flags.frames == 0) throw UsageError("--screenshot: needs --frames N");
+  for (const ScriptedChange& c : script) {
+    if (c.key == "screenshot") check_png_path("--set screenshot", c.value);
+  }
+
+  GlfwLibrary glfw;
+  Window window(window_size.width, window_size.height);
+  ImGuiSession imgui(window.get());
+
+  ViewerState state;
+  state.settings = settings;
+  state.mouse_input = flags.frames == 0;
+  FrameLog log;
+  Picture picture;
+  ErrorClock error_clock;
+  SnapshotWriter snapshots;
+  int exit_code = 0;
+  {
+    RenderWorker worker;
+    std::uint64_t last_posted = 0;
+    int script_frame = 0;
+    bool awaiting = false;
+    Clock::time_point previous_start = Clock::now();
+    Clock::time_point next_frame = previous_start;
+    bool first = true;
+
+    while (!glfwWindowShouldClose(window.get())) {
+      for (Clock::time_point t = Clock::now(); t < next_frame; t = Clock::now()) {
+        glfwWaitEventsTimeout(seconds_between(t, next_frame));
+      }
+      glfwPollEvents();
+      const Clock::time_point now = Clock::now();
+      next_frame = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kFrameSeconds));
+      const double frame_ms = first ? 0.0 : 1000.0 * seconds_between(previous_start, now);
+      previous_start = now;
+
+      std::vector<std::string> screenshots;
+      bool snapshot_now = false;
+      if (!awaiting) {
+        for (const ScriptedChange& c : script) {
+          if (c.frame != script_frame) continue;
+          switch (apply_scripted_change(state, c)) {
+            case ScriptAction::none: break;
+            case ScriptAction::snapshot:
+              state.snapshot_folder = c.value;
+              snapshot_now = true;
+              break;
+            case ScriptAction::screenshot: screenshots.push_back(c.value); break;
+            case ScriptAction::await_idle: awaiting = true; break;
+          }
+        }
+      }
+
+      take_worker_results(state, worker, log, now);
+      update_error(state, error_clock, now, false);
+      add_trade_point_when_ready(state, error_clock, now);
+      if (snapshot_now) snapshots.start(make_snapshot_job(state, now));
+      if (awaiting && render_settled(state, last_posted)) awaiting = false;
+      const bool last_frame = flags.frames > 0 && !awaiting && script_frame + 1 >= flags.frames;
+      const bool screenshot_now = !screenshots.empty() || (last_frame && !flags.screenshot.empty());
+
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      const Layout layout = window_layout(ImGui::GetIO().DisplaySize);
+      draw_panel(state, snapshots, now, layout);
+      draw_results(state, now, layout);
+      compose_picture(state, picture, error_clock, now, screenshot_now);
+      draw_picture_window(state, picture, layout);
+      ImGui::Render();
+
+      if (state.request_dirty) {
+        last_posted = worker.post(make_request(state));
+        if (!state.change_label.empty()) record_post(log, state.change_label, last_posted, now);
+        state.request_dirty = false;
+        state.change_label.clear();
+      }
+
+      int fb_width = 0, fb_height = 0;
+      glfwGetFramebufferSize(window.get(), &fb_width, &fb_height);
+      glViewport(0, 0, fb_width, fb_height);
+      glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      for (const std::string& path : screenshots) write_screenshot(window.get(), path);
+      if (last_frame && !flags.screenshot.empty()) write_screenshot(window.get(), flags.screenshot);
+      glfwSwapBuffers(window.get());
+
+      const bool busy = state.status.phase == WorkerPhase::loading || state.status.phase == WorkerPhase::preparing ||
+                        state.status.phase == WorkerPhase::rendering;
+      const double work_ms = 1000.0 * seconds_between(now, Clock::now());
+      if (!first) {
+        record_frame(log, frame_ms, work_ms, busy);
+        state.ui_fps = state.ui_fps == 0.0 ? 1000.0 / frame_ms : 0.95 * state.ui_fps + 0.05 * 1000.0 / frame_ms;
+      }
+      first = false;
+      if (!awaiting) script_frame += 1;
+      if (last_frame) break;
+    }
+    if (state.status.phase == WorkerPhase::failed && flags.frames > 0) {
+      std::fprintf(stderr, "levrt: view: the render failed: %s\n", state.status.error.c_str());
+      exit_code = 1;
+    }
+  }
+  snapshots.wait();
+  if (!snapshots.message().empty() && flags.frames > 0) std::printf("levrt view: %s\n", snapshots.message().c_str());
+  destroy_texture(picture.texture);
+  if (flags.report_fps) std::fputs(frame_report(log).c_str(), stdout);
+  if (!flags.screenshot.empty()) {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window.get(), &width, &height);
+    std::printf("levrt view: wrote %s (%dx%d)\n", flags.screenshot.c_str(), width, height);
+  }
+  return exit_code;
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,64 @@
+#include "app/viewer/viewer_state.h"
+
+#include "scenes/scene_models.h"
+
+namespace app::viewer {
+
+void mark_changed(ViewerState& state, const std::string& label) {
+  state.request_dirty = true;
+  if (!label.empty()) state.change_label = label;
+}
+
+void settings_changed(ViewerState& state, const Settings& before, const std::string& label) {
+  Settings& s = state.settings;
+  if (s.scene != before.scene) {
+    if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene)) s.level = model->default_level;
+  }
+  const bool new_scene = s.scene != before.scene || s.level != before.level;
+  const bool new_view = new_scene || s.width != before.width || s.height != before.height ||
+                        s.depth != before.depth || s.subsample != before.subsample;
+  if (new_scene) state.camera.reset();
+  if (new_view && state.view != ViewMode::error) state.want_reference = false;
+  mark_changed(state, label);
+}
+
+void select_view(ViewerState& state, ViewMode mode) {
+  state.view = mode;
+  if (mode == ViewMode::error && !state.want_reference) set_want_reference(state, true);
+}
+
+void set_camera(ViewerState& state, const renderer::Camera& camera) {
+  state.camera = camera;
+  if (state.view != ViewMode::error) state.want_reference = false;
+  mark_changed(state, "");
+}
+
+void reset_camera(ViewerState& state) {
+  state.camera.reset();
+  if (state.view != ViewMode::error) state.want_reference = false;
+  mark_changed(state, "camera reset");
+}
+
+void set_want_reference(ViewerState& state, bool want) {
+  state.want_reference = want;
+  mark_changed(state, "");
+}
+
+bool scene_ready(const ViewerState& state) {
+  return state.status.scene_serial > 0 && state.status.scene == state.settings.scene &&
+         state.status.level == state.settings.level;
+}
+
+renderer::Camera current_camera(const ViewerState& state) {
+  return state.camera.value_or(state.status.preset_camera);
+}
+
+ViewRequest make_request(const ViewerState& state) {
+  ViewRequest r;
+  r.settings = state.settings;
+  r.camera = state.camera;
+  r.want_reference = state.want_reference;
+  return r;
+}
+
+}  // namespace app::viewer

@@ -1,0 +1,64 @@
+// Everything the viewer's UI thread knows, in one plain struct: the settings and camera the user
+// chose, what to show, and the copies of the worker's results (status, images, errors, trade
+// points). Panels and scripted changes edit it through the verbs below, which mark the request
+// dirty; the frame loop posts one request per frame at most.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/settings.h"
+#include "app/viewer/display_image.h"
+#include "app/viewer/render_worker.h"
+#include "app/viewer/trade_plot.h"
+#include "app/viewer/view_mode.h"
+#include "renderer/camera.h"
+#include "renderer/heatmap.h"
+
+namespace app::viewer {
+
+struct ViewerState {
+  Settings settings;
+  std::optional<renderer::Camera> camera;  // empty: the scene's preset
+  ViewMode view = ViewMode::image;
+  bool want_reference = false;
+
+  bool request_dirty = true;  // post a request at the end of this frame
+  std::string change_label;   // what changed, for the latency report (empty: not reported)
+
+  WorkerStatus status;
+  DisplayImage image;
+  DisplayImage reference;
+  ErrorImage error;
+  std::vector<TileRect> in_flight;
+  TradePlot trade;
+  renderer::HeatmapRange heatmap_range;  // of the view on screen
+  double ui_fps = 0.0;
+  std::string snapshot_folder = "out";
+
+  // Scripted mode ignores the real mouse over the picture (tests must not depend on where the
+  // pointer happens to be) and can hover a pixel instead.
+  bool mouse_input = true;
+  std::optional<TileRect> scripted_hover;  // the pixel x0, y0
+};
+
+// Marks the request dirty; `label` names the change in the latency report.
+void mark_changed(ViewerState& state, const std::string& label);
+
+// Call after editing state.settings: a new scene gets its default level, a new scene or level
+// its preset camera, and a new view drops the reference unless the error view needs it.
+void settings_changed(ViewerState& state, const Settings& before, const std::string& label);
+
+void select_view(ViewerState& state, ViewMode mode);
+void set_camera(ViewerState& state, const renderer::Camera& camera);
+void reset_camera(ViewerState& state);
+void set_want_reference(ViewerState& state, bool want);
+
+// True when the worker has loaded the scene the settings name (the preset camera is known).
+bool scene_ready(const ViewerState& state);
+renderer::Camera current_camera(const ViewerState& state);
+
+ViewRequest make_request(const ViewerState& state);
+
+}  // namespace app::viewer

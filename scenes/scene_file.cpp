@@ -1,0 +1,570 @@
+#include "scenes/scene_file.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scenes/scene_instantiation.h"
+
+namespace scenes {
+namespace {
+
+using json = nlohmann::json;
+
+// RFC 6901 escaping of one path segment.
+std::string pointer_segment(const std::string& key) {
+  std::string s;
+  for (char c : key) {
+    if (c == '~') {
+      s += "~0";
+    } else if (c == '/') {
+      s += "~1";
+    } else {
+      s += c;
+    }
+  }
+  return s;
+}
+
+// Control characters would break the one-line message.
+std::string one_line(std::string s, std::size_t max_length) {
+  for (char& c : s) {
+    if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+  }
+  if (s.size() > max_length) s = s.substr(0, max_length / 2) + "..." + s.substr(s.size() - max_length / 2);
+  return s;
+}
+
+std::string value_text(const json& v) { return one_line(v.dump(), 60); }
+
+[[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& problem) {
+  throw std::invalid_argument(source + ": " + one_line(path.empty() ? "/" : path, 160) + ": " + problem);
+}
+
+// Builds the JSON document through nlohmann's (iterative) SAX parser, refusing nesting deeper
+// than kMaxJsonDepth and duplicate keys, and naming the JSON path of every syntax error.
+class DomBuilder {
+ public:
+  DomBuilder(const std::string& source, const std::string& text, json& root)
+      : source_(source), text_(text), root_(root) {}
+
+  bool null() { return add(nullptr); }
+  bool boolean(bool v) { return add(v); }
+  bool number_integer(json::number_integer_t v) { return add(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return add(v); }
+  bool number_float(json::number_float_t v, const std::string& /*text*/) { return add(v); }
+  bool string(std::string& v) { return add(std::move(v)); }
+  bool binary(json::binary_t& v) { return add(std::move(v)); }
+  bool start_object(std::size_t /*elements*/) { return open(json::object()); }
+  bool start_array(std::size_t /*elements*/) { return open(json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(std::string& k) {
+    keys_.back() = k;
+    if (stack_.back()->contains(k)) fail(source_, path(), "duplicate key");
+    return true;
+  }
+  bool parse_error(std::size_t position, const std::string& /*last_token*/, const nlohmann::detail::exception& e) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i + 1 < position && i < text_.size(); ++i) {
+      if (text_[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    std::string detail = e.what();
+    const std::size_t bracket = detail.find("] ");
+    if (bracket != std::string::npos) detail = detail.substr(bracket + 2);
+    fail(source_, path(), "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
+                              " (" + one_line(detail, 120) + ")");
+  }
+
+ private:
+  // The path of the value being read: each open container's current child.
+  std::string path() const {
+    std::string p;
+    for (std::size_t i = 0; i < stack_.size(); ++i) {
+      const json& c = *stack_[i];
+      if (c.is_array()) {
+        const std::size_t index = i + 1 == stack_.size() ? c.size() : c.size() - 1;
+        p += "/" + std::to_string(index);
+      } else {
+        p += "/" + pointer_segment(keys_[i]);
+      }
+    }
+    return p;
+  }
+
+  json* place(json&& v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    json& top = *stack_.back();
+    if (top.is_array()) {
+      top.push_back(std::move(v));
+      return &top.back();
+    }
+    json& slot = top[keys_.back()];
+    slot = std::move(v);
+    return &slot;
+  }
+
+  bool add(json&& v) {
+    place(std::move(v));
+    return true;
+  }
+
+  bool open(json&& container) {
+    if (stack_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
+      fail(source_, path(), "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    }
+    stack_.push_back(place(std::move(container)));
+    keys_.emplace_back();
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    keys_.pop_back();
+    return true;
+  }
+
+  const std::string& source_;
+  const std::string& text_;
+  json& root_;
+  std::vector<json*> stack_;
+  std::vector<std::string> keys_;
+};
+
+// Turns the JSON document into a description, checking keys and types; values are checked by
+// validate_description afterwards, with the same paths.
+class Reader {
+ public:
+  explicit Reader(const std::string& source) : source_(source) {}
+
+  SceneDescription read(const json& doc) {
+    SceneDescription scene;
+    expect_object(doc, "");
+    check_keys(doc, "", {"levrt_scene", "name", "level", "camera", "ambient", "background", "materials", "masters", "root"});
+    const json& version = require(doc, "", "levrt_scene");
+    if (!version.is_number_integer() || version.get<std::int64_t>() != kSceneFileVersion) {
+      fail(source_, "/levrt_scene", "must be " + std::to_string(kSceneFileVersion) + " (" + value_text(version) + ")");
+    }
+    if (doc.contains("name")) scene.name = read_string(doc["name"], "/name");
+    if (doc.contains("level")) scene.level = read_int(doc["level"], "/level");
+    read_camera(require(doc, "", "camera"), scene.camera);
+    if (doc.contains("ambient")) scene.ambient = read_vec3(doc["ambient"], "/ambient");
+    if (doc.contains("background")) scene.background = read_vec3(doc["background"], "/background");
+    if (doc.contains("materials")) {
+      const json& list = doc["materials"];
+      expect_array(list, "/materials");
+      if (list.size() > kMaxMaterials) {
+        fail(source_, "/materials", "more than " + std::to_string(kMaxMaterials) + " materials");
+      }
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        read_material(list[i], "/materials/" + std::to_string(i), scene);
+      }
+    }
+    if (doc.contains("masters")) {
+      const json& list = doc["masters"];
+      expect_array(list, "/masters");
+      if (list.size() > kMaxMasters) fail(source_, "/masters", "more than " + std::to_string(kMaxMasters) + " masters");
+      // Names first, so that masters may instance masters defined later in the file.
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/masters/" + std::to_string(i);
+        expect_object(list[i], path);
+        check_keys(list[i], path, {"name", "node"});
+        const std::string name = read_string(require(list[i], path, "name"), path + "/name");
+        if (!master_index_.emplace(name, static_cast<std::uint32_t>(i)).second) {
+          fail(source_, path + "/name", "a master of this name is already defined ('" + one_line(name, 60) + "')");
+        }
+        scene.masters.push_back({name, SceneNode{}});
+      }
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/masters/" + std::to_string(i);
+        scene.masters[i].node = read_node(require(list[i], path, "node"), path + "/node");
+      }
+    }
+    scene.root = read_node(require(doc, "", "root"), "/root");
+    return scene;
+  }
+
+ private:
+  void expect_object(const json& v, const std::string& path) const {
+    if (!v.is_object()) fail(source_, path, "must be an object (" + value_text(v) + ")");
+  }
+  void expect_array(const json& v, const std::string& path) const {
+    if (!v.is_array()) fail(source_, path, "must be an array (" + value_text(v) + ")");
+  }
+
+  void check_keys(const json& object, const std::string& path, std::initializer_list<const char*> allowed) const {
+    for (const auto& item : object.items()) {
+      bool known = false;
+      for (const char* k : allowed) known = known || item.key() == k;
+      if (!known) {
+        std::string list;
+        for (const char* k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
+        fail(source_, path + "/" + pointer_segment(item.key()), "unknown key (expected one of: " + list + ")");
+      }
+    }
+  }
+
+  const json& require(const json& object, const std::string& path, const char* key) const {
+    const auto it = object.find(key);
+    if (it == object.end()) fail(source_, path + "/" + key, "missing");
+    return *it;
+  }
+
+  float read_float(const json& v, const std::string& path) const {
+    if (!v.is_number()) fail(source_, path, "must be a number (" + value_text(v) + ")");
+    const double d = v.get<double>();
+    if (std::abs(d) > static_cast<double>(std::numeric_limits<float>::max())) {
+      fail(source_, path, "must be finite as a 32-bit float (" + value_text(v) + ")");
+    }
+    return static_cast<float>(d);
+  }
+
+  int read_int(const json& v, const std::string& path) const {
+    if (!v.is_number_integer()) fail(source_, path, "must be an integer (" + value_text(v) + ")");
+    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                               : (v.get<std::int64_t>() > std::numeric_limits<int>::max() ||
+                                  v.get<std::int64_t>() < std::numeric_limits<int>::min())) {
+      fail(source_, path, "integer out of range (" + value_text(v) + ")");
+    }
+    return static_cast<int>(v.get<std::int64_t>());
+  }
+
+  std::string read_string(const json& v, const std::string& path) const {
+    if (!v.is_string()) fail(source_, path, "must be a string (" + value_text(v) + ")");
+    return v.get<std::string>();
+  }
+
+  glm::vec3 read_vec3(const json& v, const std::string& path) const {
+    if (!v.is_array() || v.size() != 3) fail(source_, path, "must be an array of 3 numbers (" + value_text(v) + ")");
+    return {read_float(v[0], path + "/0"), read_float(v[1], path + "/1"), read_float(v[2], path + "/2")};
+  }
+
+  void read_camera(const json& v, renderer::Camera& camera) const {
+    expect_object(v, "/camera");
+    check_keys(v, "/camera", {"position", "target", "up", "fov_degrees"});
+    camera.position = read_vec3(require(v, "/camera", "position"), "/camera/position");
+    camera.target = read_vec3(require(v, "/camera", "target"), "/camera/target");
+    if (v.contains("up")) camera.up = read_vec3(v["up"], "/camera/up");
+    if (v.contains("fov_degrees")) camera.vertical_fov_deg = read_float(v["fov_degrees"], "/camera/fov_degrees");
+  }
+
+  void read_material(const json& v, const std::string& path, SceneDescription& scene) {
+    expect_object(v, path);
+    check_keys(v, path, {"name", "colour", "ka", "kd", "ks", "shininess", "kr", "kt", "ior"});
+    NamedMaterial m;
+    m.name = read_string(require(v, path, "name"), path + "/name");
+    if (!material_index_.emplace(m.name, static_cast<std::uint32_t>(scene.materials.size())).second) {
+      fail(source_, path + "/name", "a material of this name is already defined ('" + one_line(m.name, 60) + "')");
+    }
+    if (v.contains("colour")) m.material.colour = read_vec3(v["colour"], path + "/colour");
+    const std::pair<const char*, float renderer::Material::*> scalars[] = {
+        {"ka", &renderer::Material::ka}, {"kd", &renderer::Material::kd},
+        {"ks", &renderer::Material::ks}, {"shininess", &renderer::Material::shininess},
+        {"kr", &renderer::Material::kr}, {"kt", &renderer::Material::kt},
+        {"ior", &renderer::Material::ior}};
+    for (const auto& [key, field] : scalars) {
+      if (v.contains(key)) m.material.*field = read_float(v[key], path + "/" + key);
+    }
+    scene.materials.push_back(std::move(m));
+  }
+
+  std::uint32_t read_material_ref(const json& node, const std::string& path) const {
+    const std::string name = read_string(require(node, path, "material"), path + "/material");
+    const auto it = material_index_.find(name);
+    if (it == material_index_.end()) fail(source_, path + "/material", "no material named '" + one_line(name, 60) + "'");
+    return it->second;
+  }
+
+  // Recursion depth is bounded by kMaxJsonDepth (the document is already parsed).
+  SceneNode read_node(const json& v, const std::string& path) {
+    expect_object(v, path);
+    if (++node_count_ > kMaxSceneNodes) fail(source_, path, "more than " + std::to_string(kMaxSceneNodes) + " nodes");
+    const std::string type = read_string(require(v, path, "type"), path + "/type");
+    SceneNode node;
+    if (type == "affine") {
+      check_keys(v, path, {"type", "translate", "rotate", "scale", "child"});
+      Affine a;
+      if (v.contains("translate")) a.translate = read_vec3(v["translate"], path + "/translate");
+      if (v.contains("rotate")) {
+        const json& r = v["rotate"];
+        const std::string rp = path + "/rotate";
+        expect_object(r, rp);
+        check_keys(r, rp, {"axis", "degrees"});
+        a.rotate_axis = read_vec3(require(r, rp, "axis"), rp + "/axis");
+        a.rotate_degrees = read_float(require(r, rp, "degrees"), rp + "/degrees");
+      }
+      if (v.contains("scale")) a.scale = read_float(v["scale"], path + "/scale");
+      node.data = a;
+      node.children.push_back(read_node(require(v, path, "child"), path + "/child"));
+    } else if (type == "union") {
+      check_keys(v, path, {"type", "children"});
+      const json& list = require(v, path, "children");
+      expect_array(list, path + "/children");
+      node.children.reserve(list.size());
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        node.children.push_back(read_node(list[k], path + "/children/" + std::to_string(k)));
+      }
+    } else if (type == "instance") {
+      check_keys(v, path, {"type", "master"});
+      const std::string name = read_string(require(v, path, "master"), path + "/master");
+      const auto it = master_index_.find(name);
+      if (it == master_index_.end()) fail(source_, path + "/master", "no master named '" + one_line(name, 60) + "'");
+      node.data = Instance{it->second};
+    } else if (type == "sphere") {
+      check_keys(v, path, {"type", "material", "centre", "radius"});
+      node.data = SphereShape{read_material_ref(v, path), read_vec3(require(v, path, "centre"), path + "/centre"),
+                              read_float(require(v, path, "radius"), path + "/radius")};
+    } else if (type == "box") {
+      check_keys(v, path, {"type", "material", "lo", "hi"});
+      node.data = BoxShape{read_material_ref(v, path), read_vec3(require(v, path, "lo"), path + "/lo"),
+                           read_vec3(require(v, path, "hi"), path + "/hi")};
+    } else if (type == "cylinder") {
+      check_keys(v, path, {"type", "material", "a", "b", "radius", "segments"});
+      CylinderShape c;
+      c.material = read_material_ref(v, path);
+      c.a = read_vec3(require(v, path, "a"), path + "/a");
+      c.b = read_vec3(require(v, path, "b"), path + "/b");
+      c.radius = read_float(require(v, path, "radius"), path + "/radius");
+      if (v.contains("segments")) c.segments = read_int(v["segments"], path + "/segments");
+      node.data = c;
+    } else if (type == "quad") {
+      check_keys(v, path, {"type", "material", "corner", "edge_u", "edge_v"});
+      node.data = QuadShape{read_material_ref(v, path), read_vec3(require(v, path, "corner"), path + "/corner"),
+                            read_vec3(require(v, path, "edge_u"), path + "/edge_u"),
+                            read_vec3(require(v, path, "edge_v"), path + "/edge_v")};
+    } else if (type == "point_light") {
+      check_keys(v, path, {"type", "intensity"});
+      node.data = PointLightSource{read_vec3(require(v, path, "intensity"), path + "/intensity")};
+    } else if (type == "spot_light") {
+      check_keys(v, path, {"type", "intensity", "cone_degrees", "dropoff"});
+      SpotLightSource s;
+      s.intensity = read_vec3(require(v, path, "intensity"), path + "/intensity");
+      s.cone_degrees = read_float(require(v, path, "cone_degrees"), path + "/cone_degrees");
+      if (v.contains("dropoff")) s.dropoff = read_float(v["dropoff"], path + "/dropoff");
+      node.data = s;
+    } else {
+      fail(source_, path + "/type",
+           "unknown node type (expected one of: affine, union, instance, sphere, box, cylinder, quad, "
+           "point_light, spot_light) (" + value_text(v["type"]) + ")");
+    }
+    return node;
+  }
+
+  const std::string& source_;
+  std::map<std::string, std::uint32_t> master_index_;
+  std::map<std::string, std::uint32_t> material_index_;
+  std::size_t node_count_ = 0;
+};
+
+// --- writing ------------------------------------------------------------------------------
+
+using ordered = nlohmann::ordered_json;
+
+// The shortest decimal that reads back (as a double, then a float) as exactly this float.
+double exact_number(float f) {
+  char buffer[64];
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), f);
+  double d = 0.0;
+  const std::from_chars_result back = std::from_chars(buffer, r.ptr, d);
+  if (r.ec != std::errc() || back.ec != std::errc() || static_cast<float>(d) != f) return static_cast<double>(f);
+  return d;
+}
+
+ordered vec3_json(const glm::vec3& v) { return ordered::array({exact_number(v.x), exact_number(v.y), exact_number(v.z)}); }
+
+class Writer {
+ public:
+  explicit Writer(const SceneDescription& scene) : scene_(scene) {}
+
+  ordered write() const {
+    ordered doc;
+    doc["levrt_scene"] = kSceneFileVersion;
+    doc["name"] = scene_.name;
+    doc["level"] = scene_.level;
+    const renderer::Camera& c = scene_.camera;
+    doc["camera"] = {{"position", vec3_json(c.position)},
+                     {"target", vec3_json(c.target)},
+                     {"up", vec3_json(c.up)},
+                     {"fov_degrees", exact_number(c.vertical_fov_deg)}};
+    doc["ambient"] = vec3_json(scene_.ambient);
+    doc["background"] = vec3_json(scene_.background);
+    doc["materials"] = ordered::array();
+    for (const NamedMaterial& nm : scene_.materials) {
+      const renderer::Material& m = nm.material;
+      doc["materials"].push_back({{"name", nm.name},
+                                  {"colour", vec3_json(m.colour)},
+                                  {"ka", exact_number(m.ka)},
+                                  {"kd", exact_number(m.kd)},
+                                  {"ks", exact_number(m.ks)},
+                                  {"shininess", exact_number(m.shininess)},
+                                  {"kr", exact_number(m.kr)},
+                                  {"kt", exact_number(m.kt)},
+                                  {"ior", exact_number(m.ior)}});
+    }
+    doc["masters"] = ordered::array();
+    for (const Master& m : scene_.masters) doc["masters"].push_back({{"name", m.name}, {"node", node(m.node)}});
+    doc["root"] = node(scene_.root);
+    return doc;
+  }
+
+ private:
+  const std::string& material(std::uint32_t index) const { return scene_.materials[index].name; }
+
+  ordered node(const SceneNode& n) const {
+    ordered j;
+    j["type"] = node_type_name(n.data);
+    if (const auto* a = std::get_if<Affine>(&n.data)) {
+      if (a->translate != glm::vec3(0.0f)) j["translate"] = vec3_json(a->translate);
+      if (a->rotate_degrees != 0.0f) {
+        j["rotate"] = {{"axis", vec3_json(a->rotate_axis)}, {"degrees", exact_number(a->rotate_degrees)}};
+      }
+      if (a->scale != 1.0f) j["scale"] = exact_number(a->scale);
+      j["child"] = node(n.children[0]);
+    } else if (std::holds_alternative<Union>(n.data)) {
+      j["children"] = ordered::array();
+      for (const SceneNode& c : n.children) j["children"].push_back(node(c));
+    } else if (const auto* in = std::get_if<Instance>(&n.data)) {
+      j["master"] = scene_.masters[in->master].name;
+    } else if (const auto* s = std::get_if<SphereShape>(&n.data)) {
+      j["material"] = material(s->material);
+      j["centre"] = vec3_json(s->centre);
+      j["radius"] = exact_number(s->radius);
+    } else if (const auto* b = std::get_if<BoxShape>(&n.data)) {
+      j["material"] = material(b->material);
+      j["lo"] = vec3_json(b->lo);
+      j["hi"] = vec3_json(b->hi);
+    } else if (const auto* c = std::get_if<CylinderShape>(&n.data)) {
+      j["material"] = material(c->material);
+      j["a"] = vec3_json(c->a);
+      j["b"] = vec3_json(c->b);
+      j["radius"] = exact_number(c->radius);
+      j["segments"] = c->segments;
+    } else if (const auto* q = std::get_if<QuadShape>(&n.data)) {
+      j["material"] = material(q->material);
+      j["corner"] = vec3_json(q->corner);
+      j["edge_u"] = vec3_json(q->edge_u);
+      j["edge_v"] = vec3_json(q->edge_v);
+    } else if (const auto* p = std::get_if<PointLightSource>(&n.data)) {
+      j["intensity"] = vec3_json(p->intensity);
+    } else if (const auto* sp = std::get_if<SpotLightSource>(&n.data)) {
+      j["intensity"] = vec3_json(sp->intensity);
+      j["cone_degrees"] = exact_number(sp->cone_degrees);
+      j["dropoff"] = exact_number(sp->dropoff);
+    }
+    return j;
+  }
+
+  const SceneDescription& scene_;
+};
+
+bool is_scalar_array(const ordered& j) {
+  if (!j.is_array()) return false;
+  for (const ordered& e : j) {
+    if (e.is_structured()) return false;
+  }
+  return true;
+}
+
+// Indented like dump(2), but arrays of numbers stay on one line ([x, y, z]).
+void print(const ordered& j, int indent, std::string& out) {
+  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+  if (j.is_object() && !j.empty()) {
+    out += "{\n";
+    bool first = true;
+    for (const auto& item : j.items()) {
+      if (!first) out += ",\n";
+      first = false;
+      out += pad + ordered(item.key()).dump() + ": ";
+      print(item.value(), indent + 2, out);
+    }
+    out += "\n" + std::string(static_cast<std::size_t>(indent), ' ') + "}";
+  } else if (j.is_array() && !j.empty() && !is_scalar_array(j)) {
+    out += "[\n";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      if (i > 0) out += ",\n";
+      out += pad;
+      print(j[i], indent + 2, out);
+    }
+    out += "\n" + std::string(static_cast<std::size_t>(indent), ' ') + "]";
+  } else if (j.is_array()) {
+    out += "[";
+    for (std::size_t i = 0; i < j.size(); ++i) out += (i > 0 ? ", " : "") + j[i].dump();
+    out += "]";
+  } else {
+    out += j.dump();
+  }
+}
+
+}  // namespace
+
+bool is_scene_file_name(std::string_view name) {
+  constexpr std::string_view kSuffix = ".json";
+  return name.size() > kSuffix.size() && name.substr(name.size() - kSuffix.size()) == kSuffix;
+}
+
+SceneDescription parse_scene_json(const std::string& text, const std::string& source) {
+  json doc;
+  DomBuilder builder(source, text, doc);
+  if (!json::sax_parse(text, &builder)) fail(source, "", "invalid JSON");
+  SceneDescription scene = Reader(source).read(doc);
+  try {
+    validate_description(scene);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(source + ": " + e.what());
+  }
+  return scene;
+}
+
+SceneDescription load_scene_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw std::invalid_argument(path + ": cannot read the scene file (no such file)");
+  if (!fs::is_regular_file(status)) throw std::invalid_argument(path + ": cannot read the scene file (not a regular file)");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw std::invalid_argument(path + ": cannot read the scene file (" + ec.message() + ")");
+  if (size > kMaxSceneFileBytes) {
+    throw std::invalid_argument(path + ": file of " + std::to_string(size) + " bytes, more than the " +
+                                std::to_string(kMaxSceneFileBytes >> 20) + " MiB a scene file may have");
+  }
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw std::invalid_argument(path + ": cannot read the scene file (" + std::strerror(errno) + ")");
+  std::string text;
+  text.resize(static_cast<std::size_t>(size));
+  // Read at most one byte more than the limit: a file that grew since it was measured fails too.
+  std::size_t got = std::fread(text.data(), 1, text.size(), f);
+  const bool more = std::fgetc(f) != EOF;
+  std::fclose(f);
+  if (more) throw std::invalid_argument(path + ": the scene file changed while it was read");
+  text.resize(got);
+  SceneDescription scene = parse_scene_json(text, path);
+  if (scene.name.empty()) scene.name = fs::path(path).stem().string();
+  return scene;
+}
+
+std::string scene_file_json(const SceneDescription& scene) {
+  validate_description(scene);
+  std::string out;
+  print(Writer(scene).write(), 0, out);
+  out += "\n";
+  return out;
+}
+
+}  // namespace scenes

@@ -1,0 +1,36 @@
+// Scene files: the scene description (scene_description.h) as JSON, format in scenes/README.md.
+// Reading checks everything before anything is built, and every problem becomes one line
+// "FILE: /json/path: problem (value)" in a std::invalid_argument: unknown keys, wrong types,
+// missing fields, values out of range, undefined masters or materials, instance cycles, and the
+// limits of scene_instantiation.h. The file size and the JSON nesting depth are checked while
+// reading, before any deep structure exists, so a huge or deeply nested file fails cleanly.
+// Writing is exact: every float is written so that it reads back as the same float, so a scene
+// written and read back instantiates to the same scene, bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "scenes/scene_description.h"
+
+namespace scenes {
+
+inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
+inline constexpr int kMaxJsonDepth = 256;
+inline constexpr int kSceneFileVersion = 1;
+
+// True for names ending in ".json": what --scene takes as a file rather than a model name.
+bool is_scene_file_name(std::string_view name);
+
+// Parses and validates; `source` names the text in messages (the file name).
+SceneDescription parse_scene_json(const std::string& text, const std::string& source);
+
+// Reads a file of at most kMaxSceneFileBytes, then parse_scene_json. A missing name in the file
+// becomes the file's stem.
+SceneDescription load_scene_file(const std::string& path);
+
+// The description as scene-file text (validated first; throws like validate_description).
+std::string scene_file_json(const SceneDescription& scene);
+
+}  // namespace scenes

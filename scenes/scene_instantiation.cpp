@@ -1,0 +1,647 @@
+#include "scenes/scene_instantiation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lev/light_bvh.h"
+#include "renderer/shapes.h"
+
+namespace scenes {
+namespace {
+
+std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) {
+  return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string vec_text(const glm::vec3& v) {
+  return "[" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+  throw std::invalid_argument(path + ": " + problem);
+}
+
+void check_finite(const std::string& path, float v, float max_abs) {
+  if (!std::isfinite(v)) fail(path, "must be finite (" + number_text(v) + ")");
+  if (std::abs(v) > max_abs) fail(path, "magnitude above " + number_text(max_abs) + " (" + number_text(v) + ")");
+}
+
+void check_point(const std::string& path, const glm::vec3& v) {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(v[i])) fail(path, "must be finite " + vec_text(v));
+    if (std::abs(v[i]) > kMaxCoordinate) {
+      fail(path, "coordinate magnitude above " + number_text(kMaxCoordinate) + " " + vec_text(v));
+    }
+  }
+}
+
+void check_non_negative(const std::string& path, float v, float max) {
+  if (!std::isfinite(v)) fail(path, "must be finite (" + number_text(v) + ")");
+  if (v < 0.0f) fail(path, "must be >= 0 (" + number_text(v) + ")");
+  if (v > max) fail(path, "must be <= " + number_text(max) + " (" + number_text(v) + ")");
+}
+
+void check_positive(const std::string& path, float v, float max) {
+  check_non_negative(path, v, max);
+  if (!(v > 0.0f)) fail(path, "must be > 0 (" + number_text(v) + ")");
+}
+
+void check_colour(const std::string& path, const glm::vec3& c, float max) {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(c[i]) || c[i] < 0.0f || c[i] > max) {
+      fail(path, "channels must be finite, >= 0 and <= " + number_text(max) + " " + vec_text(c));
+    }
+  }
+}
+
+int triangles_of(const NodeData& data) {
+  if (std::holds_alternative<SphereShape>(data)) return 1;
+  if (std::holds_alternative<BoxShape>(data)) return 12;
+  if (const auto* c = std::get_if<CylinderShape>(&data)) return 4 * c->segments;
+  if (std::holds_alternative<QuadShape>(data)) return 2;
+  return 0;
+}
+
+bool is_light(const NodeData& data) {
+  return std::holds_alternative<PointLightSource>(data) || std::holds_alternative<SpotLightSource>(data);
+}
+
+// What a subtree holds with every instance expanded (saturating counts), and what flattening
+// it unbaked costs in Embree instances.
+struct Totals {
+  std::uint64_t lights = 0;
+  std::uint64_t triangles = 0;
+  std::uint64_t direct_triangles = 0;  // primitives in this tree itself (not behind an instance)
+  std::uint64_t site_placements = 0;   // Embree instances its instance nodes expand to
+  int instance_depth = 0;              // longest chain of instances below
+  double min_log_scale = std::numeric_limits<double>::infinity();  // log10 of composed scales
+  double max_log_scale = -std::numeric_limits<double>::infinity();
+};
+
+struct Edge {
+  std::uint32_t master = 0;
+  std::string path;
+};
+
+// Checks, master by master, every value, counts and the instance graph; orders the masters so
+// each comes after everything it instances; sums what each master expands to.
+class Analysis {
+ public:
+  explicit Analysis(const SceneDescription& scene) : scene_(scene) {
+    if (scene.masters.size() > kMaxMasters) {
+      fail("/masters", "more than " + std::to_string(kMaxMasters) + " masters (" + std::to_string(scene.masters.size()) + ")");
+    }
+    if (scene.materials.size() > kMaxMaterials) {
+      fail("/materials", "more than " + std::to_string(kMaxMaterials) + " materials (" +
+                             std::to_string(scene.materials.size()) + ")");
+    }
+    check_header();
+    edges_.resize(scene.masters.size());
+    for (std::size_t m = 0; m < scene.masters.size(); ++m) {
+      const std::string path = "/masters/" + std::to_string(m);
+      if (scene.masters[m].name.empty()) fail(path + "/name", "must not be empty");
+      for (std::size_t k = 0; k < m; ++k) {
+        if (scene.masters[k].name == scene.masters[m].name) {
+          fail(path + "/name", "a master of this name is already defined ('" + scene.masters[m].name + "')");
+        }
+      }
+      check_node(scene.masters[m].node, path + "/node", 0, edges_[m]);
+    }
+    std::vector<Edge> root_edges;
+    check_node(scene.root, "/root", 0, root_edges);
+    order_masters();
+    totals_.resize(scene.masters.size());
+    for (std::uint32_t m : order_) {
+      totals_[m] = sum_node(scene.masters[m].node);
+      check_totals(totals_[m], "/masters/" + std::to_string(m));
+    }
+    root_ = sum_node(scene.root);
+    check_totals(root_, "/root");
+    check_prototype_triangles(root_edges);
+  }
+
+  const std::vector<std::uint32_t>& order() const { return order_; }
+  const Totals& master(std::uint32_t m) const { return totals_[m]; }
+  bool baked(std::uint32_t m) const { return totals_[m].triangles <= kBakeTriangleBudget; }
+  std::uint64_t placements_unbaked(const Totals& t) const {
+    return add_saturating(t.site_placements, t.direct_triangles > 0 ? 1 : 0);
+  }
+
+ private:
+  void check_header() {
+    const renderer::Camera& c = scene_.camera;
+    check_point("/camera/position", c.position);
+    check_point("/camera/target", c.target);
+    check_point("/camera/up", c.up);
+    const glm::vec3 forward = c.target - c.position;
+    if (!(glm::length(forward) > 0.0f)) fail("/camera/target", "must differ from the position " + vec_text(c.target));
+    const glm::vec3 side = glm::cross(glm::normalize(forward), c.up);
+    if (!(glm::length(side) > 1e-6f * glm::length(c.up))) {
+      fail("/camera/up", "must not be zero or parallel to the view direction " + vec_text(c.up));
+    }
+    if (!std::isfinite(c.vertical_fov_deg) || !(c.vertical_fov_deg > 0.0f) || !(c.vertical_fov_deg < 180.0f)) {
+      fail("/camera/fov_degrees", "must be in (0, 180) (" + number_text(c.vertical_fov_deg) + ")");
+    }
+    check_colour("/ambient", scene_.ambient, 1e6f);
+    check_colour("/background", scene_.background, 1e6f);
+    if (scene_.level < 0) fail("/level", "must be >= 0 (" + std::to_string(scene_.level) + ")");
+    for (std::size_t i = 0; i < scene_.materials.size(); ++i) {
+      const std::string path = "/materials/" + std::to_string(i);
+      const NamedMaterial& nm = scene_.materials[i];
+      if (nm.name.empty()) fail(path + "/name", "must not be empty");
+      for (std::size_t k = 0; k < i; ++k) {
+        if (scene_.materials[k].name == nm.name) {
+          fail(path + "/name", "a material of this name is already defined ('" + nm.name + "')");
+        }
+      }
+      const renderer::Material& m = nm.material;
+      check_colour(path + "/colour", m.colour, 1e3f);
+      check_non_negative(path + "/ka", m.ka, 1e3f);
+      check_non_negative(path + "/kd", m.kd, 1e3f);
+      check_non_negative(path + "/ks", m.ks, 1e3f);
+      check_non_negative(path + "/shininess", m.shininess, 1e6f);
+      check_non_negative(path + "/kr", m.kr, 1e3f);
+      check_non_negative(path + "/kt", m.kt, 1e3f);
+      check_positive(path + "/ior", m.ior, 100.0f);
+    }
+  }
+
+  void check_material(const std::string& path, std::uint32_t material) const {
+    if (material >= scene_.materials.size()) {
+      fail(path + "/material", "no such material (" + std::to_string(material) + ")");
+    }
+  }
+
+  void check_node(const SceneNode& node, const std::string& path, int depth, std::vector<Edge>& edges) {
+    if (depth > kMaxNodeDepth) fail(path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth));
+    if (++node_count_ > kMaxSceneNodes) fail(path, "more than " + std::to_string(kMaxSceneNodes) + " nodes");
+    const std::size_t expected_children = std::holds_alternative<Affine>(node.data)  ? 1
+                                          : std::holds_alternative<Union>(node.data) ? node.children.size()
+                                                                                     : 0;
+    if (node.children.size() != expected_children) {
+      fail(path, std::string(node_type_name(node.data)) + " node needs " + std::to_string(expected_children) +
+                     " children, has " + std::to_string(node.children.size()));
+    }
+    if (const auto* a = std::get_if<Affine>(&node.data)) {
+      check_point(path + "/translate", a->translate);
+      check_point(path + "/rotate/axis", a->rotate_axis);
+      check_finite(path + "/rotate/degrees", a->rotate_degrees, 1e6f);
+      if (!(glm::length(a->rotate_axis) > 0.0f)) fail(path + "/rotate/axis", "must not be zero " + vec_text(a->rotate_axis));
+      if (!std::isfinite(a->scale)) fail(path + "/scale", "must be finite (" + number_text(a->scale) + ")");
+      if (!(a->scale > 0.0f)) fail(path + "/scale", "must be > 0 to be invertible (" + number_text(a->scale) + ")");
+      if (a->scale < kMinScale || a->scale > kMaxScale) {
+        fail(path + "/scale", "must be in [" + number_text(kMinScale) + ", " + number_text(kMaxScale) +
+                                  "] to stay invertible in floats (" + number_text(a->scale) + ")");
+      }
+      check_node(node.children[0], path + "/child", depth + 1, edges);
+    } else if (std::holds_alternative<Union>(node.data)) {
+      for (std::size_t k = 0; k < node.children.size(); ++k) {
+        check_node(node.children[k], path + "/children/" + std::to_string(k), depth + 1, edges);
+      }
+    } else if (const auto* in = std::get_if<Instance>(&node.data)) {
+      if (in->master >= scene_.masters.size()) {
+        fail(path + "/master", "instance of an undefined master (" + std::to_string(in->master) + ")");
+      }
+      edges.push_back({in->master, path + "/master"});
+    } else if (const auto* s = std::get_if<SphereShape>(&node.data)) {
+      check_material(path, s->material);
+      check_point(path + "/centre", s->centre);
+      check_positive(path + "/radius", s->radius, kMaxCoordinate);
+    } else if (const auto* b = std::get_if<BoxShape>(&node.data)) {
+      check_material(path, b->material);
+      check_point(path + "/lo", b->lo);
+      check_point(path + "/hi", b->hi);
+      if (!(b->hi.x > b->lo.x && b->hi.y > b->lo.y && b->hi.z > b->lo.z)) {
+        fail(path + "/hi", "must exceed lo in every axis " + vec_text(b->hi));
+      }
+    } else if (const auto* c = std::get_if<CylinderShape>(&node.data)) {
+      check_material(path, c->material);
+      check_point(path + "/a", c->a);
+      check_point(path + "/b", c->b);
+      if (!(glm::length(c->b - c->a) > 0.0f)) fail(path + "/b", "must differ from a " + vec_text(c->b));
+      check_positive(path + "/radius", c->radius, kMaxCoordinate);
+      if (c->segments < 3 || c->segments > kMaxCylinderSegments) {
+        fail(path + "/segments", "must be in [3, " + std::to_string(kMaxCylinderSegments) + "] (" +
+                                     std::to_string(c->segments) + ")");
+      }
+    } else if (const auto* q = std::get_if<QuadShape>(&node.data)) {
+      check_material(path, q->material);
+      check_point(path + "/corner", q->corner);
+      check_point(path + "/edge_u", q->edge_u);
+      check_point(path + "/edge_v", q->edge_v);
+      if (!(glm::length(glm::cross(q->edge_u, q->edge_v)) > 0.0f)) {
+        fail(path + "/edge_v", "must not be zero or parallel to edge_u " + vec_text(q->edge_v));
+      }
+    } else if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
+      check_colour(path + "/intensity", p->intensity, kMaxIntensity);
+    } else if (const auto* sp = std::get_if<SpotLightSource>(&node.data)) {
+      check_colour(path + "/intensity", sp->intensity, kMaxIntensity);
+      if (!std::isfinite(sp->cone_degrees) || !(sp->cone_degrees > 0.0f) || sp->cone_degrees > 180.0f) {
+        fail(path + "/cone_degrees", "must be in (0, 180] (" + number_text(sp->cone_degrees) + ")");
+      }
+      check_non_negative(path + "/dropoff", sp->dropoff, 1e4f);
+    }
+  }
+
+  // Depth-first over the instance graph without recursion (a chain of masters may be long);
+  // a master met again while still open closes a cycle.
+  void order_masters() {
+    enum class Mark : std::uint8_t { fresh, open, done };
+    const std::size_t n = scene_.masters.size();
+    std::vector<Mark> mark(n, Mark::fresh);
+    struct Frame {
+      std::uint32_t master;
+      std::size_t next_edge;
+    };
+    std::vector<Frame> stack;
+    for (std::uint32_t start = 0; start < n; ++start) {
+      if (mark[start] != Mark::fresh) continue;
+      stack.push_back({start, 0});
+      mark[start] = Mark::open;
+      while (!stack.empty()) {
+        Frame& f = stack.back();
+        if (f.next_edge == edges_[f.master].size()) {
+          mark[f.master] = Mark::done;
+          order_.push_back(f.master);
+          stack.pop_back();
+          continue;
+        }
+        const Edge& e = edges_[f.master][f.next_edge++];
+        if (mark[e.master] == Mark::done) continue;
+        if (mark[e.master] == Mark::open) {
+          std::string cycle;
+          bool in_cycle = false;
+          for (const Frame& g : stack) {
+            in_cycle = in_cycle || g.master == e.master;
+            if (in_cycle) cycle += "'" + scene_.masters[g.master].name + "' -> ";
+          }
+          fail(e.path, "instance cycle: " + cycle + "'" + scene_.masters[e.master].name + "'");
+        }
+        mark[e.master] = Mark::open;
+        stack.push_back({e.master, 0});
+      }
+    }
+  }
+
+  Totals sum_node(const SceneNode& node) const {
+    Totals t;
+    if (const auto* a = std::get_if<Affine>(&node.data)) {
+      t = sum_node(node.children[0]);
+      const double s = std::log10(static_cast<double>(a->scale));
+      t.min_log_scale += s;
+      t.max_log_scale += s;
+    } else if (std::holds_alternative<Union>(node.data)) {
+      for (const SceneNode& child : node.children) {
+        const Totals c = sum_node(child);
+        t.lights = add_saturating(t.lights, c.lights);
+        t.triangles = add_saturating(t.triangles, c.triangles);
+        t.direct_triangles = add_saturating(t.direct_triangles, c.direct_triangles);
+        t.site_placements = add_saturating(t.site_placements, c.site_placements);
+        t.instance_depth = std::max(t.instance_depth, c.instance_depth);
+        t.min_log_scale = std::min(t.min_log_scale, c.min_log_scale);
+        t.max_log_scale = std::max(t.max_log_scale, c.max_log_scale);
+      }
+    } else if (const auto* in = std::get_if<Instance>(&node.data)) {
+      const Totals& m = totals_[in->master];
+      t.lights = m.lights;
+      t.triangles = m.triangles;
+      t.site_placements = baked(in->master) ? (m.triangles > 0 ? 1 : 0) : placements_unbaked(m);
+      t.instance_depth = m.instance_depth + 1;
+      t.min_log_scale = m.min_log_scale;
+      t.max_log_scale = m.max_log_scale;
+    } else {
+      t.lights = is_light(node.data) ? 1 : 0;
+      t.triangles = t.direct_triangles = static_cast<std::uint64_t>(triangles_of(node.data));
+      t.min_log_scale = t.max_log_scale = 0.0;
+    }
+    return t;
+  }
+
+  static void check_totals(const Totals& t, const std::string& path) {
+    if (t.lights > kMaxSceneLights) {
+      fail(path, "expands to more than " + std::to_string(kMaxSceneLights) + " lights (" + std::to_string(t.lights) + ")");
+    }
+    if (t.instance_depth > kMaxInstanceDepth) {
+      fail(path, "instances nested more than " + std::to_string(kMaxInstanceDepth) + " masters deep (" +
+                     std::to_string(t.instance_depth) + ")");
+    }
+    const std::uint64_t placements = add_saturating(t.site_placements, t.direct_triangles > 0 ? 1 : 0);
+    if (placements > kMaxScenePlacements) {
+      fail(path, "expands to more than " + std::to_string(kMaxScenePlacements) + " geometry instances (" +
+                     std::to_string(placements) + ")");
+    }
+    if (t.min_log_scale < -kMaxComposedScaleLog10 || t.max_log_scale > kMaxComposedScaleLog10) {
+      fail(path, "nested scales multiply to outside [1e-12, 1e12] (10^" +
+                     number_text(t.min_log_scale < -kMaxComposedScaleLog10 ? t.min_log_scale : t.max_log_scale) + ")");
+    }
+  }
+
+  // The triangles the prototypes will hold: the root's own, each unbaked master's own, and each
+  // baked master placed from those, once.
+  void check_prototype_triangles(const std::vector<Edge>& root_edges) const {
+    std::vector<bool> seen(scene_.masters.size(), false);
+    std::uint64_t total = root_.direct_triangles;
+    std::vector<std::uint32_t> work;
+    for (const Edge& e : root_edges) work.push_back(e.master);
+    while (!work.empty()) {
+      const std::uint32_t m = work.back();
+      work.pop_back();
+      if (seen[m]) continue;
+      seen[m] = true;
+      if (baked(m)) {
+        total = add_saturating(total, totals_[m].triangles);
+      } else {
+        total = add_saturating(total, totals_[m].direct_triangles);
+        for (const Edge& e : edges_[m]) work.push_back(e.master);
+      }
+    }
+    if (total > kMaxPrototypeTriangles) {
+      fail("/root", "geometry needs more than " + std::to_string(kMaxPrototypeTriangles) + " triangles (" +
+                        std::to_string(total) + ")");
+    }
+  }
+
+  const SceneDescription& scene_;
+  std::size_t node_count_ = 0;
+  std::vector<std::vector<Edge>> edges_;
+  std::vector<std::uint32_t> order_;
+  std::vector<Totals> totals_;
+  Totals root_;
+};
+
+// --- lights -------------------------------------------------------------------------------
+
+bool is_light_leaf(const lev::LightTreeNode& n) {
+  return n.kind == lev::NodeKind::point_light || n.kind == lev::NodeKind::spot_light;
+}
+
+class LightTreeBuilder {
+ public:
+  LightTreeBuilder(const SceneDescription& scene, const Analysis& analysis)
+      : scene_(scene), light_master_(scene.masters.size(), kNone) {
+    for (std::uint32_t m : analysis.order()) {
+      if (analysis.master(m).lights == 0) continue;
+      std::optional<lev::LightTreeNode> node = convert(scene.masters[m].node);
+      light_master_[m] = static_cast<std::uint32_t>(tree_.masters.size());
+      tree_.masters.push_back(node ? std::move(*node) : lev::union_node({}));
+      tree_.master_names.push_back(scene.masters[m].name);
+    }
+    std::optional<lev::LightTreeNode> root = convert(scene.root);
+    tree_.root = root ? std::move(*root) : lev::union_node({});
+  }
+
+  lev::LightTree take() { return std::move(tree_); }
+
+ private:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+  // The light part of a subtree, or nothing when it holds no light. A transform right above a
+  // light is folded into the light (thesis 4.2.2: transforms give a light its place, direction
+  // and intensity), so a light costs one node.
+  std::optional<lev::LightTreeNode> convert(const SceneNode& node) const {
+    if (const auto* a = std::get_if<Affine>(&node.data)) {
+      std::optional<lev::LightTreeNode> child = convert(node.children[0]);
+      if (!child) return std::nullopt;
+      const lev::Similarity xf = affine_similarity(*a);
+      if (lev::is_identity(xf)) return child;
+      if (is_light_leaf(*child)) return lev::light_node(lev::transform_light(child->light, xf));
+      if (child->kind == lev::NodeKind::affine) {
+        return lev::affine_node(lev::compose(xf, child->transform), std::move(child->children[0]));
+      }
+      return lev::affine_node(xf, std::move(*child));
+    }
+    if (std::holds_alternative<Union>(node.data)) {
+      std::vector<lev::LightTreeNode> children;
+      for (const SceneNode& c : node.children) {
+        if (std::optional<lev::LightTreeNode> n = convert(c)) children.push_back(std::move(*n));
+      }
+      gather_bare_lights(children);
+      if (children.empty()) return std::nullopt;
+      if (children.size() == 1) return std::move(children[0]);
+      return lev::union_node(std::move(children));
+    }
+    if (const auto* in = std::get_if<Instance>(&node.data)) {
+      if (light_master_[in->master] == kNone) return std::nullopt;
+      return lev::instance_node(light_master_[in->master]);
+    }
+    if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
+      return lev::light_node(lev::make_point_light(glm::vec3(0.0f), p->intensity));
+    }
+    if (const auto* s = std::get_if<SpotLightSource>(&node.data)) {
+      const auto cone = static_cast<float>(static_cast<double>(s->cone_degrees) * M_PI / 180.0);
+      return lev::light_node(
+          lev::make_spot_light(glm::vec3(0.0f), {0.0f, 0.0f, -1.0f}, s->intensity, cone, s->dropoff));
+    }
+    return std::nullopt;
+  }
+
+  // Many bare lights side by side: replace them by an automatic hierarchy, placed where the first
+  // of them was (the order of a union's children is the order lights are summed in).
+  static void gather_bare_lights(std::vector<lev::LightTreeNode>& children) {
+    const auto bare = static_cast<std::size_t>(std::count_if(children.begin(), children.end(), is_light_leaf));
+    if (bare <= kMaxUnstructuredLights) return;
+    std::vector<lev::Light> lights;
+    std::vector<lev::LightTreeNode> kept;
+    std::size_t bvh_at = 0;
+    for (lev::LightTreeNode& c : children) {
+      if (is_light_leaf(c)) {
+        if (lights.empty()) bvh_at = kept.size();
+        lights.push_back(c.light);
+      } else {
+        kept.push_back(std::move(c));
+      }
+    }
+    kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(bvh_at), lev::build_light_bvh(lights));
+    children = std::move(kept);
+  }
+
+  const SceneDescription& scene_;
+  std::vector<std::uint32_t> light_master_;
+  lev::LightTree tree_;
+};
+
+// --- geometry -----------------------------------------------------------------------------
+
+// One prototype being filled: one mesh per material (fewer Embree geometries), spheres apart.
+class PrototypeBuilder {
+ public:
+  explicit PrototypeBuilder(std::size_t materials) : mesh_of_material_(materials, -1) {}
+
+  void add(const NodeData& data, const lev::Similarity& xf) {
+    renderer::TriangleMesh local;
+    std::uint32_t material = 0;
+    if (const auto* s = std::get_if<SphereShape>(&data)) {
+      renderer::Sphere sphere;
+      sphere.centre = lev::apply_point(xf, s->centre);
+      sphere.radius = s->radius * xf.scale;
+      sphere.material = s->material;
+      prototype_.spheres.push_back(sphere);
+      return;
+    }
+    if (const auto* b = std::get_if<BoxShape>(&data)) {
+      material = b->material;
+      renderer::add_box(local, b->lo, b->hi);
+    } else if (const auto* c = std::get_if<CylinderShape>(&data)) {
+      material = c->material;
+      renderer::add_cylinder(local, c->a, c->b, c->radius, c->segments);
+    } else if (const auto* q = std::get_if<QuadShape>(&data)) {
+      material = q->material;
+      renderer::add_quad(local, q->corner, q->edge_u, q->edge_v);
+    } else {
+      return;
+    }
+    renderer::TriangleMesh& mesh = mesh_for(material);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    const bool identity = lev::is_identity(xf);
+    for (std::size_t i = 0; i < local.positions.size(); ++i) {
+      mesh.positions.push_back(identity ? local.positions[i] : lev::apply_point(xf, local.positions[i]));
+      mesh.normals.push_back(identity ? local.normals[i] : lev::apply_direction(xf, local.normals[i]));
+    }
+    for (const glm::uvec3& t : local.triangles) mesh.triangles.push_back(t + glm::uvec3(base));
+  }
+
+  bool empty() const { return prototype_.meshes.empty() && prototype_.spheres.empty(); }
+  renderer::Prototype take() { return std::move(prototype_); }
+
+ private:
+  renderer::TriangleMesh& mesh_for(std::uint32_t material) {
+    std::int64_t& index = mesh_of_material_[material];
+    if (index < 0) {
+      index = static_cast<std::int64_t>(prototype_.meshes.size());
+      prototype_.meshes.emplace_back();
+      prototype_.meshes.back().material = material;
+    }
+    return prototype_.meshes[static_cast<std::size_t>(index)];
+  }
+
+  renderer::Prototype prototype_;
+  std::vector<std::int64_t> mesh_of_material_;
+};
+
+class GeometryBuilder {
+ public:
+  GeometryBuilder(const SceneDescription& scene, const Analysis& analysis)
+      : scene_(scene), analysis_(analysis), baked_(scene.masters.size(), kNone),
+        flattened_(scene.masters.size()), flattened_done_(scene.masters.size(), false) {
+    const Flattened root = flatten(scene.root);
+    place(root, lev::Similarity{});
+  }
+
+  renderer::Geometry take() { return std::move(geometry_); }
+
+ private:
+  static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+  struct Site {
+    std::uint32_t master = 0;
+    lev::Similarity xf;
+  };
+  // An unbaked master (or the root): its own primitives as one prototype, and where it places
+  // the masters it instances.
+  struct Flattened {
+    std::uint32_t prototype = kNone;
+    std::vector<Site> sites;
+  };
+
+  void collect(const SceneNode& node, const lev::Similarity& xf, PrototypeBuilder& own,
+               std::vector<Site>* sites) {
+    if (const auto* a = std::get_if<Affine>(&node.data)) {
+      collect(node.children[0], lev::compose(xf, affine_similarity(*a)), own, sites);
+    } else if (std::holds_alternative<Union>(node.data)) {
+      for (const SceneNode& c : node.children) collect(c, xf, own, sites);
+    } else if (const auto* in = std::get_if<Instance>(&node.data)) {
+      if (analysis_.master(in->master).triangles == 0) return;
+      if (sites) {
+        sites->push_back({in->master, xf});
+      } else {
+        collect(scene_.masters[in->master].node, xf, own, nullptr);
+      }
+    } else {
+      own.add(node.data, xf);
+    }
+  }
+
+  std::uint32_t add_prototype(PrototypeBuilder& builder) {
+    geometry_.prototypes.push_back(builder.take());
+    return static_cast<std::uint32_t>(geometry_.prototypes.size() - 1);
+  }
+
+  Flattened flatten(const SceneNode& node) {
+    Flattened f;
+    PrototypeBuilder own(scene_.materials.size());
+    collect(node, lev::Similarity{}, own, &f.sites);
+    if (!own.empty()) f.prototype = add_prototype(own);
+    return f;
+  }
+
+  std::uint32_t baked_prototype(std::uint32_t m) {
+    if (baked_[m] == kNone) {
+      PrototypeBuilder all(scene_.materials.size());
+      collect(scene_.masters[m].node, lev::Similarity{}, all, nullptr);
+      baked_[m] = add_prototype(all);
+    }
+    return baked_[m];
+  }
+
+  const Flattened& flattened(std::uint32_t m) {
+    if (!flattened_done_[m]) {
+      flattened_[m] = flatten(scene_.masters[m].node);
+      flattened_done_[m] = true;
+    }
+    return flattened_[m];
+  }
+
+  // Recursion depth is bounded by kMaxInstanceDepth.
+  void place(const Flattened& f, const lev::Similarity& world) {
+    if (f.prototype != kNone) geometry_.instances.push_back({f.prototype, world});
+    for (const Site& site : f.sites) {
+      const lev::Similarity xf = lev::compose(world, site.xf);
+      if (analysis_.baked(site.master)) {
+        geometry_.instances.push_back({baked_prototype(site.master), xf});
+      } else {
+        place(flattened(site.master), xf);
+      }
+    }
+  }
+
+  const SceneDescription& scene_;
+  const Analysis& analysis_;
+  std::vector<std::uint32_t> baked_;
+  std::vector<Flattened> flattened_;
+  std::vector<bool> flattened_done_;
+  renderer::Geometry geometry_;
+};
+
+}  // namespace
+
+void validate_description(const SceneDescription& scene) { Analysis analysis(scene); }
+
+renderer::Scene instantiate_scene(const SceneDescription& description) {
+  const Analysis analysis(description);
+  renderer::Scene scene;
+  scene.name = description.name;
+  scene.level = description.level;
+  scene.camera = description.camera;
+  scene.ambient = description.ambient;
+  scene.background = description.background;
+  for (const NamedMaterial& m : description.materials) scene.materials.push_back(m.material);
+  scene.light_tree = LightTreeBuilder(description, analysis).take();
+  scene.geometry = GeometryBuilder(description, analysis).take();
+  scene.lights = lev::build_hierarchy(scene.light_tree, 0.01f);
+  return scene;
+}
+
+}  // namespace scenes

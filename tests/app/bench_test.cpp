@@ -1,0 +1,167 @@
+// `levrt bench`: the quick suite writes results.md, every experiment's CSV with its columns and
+// its plots (the figures themselves are benchmarks, never checked here); bad flags exit 2 with
+// one line and write nothing.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+namespace fs = std::filesystem;
+
+struct LevrtRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+LevrtRun run_levrt(const std::vector<std::string>& args) {
+  std::string command = LEVRT_BINARY;
+  for (const std::string& a : args) command += " " + quote(a);
+  command += " 2>&1";
+  LevrtRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::string read_file(const fs::path& path) {
+  std::string text;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return text;
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), f)) > 0) text.append(buffer.data(), n);
+  std::fclose(f);
+  return text;
+}
+
+std::string first_line(const fs::path& path) {
+  const std::string text = read_file(path);
+  return text.substr(0, text.find('\n'));
+}
+
+class Bench : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("levrt_bench_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
+  const fs::path out = dir_ / "results";
+  const LevrtRun r = run_levrt({"bench", "--suite", "thesis", "--quick", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("% done"), std::string::npos) << "progress goes to stderr";
+
+  const std::map<std::string, std::string> columns = {
+      {"speed", "scene,lights,rt_s,rt_pixels,ast_s,ast_pixels,lev_s,lev_pixels,ast_over_rt_pct,lev_over_rt_pct,"
+                "rt_over_lev,ast_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,"
+                "ast_tests_per_point,lev_tests_per_point"},
+      {"memory", "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
+                 "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"
+                 "thesis_lev_instanced_bytes"},
+      {"scaling", "scene,lights,lev_s_tol_0.001,pixels_tol_0.001,lev_s_tol_0.01,pixels_tol_0.01,lev_s_tol_0.1,"
+                  "pixels_tol_0.1,thesis_s_tol_0.001,thesis_s_tol_0.01,thesis_s_tol_0.1"},
+      {"fraction", "scene,lights,tolerance,pixels,lights_tested_avg,fraction_pct,nodes_visited_avg,"
+                   "thesis_lights_tested,thesis_fraction_pct"},
+      {"error", "scene,lights,tolerance,pixels,pixel_error_avg_pct,pixel_error_max_pct,thesis_avg_pct,thesis_max_pct"},
+      {"work", "scene,lights,tolerance,pixels,lights_tested_avg,nodes_visited_avg,shadow_rays_avg,"
+               "thesis_lights_tested,thesis_nodes_visited"},
+      {"trade", "scene,lights,method,tolerance,time_s,speedup_over_rt,pixel_error_avg_pct,pixel_error_max_pct,"
+                "lights_tested_avg"},
+      {"limit", "scene,lights,render_s,bare_s,render_over_bare,closest_hit_rays,shadow_rays,render_mrays_per_s,"
+                "bare_mrays_per_s"},
+  };
+  for (const auto& [name, header] : columns) {
+    const fs::path csv = out / (name + ".csv");
+    ASSERT_TRUE(fs::exists(csv)) << name;
+    EXPECT_EQ(first_line(csv), header) << name;
+    const std::string text = read_file(csv);
+    EXPECT_GE(std::count(text.begin(), text.end(), '\n'), 2) << name << ": a header and at least one row";
+  }
+  for (const char* png : {"speed_building.png", "memory_building.png", "scaling_building.png", "fraction_building.png",
+                          "error_avg_building.png", "error_max_building.png", "work_lights_building.png",
+                          "work_volumes_building.png", "trade_avg.png", "trade_max.png", "limit.png"}) {
+    const fs::path p = out / png;
+    ASSERT_TRUE(fs::exists(p)) << png;
+    EXPECT_EQ(read_file(p).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
+  }
+  const std::string md = read_file(out / "results.md");
+  EXPECT_NE(md.find("## Headline"), std::string::npos);
+  for (const auto& [name, header] : columns) EXPECT_NE(md.find("## " + name + ":"), std::string::npos) << name;
+  EXPECT_NE(md.find("(speed_building.png)"), std::string::npos);
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
+  }
+}
+
+TEST_F(Bench, OnlyRunsTheNamedExperiments) {
+  const fs::path out = dir_ / "only";
+  const LevrtRun r = run_levrt({"bench", "--quick", "--only", "memory,limit", "--threads", "1", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "memory.csv"));
+  EXPECT_TRUE(fs::exists(out / "limit.csv"));
+  EXPECT_FALSE(fs::exists(out / "speed.csv"));
+  EXPECT_FALSE(fs::exists(out / "scaling.csv"));
+  EXPECT_NE(read_file(out / "results.md").find("--only memory,limit --threads 1"), std::string::npos);
+}
+
+TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
+  const std::string out = (dir_ / "never").string();
+  const std::string file = (dir_ / "a_file").string();
+  std::FILE* f = std::fopen(file.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  std::fputs("x", f);
+  std::fclose(f);
+  const std::vector<std::vector<std::string>> cases = {
+      {"--suite", "tables", "--out", out},
+      {"--suite", "", "--out", out},
+      {"--quick"},
+      {"--out", ""},
+      {"--out", file},
+      {"--only", "speeed", "--out", out},
+      {"--only", "", "--out", out},
+      {"--only", "speed,", "--out", out},
+      {"--threads", "-1", "--out", out},
+      {"--threads", "x", "--out", out},
+      {"--threads", "", "--out", out},
+      {"--threads", "2000", "--out", out},
+      {"--colour", "red", "--out", out},
+  };
+  for (const std::vector<std::string>& c : cases) {
+    std::vector<std::string> args = {"bench"};
+    args.insert(args.end(), c.begin(), c.end());
+    const LevrtRun r = run_levrt(args);
+    std::string label;
+    for (const std::string& a : c) label += a + " ";
+    label += ": " + r.output;
+    EXPECT_EQ(r.exit_code, 2) << label;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << label;
+    EXPECT_FALSE(fs::exists(out)) << label;
+  }
+  EXPECT_EQ(read_file(file), "x");
+  EXPECT_EQ(run_levrt({"bench", "--help"}).exit_code, 0);
+}
+
+}  // namespace

@@ -1,0 +1,170 @@
+// Property tests over random light scenes (fixed seeds): the walk returns exactly the lights
+// whose irradiance reaches the tolerance, for random points, tolerances, transforms and
+// spotlights at the extremes of their parameters; an instanced scene agrees with its flattened
+// twin.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "lev/extent_volume.h"
+#include "lev/important_lights.h"
+#include "lev/light_bvh.h"
+#include "lev/light_hierarchy.h"
+
+namespace {
+
+struct Random {
+  std::mt19937_64 engine;
+  explicit Random(std::uint64_t seed) : engine(seed) {}
+  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(engine); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine); }
+  glm::vec3 direction() {
+    glm::vec3 d;
+    do {
+      d = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+    } while (glm::dot(d, d) < 1e-4f || glm::dot(d, d) > 1.0f);
+    return glm::normalize(d);
+  }
+};
+
+lev::Light random_light(Random& r) {
+  const glm::vec3 p(r.uniform(-5, 5), r.uniform(-5, 5), r.uniform(-5, 5));
+  const float intensity = std::pow(10.0f, r.uniform(-3.0f, 3.0f));
+  if (r.integer(0, 2) == 0) return lev::make_point_light(p, glm::vec3(intensity, 0.5f * intensity, 0.0f));
+  static const float kAngles[] = {0.0f, 1e-4f, 0.3f, 1.5707964f, 2.5f, 3.1415927f};
+  static const float kDropoffs[] = {0.0f, 1.0f, 7.5f, 10000.0f};
+  return lev::make_spot_light(p, r.direction(), glm::vec3(intensity), kAngles[r.integer(0, 5)],
+                              kDropoffs[r.integer(0, 3)]);
+}
+
+lev::Similarity random_similarity(Random& r) {
+  lev::Similarity xf = lev::make_rotation(r.direction(), r.uniform(0.0f, 6.2831853f));
+  xf = lev::compose(lev::make_translation({r.uniform(-20, 20), r.uniform(-20, 20), r.uniform(-5, 5)}), xf);
+  return lev::compose(xf, lev::make_scale(std::pow(2.0f, r.uniform(-2.0f, 2.0f))));
+}
+
+lev::LightTree random_instanced_tree(Random& r) {
+  lev::LightTree tree;
+  const int masters = r.integer(1, 4);
+  for (int m = 0; m < masters; ++m) {
+    std::vector<lev::LightTreeNode> children;
+    const int count = r.integer(1, 5);
+    for (int c = 0; c < count; ++c) {
+      if (m > 0 && r.integer(0, 1) == 0) {
+        children.push_back(lev::affine_node(random_similarity(r), lev::instance_node(static_cast<std::uint32_t>(r.integer(0, m - 1)))));
+      } else {
+        children.push_back(lev::extent_volume_node(lev::affine_node(random_similarity(r), lev::light_node(random_light(r)))));
+      }
+    }
+    tree.masters.push_back(lev::union_node(std::move(children)));
+  }
+  std::vector<lev::LightTreeNode> roots;
+  for (int i = 0; i < 4; ++i) {
+    roots.push_back(lev::affine_node(random_similarity(r), lev::instance_node(static_cast<std::uint32_t>(r.integer(0, masters - 1)))));
+  }
+  tree.root = lev::union_node(std::move(roots));
+  return tree;
+}
+
+TEST(Property, WalkNeverMissesAndNeverAddsALight) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    Random r(seed);
+    lev::LightHierarchy h = lev::build_hierarchy(random_instanced_tree(r), 0.01f);
+    const std::vector<lev::Light> flat = lev::flatten_lights(h);
+    ASSERT_EQ(flat.size(), h.light_count);
+    lev::LightTree twin;
+    twin.root = lev::build_light_bvh(flat);
+    lev::LightHierarchy flattened = lev::build_hierarchy(twin, 0.01f);
+    lev::WalkScratch scratch;
+    for (int t = 0; t < 6; ++t) {
+      const float tau = t == 0 ? 0.0f : std::pow(10.0f, r.uniform(-5.0f, 1.0f));
+      lev::refit_hierarchy(h, tau);
+      lev::refit_hierarchy(flattened, tau);
+      for (int k = 0; k < 40; ++k) {
+        const glm::vec3 p(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
+        std::vector<lev::Light> found, found_flat;
+        lev::WalkCounters c1, c2;
+        lev::find_important_lights(h, p, scratch, found, c1);
+        lev::find_important_lights(flattened, p, scratch, found_flat, c2);
+        const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
+        ASSERT_EQ(found.size(), expected.size()) << "seed " << seed << " tau " << tau;
+        for (std::size_t i = 0; i < found.size(); ++i) {
+          ASSERT_EQ(found[i].position, expected[i].position) << "seed " << seed;
+          ASSERT_EQ(found[i].intensity, expected[i].intensity) << "seed " << seed;
+        }
+        ASSERT_EQ(found_flat.size(), expected.size()) << "seed " << seed << " tau " << tau;
+      }
+    }
+  }
+}
+
+TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
+  Random r(99);
+  lev::LightHierarchy h = lev::build_hierarchy(random_instanced_tree(r), 0.01f);
+  const std::vector<lev::Light> flat = lev::flatten_lights(h);
+  lev::WalkScratch scratch;
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  for (float tau : {tiny, std::numeric_limits<float>::min(), 1e-30f, 1e30f, std::numeric_limits<float>::max(),
+                    std::numeric_limits<float>::infinity()}) {
+    lev::refit_hierarchy(h, tau);
+    for (const lev::HierarchyNode& node : h.nodes) {
+      for (int a = 0; a < 3; ++a) {
+        ASSERT_FALSE(std::isnan(node.volume.lo[a]) || std::isnan(node.volume.hi[a])) << "tau " << tau;
+      }
+    }
+    for (int k = 0; k < 50; ++k) {
+      const glm::vec3 p(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
+      std::vector<lev::Light> found;
+      lev::WalkCounters c;
+      lev::find_important_lights(h, p, scratch, found, c);
+      EXPECT_EQ(found.size(), lev::important_lights_brute_force(flat, p, tau).size()) << "tau " << tau;
+      if (tau >= 1e30f) {
+        EXPECT_TRUE(found.empty());
+      }
+    }
+  }
+}
+
+TEST(Property, ExtremeIntensitiesStayFinite) {
+  for (float intensity : {0.0f, 1e-30f, 1e-10f, 1.0f, 1e10f, 1e30f, std::numeric_limits<float>::max()}) {
+    const lev::Light l = lev::make_point_light({0, 0, 0}, glm::vec3(intensity, 0.0f, intensity));
+    for (float d : {0.0f, 1e-20f, 1e-6f, 1.0f, 1e6f, 1e19f}) {
+      const glm::vec3 e = lev::irradiance(l, {d, 0, 0});
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_TRUE(std::isfinite(e[c])) << intensity << " at " << d;
+        EXPECT_GE(e[c], 0.0f);
+      }
+    }
+    const float r = lev::extent_radius(intensity, 0.01f);
+    EXPECT_FALSE(std::isnan(r));
+    if (intensity == 0.0f) {
+      EXPECT_EQ(r, 0.0f);
+      EXPECT_FALSE(lev::is_important(l, {1, 0, 0}, 0.0f));  // a dark light is never tested
+    }
+  }
+}
+
+TEST(Property, DegenerateSpotsKeepConservativeVolumes) {
+  Random r(5);
+  for (float angle : {0.0f, 1e-6f, 1e-3f, 1.5707964f, 3.1415927f}) {
+    for (float dropoff : {0.0f, 1.0f, 10000.0f}) {
+      const lev::Light spot = lev::make_spot_light({1, 2, 3}, r.direction(), {2, 2, 2}, angle, dropoff);
+      for (float tau : {1e-4f, 0.01f, 1.0f}) {
+        const lev::Bounds b = lev::light_extent_bounds(spot, tau);
+        ASSERT_FALSE(std::isnan(b.lo.x) || std::isnan(b.hi.x));
+        // Points on and near the axis, where a narrow cone still lights.
+        for (int k = 0; k < 2000; ++k) {
+          const glm::vec3 p = spot.position + r.uniform(0.0f, 30.0f) * glm::normalize(spot.direction + r.uniform(0.0f, 0.01f) * r.direction());
+          if (lev::is_important(spot, p, tau)) {
+            ASSERT_TRUE(lev::contains(b, p)) << "angle " << angle << " dropoff " << dropoff << " tau " << tau;
+          }
+          const float e = lev::irradiance_falloff(spot, p);
+          ASSERT_TRUE(std::isfinite(e) && e >= 0.0f);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace

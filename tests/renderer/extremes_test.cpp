@@ -1,0 +1,116 @@
+// Rendering at the extremes: lights of absurd intensity, lights resting on surfaces, degenerate
+// spotlights and tolerances at both ends. No Inf or NaN may reach a pixel, and `lev` at tolerance
+// 0 must still equal `rt` bit for bit.
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "lev/light_tree.h"
+#include "renderer/ray_scene.h"
+#include "renderer/render.h"
+#include "renderer/shapes.h"
+
+namespace {
+
+renderer::Scene extreme_scene() {
+  renderer::Scene scene;
+  scene.name = "extremes";
+  scene.materials.push_back({});  // diffuse grey
+  renderer::Material mirror;
+  mirror.ks = 0.5f;
+  mirror.kr = 0.5f;
+  scene.materials.push_back(mirror);
+  renderer::Material glass;
+  glass.kd = 0.1f;
+  glass.kt = 0.8f;
+  scene.materials.push_back(glass);
+  renderer::Prototype room;
+  renderer::TriangleMesh floor;
+  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
+  room.meshes.push_back(floor);
+  renderer::TriangleMesh box;
+  box.material = 1;
+  renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
+  room.meshes.push_back(box);
+  room.spheres.push_back({{3, 1, 1}, 1.0f, 2});
+  scene.geometry.prototypes.push_back(room);
+  scene.geometry.instances.push_back({0, lev::Similarity{}});
+
+  const float big = std::numeric_limits<float>::max();
+  std::vector<lev::LightTreeNode> lights;
+  lights.push_back(lev::light_node(lev::make_point_light({0, 4, 3}, {2, 2, 2})));
+  lights.push_back(lev::light_node(lev::make_point_light({5, 5, 0}, {1, 1, 1})));         // on the floor
+  lights.push_back(lev::light_node(lev::make_point_light({-1, -1, 2}, {1, 1, 1})));       // on the box top
+  lights.push_back(lev::light_node(lev::make_point_light({4, -4, 2}, {0, 0, 0})));        // dark
+  lights.push_back(lev::light_node(lev::make_point_light({-6, 6, 1}, {1e-30f, 0, 0})));  // negligible
+  lights.push_back(lev::light_node(lev::make_point_light({6, -6, 0.5f}, {1e30f, 1e30f, 0})));
+  lights.push_back(lev::light_node(lev::make_point_light({-7, 0, 0.1f}, {big, big, big})));
+  const float angles[] = {0.0f, 1e-5f, 1.5707964f, 3.1415927f};
+  const float dropoffs[] = {0.0f, 10000.0f};
+  int i = 0;
+  for (float a : angles) {
+    for (float p : dropoffs) {
+      lights.push_back(lev::light_node(lev::make_spot_light({-8.0f + 2.0f * i, 8, 4}, {0, 0, -1}, {5, 5, 5}, a, p)));
+      ++i;
+    }
+  }
+  scene.light_tree.root = lev::union_node(std::move(lights));
+  scene.lights = lev::build_hierarchy(scene.light_tree, 0.01f);
+  scene.camera.position = {0, -18, 9};
+  scene.camera.target = {0, 0, 0};
+  return scene;
+}
+
+renderer::Framebuffer render(renderer::Scene& scene, const renderer::RayScene& rays, lev::Method method, float tau) {
+  renderer::RenderSettings rs;
+  rs.width = 96;
+  rs.height = 72;
+  rs.method = method;
+  rs.tolerance = tau;
+  auto state = renderer::make_render_state(scene, rays, rs);
+  EXPECT_TRUE(renderer::render_pass(*state));
+  EXPECT_TRUE(renderer::render_pass(*state));
+  return renderer::render_framebuffer(*state);
+}
+
+void expect_finite(const renderer::Framebuffer& fb, const std::string& label) {
+  for (const glm::vec3& c : fb.radiance_sum) {
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(c[k]) && c[k] >= 0.0f) << label;
+  }
+}
+
+TEST(Extremes, NoInfOrNaNReachesAPixel) {
+  renderer::Scene scene = extreme_scene();
+  const renderer::RayScene rays(scene.geometry);
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  for (lev::Method method : {lev::Method::rt, lev::Method::ast, lev::Method::lev}) {
+    for (float tau : {0.0f, tiny, 1e-30f, 0.01f, 1.0f, 1e30f, std::numeric_limits<float>::infinity()}) {
+      expect_finite(render(scene, rays, method, tau), std::string(lev::method_info(method).name) + " " + std::to_string(tau));
+    }
+  }
+}
+
+TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
+  renderer::Scene scene = extreme_scene();
+  const renderer::RayScene rays(scene.geometry);
+  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f);
+  const renderer::Framebuffer lev = render(scene, rays, lev::Method::lev, 0.0f);
+  ASSERT_EQ(rt.radiance_sum.size(), lev.radiance_sum.size());
+  EXPECT_EQ(std::memcmp(rt.radiance_sum.data(), lev.radiance_sum.data(), rt.radiance_sum.size() * sizeof(glm::vec3)), 0);
+  // A denormal tolerance reaches the hierarchy as itself: no light is culled that rt shades
+  // except those below it, and none of this scene's lights is that dim except the 1e-30 one.
+  const renderer::Framebuffer denormal = render(scene, rays, lev::Method::lev, std::numeric_limits<float>::denorm_min());
+  EXPECT_EQ(renderer::framebuffer_rgb8(denormal), renderer::framebuffer_rgb8(rt));
+}
+
+TEST(Extremes, InfiniteToleranceTestsNoLight) {
+  renderer::Scene scene = extreme_scene();
+  const renderer::RayScene rays(scene.geometry);
+  const auto totals = renderer::sum_framebuffer(render(scene, rays, lev::Method::lev, std::numeric_limits<float>::infinity()));
+  EXPECT_EQ(totals.lights_tested, 0u);
+  EXPECT_GT(totals.shading_points, 0u);
+}
+
+}  // namespace

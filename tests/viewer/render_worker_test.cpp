@@ -1,0 +1,207 @@
+// The viewer's background worker without a window: tiles reach the UI side complete and equal to
+// a direct render, new requests cancel old ones, the rt reference survives refits and scene
+// changes drop it, and shutting down mid-render is prompt. Labelled "threads" (runs under tsan).
+#include "app/viewer/render_worker.h"
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "app/scene_loading.h"
+#include "app/viewer/display_image.h"
+#include "renderer/render.h"
+
+namespace {
+using namespace app::viewer;
+using Clock = std::chrono::steady_clock;
+
+struct Ui {
+  RenderWorker worker;
+  WorkerStatus status;
+  DisplayImage image;
+  DisplayImage reference;
+
+  // One UI frame: status first, then the tiles (as the viewer does).
+  void frame() {
+    status = worker.status();
+    const TakenTiles main = worker.take_tiles();
+    apply_tile_updates(image, main.updates);
+    const TakenTiles ref = worker.take_reference_tiles();
+    if (reference.generation != 0 && reference.generation < ref.floor) clear_display_image(reference);
+    apply_tile_updates(reference, ref.updates);
+  }
+
+  bool run_until(const std::function<bool()>& done, double seconds = 600.0) {
+    const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < deadline) {
+      frame();
+      if (done()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+  }
+
+  bool settled(std::uint64_t serial) {
+    return status.request_serial >= serial && status.phase == WorkerPhase::idle && image.generation == status.generation;
+  }
+};
+
+app::Settings small_settings() {
+  app::Settings s;
+  s.level = 2;
+  s.width = 48;
+  s.height = 36;
+  s.spp = 2;
+  s.depth = 2;
+  return s;
+}
+
+ViewRequest request_for(const app::Settings& s, bool reference = false) {
+  ViewRequest r;
+  r.settings = s;
+  r.want_reference = reference;
+  return r;
+}
+
+std::vector<std::uint8_t> direct_render_rgb8(const app::Settings& s) {
+  std::unique_ptr<app::LoadedScene> loaded = app::load_scene(s);
+  renderer::RenderStatePtr state =
+      renderer::make_render_state(loaded->scene, *loaded->rays, app::render_settings_from(s));
+  for (int pass = 0; pass < s.spp; ++pass) renderer::render_pass(*state);
+  return renderer::framebuffer_rgb8(renderer::render_framebuffer(*state));
+}
+
+TEST(RenderWorker, TheUiImageEqualsADirectRenderOfTheSameSettings) {
+  Ui ui;
+  const app::Settings s = small_settings();
+  const std::uint64_t serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.status.generation, serial);
+  EXPECT_EQ(ui.status.passes_done, 2);
+  EXPECT_EQ(ui.status.light_count, 16u);
+  EXPECT_GT(ui.status.hierarchy_bytes, 0u);
+  EXPECT_EQ(ui.image.tiles_seen, ui.status.tile_count);
+  EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s));
+  EXPECT_GT(sum_tile_totals(ui.image).shading_points, 0u);
+  EXPECT_TRUE(ui.worker.tiles_in_flight().empty());
+}
+
+TEST(RenderWorker, ALaterRequestCancelsTheRenderInFlightAndWins) {
+  Ui ui;
+  app::Settings slow = small_settings();
+  slow.level = 4;
+  slow.width = 160;
+  slow.height = 120;
+  slow.spp = 1000;
+  ui.worker.post(request_for(slow));
+  ASSERT_TRUE(ui.run_until([&] { return ui.image.tiles_seen > 0; }));
+  app::Settings fast = small_settings();
+  fast.tolerance = 0.1;
+  const std::uint64_t serial = ui.worker.post(request_for(fast));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.image.width, 48);
+  EXPECT_EQ(ui.status.tolerance, 0.1);
+  EXPECT_EQ(ui.image.rgb, direct_render_rgb8(fast));
+}
+
+TEST(RenderWorker, ResumedPassesKeepTheImageExact) {
+  // Requests that change nothing the render depends on interrupt the pass, which then resumes.
+  Ui ui;
+  app::Settings s = small_settings();
+  s.width = 96;
+  s.height = 72;
+  s.spp = 3;
+  std::uint64_t serial = ui.worker.post(request_for(s));
+  for (int i = 0; i < 20; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    serial = ui.worker.post(request_for(s));
+  }
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s));
+}
+
+TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
+  Ui ui;
+  app::Settings s = small_settings();
+  s.spp = 1;
+  ui.worker.post(request_for(s, true));
+  // Tolerance changes while the reference renders: the worker joins it, refits, resumes it.
+  for (double tolerance : {0.05, 0.2, 0.0}) {
+    s.tolerance = tolerance;
+    ui.worker.post(request_for(s, true));
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  s.method = "rt";
+  const std::uint64_t serial = ui.worker.post(request_for(s, true));
+  ASSERT_TRUE(ui.run_until([&] {
+    return ui.settled(serial) && ui.status.reference == ReferencePhase::done &&
+           ui.reference.tiles_seen == ui.status.reference_tile_count;
+  }));
+  const ErrorImage e = compute_error_image(ui.image, ui.reference);
+  EXPECT_EQ(e.pixels_compared, static_cast<std::size_t>(48 * 36));
+  EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
+  app::Settings rt = s;
+  EXPECT_EQ(ui.reference.rgb, direct_render_rgb8(rt));
+
+  // lev at a large tolerance differs from the reference, which is still the same.
+  s.method = "lev";
+  s.tolerance = 0.5;
+  const std::uint64_t lev = ui.worker.post(request_for(s, true));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(lev); }));
+  EXPECT_EQ(ui.status.reference, ReferencePhase::done);
+  EXPECT_GT(compute_error_image(ui.image, ui.reference).average_pct, 0.0);
+}
+
+TEST(RenderWorker, ANewViewDropsTheReference) {
+  Ui ui;
+  app::Settings s = small_settings();
+  s.spp = 1;
+  std::uint64_t serial = ui.worker.post(request_for(s, true));
+  ASSERT_TRUE(ui.run_until([&] { return ui.status.reference == ReferencePhase::done && ui.settled(serial); }));
+  ViewRequest moved = request_for(s, true);
+  renderer::Camera camera = ui.status.preset_camera;
+  camera.position.z += 3.0f;
+  moved.camera = camera;
+  serial = ui.worker.post(moved);
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial) && ui.status.reference == ReferencePhase::done; }));
+  EXPECT_EQ(ui.status.reference_generation, serial);
+  ASSERT_TRUE(ui.run_until([&] { return ui.reference.generation == serial; }));
+  // Dropping the request for a reference drops it.
+  serial = ui.worker.post(request_for(s, false));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.status.reference, ReferencePhase::none);
+  ui.frame();
+  EXPECT_EQ(ui.reference.generation, 0u);
+}
+
+TEST(RenderWorker, AFailedRequestIsReportedAndTheNextOneRecovers) {
+  Ui ui;
+  app::Settings bad = small_settings();
+  bad.level = 99;
+  ui.worker.post(request_for(bad));
+  ASSERT_TRUE(ui.run_until([&] { return ui.status.phase == WorkerPhase::failed; }));
+  EXPECT_NE(ui.status.error.find("level"), std::string::npos) << ui.status.error;
+  const std::uint64_t serial = ui.worker.post(request_for(small_settings()));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_TRUE(ui.status.error.empty());
+}
+
+TEST(RenderWorker, ShutsDownPromptlyMidRender) {
+  auto ui = std::make_unique<Ui>();
+  app::Settings slow = small_settings();
+  slow.level = 5;
+  slow.width = 320;
+  slow.height = 240;
+  slow.spp = 1000;
+  ui->worker.post(request_for(slow, true));
+  ASSERT_TRUE(ui->run_until([&] { return ui->image.tiles_seen > 0 && ui->reference.tiles_seen > 0; }));
+  const auto start = Clock::now();
+  ui.reset();
+  // Only the tiles in flight finish (one each per worker thread).
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);
+}
+
+}  // namespace

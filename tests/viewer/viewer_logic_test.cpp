@@ -1,0 +1,234 @@
+// The viewer's pure parts: camera moves, scripted changes, the UI-side image and its pixel
+// errors, the trade plot's points and the frame report.
+#include <cmath>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include "app/viewer/camera_control.h"
+#include "app/viewer/display_image.h"
+#include "app/viewer/frame_log.h"
+#include "app/viewer/scripted_changes.h"
+#include "app/viewer/trade_plot.h"
+#include "renderer/framebuffer.h"
+
+namespace {
+using namespace app::viewer;
+
+renderer::Camera test_camera() {
+  renderer::Camera c;
+  c.position = {3.0f, -8.0f, 5.0f};
+  c.target = {1.0f, 2.0f, 0.5f};
+  c.up = {0.0f, 0.0f, 1.0f};
+  return c;
+}
+
+TEST(CameraControl, OrbitKeepsTheTargetAndTheDistance) {
+  const renderer::Camera c = test_camera();
+  const renderer::Camera o = orbit_camera(c, 0.7f, 0.3f);
+  EXPECT_EQ(o.target, c.target);
+  EXPECT_NEAR(glm::length(o.position - o.target), glm::length(c.position - c.target), 1e-4f);
+  EXPECT_GT(glm::length(o.position - c.position), 0.1f);
+  // Pitch raises the eye; it never passes over the pole.
+  EXPECT_GT(orbit_camera(c, 0.0f, 0.2f).position.z, c.position.z);
+  const renderer::Camera top = orbit_camera(c, 0.0f, 10.0f);
+  const glm::vec3 dir = glm::normalize(top.position - top.target);
+  EXPECT_LT(dir.z, 1.0f);
+  EXPECT_GT(std::acos(dir.z), 0.01f);
+}
+
+TEST(CameraControl, YawTurnsAboutTheUpAxis) {
+  const renderer::Camera c = test_camera();
+  const renderer::Camera o = orbit_camera(c, 1.0f, 0.0f);
+  EXPECT_NEAR(o.position.z, c.position.z, 1e-4f);
+  const renderer::Camera back = orbit_camera(o, -1.0f, 0.0f);
+  EXPECT_NEAR(glm::length(back.position - c.position), 0.0f, 1e-4f);
+}
+
+TEST(CameraControl, PanMovesEyeAndTargetTogether) {
+  const renderer::Camera c = test_camera();
+  const renderer::Camera p = pan_camera(c, 0.25f, -0.5f);
+  EXPECT_NEAR(glm::length((p.position - c.position) - (p.target - c.target)), 0.0f, 1e-4f);
+  EXPECT_GT(glm::length(p.target - c.target), 0.1f);
+  // A full image height of pan moves by the visible height at the target.
+  const float distance = glm::length(c.target - c.position);
+  const float visible = 2.0f * distance * std::tan(glm::radians(c.vertical_fov_deg) * 0.5f);
+  EXPECT_NEAR(glm::length(pan_camera(c, 0.0f, 1.0f).target - c.target), visible, 1e-3f);
+}
+
+TEST(CameraControl, ZoomScalesTheDistance) {
+  const renderer::Camera c = test_camera();
+  const float d = glm::length(c.position - c.target);
+  EXPECT_NEAR(glm::length(zoom_camera(c, 0.5f).position - c.target), 0.5f * d, 1e-4f);
+  EXPECT_EQ(zoom_camera(c, 0.5f).target, c.target);
+  EXPECT_GT(glm::length(zoom_camera(c, 0.0f).position - c.target), 0.0f);
+}
+
+TEST(ScriptedChanges, ParseValidChanges) {
+  const ScriptedChange a = parse_scripted_change("tolerance=0.1@12");
+  EXPECT_EQ(a.key, "tolerance");
+  EXPECT_EQ(a.value, "0.1");
+  EXPECT_EQ(a.frame, 12);
+  EXPECT_EQ(parse_scripted_change("screenshot=/tmp/a@b.png@3").value, "/tmp/a@b.png");
+  for (const char* ok : {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1", "await=idle@2",
+                         "snapshot=out@9", "hover=10,20@4", "width=64@1"}) {
+    EXPECT_NO_THROW(parse_scripted_change(ok)) << ok;
+  }
+}
+
+TEST(ScriptedChanges, RejectMalformedChanges) {
+  for (const char* bad : {"tolerance=0.1", "tolerance@3", "=1@2", "tolerance=-1@3", "method=foo@1", "view=x@1",
+                          "colour=red@1", "lights=-4@1", "lights=abc@1", "reference=maybe@1", "await=soon@1",
+                          "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1"}) {
+    EXPECT_THROW(parse_scripted_change(bad), app::UsageError) << bad;
+  }
+}
+
+TEST(ScriptedChanges, ApplyChangesTheState) {
+  ViewerState s;
+  s.request_dirty = false;
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("tolerance=0.25@0")), ScriptAction::none);
+  EXPECT_DOUBLE_EQ(s.settings.tolerance, 0.25);
+  EXPECT_TRUE(s.request_dirty);
+  apply_scripted_change(s, parse_scripted_change("lights=4096@0"));
+  EXPECT_EQ(s.settings.level, 6);
+  apply_scripted_change(s, parse_scripted_change("view=error@0"));
+  EXPECT_EQ(s.view, ViewMode::error);
+  EXPECT_TRUE(s.want_reference);
+  EXPECT_THROW(apply_scripted_change(s, parse_scripted_change("lights=100@0")), app::UsageError);
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("await=idle@0")), ScriptAction::await_idle);
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("screenshot=a.png@0")), ScriptAction::screenshot);
+}
+
+TEST(ViewerState, NewSceneResetsTheCameraAndAViewChangeDropsTheReference) {
+  ViewerState s;
+  s.camera = renderer::Camera{};
+  s.want_reference = true;
+  app::Settings before = s.settings;
+  s.settings.tolerance = 0.5;
+  settings_changed(s, before, "tolerance");
+  EXPECT_TRUE(s.camera.has_value());
+  EXPECT_TRUE(s.want_reference);  // same view: the reference stays
+  before = s.settings;
+  s.settings.level = 4;
+  settings_changed(s, before, "level");
+  EXPECT_FALSE(s.camera.has_value());
+  EXPECT_FALSE(s.want_reference);
+}
+
+// A framebuffer with known content, and its tiles as the worker would post them.
+renderer::Framebuffer test_framebuffer(int w, int h, float shade, std::uint32_t samples) {
+  renderer::Framebuffer f = renderer::make_framebuffer(w, h);
+  for (std::size_t i = 0; i < f.samples.size(); ++i) {
+    f.samples[i] = samples;
+    f.radiance_sum[i] = glm::vec3(shade * static_cast<float>(i % 7) / 6.0f, shade, 0.25f) * static_cast<float>(samples);
+    f.shading_points[i] = 2 * samples;
+    f.lights_tested[i] = (i % 5) * samples;
+    f.nodes_visited[i] = 10 * samples;
+    f.shadow_rays[i] = (i % 5) * samples;
+  }
+  return f;
+}
+
+std::vector<TileUpdate> all_tiles(const renderer::Framebuffer& f, std::uint64_t generation, int pass, int tile_size) {
+  std::vector<TileUpdate> updates;
+  int tile = 0;
+  for (int y = 0; y < f.height; y += tile_size) {
+    for (int x = 0; x < f.width; x += tile_size, ++tile) {
+      updates.push_back(copy_tile(f, generation, tile, pass,
+                                  {x, y, std::min(x + tile_size, f.width), std::min(y + tile_size, f.height)}));
+    }
+  }
+  return updates;
+}
+
+TEST(DisplayImage, TilesRebuildTheFramebuffersColoursAndTotals) {
+  const renderer::Framebuffer f = test_framebuffer(37, 21, 0.8f, 3);
+  DisplayImage image;
+  EXPECT_TRUE(apply_tile_updates(image, all_tiles(f, 5, 2, 8)));
+  EXPECT_EQ(image.generation, 5u);
+  EXPECT_EQ(image.rgb, renderer::framebuffer_rgb8(f));
+  const renderer::FramebufferTotals t = renderer::sum_framebuffer(f);
+  const TileTotals s = sum_tile_totals(image);
+  EXPECT_EQ(s.samples, t.samples);
+  EXPECT_EQ(s.shading_points, t.shading_points);
+  EXPECT_EQ(s.lights_tested, t.lights_tested);
+  EXPECT_EQ(s.nodes_visited, t.nodes_visited);
+  EXPECT_EQ(s.shadow_rays, t.shadow_rays);
+  EXPECT_EQ(s.lights_tested_max, t.lights_tested_max);
+  EXPECT_EQ(image.tiles_seen, 15);
+  EXPECT_FLOAT_EQ(image.lights_tested[3], 3.0f);
+}
+
+TEST(DisplayImage, OlderGenerationsAreDroppedAndNewerOnesKeepADimmedBackdrop) {
+  DisplayImage image;
+  apply_tile_updates(image, all_tiles(test_framebuffer(16, 16, 0.8f, 1), 3, 0, 8));
+  EXPECT_FALSE(apply_tile_updates(image, all_tiles(test_framebuffer(16, 16, 0.1f, 1), 2, 0, 8)));
+  const std::vector<std::uint8_t> before = image.rgb;
+  std::vector<TileUpdate> next = all_tiles(test_framebuffer(16, 16, 0.1f, 1), 4, 0, 8);
+  next.resize(1);  // only the first tile of the new render so far
+  EXPECT_TRUE(apply_tile_updates(image, next));
+  EXPECT_EQ(image.generation, 4u);
+  EXPECT_EQ(image.samples[0], 1u);
+  EXPECT_EQ(image.samples[15 * 16 + 15], 0u);
+  renderer::HeatmapRange range;
+  const std::vector<std::uint8_t> shown = view_rgb8(image, ErrorImage{}, ViewMode::image, range);
+  const std::size_t stale = 3 * (15 * 16 + 15);
+  EXPECT_EQ(image.rgb[stale], before[stale]);
+  EXPECT_LT(shown[stale + 1], before[stale + 1]);  // dimmed
+}
+
+TEST(DisplayImage, ErrorAgainstTheReferenceUsesPassZero) {
+  DisplayImage image, reference;
+  const renderer::Framebuffer pass0 = test_framebuffer(16, 8, 0.5f, 1);
+  apply_tile_updates(reference, all_tiles(pass0, 7, 0, 8));
+  apply_tile_updates(image, all_tiles(pass0, 9, 0, 8));
+  ErrorImage e = compute_error_image(image, reference);
+  EXPECT_EQ(e.pixels_compared, 128u);
+  EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
+  // A later pass changes the colour shown but not the pass-0 image the error compares.
+  apply_tile_updates(image, all_tiles(test_framebuffer(16, 8, 0.9f, 2), 9, 1, 8));
+  e = compute_error_image(image, reference);
+  EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
+  // A different pass 0 has an error, and the error view colours every compared pixel.
+  DisplayImage other;
+  apply_tile_updates(other, all_tiles(test_framebuffer(16, 8, 0.4f, 1), 11, 0, 8));
+  e = compute_error_image(other, reference);
+  EXPECT_GT(e.average_pct, 0.0);
+  renderer::HeatmapRange range;
+  view_rgb8(other, e, ViewMode::error, range);
+  EXPECT_GT(range.max, 0.0);
+  EXPECT_TRUE(pixel_info(other, e, 3, 3).error_pct.has_value());
+}
+
+TEST(TradePlot, PointsBelongToOneReferenceAndReplaceTheSameSetting) {
+  TradePlot plot;
+  follow_reference(plot, 4);
+  add_trade_point(plot, {"lev", 0.01, 0.5, 0.2, 3.0, false, 10});
+  add_trade_point(plot, {"lev", 0.1, 0.2, 1.2, 9.0, false, 11});
+  add_trade_point(plot, {"lev", 0.01, 0.4, 0.2, 3.0, false, 12});
+  EXPECT_EQ(plot.points.size(), 2u);
+  EXPECT_TRUE(has_trade_point(plot, 12));
+  EXPECT_FALSE(has_trade_point(plot, 10));
+  follow_reference(plot, 4);
+  EXPECT_EQ(plot.points.size(), 2u);
+  follow_reference(plot, 5);
+  EXPECT_TRUE(plot.points.empty());
+}
+
+TEST(FrameLog, ReportsFrameTimesAndFirstTileLatency) {
+  FrameLog log;
+  for (int i = 0; i < 10; ++i) record_frame(log, 16.0 + i, 5.0, i % 2 == 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  record_post(log, "tolerance=0.1", 7, t0);
+  record_first_tile(log, 6, t0 + std::chrono::milliseconds(5));
+  EXPECT_LT(log.latencies[0].first_tile_ms, 0.0);
+  record_first_tile(log, 8, t0 + std::chrono::milliseconds(40));
+  EXPECT_NEAR(log.latencies[0].first_tile_ms, 40.0, 1e-6);
+  const FrameTimeSummary s = summarize_frames(log.frame_ms);
+  EXPECT_EQ(s.frames, 10u);
+  EXPECT_DOUBLE_EQ(s.max_ms, 25.0);
+  EXPECT_NE(frame_report(log).find("tolerance=0.1: first tile on screen after 40.0 ms"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,184 @@
+// The real viewer window under Xvfb, in scripted mode: open, render, switch method, move the
+// tolerance mid-render, switch every view (the error view computes the rt reference), save a
+// snapshot, and write the window to a PNG. Skipped only when xvfb-run is missing. Labelled
+// "threads": under the tsan preset the UI thread, the tile workers and the reference thread
+// share the display buffers and the cancel flag.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+
+namespace {
+namespace fs = std::filesystem;
+
+struct CommandRun {
+  int exit_code = -1;
+  std::string output;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+CommandRun run_shell(const std::string& command) {
+  CommandRun run;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+bool have_xvfb() { return std::system("command -v xvfb-run > /dev/null 2>&1") == 0; }
+
+CommandRun run_viewer(const std::vector<std::string>& args) {
+  std::string command = "xvfb-run -a -s '-screen 0 1280x800x24' " + quote(LEVRT_BINARY) + " view";
+  for (const std::string& a : args) command += " " + quote(a);
+  return run_shell(command);
+}
+
+struct Png {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+  bool ok() const { return width > 0; }
+  const unsigned char* at(int x, int y) const { return &rgb[3 * (static_cast<std::size_t>(y) * width + x)]; }
+};
+
+Png read_png(const fs::path& path) {
+  Png png;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
+  if (!data) return {};
+  png.rgb.assign(data, data + 3 * static_cast<std::size_t>(png.width) * png.height);
+  stbi_image_free(data);
+  return png;
+}
+
+bool uniform(const Png& png) {
+  for (int y = 0; y < png.height; ++y) {
+    for (int x = 0; x < png.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        if (png.at(x, y)[c] != png.at(0, 0)[c]) return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Pixels that differ inside the picture (right of the panel, above the statistics).
+int picture_differences(const Png& a, const Png& b) {
+  int differences = 0;
+  for (int y = a.height * 15 / 100; y < a.height * 55 / 100; ++y) {
+    for (int x = a.width / 2; x < a.width * 9 / 10; ++x) {
+      if (a.at(x, y)[0] != b.at(x, y)[0] || a.at(x, y)[1] != b.at(x, y)[1] || a.at(x, y)[2] != b.at(x, y)[2]) {
+        ++differences;
+      }
+    }
+  }
+  return differences;
+}
+
+class ViewerWindow : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // The pid keeps concurrent runs (other build folders, ctest -j) apart.
+    dir_ = fs::temp_directory_path() /
+           ("levrt_view_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_F(ViewerWindow, WithoutADisplayExitsTwoNamingTheHeadlessRoute) {
+  const CommandRun r = run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + quote(LEVRT_BINARY) + " view");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("levrt render"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("display"), std::string::npos) << r.output;
+}
+
+TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
+  for (const char* change : {"tolerance=abc@3", "view=sideways@1", "colour=red@2", "method=lev"}) {
+    const CommandRun r = run_shell("env -u DISPLAY " + quote(LEVRT_BINARY) + " view --frames 3 --set " + quote(change));
+    EXPECT_EQ(r.exit_code, 2) << change << ": " << r.output;
+    EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
+  }
+  const CommandRun r = run_shell("env -u DISPLAY " + quote(LEVRT_BINARY) + " view --window 10x10");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  const std::string final_png = path("final.png");
+  const CommandRun r = run_viewer({
+      "--lights", "64", "--width", "128", "--height", "96", "--spp", "2", "--window", "1024x640",
+      "--frames", "40", "--screenshot", final_png, "--report-fps",
+      "--set", "await=idle@0",
+      "--set", "screenshot=" + path("before.png") + "@1",
+      "--set", "method=ast@2",               // switch the method
+      "--set", "tolerance=0.3@3",            // and move the tolerance while it renders
+      "--set", "method=lev@5",
+      "--set", "tolerance=1@6",
+      "--set", "await=idle@7",
+      "--set", "screenshot=" + path("tolerance.png") + "@8",
+      "--set", "view=lights@9",
+      "--set", "await=idle@10",
+      "--set", "screenshot=" + path("lights.png") + "@11",
+      "--set", "view=nodes@12",
+      "--set", "view=error@14",              // starts the rt reference
+      "--set", "await=idle@15",
+      "--set", "hover=64,48@16",
+      "--set", "screenshot=" + path("error.png") + "@17",
+      "--set", "snapshot=" + path("snap") + "@18",
+      "--set", "view=image@20",
+      "--set", "lights=256@22",              // a new scene level, rebuilt on the worker
+      "--set", "await=idle@23",
+  });
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("frames while tracing"), std::string::npos) << r.output;
+
+  const Png final_shot = read_png(final_png);
+  ASSERT_TRUE(final_shot.ok()) << r.output;
+  EXPECT_EQ(final_shot.width, 1024);
+  EXPECT_EQ(final_shot.height, 640);
+  EXPECT_FALSE(uniform(final_shot));
+
+  const Png before = read_png(path("before.png"));
+  const Png tolerance = read_png(path("tolerance.png"));
+  const Png lights = read_png(path("lights.png"));
+  const Png error = read_png(path("error.png"));
+  ASSERT_TRUE(before.ok() && tolerance.ok() && lights.ok() && error.ok()) << r.output;
+  for (const Png* p : {&before, &tolerance, &lights, &error}) {
+    EXPECT_EQ(p->width, 1024);
+    EXPECT_EQ(p->height, 640);
+    EXPECT_FALSE(uniform(*p));
+  }
+  // Each change shows in the picture itself, not only in the panel.
+  EXPECT_GT(picture_differences(before, tolerance), 1000);
+  EXPECT_GT(picture_differences(tolerance, lights), 1000);
+  EXPECT_GT(picture_differences(lights, error), 1000);
+
+  for (const char* f : {"view_building_64_lev_1.png", "view_building_64_lev_1_error.png",
+                        "view_building_64_lev_1_stats.json"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "snap" / f)) << f << "\n" << r.output;
+  }
+}
+
+}  // namespace
