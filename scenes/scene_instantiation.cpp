@@ -391,7 +391,7 @@ bool is_light_leaf(const lev::LightTreeNode& n) {
 class LightTreeBuilder {
  public:
   LightTreeBuilder(const SceneDescription& scene, const Analysis& analysis)
-      : scene_(scene), light_master_(scene.masters.size(), kNone) {
+      : light_master_(scene.masters.size(), kNone) {
     for (std::uint32_t m : analysis.order()) {
       if (analysis.master(m).lights == 0) continue;
       std::optional<lev::LightTreeNode> node = convert(scene.masters[m].node);
@@ -468,7 +468,6 @@ class LightTreeBuilder {
     children = std::move(kept);
   }
 
-  const SceneDescription& scene_;
   std::vector<std::uint32_t> light_master_;
   lev::LightTree tree_;
 };
