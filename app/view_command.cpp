@@ -11,11 +11,14 @@ namespace app {
 void add_view_flags(CLI::App& command, ViewFlags& flags) {
   command.add_option("--frames", flags.frames, "scripted: run this many UI frames, then exit")
       ->check(CLI::NonNegativeNumber);
-  command.add_option("--screenshot", flags.screenshot, "scripted: write the window to this PNG after the last frame");
-  command.add_option("--set", flags.changes,
-                     "scripted: change a control at a frame, key=value@frame (a setting, lights, view, "
-                     "reference, snapshot, screenshot, await)");
-  command.add_flag("--report-fps", flags.report_fps, "print UI frame times and first-tile latencies at exit");
+  command.add_option("--screenshot", flags.screenshot,
+                     "scripted: write the window to this PNG after the last frame");
+  command.add_option(
+      "--set", flags.changes,
+      "scripted: change a control at a frame, key=value@frame (a setting, lights, view, "
+      "reference, snapshot, screenshot, await)");
+  command.add_flag("--report-fps", flags.report_fps,
+                   "print UI frame times and first-tile latencies at exit");
   command.add_option("--window", flags.window, "window size, WIDTHxHEIGHT");
 }
 
@@ -34,7 +37,8 @@ int run_view(const Settings& settings, const ViewFlags& flags) {
 #else
   (void)settings;
   (void)flags;
-  throw NoDisplayError("view: this levrt was built without the viewer; use `levrt render` to render headless");
+  throw NoDisplayError(
+      "view: this levrt was built without the viewer; use `levrt render` to render headless");
 #endif
 }
 

@@ -10,18 +10,39 @@ namespace {
 // back whole stalls on store forwarding, which was the walk's largest cost.
 void push_frame(std::vector<WalkFrame>& stack, const glm::vec3& local_point, std::uint32_t node,
                 const glm::vec3& world_translation, std::uint32_t linear, bool volume_tested) {
-  stack.push_back(WalkFrame{local_point, node, world_translation, linear, volume_tested});
+  WalkFrame& frame = stack.emplace_back();
+  frame.local_point = local_point;
+  frame.node = node;
+  frame.world_translation = world_translation;
+  frame.linear = linear;
+  frame.volume_tested = volume_tested;
 }
 
-// The light seen through world_from_local = (linear, translation). With the identity linear part
-// this is transform_light's arithmetic without the products by one (which are exact), so the
-// floats are the same either way.
-Light world_light(const Light& light, const WalkLinear& linear, bool identity, const glm::vec3& translation) {
-  if (!identity) return transform_light(light, Similarity{linear.rotation, linear.scale, translation});
-  Light l = light;
-  l.position = light.position + translation;
-  if (light.kind == LightKind::spot) l.direction = glm::normalize(light.direction);
+// Appends the light seen through world_from_local = (linear, translation). With the identity
+// linear part this is transform_light's arithmetic without the products by one (which are
+// exact), so the floats are the same either way. Written in place, like the frames.
+Light& push_world_light(std::vector<Light>& out, const Light& light, const WalkLinear& linear, bool identity,
+                        const glm::vec3& translation) {
+  Light& l = out.emplace_back(light);
+  if (identity) {
+    l.position = light.position + translation;
+    if (light.kind == LightKind::spot) l.direction = glm::normalize(light.direction);
+  } else {  // transform_light(light, {linear.rotation, linear.scale, translation}), in place
+    l.position = linear.rotation * (linear.scale * light.position) + translation;
+    l.intensity = light.intensity * (linear.scale * linear.scale);
+    if (light.kind == LightKind::spot) l.direction = glm::normalize(linear.rotation * light.direction);
+  }
   return l;
+}
+
+constexpr std::uint32_t kNoNode = ~0u;
+
+// The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
+glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std::uint32_t linear_index,
+                              const glm::vec3& xf_translation, const glm::vec3& translation) {
+  if (linear_index == 0) return xf_translation + translation;
+  const WalkLinear& outer = linear[linear_index];
+  return outer.rotation * (outer.scale * xf_translation) + translation;
 }
 
 // One walk for both the query (cull = true) and the flattening (cull = false): sharing it is what
@@ -58,13 +79,11 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light: {
-          const Light world =
-              world_light(h.lights[node.payload], linear[linear_index], linear_index == 0, translation);
+          const Light& world =
+              push_world_light(out, h.lights[node.payload], linear[linear_index], linear_index == 0, translation);
           if constexpr (kCull) {
             ++visited;
-            if (is_important(world, point, h.tolerance)) out.push_back(world);
-          } else {
-            out.push_back(world);
+            if (!is_important(world, point, h.tolerance)) out.pop_back();
           }
           break;
         }
@@ -72,12 +91,7 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
           const Similarity& xf = h.transforms[node.payload];
           const bool translation_only = (node.flags & kTranslationOnly) != 0;
           // compose(world_from_local, xf), in two parts.
-          if (linear_index == 0) {
-            translation = xf.translation + translation;
-          } else {
-            const WalkLinear& outer = linear[linear_index];
-            translation = outer.rotation * (outer.scale * xf.translation) + translation;
-          }
+          translation = compose_translation(linear, linear_index, xf.translation, translation);
           if (!translation_only) {
             const WalkLinear outer = linear[linear_index];
             WalkLinear& inner = linear.emplace_back();
@@ -116,11 +130,14 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
           const std::uint32_t count = children[0];
           // The first child that passes is walked right away; the later ones are pushed
           // last-first so that they come off the stack in order (depth-first, left to right).
-          constexpr std::uint32_t kNone = ~0u;
-          std::uint32_t first = kNone;
+          // (Plain locals, not frame structs: a struct assembled field by field and then copied
+          // whole stalls on store forwarding.)
+          glm::vec3 first_point(0.0f), first_translation(0.0f);
+          std::uint32_t first = kNoNode;
           bool first_tested = false;
           for (std::uint32_t k = count; k > 0; --k) {
-            const std::uint32_t child = children[k];
+            glm::vec3 child_point = local_point, child_translation = translation;
+            std::uint32_t child = children[k];
             bool tested = false;
             if constexpr (kCull) {
               const HierarchyNode& c = h.nodes[child];
@@ -131,13 +148,30 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
                 if (!contains(c.volume, local_point)) continue;
                 tested = true;
               }
+              // The instancing pattern, translation -> instance -> master, is entered here in one
+              // step rather than node by node: the same arithmetic as the affine case, and the
+              // master's test is the one just made (up to padding).
+              if (c.kind == NodeKind::affine && (c.flags & kTranslationOnly) != 0 &&
+                  h.nodes[child + 1].kind == NodeKind::instance) {
+                const glm::vec3& t = h.transforms[c.payload].translation;
+                child_translation = compose_translation(linear, linear_index, t, translation);
+                child_point = local_point - t;
+                child = h.nodes[child + 1].payload + 1;  // below the master
+                tested = false;
+              }
             }
-            if (first != kNone) push_frame(stack, local_point, first, translation, linear_index, first_tested);
+            if (first != kNoNode) {
+              push_frame(stack, first_point, first, first_translation, linear_index, first_tested);
+            }
+            first_point = child_point;
+            first_translation = child_translation;
             first = child;
             first_tested = tested;
           }
-          if (first != kNone) {
+          if (first != kNoNode) {
+            local_point = first_point;
             index = first;
+            translation = first_translation;
             volume_tested = first_tested;
             descend = true;
           }

@@ -66,6 +66,9 @@ inline float irradiance_falloff(const Light& light, const glm::vec3& x) {
   // Warn's cos^P is defined for the front hemisphere; behind the light (cone wider than 90
   // degrees) a spot with a dropoff contributes nothing. pow underflows to 0 for huge P, never NaN.
   if (cos_gamma <= 0.0f) return 0.0f;
+  // P = 1 is common (glTF-like spots, the hall) and pow's call dominated the walk there;
+  // pow(c, 1) is c exactly (checked for every float in (0, 1.0002]), so the result is the same.
+  if (light.dropoff == 1.0f) return cos_gamma / d2;
   return std::pow(cos_gamma, light.dropoff) / d2;
 }
 

@@ -176,10 +176,12 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
   std::snprintf(intro, sizeof intro,
                 "Seconds per %dx%d frame (render passes, median of %d runs) for the three methods at tolerance %s. "
                 "Where a column says `1/%d` px, that method rendered one pixel of every %dx%d block and its time is "
-                "scaled to the whole frame (rt and ast above %s lights). Ratios are taken within this run. "
+                "scaled to the whole frame (rt and ast above %s lights, and any frame that would take over %.0f s). "
+                "Ratios are taken within this run. "
                 "The thesis timed whole runs on a 300 MHz SUN ULTRA10, so only its ratios compare.\n\n",
                 c.width, c.height, c.runs, tolerance_text(c.tolerance).c_str(), c.subsample_stride * c.subsample_stride,
-                c.subsample_stride, c.subsample_stride, format_count(c.subsample_above).c_str());
+                c.subsample_stride, c.subsample_stride, format_count(c.subsample_above).c_str(),
+                c.max_full_frame_seconds);
   section.markdown = "## speed: rt, ast and lev (thesis Tables 1, 2)\n\n" + quick_note(run) + intro +
                      missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
@@ -487,7 +489,8 @@ Section run_fraction(BenchRun& run, const std::string& out_dir) {
                      "as a fraction of all lights. At tolerance 0 every light is selected by definition. Counts "
                      "are exact averages of one deterministic render; `1/" +
                      std::to_string(c.subsample_stride * c.subsample_stride) +
-                     "` px marks the costly ones (tolerance 0 at many lights) taken on one pixel of every " +
+                     "` px marks the costly ones (a frame over " + format_fixed(c.max_full_frame_seconds, 0) +
+                     " s: tolerance 0 at many lights, the hall) taken on one pixel of every " +
                      std::to_string(c.subsample_stride) + "x" + std::to_string(c.subsample_stride) + " block.\n\n" + missing_scenes_note(run) +
                      table_markdown(table) + "\n" + plots;
   return section;
@@ -566,10 +569,9 @@ Section run_error(BenchRun& run, const std::string& out_dir) {
   section.markdown =
       "## error: pixel error of lev against rt (thesis Tables 10, 11)\n\n" + quick_note(run) +
       "Per pixel |dR|+|dG|+|dB| on the 0..255 scale as a percentage of 765, against the rt image of the same "
-      "view; average and maximum over the pixels. Above " +
-      format_count(c.subsample_above) + " lights both images are taken on the same `1/" +
+      "view; average and maximum over the pixels. Where the rt reference was subsampled (px `1/" +
       std::to_string(c.subsample_stride * c.subsample_stride) +
-      "` pixel subsample (so the maximum is over fewer pixels). Table 11's light counts did not survive in the "
+      "`, as in the speed table) lev is taken on the same pixels, so the maximum is over fewer of them. Table 11's light counts did not survive in the "
       "thesis text; its largest values are quoted in the headline.\n\n" +
       missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;

@@ -205,27 +205,40 @@ Axis make_axis(bool log, double lo, double hi) {
     hi = log ? 10.0 : 1.0;
   }
   if (log) {
-    double dlo = std::floor(std::log10(lo) + 1e-9), dhi = std::ceil(std::log10(hi) - 1e-9);
-    if (dhi <= dlo) {
-      dlo -= 1.0;
-      dhi += 1.0;
+    // The range snaps outwards to 1, 2 or 5 times a power of ten, so the data fills the plot.
+    auto snap_down = [](double v) {
+      const double p = std::pow(10.0, std::floor(std::log10(v) + 1e-9));
+      for (double m : {5.0, 2.0, 1.0}) {
+        if (m * p <= v * (1.0 + 1e-9)) return m * p;
+      }
+      return p;
+    };
+    auto snap_up = [](double v) {
+      const double p = std::pow(10.0, std::floor(std::log10(v) - 1e-9));
+      for (double m : {1.0, 2.0, 5.0, 10.0}) {
+        if (m * p >= v * (1.0 - 1e-9)) return m * p;
+      }
+      return 10.0 * p;
+    };
+    a.lo = snap_down(lo);
+    a.hi = snap_up(hi);
+    if (a.hi <= a.lo) {
+      a.lo /= 10.0;
+      a.hi *= 10.0;
     }
-    a.lo = std::pow(10.0, dlo);
-    a.hi = std::pow(10.0, dhi);
-    const bool few_decades = dhi - dlo <= 2.0;
-    for (double d = dlo; d <= dhi + 1e-9; d += 1.0) {
+    const bool few_decades = a.hi / a.lo <= 1000.0;
+    for (double d = std::floor(std::log10(a.lo)) - 1.0; d <= std::ceil(std::log10(a.hi)) + 1e-9; d += 1.0) {
       const double p = std::pow(10.0, d);
-      a.ticks.push_back(p);
-      if (d >= dhi) break;
-      for (int m = 2; m <= 9; ++m) {
-        if (few_decades && (m == 2 || m == 5)) {
-          a.ticks.push_back(m * p);
+      for (int m = 1; m <= 9; ++m) {
+        const double t = m * p;
+        if (t < a.lo * (1.0 - 1e-9) || t > a.hi * (1.0 + 1e-9)) continue;
+        if (m == 1 || (few_decades && (m == 2 || m == 5))) {
+          a.ticks.push_back(t);
         } else {
-          a.minor_ticks.push_back(m * p);
+          a.minor_ticks.push_back(t);
         }
       }
     }
-    std::sort(a.ticks.begin(), a.ticks.end());
     return a;
   }
   if (lo >= 0.0 && lo < 0.3 * hi) lo = 0.0;  // counts and times read best from zero

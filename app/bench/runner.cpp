@@ -18,14 +18,15 @@ SuiteConfig thesis_suite(bool quick) {
   // The same experiments at sizes that finish in seconds; the figures mean little, the files
   // and their columns are what CI checks.
   c.quick = true;
-  c.width = 64;
-  c.height = 48;
+  c.width = 48;
+  c.height = 36;
+  c.extra_runs_seconds = 0.0;
   c.max_lights = 256;
-  c.max_scaling_lights = 1024;
+  c.max_scaling_lights = 256;
   c.max_memory_lights = 4096;
   c.subsample_above = 64;  // so that the subsampled path runs too
   c.subsample_stride = 2;
-  c.lev_subsample_tests = 150.0;
+  c.max_full_frame_seconds = 0.5;
   c.fraction_tolerances = {0.0, 0.002, 0.01};
   c.error_tolerances = {0.002, 0.01};
   c.trade_lights.clear();
@@ -123,15 +124,28 @@ double estimated_tests(const std::string& method, std::uint64_t lights, double t
 }  // namespace
 
 int BenchRun::stride_for(const std::string& scene, int level, const std::string& method, double tolerance) {
-  const std::uint64_t lights = light_count(scene, level);
-  if (method != "lev") return lights > config_.subsample_above ? config_.subsample_stride : 1;
-  return lev_tests_per_point(scene, level, tolerance) > config_.lev_subsample_tests ? config_.subsample_stride : 1;
+  if (method != "lev" && light_count(scene, level) > config_.subsample_above) return config_.subsample_stride;
+  return full_frame_estimate(scene, level, method, tolerance) > config_.max_full_frame_seconds
+             ? config_.subsample_stride
+             : 1;
+}
+
+const Measurement& BenchRun::probe(const std::string& scene, int level, const std::string& method, double tolerance) {
+  constexpr int kProbeStride = 8;
+  return measure({scene, level, method, tolerance, kProbeStride, 1});
+}
+
+double BenchRun::full_frame_estimate(const std::string& scene, int level, const std::string& method, double tolerance) {
+  if (planning_) {
+    constexpr double kUnitsPerSecond = 5e6;  // what this machine did, roughly: for the plan only
+    return render_cost(method, light_count(scene, level), tolerance, 1) / kUnitsPerSecond;
+  }
+  return probe(scene, level, method, tolerance).full_frame_seconds();
 }
 
 double BenchRun::lev_tests_per_point(const std::string& scene, int level, double tolerance) {
-  constexpr int kProbeStride = 8;
   if (planning_) return estimated_tests("lev", light_count(scene, level), tolerance);
-  return measure({scene, level, "lev", tolerance, kProbeStride, 1}).lights_tested_avg();
+  return probe(scene, level, "lev", tolerance).lights_tested_avg();
 }
 
 double BenchRun::render_cost(const std::string& method, std::uint64_t lights, double tolerance, int stride) const {
@@ -206,15 +220,13 @@ std::vector<const Measurement*> BenchRun::measure_together(const std::vector<Mea
     pending.push_back(std::move(p));
   }
   // Round-robin: run k of every request before run k+1 of any, so a change in the machine's load
-  // (it is shared) falls on all the methods of a comparison alike. Quick renders get extra runs,
-  // up to kMaxRuns or kCheapSeconds spent, for a steadier median.
-  constexpr int kMaxRuns = 9;
-  constexpr double kCheapSeconds = 2.0;
+  // (it is shared) falls on all the methods of a comparison alike. Quick renders get extra runs
+  // for a steadier median.
   for (int round = 0;; ++round) {
     bool any = false;
     for (Pending& p : pending) {
       const bool base = round < p.m.request.runs;
-      const bool extra = p.m.request.runs > 1 && round < kMaxRuns && p.spent < kCheapSeconds;
+      const bool extra = p.m.request.runs > 1 && round < config_.max_runs && p.spent < config_.extra_runs_seconds;
       if (!base && !extra) continue;
       const MeasureRequest& r = p.m.request;
       LoadedScene& loaded = scene(r.scene, r.level);
@@ -247,12 +259,14 @@ std::vector<const Measurement*> BenchRun::measure_together(const std::vector<Mea
     const int runs = static_cast<int>(m.run_seconds.size());
     Measurement& stored = cache_[key_of(r)] = std::move(m);
     out[p.index] = &stored;
+    const MeasureRequest& done = stored.request;  // r was moved with m
 
     char what[256];
-    std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s", r.scene.c_str(),
-                  format_count(stored.lights).c_str(), r.method.c_str(), r.tolerance, pixels_text(r.stride).c_str(),
-                  stored.seconds, runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
-    report(what, render_cost(r.method, stored.lights, r.tolerance, r.stride) * r.runs);
+    std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s", done.scene.c_str(),
+                  format_count(stored.lights).c_str(), done.method.c_str(), done.tolerance,
+                  pixels_text(done.stride).c_str(), stored.seconds,
+                  runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
+    report(what, render_cost(done.method, stored.lights, done.tolerance, done.stride) * done.runs);
   }
   return out;
 }

@@ -28,18 +28,21 @@ struct SuiteConfig {
   bool quick = false;
   int width = 320;  // thesis 5.4: every image is 320x240
   int height = 240;
-  int runs = 3;  // every timing is the median of this many runs
+  int runs = 3;  // every timing is the median of at least this many runs
+  // Timings quicker than this get extra runs (up to max_runs) for a steadier median.
+  double extra_runs_seconds = 2.0;
+  int max_runs = 9;
   std::vector<std::string> scenes{"building", "maze", "hall"};
   std::uint64_t min_lights = 40;     // the thesis starts at 45 (maze) and 64 lights
   std::uint64_t max_lights = 16384;  // speed, fraction, error: the thesis' range
   std::uint64_t max_scaling_lights = 1u << 20;
   std::uint64_t max_memory_lights = 1u << 20;
   // rt and ast above this many lights render one pixel of every subsample_stride^2 block and are
-  // scaled to the whole frame; lev too when it shadow-tests more than lev_subsample_tests lights
-  // per point (tolerance 0, or the hall, where most lights reach every point).
+  // scaled to the whole frame; so does any render whose full frame would take longer than
+  // max_full_frame_seconds (BenchRun::stride_for).
   std::uint64_t subsample_above = 4096;
   int subsample_stride = 4;
-  double lev_subsample_tests = 1500.0;
+  double max_full_frame_seconds = 40.0;
   double tolerance = 0.01;  // thesis Test 1.1
   std::vector<double> scaling_tolerances{0.001, 0.01, 0.1};                              // Tables 4, 5
   std::vector<double> fraction_tolerances{0.0, 0.0001, 0.002, 0.004, 0.006, 0.008, 0.01};  // Tables 6-9
@@ -111,14 +114,12 @@ class BenchRun {
   // Levels of `scene` whose light count lies in [lo, hi].
   std::vector<int> levels(const std::string& scene, std::uint64_t lo, std::uint64_t hi) const;
   std::uint64_t light_count(const std::string& scene, int level) const;
-  // The pixel stride a measurement uses: rt and ast subsample above config.subsample_above lights;
-  // lev when it would shadow-test more than config.lev_subsample_tests lights per point (found by
-  // a probe render while running, estimated while planning).
+  // The pixel stride a measurement uses: rt and ast subsample above config.subsample_above
+  // lights (thesis sizes), and any method whose full frame would take more than
+  // config.max_full_frame_seconds (the maze and the hall, where rays are dearer or most lights
+  // reach every point; lev at tolerance 0). A probe render on one pixel of every 8x8 block tells.
   int stride_for(const std::string& scene, int level, const std::string& method, double tolerance);
-  // lev's lights tested per shading point. Its cost depends on how many lights the scene puts in
-  // reach, which only a render tells (the hall puts most of them in reach): a probe render on one
-  // pixel of every 8x8 block counts them. Counts are deterministic, so every decision made from
-  // them is the same on every run of the suite.
+  // lev's lights tested per shading point, from the probe (an estimate while planning).
   double lev_tests_per_point(const std::string& scene, int level, double tolerance);
 
   // Renders (or, while planning, only counts) the request; cached by what it measured, so asking
@@ -141,6 +142,8 @@ class BenchRun {
  private:
   using Key = std::tuple<std::string, int, std::string, double, int>;
   Key key_of(const MeasureRequest& request) const;
+  const Measurement& probe(const std::string& scene, int level, const std::string& method, double tolerance);
+  double full_frame_estimate(const std::string& scene, int level, const std::string& method, double tolerance);
   void report(const std::string& what, double cost_units);
 
   SuiteConfig config_;

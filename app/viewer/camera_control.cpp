@@ -18,7 +18,8 @@ glm::vec3 unit_up(const renderer::Camera& camera) {
 
 // Any unit vector perpendicular to n.
 glm::vec3 perpendicular(const glm::vec3& n) {
-  const glm::vec3 a = std::abs(n.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+  const glm::vec3 a =
+      std::abs(n.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
   return glm::normalize(glm::cross(n, a));
 }
 
@@ -53,7 +54,8 @@ renderer::Camera pan_camera(const renderer::Camera& camera, float right, float u
   const float r = glm::length(right_axis);
   right_axis = r > 1e-6f ? right_axis / r : perpendicular(forward);
   const glm::vec3 up_axis = glm::cross(right_axis, forward);
-  const float visible_height = 2.0f * distance * std::tan(glm::radians(camera.vertical_fov_deg) * 0.5f);
+  const float visible_height =
+      2.0f * distance * std::tan(glm::radians(camera.vertical_fov_deg) * 0.5f);
   const glm::vec3 move = visible_height * (right * right_axis + up * up_axis);
   renderer::Camera result = camera;
   result.position += move;

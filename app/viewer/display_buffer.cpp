@@ -27,7 +27,8 @@ TileUpdate copy_tile(const renderer::Framebuffer& f, std::uint64_t generation, i
   u.tile = tile;
   u.pass = pass;
   u.rect = rect;
-  const auto count = static_cast<std::size_t>(rect.x1 - rect.x0) * static_cast<std::size_t>(rect.y1 - rect.y0);
+  const auto count =
+      static_cast<std::size_t>(rect.x1 - rect.x0) * static_cast<std::size_t>(rect.y1 - rect.y0);
   u.rgb.resize(3 * count);
   u.samples.resize(count);
   u.lights_tested.resize(count);
@@ -35,12 +36,15 @@ TileUpdate copy_tile(const renderer::Framebuffer& f, std::uint64_t generation, i
   std::size_t k = 0;
   for (int y = rect.y0; y < rect.y1; ++y) {
     for (int x = rect.x0; x < rect.x1; ++x, ++k) {
-      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(f.width) + static_cast<std::size_t>(x);
+      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(f.width) +
+                     static_cast<std::size_t>(x);
       mean_rgb8(f, i, &u.rgb[3 * k]);
       const std::uint32_t n = f.samples[i];
       u.samples[k] = n;
-      u.lights_tested[k] = n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;
-      u.nodes_visited[k] = n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
+      u.lights_tested[k] =
+          n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;
+      u.nodes_visited[k] =
+          n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
       TileTotals& t = u.totals;
       t.samples += n;
       t.shading_points += f.shading_points[i];

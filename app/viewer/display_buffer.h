@@ -47,8 +47,8 @@ struct TileUpdate {
 void mean_rgb8(const renderer::Framebuffer& framebuffer, std::size_t pixel, std::uint8_t* rgb);
 
 // Copies one tile out of the framebuffer; call only while that tile's pixels are final.
-TileUpdate copy_tile(const renderer::Framebuffer& framebuffer, std::uint64_t generation, int tile, int pass,
-                     const TileRect& rect);
+TileUpdate copy_tile(const renderer::Framebuffer& framebuffer, std::uint64_t generation, int tile,
+                     int pass, const TileRect& rect);
 
 struct TakenTiles {
   std::uint64_t floor = 0;  // renders older than this are gone: their pixels are stale

@@ -51,7 +51,8 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
   std::size_t k = 0;
   for (int y = u.rect.y0; y < u.rect.y1; ++y) {
     for (int x = u.rect.x0; x < u.rect.x1; ++x, ++k) {
-      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x);
+      const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                     static_cast<std::size_t>(x);
       image.samples[i] = u.samples[k];
       image.lights_tested[i] = u.lights_tested[k];
       image.nodes_visited[i] = u.nodes_visited[k];
@@ -77,7 +78,8 @@ bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& upda
   bool changed = false;
   for (const TileUpdate& u : updates) {
     if (u.generation < image.generation) continue;
-    if (u.generation > image.generation || image.width != u.image_width || image.height != u.image_height) {
+    if (u.generation > image.generation || image.width != u.image_width ||
+        image.height != u.image_height) {
       start_generation(image, u.generation, u.image_width, u.image_height);
     }
     apply_tile_update(image, u);
@@ -125,8 +127,8 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
   return e;
 }
 
-std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
-                                    renderer::HeatmapRange& range) {
+std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
+                                    ViewMode mode, renderer::HeatmapRange& range) {
   const std::size_t n = pixel_count(image);
   std::vector<std::uint8_t> rgb(3 * n);
   range = {};
@@ -149,7 +151,8 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
       if (known[i]) values[i] = error.pct[i];
     } else {
       known[i] = image.samples[i] > 0;
-      if (known[i]) values[i] = mode == ViewMode::lights ? image.lights_tested[i] : image.nodes_visited[i];
+      if (known[i])
+        values[i] = mode == ViewMode::lights ? image.lights_tested[i] : image.nodes_visited[i];
     }
   }
   double lo = std::numeric_limits<double>::max(), hi = 0.0;
@@ -184,7 +187,8 @@ void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewM
 PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y) {
   PixelInfo p;
   if (x < 0 || y < 0 || x >= image.width || y >= image.height) return p;
-  const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x);
+  const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                 static_cast<std::size_t>(x);
   p.samples = image.samples[i];
   p.rendered = p.samples > 0;
   for (int c = 0; c < 3; ++c) p.rgb[c] = image.rgb[3 * i + c];

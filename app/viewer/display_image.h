@@ -58,8 +58,8 @@ void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewM
                        std::vector<std::uint8_t>& rgba, renderer::HeatmapRange& range);
 
 // 8-bit RGB of one view for a snapshot file (the texture without alpha).
-std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
-                                    renderer::HeatmapRange& range);
+std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
+                                    ViewMode mode, renderer::HeatmapRange& range);
 
 struct PixelInfo {
   bool rendered = false;

@@ -16,7 +16,8 @@ void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
   log.latencies.push_back({label, serial, when, -1.0});
 }
 
-void record_first_tile(FrameLog& log, std::uint64_t generation, std::chrono::steady_clock::time_point when) {
+void record_first_tile(FrameLog& log, std::uint64_t generation,
+                       std::chrono::steady_clock::time_point when) {
   for (LatencyRecord& r : log.latencies) {
     if (r.first_tile_ms >= 0.0 || r.serial > generation) continue;
     r.first_tile_ms = std::chrono::duration<double, std::milli>(when - r.posted).count();
@@ -39,10 +40,12 @@ namespace {
 
 std::string summary_line(const char* what, const FrameTimeSummary& s) {
   char line[256];
-  std::snprintf(line, sizeof line,
-                "levrt view: %s: %zu frames, frame time median %.1f ms (%.1f fps), 95th percentile %.1f ms, "
-                "max %.1f ms\n",
-                what, s.frames, s.median_ms, s.median_ms > 0.0 ? 1000.0 / s.median_ms : 0.0, s.p95_ms, s.max_ms);
+  std::snprintf(
+      line, sizeof line,
+      "levrt view: %s: %zu frames, frame time median %.1f ms (%.1f fps), 95th percentile %.1f ms, "
+      "max %.1f ms\n",
+      what, s.frames, s.median_ms, s.median_ms > 0.0 ? 1000.0 / s.median_ms : 0.0, s.p95_ms,
+      s.max_ms);
   return line;
 }
 
@@ -53,16 +56,18 @@ std::string frame_report(const FrameLog& log) {
   report += summary_line("frames while tracing", summarize_frames(log.busy_frame_ms));
   const FrameTimeSummary work = summarize_frames(log.work_ms);
   char work_line[160];
-  std::snprintf(work_line, sizeof work_line, "levrt view: UI work per frame: median %.1f ms, 95th percentile %.1f ms\n",
+  std::snprintf(work_line, sizeof work_line,
+                "levrt view: UI work per frame: median %.1f ms, 95th percentile %.1f ms\n",
                 work.median_ms, work.p95_ms);
   report += work_line;
   for (const LatencyRecord& r : log.latencies) {
     char line[256];
     if (r.first_tile_ms >= 0.0) {
-      std::snprintf(line, sizeof line, "levrt view: %s: first tile on screen after %.1f ms\n", r.label.c_str(),
-                    r.first_tile_ms);
+      std::snprintf(line, sizeof line, "levrt view: %s: first tile on screen after %.1f ms\n",
+                    r.label.c_str(), r.first_tile_ms);
     } else {
-      std::snprintf(line, sizeof line, "levrt view: %s: no new tile (render unchanged or superseded)\n",
+      std::snprintf(line, sizeof line,
+                    "levrt view: %s: no new tile (render unchanged or superseded)\n",
                     r.label.c_str());
     }
     report += line;

@@ -24,9 +24,10 @@ struct LatencyRecord {
 };
 
 struct FrameLog {
-  std::vector<double> frame_ms;       // from one frame's start to the next's
-  std::vector<double> busy_frame_ms;  // the same, while the worker was loading, refitting or rendering
-  std::vector<double> work_ms;        // the UI thread's own work per frame, pacing excluded
+  std::vector<double> frame_ms;  // from one frame's start to the next's
+  std::vector<double>
+      busy_frame_ms;            // the same, while the worker was loading, refitting or rendering
+  std::vector<double> work_ms;  // the UI thread's own work per frame, pacing excluded
   std::vector<LatencyRecord> latencies;
 };
 
@@ -34,7 +35,8 @@ void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_bu
 void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
                  std::chrono::steady_clock::time_point when);
 // A tile of render `generation` reached the screen at `when`.
-void record_first_tile(FrameLog& log, std::uint64_t generation, std::chrono::steady_clock::time_point when);
+void record_first_tile(FrameLog& log, std::uint64_t generation,
+                       std::chrono::steady_clock::time_point when);
 
 FrameTimeSummary summarize_frames(const std::vector<double>& frame_ms);
 // The report, one line per item.

@@ -15,7 +15,8 @@ struct GlTexture {
 };
 
 // Creates the texture on first use or when the size changes; nearest filtering shows pixels.
-void upload_texture(GlTexture& texture, int width, int height, const std::vector<std::uint8_t>& rgba);
+void upload_texture(GlTexture& texture, int width, int height,
+                    const std::vector<std::uint8_t>& rgba);
 void destroy_texture(GlTexture& texture);
 
 // The back buffer (the frame just drawn, before the swap) as 8-bit RGB, top row first.

@@ -21,7 +21,8 @@ void move_camera(ViewerState& state, const ImVec2& image_size) {
   bool moved = false;
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) &&
       (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-    camera = orbit_camera(camera, -io.MouseDelta.x * kOrbitRadiansPerPixel, io.MouseDelta.y * kOrbitRadiansPerPixel);
+    camera = orbit_camera(camera, -io.MouseDelta.x * kOrbitRadiansPerPixel,
+                          io.MouseDelta.y * kOrbitRadiansPerPixel);
     moved = true;
   }
   const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) ||
@@ -49,7 +50,8 @@ void draw_hover(const ViewerState& state, int x, int y, const ImVec2& tooltip_at
     ImGui::EndTooltip();
     return;
   }
-  ImGui::ColorButton("##colour", ImVec4(p.rgb[0] / 255.0f, p.rgb[1] / 255.0f, p.rgb[2] / 255.0f, 1.0f),
+  ImGui::ColorButton("##colour",
+                     ImVec4(p.rgb[0] / 255.0f, p.rgb[1] / 255.0f, p.rgb[2] / 255.0f, 1.0f),
                      ImGuiColorEditFlags_NoTooltip, ImVec2(14.0f, 14.0f));
   ImGui::SameLine();
   ImGui::Text("colour %d %d %d", p.rgb[0], p.rgb[1], p.rgb[2]);
@@ -88,13 +90,14 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   if (texture.id != 0 && w > 0) {
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture.id)), image_min, image_max);
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture.id)),
+                   image_min, image_max);
     // Tiles being traced; the rects belong to the render in flight, which has the settings' size.
     if (state.status.width == w && state.status.height == h) {
       for (const TileRect& r : state.in_flight) {
         draw->AddRect(ImVec2(image_min.x + r.x0 * scale, image_min.y + r.y0 * scale),
-                      ImVec2(image_min.x + r.x1 * scale, image_min.y + r.y1 * scale), IM_COL32(255, 150, 40, 255),
-                      0.0f, 0, 2.0f);
+                      ImVec2(image_min.x + r.x1 * scale, image_min.y + r.y1 * scale),
+                      IM_COL32(255, 150, 40, 255), 0.0f, 0, 2.0f);
       }
     }
   }
@@ -106,7 +109,8 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
   if (w > 0 && state.mouse_input && hovered) {
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     draw_hover(state, static_cast<int>(std::floor((mouse.x - image_min.x) / scale)),
-               static_cast<int>(std::floor((mouse.y - image_min.y) / scale)), ImVec2(mouse.x + 16.0f, mouse.y + 8.0f));
+               static_cast<int>(std::floor((mouse.y - image_min.y) / scale)),
+               ImVec2(mouse.x + 16.0f, mouse.y + 8.0f));
   } else if (w > 0 && state.scripted_hover) {
     const TileRect& p = *state.scripted_hover;
     const ImVec2 at(image_min.x + (static_cast<float>(p.x0) + 0.5f) * scale,

@@ -2,8 +2,8 @@
 
 namespace app::viewer {
 
-LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status, const ErrorImage& error,
-                             std::chrono::steady_clock::time_point now) {
+LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
+                             const ErrorImage& error, std::chrono::steady_clock::time_point now) {
   LiveStats s;
   const bool current = image.generation == status.generation && status.generation != 0;
   if (current) {
@@ -13,8 +13,10 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
     s.shadow_rays = t.shadow_rays;
     s.lights_tested_max = t.lights_tested_max;
     if (t.shading_points > 0) {
-      s.lights_tested_avg = static_cast<double>(t.lights_tested) / static_cast<double>(t.shading_points);
-      s.nodes_visited_avg = static_cast<double>(t.nodes_visited) / static_cast<double>(t.shading_points);
+      s.lights_tested_avg =
+          static_cast<double>(t.lights_tested) / static_cast<double>(t.shading_points);
+      s.nodes_visited_avg =
+          static_cast<double>(t.nodes_visited) / static_cast<double>(t.shading_points);
     }
     s.render_seconds = elapsed_render_seconds(status, now);
     s.pass_seconds = status.passes_done > 0 ? status.last_pass_seconds : s.render_seconds;
@@ -30,8 +32,8 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
   return s;
 }
 
-nlohmann::ordered_json live_stats_json(const LiveStats& s, const WorkerStatus& status, const Settings& settings,
-                                       const renderer::Camera& camera) {
+nlohmann::ordered_json live_stats_json(const LiveStats& s, const WorkerStatus& status,
+                                       const Settings& settings, const renderer::Camera& camera) {
   nlohmann::ordered_json j;
   j["scene"] = status.scene;
   j["level"] = status.level;
@@ -62,7 +64,9 @@ nlohmann::ordered_json live_stats_json(const LiveStats& s, const WorkerStatus& s
     j["pixel_error_pixels"] = s.error_pixels;
     j["pixel_error_scope"] = "pass 0 against the rt reference, pixels both have rendered";
   }
-  const auto vec = [](const glm::vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+  const auto vec = [](const glm::vec3& v) {
+    return nlohmann::ordered_json::array({v.x, v.y, v.z});
+  };
   j["camera"] = {{"position", vec(camera.position)},
                  {"target", vec(camera.target)},
                  {"up", vec(camera.up)},

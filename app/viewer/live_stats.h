@@ -22,8 +22,8 @@ struct LiveStats {
   double lights_tested_avg = 0.0;  // per shading point
   std::uint32_t lights_tested_max = 0;
   double nodes_visited_avg = 0.0;
-  double render_seconds = 0.0;  // this render so far
-  double pass_seconds = 0.0;    // the last complete pass, or the running first pass so far
+  double render_seconds = 0.0;    // this render so far
+  double pass_seconds = 0.0;      // the last complete pass, or the running first pass so far
   double mrays_per_second = 0.0;  // primary and shadow rays
   std::optional<double> error_avg_pct;
   std::optional<double> error_max_pct;
@@ -31,8 +31,8 @@ struct LiveStats {
 };
 
 // `error` is used when it has compared pixels.
-LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status, const ErrorImage& error,
-                             std::chrono::steady_clock::time_point now);
+LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
+                             const ErrorImage& error, std::chrono::steady_clock::time_point now);
 
 nlohmann::ordered_json live_stats_json(const LiveStats& stats, const WorkerStatus& status,
                                        const Settings& settings, const renderer::Camera& camera);

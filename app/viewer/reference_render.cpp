@@ -8,7 +8,9 @@ namespace app::viewer {
 ReferenceRender::ReferenceRender(DisplayBuffer& tiles, Finished on_finished)
     : tiles_(tiles), on_finished_(std::move(on_finished)) {}
 
-ReferenceRender::~ReferenceRender() { discard(); }
+ReferenceRender::~ReferenceRender() {
+  discard();
+}
 
 void ReferenceRender::begin(renderer::RenderStatePtr state, std::uint64_t generation) {
   discard();
@@ -38,7 +40,9 @@ void ReferenceRender::discard() {
   generation_ = 0;
 }
 
-int ReferenceRender::tile_count() const { return state_ ? renderer::render_tile_count(*state_) : 0; }
+int ReferenceRender::tile_count() const {
+  return state_ ? renderer::render_tile_count(*state_) : 0;
+}
 
 void ReferenceRender::run() {
   renderer::RenderState& state = *state_;

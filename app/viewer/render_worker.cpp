@@ -52,8 +52,8 @@ bool same_camera(const renderer::Camera& a, const renderer::Camera& b) {
 }
 
 bool same_view(const ViewKey& a, const ViewKey& b) {
-  return same_camera(a.camera, b.camera) && a.width == b.width && a.height == b.height && a.depth == b.depth &&
-         a.stride == b.stride;
+  return same_camera(a.camera, b.camera) && a.width == b.width && a.height == b.height &&
+         a.depth == b.depth && a.stride == b.stride;
 }
 
 // Everything the worker thread owns. Members are torn down explicitly (reference, then main
@@ -176,10 +176,12 @@ struct Worker {
     if (scene_changed) load(s, serial);
     renderer::Scene& sc = loaded->scene;
     const renderer::RenderSettings rs = render_settings_from(s);
-    const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth, rs.pixel_stride};
+    const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth,
+                      rs.pixel_stride};
     const bool view_changed = !view || !same_view(key, *view);
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              rs.tolerance != main_settings.tolerance || rs.threads != main_settings.threads;
+                              rs.tolerance != main_settings.tolerance ||
+                              rs.threads != main_settings.threads;
     const bool refits = main_changed && rs.tolerance != sc.lights.tolerance;
 
     // Nothing may render on the scene while it changes: the reference is joined (or dropped
@@ -345,19 +347,26 @@ void run_worker(WorkerShared& shared) {
 
 const char* worker_phase_text(WorkerPhase phase) {
   switch (phase) {
-    case WorkerPhase::idle: return "idle";
-    case WorkerPhase::loading: return "building the scene";
-    case WorkerPhase::preparing: return "refitting the hierarchy";
-    case WorkerPhase::rendering: return "rendering";
-    case WorkerPhase::waiting_for_reference: return "refinement paused while the rt reference renders";
-    case WorkerPhase::failed: return "failed";
+    case WorkerPhase::idle:
+      return "idle";
+    case WorkerPhase::loading:
+      return "building the scene";
+    case WorkerPhase::preparing:
+      return "refitting the hierarchy";
+    case WorkerPhase::rendering:
+      return "rendering";
+    case WorkerPhase::waiting_for_reference:
+      return "refinement paused while the rt reference renders";
+    case WorkerPhase::failed:
+      return "failed";
   }
   return "";
 }
 
 double elapsed_render_seconds(const WorkerStatus& status, Clock::time_point now) {
   double seconds = status.render_seconds;
-  if (status.pass_running) seconds += std::chrono::duration<double>(now - status.pass_started).count();
+  if (status.pass_running)
+    seconds += std::chrono::duration<double>(now - status.pass_started).count();
   return seconds;
 }
 
@@ -393,9 +402,13 @@ WorkerStatus RenderWorker::status() const {
   return shared_->status;
 }
 
-TakenTiles RenderWorker::take_tiles() { return shared_->tiles.take_all(); }
+TakenTiles RenderWorker::take_tiles() {
+  return shared_->tiles.take_all();
+}
 
-TakenTiles RenderWorker::take_reference_tiles() { return shared_->reference_tiles.take_all(); }
+TakenTiles RenderWorker::take_reference_tiles() {
+  return shared_->reference_tiles.take_all();
+}
 
 std::vector<TileRect> RenderWorker::tiles_in_flight() const {
   std::vector<TileRect> rects;

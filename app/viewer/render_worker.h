@@ -41,8 +41,8 @@ struct WorkerStatus {
 
   // The loaded scene.
   std::uint64_t scene_serial = 0;  // bumps with every (re)load
-  std::string scene;       // as the request named it (model name or file)
-  std::string scene_name;  // as the scene calls itself
+  std::string scene;               // as the request named it (model name or file)
+  std::string scene_name;          // as the scene calls itself
   int level = 0;
   std::uint64_t light_count = 0;
   renderer::Camera preset_camera;
@@ -76,7 +76,8 @@ struct WorkerStatus {
 };
 
 // Render time so far, the running pass included.
-double elapsed_render_seconds(const WorkerStatus& status, std::chrono::steady_clock::time_point now);
+double elapsed_render_seconds(const WorkerStatus& status,
+                              std::chrono::steady_clock::time_point now);
 
 struct WorkerShared;  // the mutex-guarded mailbox between the UI and the worker thread
 

@@ -16,7 +16,8 @@ std::uint64_t parse_count(const std::string& text, const std::string& change) {
   char* end = nullptr;
   errno = 0;
   const unsigned long long n = std::strtoull(text.c_str(), &end, 10);
-  if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0) reject(change, "lights needs a light count");
+  if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0)
+    reject(change, "lights needs a light count");
   return n;
 }
 
@@ -28,8 +29,8 @@ bool parse_pixel(const std::string& text, int& x, int& y) {
   char* end_y = nullptr;
   const long lx = std::strtol(xs.c_str(), &end_x, 10);
   const long ly = std::strtol(ys.c_str(), &end_y, 10);
-  if (xs.empty() || ys.empty() || *end_x != '\0' || *end_y != '\0' || lx < 0 || ly < 0 || lx > 16384 ||
-      ly > 16384) {
+  if (xs.empty() || ys.empty() || *end_x != '\0' || *end_y != '\0' || lx < 0 || ly < 0 ||
+      lx > 16384 || ly > 16384) {
     return false;
   }
   x = static_cast<int>(lx);
@@ -80,7 +81,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
-    reject(text, "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await");
+    reject(text,
+           "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await");
   }
   return c;
 }

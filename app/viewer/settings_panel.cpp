@@ -27,11 +27,14 @@ bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRang
     return false;
   }
   const int level = settings.*(range.field);
-  const std::string current = std::to_string(model->light_count(level)) + " (level " + std::to_string(level) + ")";
+  const std::string current =
+      std::to_string(model->light_count(level)) + " (level " + std::to_string(level) + ")";
   bool changed = false;
   if (ImGui::BeginCombo("Lights", current.c_str())) {
-    for (int l = std::max(model->min_level, range.min); l <= std::min(model->max_level, range.max); ++l) {
-      const std::string text = std::to_string(model->light_count(l)) + " (level " + std::to_string(l) + ")";
+    for (int l = std::max(model->min_level, range.min); l <= std::min(model->max_level, range.max);
+         ++l) {
+      const std::string text =
+          std::to_string(model->light_count(l)) + " (level " + std::to_string(l) + ")";
       if (ImGui::Selectable(text.c_str(), l == level) && l != level) {
         settings.*(range.field) = l;
         changed = true;
@@ -46,7 +49,8 @@ bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRang
 bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range) {
   if (range.field == &Settings::level) return draw_light_count(settings, spec, range);
   int value = settings.*(range.field);
-  const bool edited = ImGui::InputInt(spec.label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool edited =
+      ImGui::InputInt(spec.label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue);
   help_tooltip(spec);
   value = std::clamp(value, range.min, range.max);
   if (!edited || value == settings.*(range.field)) return false;
@@ -64,8 +68,8 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
     const double lo = std::max(range.min, kSliderMin), hi = std::min(range.max, kSliderMax);
     double slider = std::clamp(value, lo, hi);
     ImGui::SetNextItemWidth(full * 0.55f);
-    if (ImGui::SliderScalar("##log", ImGuiDataType_Double, &slider, &lo, &hi, value == 0.0 ? "0 (exact)" : "%.2e",
-                            ImGuiSliderFlags_Logarithmic)) {
+    if (ImGui::SliderScalar("##log", ImGuiDataType_Double, &slider, &lo, &hi,
+                            value == 0.0 ? "0 (exact)" : "%.2e", ImGuiSliderFlags_Logarithmic)) {
       value = slider;
       changed = true;
     }
@@ -77,18 +81,21 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("tolerance 0: no culling, the image equals rt");
     ImGui::SameLine(0.0f, 2.0f);
-    ImGui::SetNextItemWidth(std::max(full - (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
+    ImGui::SetNextItemWidth(std::max(full -
+                                         (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
                                          ImGui::GetStyle().WindowPadding.x,
                                      40.0f));
   }
   double typed = value;
-  if (ImGui::InputDouble(spec.label, &typed, 0.0, 0.0, "%g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (ImGui::InputDouble(spec.label, &typed, 0.0, 0.0, "%g",
+                         ImGuiInputTextFlags_EnterReturnsTrue)) {
     if (typed >= range.min && typed <= range.max) {
       value = typed;
       changed = true;
     }
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (--%s); type a value and press Enter", spec.help, spec.name);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s (--%s); type a value and press Enter", spec.help, spec.name);
   ImGui::PopID();
   if (!changed || value == settings.*(range.field)) return false;
   settings.*(range.field) = value;
@@ -99,7 +106,8 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
   std::vector<std::string> options = choice.options();
   const std::string current = settings.*(choice.field);
   // A value from the command line outside the list (a scene file) stays selectable.
-  if (std::find(options.begin(), options.end(), current) == options.end()) options.push_back(current);
+  if (std::find(options.begin(), options.end(), current) == options.end())
+    options.push_back(current);
   bool changed = false;
   if (ImGui::BeginCombo(spec.label, current.c_str())) {
     for (const std::string& o : options) {
@@ -128,13 +136,15 @@ void draw_settings_section(ViewerState& state) {
     } else {
       changed = draw_choice(state.settings, spec, std::get<Choice>(spec.kind));
     }
-    if (changed) settings_changed(state, before, std::string(spec.name) + "=" + setting_text(state.settings, spec));
+    if (changed)
+      settings_changed(state, before,
+                       std::string(spec.name) + "=" + setting_text(state.settings, spec));
   }
   ImGui::PopItemWidth();
   if (ImGui::Button("Reset camera")) reset_camera(state);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene's preset view");
   ImGui::SameLine();
-  ImGui::TextDisabled("drag: orbit, right/middle drag: pan, wheel: zoom");
+  ImGui::TextDisabled("drag: orbit, right drag: pan, wheel: zoom");
 }
 
 }  // namespace app::viewer

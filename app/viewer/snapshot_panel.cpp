@@ -27,7 +27,8 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.heatmap_name = view_mode_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
   nlohmann::ordered_json stats =
-      live_stats_json(collect_live_stats(state.image, st, state.error, now), st, state.settings, current_camera(state));
+      live_stats_json(collect_live_stats(state.image, st, state.error, now), st, state.settings,
+                      current_camera(state));
   stats["heatmap"] = job.heatmap_name;
   stats["heatmap_range"] = {range.min, range.max};
   stats["heatmap_scale"] = "log(1 + value per sample), viridis";
@@ -35,7 +36,8 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   return job;
 }
 
-void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer, std::chrono::steady_clock::time_point now) {
+void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer,
+                           std::chrono::steady_clock::time_point now) {
   char folder[512];
   std::snprintf(folder, sizeof folder, "%s", state.snapshot_folder.c_str());
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);

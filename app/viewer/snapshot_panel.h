@@ -13,6 +13,7 @@ namespace app::viewer {
 // when the image itself is shown) and the stats.
 SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_clock::time_point now);
 
-void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer, std::chrono::steady_clock::time_point now);
+void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer,
+                           std::chrono::steady_clock::time_point now);
 
 }  // namespace app::viewer

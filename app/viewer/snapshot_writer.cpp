@@ -11,7 +11,9 @@ namespace {
 constexpr int kSteps = 3;
 }
 
-SnapshotWriter::~SnapshotWriter() { wait(); }
+SnapshotWriter::~SnapshotWriter() {
+  wait();
+}
 
 bool SnapshotWriter::start(SnapshotJob job) {
   if (busy_.load()) return false;
@@ -22,7 +24,9 @@ bool SnapshotWriter::start(SnapshotJob job) {
   return true;
 }
 
-float SnapshotWriter::progress() const { return static_cast<float>(steps_done_.load()) / kSteps; }
+float SnapshotWriter::progress() const {
+  return static_cast<float>(steps_done_.load()) / kSteps;
+}
 
 std::string SnapshotWriter::message() const {
   const std::lock_guard<std::mutex> lock(mutex_);

@@ -46,20 +46,24 @@ void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_
   }
   if (!st.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", st.error.c_str());
   if (st.phase == WorkerPhase::loading || st.phase == WorkerPhase::preparing) {
-    const float t = static_cast<float>(std::chrono::duration<double>(now.time_since_epoch()).count());
+    const float t =
+        static_cast<float>(std::chrono::duration<double>(now.time_since_epoch()).count());
     ImGui::ProgressBar(-1.0f * t, ImVec2(-1.0f, 0.0f), worker_phase_text(st.phase));
     return;
   }
   const bool current = state.image.generation == st.generation && st.tile_count > 0;
-  const int done = current && state.image.pass == st.passes_done ? state.image.tiles_done_in_pass : 0;
+  const int done =
+      current && state.image.pass == st.passes_done ? state.image.tiles_done_in_pass : 0;
   char text[128];
   if (st.passes_done >= st.passes_target) {
     std::snprintf(text, sizeof text, "done: %d passes", st.passes_done);
     ImGui::ProgressBar(1.0f, ImVec2(-1.0f, 0.0f), text);
   } else {
-    const float fraction = st.tile_count > 0 ? static_cast<float>(done) / static_cast<float>(st.tile_count) : 0.0f;
-    std::snprintf(text, sizeof text, "pass %d of %d: %d/%d tiles%s", st.passes_done + 1, st.passes_target, done,
-                  st.tile_count, st.phase == WorkerPhase::waiting_for_reference ? " (paused for rt)" : "");
+    const float fraction =
+        st.tile_count > 0 ? static_cast<float>(done) / static_cast<float>(st.tile_count) : 0.0f;
+    std::snprintf(text, sizeof text, "pass %d of %d: %d/%d tiles%s", st.passes_done + 1,
+                  st.passes_target, done, st.tile_count,
+                  st.phase == WorkerPhase::waiting_for_reference ? " (paused for rt)" : "");
     ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), text);
   }
 }
@@ -67,8 +71,10 @@ void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_
 void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::time_point now) {
   const WorkerStatus& st = state.status;
   const LiveStats s = collect_live_stats(state.image, st, state.error, now);
-  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) return;
-  row("scene", "%s, %llu lights", st.scene_name.c_str(), static_cast<unsigned long long>(st.light_count));
+  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp))
+    return;
+  row("scene", "%s, %llu lights", st.scene_name.c_str(),
+      static_cast<unsigned long long>(st.light_count));
   row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
   row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
   row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
@@ -99,12 +105,16 @@ void draw_reference_section(ViewerState& state, std::chrono::steady_clock::time_
     return;
   }
   if (st.reference == ReferencePhase::rendering) {
-    const int done = state.reference.generation == st.reference_generation ? state.reference.tiles_seen : 0;
+    const int done =
+        state.reference.generation == st.reference_generation ? state.reference.tiles_seen : 0;
     const float fraction =
-        st.reference_tile_count > 0 ? static_cast<float>(done) / static_cast<float>(st.reference_tile_count) : 0.0f;
+        st.reference_tile_count > 0
+            ? static_cast<float>(done) / static_cast<float>(st.reference_tile_count)
+            : 0.0f;
     const double seconds = std::chrono::duration<double>(now - st.reference_started).count();
     char text[96];
-    std::snprintf(text, sizeof text, "rt: %d/%d tiles, %.1f s", done, st.reference_tile_count, seconds);
+    std::snprintf(text, sizeof text, "rt: %d/%d tiles, %.1f s", done, st.reference_tile_count,
+                  seconds);
     ImGui::ProgressBar(fraction, ImVec2(ImGui::GetContentRegionAvail().x - 70.0f, 0.0f), text);
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) set_want_reference(state, false);
@@ -117,8 +127,11 @@ void draw_reference_section(ViewerState& state, std::chrono::steady_clock::time_
   }
   if (state.error.pixels_compared > 0) {
     const std::size_t total = state.error.pct.size();
-    ImGui::Text("error avg %.4f%%, max %.3f%% over %.0f%% of pixels", state.error.average_pct, state.error.max_pct,
-                total > 0 ? 100.0 * static_cast<double>(state.error.pixels_compared) / static_cast<double>(total) : 0.0);
+    ImGui::Text("error avg %.4f%%, max %.3f%% over %.0f%% of pixels", state.error.average_pct,
+                state.error.max_pct,
+                total > 0 ? 100.0 * static_cast<double>(state.error.pixels_compared) /
+                                static_cast<double>(total)
+                          : 0.0);
   }
 }
 

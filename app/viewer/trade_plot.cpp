@@ -16,8 +16,11 @@ void follow_reference(TradePlot& plot, std::uint64_t reference_generation) {
 }
 
 void add_trade_point(TradePlot& plot, const TradePoint& point) {
-  const auto same = [&](const TradePoint& p) { return p.method == point.method && p.tolerance == point.tolerance; };
-  plot.points.erase(std::remove_if(plot.points.begin(), plot.points.end(), same), plot.points.end());
+  const auto same = [&](const TradePoint& p) {
+    return p.method == point.method && p.tolerance == point.tolerance;
+  };
+  plot.points.erase(std::remove_if(plot.points.begin(), plot.points.end(), same),
+                    plot.points.end());
   plot.points.push_back(point);
 }
 
@@ -57,7 +60,8 @@ void draw_trade_plot(const TradePlot& plot, std::uint64_t current) {
   max_error = max_error > 0.0 ? max_error * 1.1 : 1.0;
 
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const ImVec2 size(avail.x, std::max(90.0f, avail.y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
+  const ImVec2 size(avail.x,
+                    std::max(90.0f, avail.y - 2.0f * ImGui::GetTextLineHeightWithSpacing()));
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("trade_plot", size);
   const bool hovered = ImGui::IsItemHovered();
@@ -72,7 +76,8 @@ void draw_trade_plot(const TradePlot& plot, std::uint64_t current) {
   draw->AddText(ImVec2(origin.x, p0.y), IM_COL32(200, 200, 200, 255), text);
   draw->AddText(ImVec2(origin.x, p1.y - 12.0f), IM_COL32(200, 200, 200, 255), "0%");
   std::snprintf(text, sizeof text, "%.3g s", max_time);
-  draw->AddText(ImVec2(p1.x - ImGui::CalcTextSize(text).x, p1.y + 2.0f), IM_COL32(200, 200, 200, 255), text);
+  draw->AddText(ImVec2(p1.x - ImGui::CalcTextSize(text).x, p1.y + 2.0f),
+                IM_COL32(200, 200, 200, 255), text);
   draw->AddText(ImVec2(p0.x, p1.y + 2.0f), IM_COL32(200, 200, 200, 255), "0 s   pass-0 time ->");
 
   const TradePoint* nearest = nullptr;

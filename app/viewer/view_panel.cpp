@@ -16,7 +16,8 @@ void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange&
   for (int i = 0; i < steps; ++i) {
     const float t0 = static_cast<float>(i) / steps, t1 = static_cast<float>(i + 1) / steps;
     const glm::u8vec3 c = renderer::viridis(0.5f * (t0 + t1));
-    draw->AddRectFilled(ImVec2(origin.x + t0 * width, origin.y), ImVec2(origin.x + t1 * width, origin.y + bar_height),
+    draw->AddRectFilled(ImVec2(origin.x + t0 * width, origin.y),
+                        ImVec2(origin.x + t1 * width, origin.y + bar_height),
                         IM_COL32(c.x, c.y, c.z, 255));
   }
   // Ticks at equal steps of t = log(1 + v) / log(1 + max): v = (1 + max)^t - 1.
@@ -36,14 +37,16 @@ void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange&
   }
   ImGui::Dummy(ImVec2(width, bar_height + 4.0f + ImGui::GetTextLineHeight()));
   ImGui::TextDisabled("%s; log(1 + value), viridis", info.unit);
-  ImGui::TextDisabled("rendered pixels range %.3g .. %.3g; grey: not rendered yet", range.min, range.max);
+  ImGui::TextDisabled("rendered pixels range %.3g .. %.3g; grey: not rendered yet", range.min,
+                      range.max);
 }
 
 void draw_view_section(ViewerState& state) {
   const std::vector<ViewModeInfo>& modes = view_mode_table();
   for (std::size_t i = 0; i < modes.size(); ++i) {
     if (i % 2 == 1) ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-    if (ImGui::RadioButton(modes[i].label, state.view == modes[i].mode)) select_view(state, modes[i].mode);
+    if (ImGui::RadioButton(modes[i].label, state.view == modes[i].mode))
+      select_view(state, modes[i].mode);
   }
   const ViewModeInfo& info = view_mode_info(state.view);
   if (state.view == ViewMode::image) {

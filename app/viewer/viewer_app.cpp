@@ -3,8 +3,8 @@
 #include <unistd.h>
 
 #define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <GL/gl.h>
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/interrupt.h"
 #include "app/viewer/frame_log.h"
 #include "app/viewer/gl_texture.h"
 #include "app/viewer/image_view.h"
@@ -36,9 +37,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr double kFrameSeconds = 1.0 / 60.0;      // display rate the loop paces itself to
-constexpr double kComposeSeconds = 1.0 / 30.0;    // the texture is rebuilt at most this often
-constexpr double kErrorSeconds = 0.25;            // and the error image at most this often
+constexpr double kFrameSeconds = 1.0 / 60.0;    // display rate the loop paces itself to
+constexpr double kComposeSeconds = 1.0 / 30.0;  // the texture is rebuilt at most this often
+constexpr double kErrorSeconds = 0.25;          // and the error image at most this often
 constexpr float kPanelWidth = 430.0f;
 
 double seconds_between(Clock::time_point a, Clock::time_point b) {
@@ -59,8 +60,8 @@ WindowSize parse_window_size(const std::string& text) {
     char* end_h = nullptr;
     const long lw = std::strtol(w.c_str(), &end_w, 10);
     const long lh = std::strtol(h.c_str(), &end_h, 10);
-    if (!w.empty() && !h.empty() && *end_w == '\0' && *end_h == '\0' && lw >= 320 && lw <= 16384 && lh >= 240 &&
-        lh <= 16384) {
+    if (!w.empty() && !h.empty() && *end_w == '\0' && *end_h == '\0' && lw >= 320 && lw <= 16384 &&
+        lh >= 240 && lh <= 16384) {
       size.width = static_cast<int>(lw);
       size.height = static_cast<int>(lh);
       return size;
@@ -73,9 +74,12 @@ void check_png_path(const char* flag, const std::string& path) {
   namespace fs = std::filesystem;
   if (path.empty()) throw UsageError(std::string(flag) + ": needs a file name, got ''");
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw UsageError(std::string(flag) + ": is a folder, got '" + path + "'");
-  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-  if (!fs::is_directory(parent, ec)) throw UsageError(std::string(flag) + ": folder does not exist, got '" + path + "'");
+  if (fs::is_directory(path, ec))
+    throw UsageError(std::string(flag) + ": is a folder, got '" + path + "'");
+  const fs::path parent =
+      fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  if (!fs::is_directory(parent, ec))
+    throw UsageError(std::string(flag) + ": folder does not exist, got '" + path + "'");
   if (::access(parent.c_str(), W_OK) != 0) {
     throw UsageError(std::string(flag) + ": folder is not writable, got '" + path + "'");
   }
@@ -88,7 +92,8 @@ class GlfwLibrary {
   GlfwLibrary() {
     const char* display = std::getenv("DISPLAY");
     if (display == nullptr || display[0] == '\0') {
-      throw NoDisplayError("view: no display (DISPLAY is not set); use `levrt render` to render headless");
+      throw NoDisplayError(
+          "view: no display (DISPLAY is not set); use `levrt render` to render headless");
     }
     if (glfwInit() != GLFW_TRUE) {
       const char* description = nullptr;
@@ -167,7 +172,8 @@ struct ErrorClock {
   Clock::time_point at;
 };
 
-void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log, Clock::time_point now) {
+void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log,
+                         Clock::time_point now) {
   // Status first: every tile a status refers to was posted before it, so it is in the buffer.
   state.status = worker.status();
   // Tiles of renders that are gone never arrive (the buffers' floors); the previous render's
@@ -186,7 +192,9 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
 }
 
 void update_error(ViewerState& state, ErrorClock& clock, Clock::time_point now, bool force) {
-  if (clock.image_version == state.image.version && clock.reference_version == state.reference.version) return;
+  if (clock.image_version == state.image.version &&
+      clock.reference_version == state.reference.version)
+    return;
   if (!force && seconds_between(clock.at, now) < kErrorSeconds) return;
   clock.image_version = state.image.version;
   clock.reference_version = state.reference.version;
@@ -205,7 +213,8 @@ void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::ti
   const bool reference_done = st.reference == ReferencePhase::done &&
                               state.reference.generation == st.reference_generation &&
                               state.reference.tiles_seen == st.reference_tile_count;
-  const bool pass0_done = st.generation != 0 && state.image.generation == st.generation && st.first_pass_seconds >= 0.0;
+  const bool pass0_done =
+      st.generation != 0 && state.image.generation == st.generation && st.first_pass_seconds >= 0.0;
   if (!reference_done || !pass0_done || has_trade_point(state.trade, st.generation)) return;
   update_error(state, clock, now, true);
   TradePoint p;
@@ -219,8 +228,8 @@ void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::ti
   add_trade_point(state.trade, p);
 }
 
-void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clock, Clock::time_point now,
-                     bool force) {
+void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clock,
+                     Clock::time_point now, bool force) {
   const bool uses_error = state.view == ViewMode::error;
   const std::uint64_t error_version = uses_error ? clock.computed : 0;
   if (picture.image_version == state.image.version && picture.error_version == error_version &&
@@ -271,17 +280,23 @@ Layout window_layout(const ImVec2& display) {
   return l;
 }
 
+// The windows draw no background of their own: the clear colour is the style's window colour,
+// which saves filling most of the window twice (the fill is what a software GL spends its time on).
 constexpr ImGuiWindowFlags kFixedWindow = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                          ImGuiWindowFlags_NoCollapse;
+                                          ImGuiWindowFlags_NoCollapse |
+                                          ImGuiWindowFlags_NoBackground;
 
-void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point now, const Layout& layout) {
+void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point now,
+                const Layout& layout) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
   ImGui::SetNextWindowSize(layout.panel_size);
   ImGui::Begin("levrt", nullptr, kFixedWindow);
   draw_status_line(state, now);
-  if (ImGui::CollapsingHeader("Scene and method", ImGuiTreeNodeFlags_DefaultOpen)) draw_settings_section(state);
+  if (ImGui::CollapsingHeader("Scene and method", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_settings_section(state);
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) draw_view_section(state);
-  if (ImGui::CollapsingHeader("rt reference", ImGuiTreeNodeFlags_DefaultOpen)) draw_reference_section(state, now);
+  if (ImGui::CollapsingHeader("rt reference", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_reference_section(state, now);
   if (ImGui::CollapsingHeader("Snapshot", ImGuiTreeNodeFlags_DefaultOpen)) {
     draw_snapshot_section(state, snapshots, now);
   }
@@ -292,7 +307,8 @@ void draw_results(const ViewerState& state, Clock::time_point now, const Layout&
   ImGui::SetNextWindowPos(layout.results_pos);
   ImGui::SetNextWindowSize(layout.results_size);
   ImGui::Begin("Statistics and the speed/accuracy trade", nullptr, kFixedWindow);
-  if (ImGui::BeginTable("results", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame)) {
+  if (ImGui::BeginTable("results", 2,
+                        ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame)) {
     ImGui::TableNextColumn();
     draw_stats_section(state, now);
     ImGui::TableNextColumn();
@@ -308,8 +324,9 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
   ImGui::SetNextWindowSize(layout.picture_size);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4.0f, 4.0f));
   ImGui::Begin("picture", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
-                   ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse |
+                   ImGuiWindowFlags_NoBackground);
   draw_image_view(state, picture.texture);
   ImGui::End();
   ImGui::PopStyleVar();
@@ -321,11 +338,14 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   const WindowSize window_size = parse_window_size(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
   if (!flags.screenshot.empty()) check_png_path("--screenshot", flags.screenshot);
-  if (!flags.screenshot.empty() && flags.frames == 0) throw UsageError("--screenshot: needs --frames N");
+  if (!flags.screenshot.empty() && flags.frames == 0)
+    throw UsageError("--screenshot: needs --frames N");
   for (const ScriptedChange& c : script) {
     if (c.key == "screenshot") check_png_path("--set screenshot", c.value);
   }
 
+  // Ctrl-C, SIGTERM and SIGHUP close the window like its close button (exit 130).
+  const InterruptScope interrupt_scope;
   GlfwLibrary glfw;
   Window window(window_size.width, window_size.height);
   ImGuiSession imgui(window.get());
@@ -347,13 +367,14 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     Clock::time_point next_frame = previous_start;
     bool first = true;
 
-    while (!glfwWindowShouldClose(window.get())) {
+    while (!glfwWindowShouldClose(window.get()) && !InterruptScope::flag().load()) {
       for (Clock::time_point t = Clock::now(); t < next_frame; t = Clock::now()) {
         glfwWaitEventsTimeout(seconds_between(t, next_frame));
       }
       glfwPollEvents();
       const Clock::time_point now = Clock::now();
-      next_frame = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kFrameSeconds));
+      next_frame = now + std::chrono::duration_cast<Clock::duration>(
+                             std::chrono::duration<double>(kFrameSeconds));
       const double frame_ms = first ? 0.0 : 1000.0 * seconds_between(previous_start, now);
       previous_start = now;
 
@@ -363,13 +384,18 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
         for (const ScriptedChange& c : script) {
           if (c.frame != script_frame) continue;
           switch (apply_scripted_change(state, c)) {
-            case ScriptAction::none: break;
+            case ScriptAction::none:
+              break;
             case ScriptAction::snapshot:
               state.snapshot_folder = c.value;
               snapshot_now = true;
               break;
-            case ScriptAction::screenshot: screenshots.push_back(c.value); break;
-            case ScriptAction::await_idle: awaiting = true; break;
+            case ScriptAction::screenshot:
+              screenshots.push_back(c.value);
+              break;
+            case ScriptAction::await_idle:
+              awaiting = true;
+              break;
           }
         }
       }
@@ -402,19 +428,22 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       int fb_width = 0, fb_height = 0;
       glfwGetFramebufferSize(window.get(), &fb_width, &fb_height);
       glViewport(0, 0, fb_width, fb_height);
-      glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+      const ImVec4 background = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+      glClearColor(background.x, background.y, background.z, 1.0f);
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       for (const std::string& path : screenshots) write_screenshot(window.get(), path);
       if (last_frame && !flags.screenshot.empty()) write_screenshot(window.get(), flags.screenshot);
       glfwSwapBuffers(window.get());
 
-      const bool busy = state.status.phase == WorkerPhase::loading || state.status.phase == WorkerPhase::preparing ||
+      const bool busy = state.status.phase == WorkerPhase::loading ||
+                        state.status.phase == WorkerPhase::preparing ||
                         state.status.phase == WorkerPhase::rendering;
       const double work_ms = 1000.0 * seconds_between(now, Clock::now());
       if (!first) {
         record_frame(log, frame_ms, work_ms, busy);
-        state.ui_fps = state.ui_fps == 0.0 ? 1000.0 / frame_ms : 0.95 * state.ui_fps + 0.05 * 1000.0 / frame_ms;
+        state.ui_fps = state.ui_fps == 0.0 ? 1000.0 / frame_ms
+                                           : 0.95 * state.ui_fps + 0.05 * 1000.0 / frame_ms;
       }
       first = false;
       if (!awaiting) script_frame += 1;
@@ -426,7 +455,9 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     }
   }
   snapshots.wait();
-  if (!snapshots.message().empty() && flags.frames > 0) std::printf("levrt view: %s\n", snapshots.message().c_str());
+  InterruptScope::throw_if_interrupted();
+  if (!snapshots.message().empty() && flags.frames > 0)
+    std::printf("levrt view: %s\n", snapshots.message().c_str());
   destroy_texture(picture.texture);
   if (flags.report_fps) std::fputs(frame_report(log).c_str(), stdout);
   if (!flags.screenshot.empty()) {

@@ -12,7 +12,8 @@ void mark_changed(ViewerState& state, const std::string& label) {
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label) {
   Settings& s = state.settings;
   if (s.scene != before.scene) {
-    if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene)) s.level = model->default_level;
+    if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene))
+      s.level = model->default_level;
   }
   const bool new_scene = s.scene != before.scene || s.level != before.level;
   const bool new_view = new_scene || s.width != before.width || s.height != before.height ||

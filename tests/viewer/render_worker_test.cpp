@@ -30,7 +30,8 @@ struct Ui {
     const TakenTiles main = worker.take_tiles();
     apply_tile_updates(image, main.updates);
     const TakenTiles ref = worker.take_reference_tiles();
-    if (reference.generation != 0 && reference.generation < ref.floor) clear_display_image(reference);
+    if (reference.generation != 0 && reference.generation < ref.floor)
+      clear_display_image(reference);
     apply_tile_updates(reference, ref.updates);
   }
 
@@ -45,7 +46,8 @@ struct Ui {
   }
 
   bool settled(std::uint64_t serial) {
-    return status.request_serial >= serial && status.phase == WorkerPhase::idle && image.generation == status.generation;
+    return status.request_serial >= serial && status.phase == WorkerPhase::idle &&
+           image.generation == status.generation;
   }
 };
 
@@ -160,13 +162,15 @@ TEST(RenderWorker, ANewViewDropsTheReference) {
   app::Settings s = small_settings();
   s.spp = 1;
   std::uint64_t serial = ui.worker.post(request_for(s, true));
-  ASSERT_TRUE(ui.run_until([&] { return ui.status.reference == ReferencePhase::done && ui.settled(serial); }));
+  ASSERT_TRUE(ui.run_until(
+      [&] { return ui.status.reference == ReferencePhase::done && ui.settled(serial); }));
   ViewRequest moved = request_for(s, true);
   renderer::Camera camera = ui.status.preset_camera;
   camera.position.z += 3.0f;
   moved.camera = camera;
   serial = ui.worker.post(moved);
-  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial) && ui.status.reference == ReferencePhase::done; }));
+  ASSERT_TRUE(ui.run_until(
+      [&] { return ui.settled(serial) && ui.status.reference == ReferencePhase::done; }));
   EXPECT_EQ(ui.status.reference_generation, serial);
   ASSERT_TRUE(ui.run_until([&] { return ui.reference.generation == serial; }));
   // Dropping the request for a reference drops it.
@@ -197,7 +201,8 @@ TEST(RenderWorker, ShutsDownPromptlyMidRender) {
   slow.height = 240;
   slow.spp = 1000;
   ui->worker.post(request_for(slow, true));
-  ASSERT_TRUE(ui->run_until([&] { return ui->image.tiles_seen > 0 && ui->reference.tiles_seen > 0; }));
+  ASSERT_TRUE(
+      ui->run_until([&] { return ui->image.tiles_seen > 0 && ui->reference.tiles_seen > 0; }));
   const auto start = Clock::now();
   ui.reset();
   // Only the tiles in flight finish (one each per worker thread).

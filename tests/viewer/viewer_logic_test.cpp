@@ -2,8 +2,8 @@
 // errors, the trade plot's points and the frame report.
 #include <cmath>
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include "app/viewer/camera_control.h"
 #include "app/viewer/display_image.h"
@@ -70,16 +70,17 @@ TEST(ScriptedChanges, ParseValidChanges) {
   EXPECT_EQ(a.value, "0.1");
   EXPECT_EQ(a.frame, 12);
   EXPECT_EQ(parse_scripted_change("screenshot=/tmp/a@b.png@3").value, "/tmp/a@b.png");
-  for (const char* ok : {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1", "await=idle@2",
-                         "snapshot=out@9", "hover=10,20@4", "width=64@1"}) {
+  for (const char* ok : {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1",
+                         "await=idle@2", "snapshot=out@9", "hover=10,20@4", "width=64@1"}) {
     EXPECT_NO_THROW(parse_scripted_change(ok)) << ok;
   }
 }
 
 TEST(ScriptedChanges, RejectMalformedChanges) {
-  for (const char* bad : {"tolerance=0.1", "tolerance@3", "=1@2", "tolerance=-1@3", "method=foo@1", "view=x@1",
-                          "colour=red@1", "lights=-4@1", "lights=abc@1", "reference=maybe@1", "await=soon@1",
-                          "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1"}) {
+  for (const char* bad :
+       {"tolerance=0.1", "tolerance@3", "=1@2", "tolerance=-1@3", "method=foo@1", "view=x@1",
+        "colour=red@1", "lights=-4@1", "lights=abc@1", "reference=maybe@1", "await=soon@1",
+        "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1"}) {
     EXPECT_THROW(parse_scripted_change(bad), app::UsageError) << bad;
   }
 }
@@ -87,7 +88,8 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
 TEST(ScriptedChanges, ApplyChangesTheState) {
   ViewerState s;
   s.request_dirty = false;
-  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("tolerance=0.25@0")), ScriptAction::none);
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("tolerance=0.25@0")),
+            ScriptAction::none);
   EXPECT_DOUBLE_EQ(s.settings.tolerance, 0.25);
   EXPECT_TRUE(s.request_dirty);
   apply_scripted_change(s, parse_scripted_change("lights=4096@0"));
@@ -96,8 +98,10 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
   EXPECT_EQ(s.view, ViewMode::error);
   EXPECT_TRUE(s.want_reference);
   EXPECT_THROW(apply_scripted_change(s, parse_scripted_change("lights=100@0")), app::UsageError);
-  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("await=idle@0")), ScriptAction::await_idle);
-  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("screenshot=a.png@0")), ScriptAction::screenshot);
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("await=idle@0")),
+            ScriptAction::await_idle);
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("screenshot=a.png@0")),
+            ScriptAction::screenshot);
 }
 
 TEST(ViewerState, NewSceneResetsTheCameraAndAViewChangeDropsTheReference) {
@@ -121,7 +125,8 @@ renderer::Framebuffer test_framebuffer(int w, int h, float shade, std::uint32_t 
   renderer::Framebuffer f = renderer::make_framebuffer(w, h);
   for (std::size_t i = 0; i < f.samples.size(); ++i) {
     f.samples[i] = samples;
-    f.radiance_sum[i] = glm::vec3(shade * static_cast<float>(i % 7) / 6.0f, shade, 0.25f) * static_cast<float>(samples);
+    f.radiance_sum[i] = glm::vec3(shade * static_cast<float>(i % 7) / 6.0f, shade, 0.25f) *
+                        static_cast<float>(samples);
     f.shading_points[i] = 2 * samples;
     f.lights_tested[i] = (i % 5) * samples;
     f.nodes_visited[i] = 10 * samples;
@@ -130,13 +135,15 @@ renderer::Framebuffer test_framebuffer(int w, int h, float shade, std::uint32_t 
   return f;
 }
 
-std::vector<TileUpdate> all_tiles(const renderer::Framebuffer& f, std::uint64_t generation, int pass, int tile_size) {
+std::vector<TileUpdate> all_tiles(const renderer::Framebuffer& f, std::uint64_t generation,
+                                  int pass, int tile_size) {
   std::vector<TileUpdate> updates;
   int tile = 0;
   for (int y = 0; y < f.height; y += tile_size) {
     for (int x = 0; x < f.width; x += tile_size, ++tile) {
-      updates.push_back(copy_tile(f, generation, tile, pass,
-                                  {x, y, std::min(x + tile_size, f.width), std::min(y + tile_size, f.height)}));
+      updates.push_back(
+          copy_tile(f, generation, tile, pass,
+                    {x, y, std::min(x + tile_size, f.width), std::min(y + tile_size, f.height)}));
     }
   }
   return updates;
@@ -228,7 +235,8 @@ TEST(FrameLog, ReportsFrameTimesAndFirstTileLatency) {
   const FrameTimeSummary s = summarize_frames(log.frame_ms);
   EXPECT_EQ(s.frames, 10u);
   EXPECT_DOUBLE_EQ(s.max_ms, 25.0);
-  EXPECT_NE(frame_report(log).find("tolerance=0.1: first tile on screen after 40.0 ms"), std::string::npos);
+  EXPECT_NE(frame_report(log).find("tolerance=0.1: first tile on screen after 40.0 ms"),
+            std::string::npos);
 }
 
 }  // namespace
