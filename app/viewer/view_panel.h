@@ -8,7 +8,7 @@ namespace app::viewer {
 
 void draw_view_section(ViewerState& state);
 
-// The legend alone (also used by tests of the layout): `range` is the heatmap's value range.
+// The legend of one heatmap: `range` is its value range over the rendered pixels.
 void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange& range);
 
 }  // namespace app::viewer
