@@ -79,8 +79,20 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light: {
-          const Light& world =
-              push_world_light(out, h.lights[node.payload], linear[linear_index], linear_index == 0, translation);
+          const Light& local = h.lights[node.payload];
+          if (linear_index == 0 && local.kind == LightKind::point) {
+            // A translation moves a point light and changes nothing else: test first, and copy
+            // only the lights that pass (the same floats as push_world_light's).
+            Light world = local;
+            world.position = local.position + translation;
+            if constexpr (kCull) {
+              ++visited;
+              if (!is_important(world, point, h.tolerance)) break;
+            }
+            out.emplace_back(local).position = world.position;
+            break;
+          }
+          const Light& world = push_world_light(out, local, linear[linear_index], linear_index == 0, translation);
           if constexpr (kCull) {
             ++visited;
             if (!is_important(world, point, h.tolerance)) out.pop_back();

@@ -31,7 +31,8 @@ BareCastResult cast_logged_rays(const RayScene& rays, const RayLog& log, int thr
     std::uint64_t hits = 0, occluded = 0;
   };
   std::vector<TileCount> counts(log.tiles.size());
-  const auto arena = threads > 0 ? std::make_unique<tbb::task_arena>(threads) : std::make_unique<tbb::task_arena>();
+  const auto arena = threads > 0 ? std::make_unique<tbb::task_arena>(threads)
+                                 : std::make_unique<tbb::task_arena>();
   char start_edge = 0, end_edge = 0;  // happens-before edges for ThreadSanitizer only
   const auto start = std::chrono::steady_clock::now();
   annotate_release(&start_edge);
@@ -47,7 +48,10 @@ BareCastResult cast_logged_rays(const RayScene& rays, const RayLog& log, int thr
               if (r.kind == RayKind::shadow) {
                 c.occluded += rays.occluded(r.origin, r.direction, r.max_distance) ? 1 : 0;
               } else {
-                c.hits += rays.closest_distance(Ray{r.origin, r.direction}) < std::numeric_limits<float>::infinity() ? 1 : 0;
+                c.hits += rays.closest_distance(Ray{r.origin, r.direction}) <
+                                  std::numeric_limits<float>::infinity()
+                              ? 1
+                              : 0;
               }
             }
           }

@@ -40,9 +40,9 @@ struct RayLogTotals {
 RayLogTotals count_logged_rays(const RayLog& log);
 
 struct BareCastResult {
-  double seconds = 0.0;           // wall time of the casting loop
-  std::uint64_t hits = 0;         // closest-hit rays that hit something
-  std::uint64_t occluded = 0;     // shadow rays that were blocked
+  double seconds = 0.0;        // wall time of the casting loop
+  std::uint64_t hits = 0;      // closest-hit rays that hit something
+  std::uint64_t occluded = 0;  // shadow rays that were blocked
 };
 
 // Casts every logged ray again with bare Embree calls, tile by tile on `threads` workers

@@ -48,7 +48,8 @@ std::vector<std::string> split_names(const std::string& text) {
 // Every check happens here, before the output folder is created.
 BenchOptions parse_options(const BenchFlags& flags) {
   BenchOptions o;
-  if (flags.suite != "thesis") throw UsageError("--suite: must be thesis, got '" + flags.suite + "'");
+  if (flags.suite != "thesis")
+    throw UsageError("--suite: must be thesis, got '" + flags.suite + "'");
   if (flags.out.empty()) throw UsageError("--out: needs a folder for the results, got ''");
   std::error_code ec;
   const fs::path out(flags.out);
@@ -68,7 +69,8 @@ BenchOptions parse_options(const BenchFlags& flags) {
     for (const std::string& v : valid) valid_text += (valid_text.empty() ? "" : "|") + v;
     for (const std::string& name : split_names(flags.only)) {
       if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
-        throw UsageError("--only: must be one or more of " + valid_text + " (comma-separated), got '" + flags.only + "'");
+        throw UsageError("--only: must be one or more of " + valid_text +
+                         " (comma-separated), got '" + flags.only + "'");
       }
       o.only.push_back(name);
     }
@@ -131,11 +133,15 @@ std::vector<std::string> bench_experiment_names() {
 
 void add_bench_flags(CLI::App& command, BenchFlags& flags) {
   command.add_option("--suite", flags.suite, "experiment suite (thesis)");
-  command.add_option("--out", flags.out, "folder for results.md, the CSVs and the plots (created if missing)");
-  command.add_flag("--quick", flags.quick, "small sizes, for CI: checks the harness, not the figures");
+  command.add_option("--out", flags.out,
+                     "folder for results.md, the CSVs and the plots (created if missing)");
+  command.add_flag("--quick", flags.quick,
+                   "small sizes, for CI: checks the harness, not the figures");
   std::string names;
   for (const std::string& n : bench_experiment_names()) names += (names.empty() ? "" : ", ") + n;
-  command.add_option("--only", flags.only, "run only these experiments (comma-separated: " + names + ")")
+  command
+      .add_option("--only", flags.only,
+                  "run only these experiments (comma-separated: " + names + ")")
       ->each([&flags](const std::string&) { flags.only_given = true; });
   command.add_option("--threads", flags.threads, "worker threads (0 = all cores)")
       ->each([&flags](const std::string&) { flags.threads_given = true; });
@@ -144,7 +150,8 @@ void add_bench_flags(CLI::App& command, BenchFlags& flags) {
 int run_bench(const BenchFlags& flags) {
   const BenchOptions options = parse_options(flags);
 #ifndef NDEBUG
-  std::fprintf(stderr, "levrt bench: warning: not a Release build, the timings are not representative\n");
+  std::fprintf(stderr,
+               "levrt bench: warning: not a Release build, the timings are not representative\n");
 #endif
   const auto started = std::chrono::steady_clock::now();
   bench::BenchRun run(bench::thesis_suite(options.quick), options.threads);
@@ -173,37 +180,55 @@ int run_bench(const BenchFlags& flags) {
   std::string md = "# levrt bench: the thesis' experiments\n\n";
   md += "Produced by `" + command_text(options) + "` on " + utc_date() + ": " + cpu_model() + ", " +
         std::to_string(hardware) + " hardware threads, " +
-        (options.threads > 0 ? std::to_string(options.threads) : "all (" + std::to_string(hardware) + ")") +
+        (options.threads > 0 ? std::to_string(options.threads)
+                             : "all (" + std::to_string(hardware) + ")") +
         " worker threads, " +
 #ifdef NDEBUG
         "Release build.\n\n";
 #else
         "**not a Release build: timings are not representative**.\n\n";
 #endif
-  if (c.quick) md += "**Quick run** (`--quick`): small images and light counts. It checks the harness; its figures are not the experiments'.\n\n";
+  if (c.quick)
+    md +=
+        "**Quick run** (`--quick`): small images and light counts. It checks the harness; its "
+        "figures are not the experiments'.\n\n";
   md += "Every figure is from one " + std::to_string(c.width) + "x" + std::to_string(c.height) +
-        " frame, one sample per pixel at the pixel centres, Whitted recursion to depth 5. Times are wall-clock "
-        "seconds of the render passes (the scene, its light hierarchy and its Embree BVH are built before and "
-        "not counted; refitting and selector set-up are), the median of " +
-        std::to_string(c.runs) +
-        " runs; every ratio compares measurements of this same run. Counts (lights tested, volumes checked) are "
-        "averages per shading point, primary and secondary hits alike. The thesis' figures (Appendix B) were "
-        "measured on a 300 MHz SUN ULTRA10: compare its ratios and counts, not its seconds.\n\n";
-  md += "## Headline: where each target stands\n\n| target | goal | thesis | measured | status |\n|---|---|---|---|---|\n";
+        " frame, one sample per pixel at the pixel centres, Whitted recursion to depth 5. The "
+        "scene, its light hierarchy and its Embree BVH are built first and not timed; refitting "
+        "and selector set-up are. Times are the median of at least " +
+        std::to_string(c.runs) + " runs" +
+        (c.extra_runs_seconds > 0.0
+             ? " (quick renders get more, up to " + std::to_string(c.max_runs) + ")"
+             : std::string()) +
+        ", in CPU seconds of the whole process (every thread, user and system, as /bin/time sums "
+        "them, which is how the thesis timed), because this machine is shared and its other load "
+        "moves wall-clock time far more than CPU time; the CSVs also have the wall-clock "
+        "seconds. The renders a ratio compares are made in turns (run k of each before run k+1 of "
+        "any), within this run. Counts (lights tested, volumes checked) are averages per shading "
+        "point, primary and secondary hits alike. The thesis' figures (Appendix B) were measured "
+        "on a 300 MHz SUN ULTRA10: compare its ratios and counts, not its seconds.\n\n";
+  md +=
+      "## Headline: where each target stands\n\n| target | goal | thesis | measured | status "
+      "|\n|---|---|---|---|---|\n";
   for (const bench::Section& s : sections) {
     for (const bench::HeadlineRow& r : s.headline) {
-      md += "| " + r.target + " | " + r.goal + " | " + r.thesis + " | " + r.measured + " | " + r.status + " |\n";
+      md += "| " + r.target + " | " + r.goal + " | " + r.thesis + " | " + r.measured + " | " +
+            r.status + " |\n";
     }
   }
   md += "\nExperiments:";
-  for (std::size_t i = 0; i < names.size(); ++i) md += std::string(i ? "," : "") + " [" + names[i] + "](#" + names[i] + ")";
-  md += ". Each has its CSV (`" + (names.empty() ? std::string("name") : names.front()) + ".csv`, ...) next to this file.\n\n";
-  for (std::size_t i = 0; i < sections.size(); ++i) md += "<a id=\"" + names[i] + "\"></a>\n\n" + sections[i].markdown + "\n";
+  for (std::size_t i = 0; i < names.size(); ++i)
+    md += std::string(i ? "," : "") + " [" + names[i] + "](#" + names[i] + ")";
+  md += ". Each has its CSV (`" + (names.empty() ? std::string("name") : names.front()) +
+        ".csv`, ...) next to this file.\n\n";
+  for (std::size_t i = 0; i < sections.size(); ++i)
+    md += "<a id=\"" + names[i] + "\"></a>\n\n" + sections[i].markdown + "\n";
   renderer::write_text_file(options.out + "/results.md", md);
 
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::printf("levrt bench: wrote %s/results.md and %zu experiments' CSVs and plots in %.0f s\n", options.out.c_str(),
-              sections.size(), seconds);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::printf("levrt bench: wrote %s/results.md and %zu experiments' CSVs and plots in %.0f s\n",
+              options.out.c_str(), sections.size(), seconds);
   return 0;
 }
 

@@ -49,13 +49,17 @@ std::string tolerance_text(double t) {
   return buffer;
 }
 
-std::string status(bool comparable, bool met) { return !comparable ? "n/a" : (met ? "met" : "missed"); }
+std::string status(bool comparable, bool met) {
+  return !comparable ? "n/a" : (met ? "met" : "missed");
+}
 
-void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name, const Table& table) {
+void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
+                 const Table& table) {
   if (!run.planning()) renderer::write_text_file(out_dir + "/" + name + ".csv", table_csv(table));
 }
 
-std::string write_chart(const BenchRun& run, const std::string& out_dir, const std::string& file, const Chart& chart) {
+std::string write_chart(const BenchRun& run, const std::string& out_dir, const std::string& file,
+                        const Chart& chart) {
   if (!run.planning()) write_chart_png(out_dir + "/" + file, chart);
   return "![" + chart.title + "](" + file + ")\n\n";
 }
@@ -69,17 +73,20 @@ std::string missing_scenes_note(const BenchRun& run) {
 }
 
 std::string quick_note(const BenchRun& run) {
-  return run.config().quick ? "*Quick run: small image and light counts; the figures check the harness, not the "
-                              "method.*\n\n"
-                            : "";
+  return run.config().quick
+             ? "*Quick run: small image and light counts; the figures check the harness, not the "
+               "method.*\n\n"
+             : "";
 }
 
 // The level of `scene` among `levels` whose light count is nearest `lights` (in ratio).
-int nearest_level(const BenchRun& run, const std::string& scene, const std::vector<int>& levels, std::uint64_t lights) {
+int nearest_level(const BenchRun& run, const std::string& scene, const std::vector<int>& levels,
+                  std::uint64_t lights) {
   int best = levels.empty() ? -1 : levels.front();
   double best_distance = 1e300;
   for (int level : levels) {
-    const double d = std::abs(std::log(static_cast<double>(run.light_count(scene, level)) / static_cast<double>(lights)));
+    const double d = std::abs(
+        std::log(static_cast<double>(run.light_count(scene, level)) / static_cast<double>(lights)));
     if (d < best_distance) {
       best_distance = d;
       best = level;
@@ -96,14 +103,17 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
   Table table;
   table.columns = {{"scene", "scene"},
                    {"lights", "lights"},
-                   {"rt_s", "rt (s)"},
+                   {"rt_cpu_s", "rt (CPU s)"},
+                   {"rt_wall_s", "rt (s)", false},
                    {"rt_pixels", "rt px"},
-                   {"ast_s", "ast (s)"},
+                   {"ast_cpu_s", "ast (CPU s)"},
+                   {"ast_wall_s", "ast (s)", false},
                    {"ast_pixels", "ast px"},
-                   {"lev_s", "lev (s)"},
+                   {"lev_cpu_s", "lev (CPU s)"},
+                   {"lev_wall_s", "lev (s)"},
                    {"lev_pixels", "lev px"},
-                   {"ast_over_rt_pct", "ast/rt"},
-                   {"lev_over_rt_pct", "lev/rt"},
+                   {"ast_over_rt_pct", "ast/rt (%)"},
+                   {"lev_over_rt_pct", "lev/rt (%)"},
                    {"rt_over_lev", "lev speedup over rt"},
                    {"ast_over_lev", "lev speedup over ast"},
                    {"thesis_rt_over_lev", "thesis: over rt"},
@@ -115,9 +125,10 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
   std::string plots;
   for (const std::string& scene : run.available_scenes()) {
     Chart chart;
-    chart.title = scene_label(scene) + ": time per frame at tolerance " + tolerance_text(c.tolerance);
+    chart.title =
+        scene_label(scene) + ": time per frame at tolerance " + tolerance_text(c.tolerance);
     chart.x_label = "lights";
-    chart.y_label = "seconds per frame";
+    chart.y_label = "CPU seconds per frame";
     chart.log_x = chart.log_y = true;
     std::vector<Series> series(3);
     for (int i = 0; i < 3; ++i) series[static_cast<std::size_t>(i)].label = kMethods[i];
@@ -125,7 +136,7 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
     std::uint64_t last_lights = 0;
     for (int level : run.levels(scene, c.min_lights, c.max_lights)) {
       const std::uint64_t lights = run.light_count(scene, level);
-      double seconds[3], tests[3];
+      double cpu[3], wall[3], tests[3];
       int stride[3];
       std::vector<MeasureRequest> requests;
       for (int i = 0; i < 3; ++i) {
@@ -135,10 +146,11 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
       const std::vector<const Measurement*> measured = run.measure_together(requests);
       for (int i = 0; i < 3; ++i) {
         const Measurement& m = *measured[static_cast<std::size_t>(i)];
-        seconds[i] = m.full_frame_seconds();
+        cpu[i] = m.full_frame_cpu_seconds();
+        wall[i] = m.full_frame_seconds();
         tests[i] = m.lights_tested_avg();
         series[static_cast<std::size_t>(i)].x.push_back(static_cast<double>(lights));
-        series[static_cast<std::size_t>(i)].y.push_back(seconds[i]);
+        series[static_cast<std::size_t>(i)].y.push_back(cpu[i]);
       }
       double thesis_rt = kNaN, thesis_ast = kNaN;
       for (const ThesisSpeed& t : thesis_speed(scene)) {
@@ -147,16 +159,29 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
           thesis_ast = t.ast / t.lev;
         }
       }
-      rt_over_lev = seconds[0] / seconds[2];
-      ast_over_lev = seconds[1] / seconds[2];
+      rt_over_lev = cpu[0] / cpu[2];
+      ast_over_lev = cpu[1] / cpu[2];
       last_lights = lights;
-      table.rows.push_back({text_cell(scene), count_cell(lights), number_cell(seconds[0], 3),
-                            text_cell(pixels_text(stride[0])), number_cell(seconds[1], 3),
-                            text_cell(pixels_text(stride[1])), number_cell(seconds[2], 3),
-                            text_cell(pixels_text(stride[2])), number_cell(100.0 * seconds[1] / seconds[0], 1),
-                            number_cell(100.0 * seconds[2] / seconds[0], 2), ratio_cell(rt_over_lev),
-                            ratio_cell(ast_over_lev), ratio_cell(thesis_rt), ratio_cell(thesis_ast),
-                            number_cell(tests[0], 1), number_cell(tests[1], 1), number_cell(tests[2], 1)});
+      table.rows.push_back({text_cell(scene),
+                            count_cell(lights),
+                            number_cell(cpu[0], 3),
+                            number_cell(wall[0], 3),
+                            text_cell(pixels_text(stride[0])),
+                            number_cell(cpu[1], 3),
+                            number_cell(wall[1], 3),
+                            text_cell(pixels_text(stride[1])),
+                            number_cell(cpu[2], 3),
+                            number_cell(wall[2], 3),
+                            text_cell(pixels_text(stride[2])),
+                            number_cell(100.0 * cpu[1] / cpu[0], 1),
+                            number_cell(100.0 * cpu[2] / cpu[0], 2),
+                            ratio_cell(rt_over_lev),
+                            ratio_cell(ast_over_lev),
+                            ratio_cell(thesis_rt),
+                            ratio_cell(thesis_ast),
+                            number_cell(tests[0], 1),
+                            number_cell(tests[1], 1),
+                            number_cell(tests[2], 1)});
     }
     chart.series = series;
     plots += write_chart(run, out_dir, "speed_" + scene + ".png", chart);
@@ -165,25 +190,30 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
       const bool comparable = !c.quick && last_lights == target;
       const ThesisSpeed& t = thesis_speed(scene).back();
       const std::string where = scene + ", " + format_count(last_lights) + " lights";
-      section.headline.push_back({"speed: lev speedup over rt, " + where, ">= 300x", format_ratio(t.rt / t.lev),
-                                  format_ratio(rt_over_lev), status(comparable, rt_over_lev >= kSpeedupOverRt)});
-      section.headline.push_back({"speed: lev speedup over ast, " + where, ">= 100x", format_ratio(t.ast / t.lev),
-                                  format_ratio(ast_over_lev), status(comparable, ast_over_lev >= kSpeedupOverAst)});
+      section.headline.push_back({"speed: lev speedup over rt, " + where, ">= 300x",
+                                  format_ratio(t.rt / t.lev), format_ratio(rt_over_lev),
+                                  status(comparable, rt_over_lev >= kSpeedupOverRt)});
+      section.headline.push_back({"speed: lev speedup over ast, " + where, ">= 100x",
+                                  format_ratio(t.ast / t.lev), format_ratio(ast_over_lev),
+                                  status(comparable, ast_over_lev >= kSpeedupOverAst)});
     }
   }
   write_table(run, out_dir, "speed", table);
-  char intro[1024];
-  std::snprintf(intro, sizeof intro,
-                "Seconds per %dx%d frame (render passes, median of %d runs) for the three methods at tolerance %s. "
-                "Where a column says `1/%d` px, that method rendered one pixel of every %dx%d block and its time is "
-                "scaled to the whole frame (rt and ast above %s lights, and any frame that would take over %.0f s). "
-                "Ratios are taken within this run. "
-                "The thesis timed whole runs on a 300 MHz SUN ULTRA10, so only its ratios compare.\n\n",
-                c.width, c.height, c.runs, tolerance_text(c.tolerance).c_str(), c.subsample_stride * c.subsample_stride,
-                c.subsample_stride, c.subsample_stride, format_count(c.subsample_above).c_str(),
-                c.max_full_frame_seconds);
-  section.markdown = "## speed: rt, ast and lev (thesis Tables 1, 2)\n\n" + quick_note(run) + intro +
-                     missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
+  char intro[1200];
+  std::snprintf(
+      intro, sizeof intro,
+      "CPU seconds per %dx%d frame (all threads, user and system, as /bin/time sums them; median "
+      "of at least %d runs, made in turns with the other methods of the row) at tolerance %s; "
+      "lev's wall-clock seconds beside them. The ratios are of CPU seconds, taken within this "
+      "run. Where a column says `1/%d` px, that method rendered one pixel of every %dx%d block "
+      "and its time is scaled to the whole frame (rt and ast above %s lights, and any frame that "
+      "would take over %.0f s). The thesis timed whole runs on a 300 MHz SUN ULTRA10, so only its "
+      "ratios compare. The CSV has every wall-clock time too.\n\n",
+      c.width, c.height, c.runs, tolerance_text(c.tolerance).c_str(),
+      c.subsample_stride * c.subsample_stride, c.subsample_stride, c.subsample_stride,
+      format_count(c.subsample_above).c_str(), c.max_full_frame_seconds);
+  section.markdown = "## speed: rt, ast and lev (thesis Tables 1, 2)\n\n" + quick_note(run) +
+                     intro + missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
 }
 
@@ -222,14 +252,16 @@ Section run_memory(BenchRun& run, const std::string& out_dir) {
       const std::uint64_t lights = run.light_count(scene, level);
       std::size_t ast = 0, flat = 0, instanced = 0;
       const bool ran = run.run_job(
-          scene + " " + format_count(lights) + " lights: hierarchies and ast bookkeeping", 1e5 + 10.0 * static_cast<double>(lights), [&] {
+          scene + " " + format_count(lights) + " lights: hierarchies and ast bookkeeping",
+          0.01 + 2e-6 * static_cast<double>(lights), [&] {
             const renderer::Scene s = scenes::find_scene_model(scene)->build(level);
             instanced = lev::hierarchy_bytes(s.lights);
             // Without instancing: the same lights as a flat list, under the automatic BVH a scene
             // file without structure gets (DESIGN.md).
             lev::LightTree flat_tree;
             flat_tree.root = lev::build_light_bvh(lev::flatten_lights(s.lights));
-            flat = lev::hierarchy_bytes(lev::build_hierarchy(flat_tree, static_cast<float>(c.tolerance)));
+            flat = lev::hierarchy_bytes(
+                lev::build_hierarchy(flat_tree, static_cast<float>(c.tolerance)));
             ast = lev::make_selector(lev::Method::ast, s.lights)->bookkeeping_bytes();
           });
       if (!ran) continue;
@@ -256,12 +288,13 @@ Section run_memory(BenchRun& run, const std::string& out_dir) {
         flat_per_light = static_cast<double>(flat) / n;
         flat_lights = lights;
       }
-      table.rows.push_back({text_cell(scene), count_cell(lights), count_cell(ast), number_cell(ast / n, 1),
-                            count_cell(flat), number_cell(flat / n, 1), number_cell(index_per_light, 1),
-                            count_cell(instanced), number_cell(thesis_ast, 0), number_cell(thesis_flat, 0),
+      table.rows.push_back({text_cell(scene), count_cell(lights), count_cell(ast),
+                            number_cell(ast / n, 1), count_cell(flat), number_cell(flat / n, 1),
+                            number_cell(index_per_light, 1), count_cell(instanced),
+                            number_cell(thesis_ast, 0), number_cell(thesis_flat, 0),
                             number_cell(thesis_instanced, 0)});
-      const double values[4] = {static_cast<double>(ast), static_cast<double>(flat), index_per_light * n,
-                                static_cast<double>(instanced)};
+      const double values[4] = {static_cast<double>(ast), static_cast<double>(flat),
+                                index_per_light * n, static_cast<double>(instanced)};
       for (int k = 0; k < 4; ++k) {
         series[static_cast<std::size_t>(k)].x.push_back(n);
         series[static_cast<std::size_t>(k)].y.push_back(values[k]);
@@ -272,24 +305,32 @@ Section run_memory(BenchRun& run, const std::string& out_dir) {
   }
   write_table(run, out_dir, "memory", table);
   const bool has_building = scenes::find_scene_model("building") != nullptr;
-  section.headline.push_back({"memory: lev hierarchy with instancing, building " + format_count(instanced_lights) + " lights",
+  section.headline.push_back({"memory: lev hierarchy with instancing, building " +
+                                  format_count(instanced_lights) + " lights",
                               "< 16 KB", "6.3 KB (at 16,384)", format_bytes(instanced_at_target),
                               status(has_building && instanced_lights == kInstancedBytesLights,
                                      instanced_at_target < kInstancedBytesLimit)});
   section.headline.push_back(
-      {"memory: lev flattened, bytes per light above the lights, building " + format_count(flat_lights) + " lights",
-       "< 64 B", "136 B", format_fixed(flat_index_per_light, 1) + " B (" + format_fixed(flat_per_light, 1) +
-                              " B with each light's own node and record)",
+      {"memory: lev flattened, bytes per light above the lights, building " +
+           format_count(flat_lights) + " lights",
+       "< 64 B", "136 B",
+       format_fixed(flat_index_per_light, 1) + " B (" + format_fixed(flat_per_light, 1) +
+           " B with each light's own node and record)",
        status(has_building && !c.quick, flat_index_per_light < kFlatBytesPerLightLimit)});
-  section.markdown =
-      "## memory: hierarchy bytes with and without instancing (thesis Table 3)\n\n" + quick_note(run) +
-      "What each method keeps to speed up shadow testing, from the structures themselves (`hierarchy_bytes`, "
-      "`bookkeeping_bytes`). *lev instanced* is the scene's own hierarchy: one master per level, so it grows by a "
-      "constant per level. *lev flattened* is the same lights as a flat list under the automatic 4-wide BVH (no "
-      "instancing); its *above the lights* column leaves out each light's own node and record, which is how the "
-      "thesis counted (Test 1.2). *ast* keeps a world-space copy of every light (48 B) and four counters (16 B); "
-      "the thesis' AST kept 24 B of counters.\n\n" +
-      missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
+  section.markdown = "## memory: hierarchy bytes with and without instancing (thesis Table 3)\n\n" +
+                     quick_note(run) +
+                     "What each method keeps to speed up shadow testing, from the structures "
+                     "themselves (`hierarchy_bytes`, "
+                     "`bookkeeping_bytes`). *lev instanced* is the scene's own hierarchy: one "
+                     "master per level, so it grows by a "
+                     "constant per level. *lev flattened* is the same lights as a flat list under "
+                     "the automatic 4-wide BVH (no "
+                     "instancing); its *above the lights* column leaves out each light's own node "
+                     "and record, which is how the "
+                     "thesis counted (Test 1.2). *ast* keeps a world-space copy of every light (48 "
+                     "B) and four counters (16 B); "
+                     "the thesis' AST kept 24 B of counters.\n\n" +
+                     missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
 }
 
@@ -304,16 +345,24 @@ struct ScalingPlan {
 std::vector<ScalingPlan> scaling_plan(const BenchRun& run) {
   std::vector<ScalingPlan> plan;
   for (const std::string& scene : run.available_scenes()) {
-    plan.push_back({scene, run.levels(scene, run.config().min_lights, run.config().max_scaling_lights)});
+    plan.push_back(
+        {scene, run.levels(scene, run.config().min_lights, run.config().max_scaling_lights)});
   }
   return plan;
 }
 
-MeasureRequest scaling_request(BenchRun& run, const std::string& scene, int level, double tolerance) {
-  return {scene, level, "lev", tolerance, run.stride_for(scene, level, "lev", tolerance), run.config().runs};
+MeasureRequest scaling_request(BenchRun& run, const std::string& scene, int level,
+                               double tolerance) {
+  return {scene,
+          level,
+          "lev",
+          tolerance,
+          run.stride_for(scene, level, "lev", tolerance),
+          run.config().runs};
 }
 
-const Measurement& scaling_measure(BenchRun& run, const std::string& scene, int level, double tolerance) {
+const Measurement& scaling_measure(BenchRun& run, const std::string& scene, int level,
+                                   double tolerance) {
   return run.measure(scaling_request(run, scene, level, tolerance));
 }
 
@@ -323,11 +372,13 @@ Section run_scaling(BenchRun& run, const std::string& out_dir) {
   table.columns = {{"scene", "scene"}, {"lights", "lights"}};
   for (double t : c.scaling_tolerances) {
     const std::string ts = tolerance_text(t);
-    table.columns.push_back({"lev_s_tol_" + ts, "lev (s), tol " + ts});
+    table.columns.push_back({"lev_cpu_s_tol_" + ts, "lev (CPU s), tol " + ts});
+    table.columns.push_back({"lev_wall_s_tol_" + ts, "lev (s), tol " + ts, false});
     table.columns.push_back({"pixels_tol_" + ts, "px"});
   }
   for (double t : c.scaling_tolerances) {
-    table.columns.push_back({"thesis_s_tol_" + tolerance_text(t), "thesis (s), tol " + tolerance_text(t)});
+    table.columns.push_back(
+        {"thesis_s_tol_" + tolerance_text(t), "thesis (s), tol " + tolerance_text(t)});
   }
   Section section;
   std::string plots, ratios;
@@ -335,24 +386,31 @@ Section run_scaling(BenchRun& run, const std::string& out_dir) {
     Chart chart;
     chart.title = scene_label(p.scene) + ": lev time per frame against light count";
     chart.x_label = "lights";
-    chart.y_label = "seconds per frame";
+    chart.y_label = "CPU seconds per frame";
     chart.log_x = true;
     std::vector<Series> series;
-    for (double t : c.scaling_tolerances) series.push_back({"tolerance " + tolerance_text(t), {}, {}});
+    for (double t : c.scaling_tolerances)
+      series.push_back({"tolerance " + tolerance_text(t), {}, {}});
     double base = kNaN, top = kNaN;
     std::uint64_t base_lights = 0, top_lights = 0;
     const int base_level = nearest_level(run, p.scene, p.levels, c.scaling_base_lights);
+    // Every level and tolerance of the scene in turns: the scaling ratio compares renders made
+    // minutes apart otherwise, on a machine whose load changes.
+    std::vector<MeasureRequest> requests;
+    for (int level : p.levels) {
+      for (double t : c.scaling_tolerances)
+        requests.push_back(scaling_request(run, p.scene, level, t));
+    }
+    run.measure_together(requests);
     for (int level : p.levels) {
       const std::uint64_t lights = run.light_count(p.scene, level);
       std::vector<Cell> row{text_cell(p.scene), count_cell(lights)};
-      std::vector<MeasureRequest> requests;
-      for (double t : c.scaling_tolerances) requests.push_back(scaling_request(run, p.scene, level, t));
-      run.measure_together(requests);
       for (std::size_t k = 0; k < c.scaling_tolerances.size(); ++k) {
         const double t = c.scaling_tolerances[k];
         const Measurement& m = scaling_measure(run, p.scene, level, t);
-        const double s = m.full_frame_seconds();
+        const double s = m.full_frame_cpu_seconds();
         row.push_back(number_cell(s, 3));
+        row.push_back(number_cell(m.full_frame_seconds(), 3));
         row.push_back(text_cell(pixels_text(m.request.stride)));
         series[k].x.push_back(static_cast<double>(lights));
         series[k].y.push_back(s);
@@ -365,26 +423,31 @@ Section run_scaling(BenchRun& run, const std::string& out_dir) {
           top_lights = lights;
         }
       }
-      for (double t : c.scaling_tolerances) row.push_back(number_cell(thesis_lookup(thesis_scaling_seconds(p.scene), lights, t), 2));
+      for (double t : c.scaling_tolerances)
+        row.push_back(number_cell(thesis_lookup(thesis_scaling_seconds(p.scene), lights, t), 2));
       table.rows.push_back(row);
     }
     chart.series = series;
     plots += write_chart(run, out_dir, "scaling_" + p.scene + ".png", chart);
-    ratios += "- " + p.scene + ": lev at tolerance " + tolerance_text(c.tolerance) + " takes " + format_ratio(top / base) +
-              " as long with " + format_count(top_lights) + " lights as with " + format_count(base_lights) + ".\n";
+    ratios += "- " + p.scene + ": lev at tolerance " + tolerance_text(c.tolerance) + " takes " +
+              format_ratio(top / base) + " as long with " + format_count(top_lights) +
+              " lights as with " + format_count(base_lights) + ".\n";
     if (p.scene == "building") {
-      section.headline.push_back({"scaling: lev time at " + format_count(top_lights) + " / at " +
-                                      format_count(base_lights) + " lights, building, tol " + tolerance_text(c.tolerance),
-                                  "<= 2.5x", "1.9x (65,536 / 1,024)", format_ratio(top / base),
-                                  status(!c.quick && top_lights == kScalingTargetLights, top / base <= kScalingLimit)});
+      section.headline.push_back(
+          {"scaling: lev time at " + format_count(top_lights) + " / at " +
+               format_count(base_lights) + " lights, building, tol " + tolerance_text(c.tolerance),
+           "<= 2.5x", "1.9x (65,536 / 1,024)", format_ratio(top / base),
+           status(!c.quick && top_lights == kScalingTargetLights, top / base <= kScalingLimit)});
     }
   }
   write_table(run, out_dir, "scaling", table);
-  section.markdown = "## scaling: lev time against light count (thesis Tables 4, 5)\n\n" + quick_note(run) +
-                     "lev's seconds per frame (median of " + std::to_string(c.runs) +
-                     " runs) as the scene models grow, at three tolerances; the thesis' figure 5.6 plots the "
-                     "same against a logarithmic light count.\n\n" +
-                     missing_scenes_note(run) + ratios + "\n" + table_markdown(table) + "\n" + plots;
+  section.markdown =
+      "## scaling: lev time against light count (thesis Tables 4, 5)\n\n" + quick_note(run) +
+      "lev's CPU seconds per frame (median of at least " + std::to_string(c.runs) +
+      " runs; every level and tolerance of a scene measured in turns) as the scene models grow, "
+      "at three tolerances; the thesis' figure 5.6 plots the same against a logarithmic light "
+      "count. The ratios below are of CPU seconds; the CSV has the wall-clock times too.\n\n" +
+      missing_scenes_note(run) + ratios + "\n" + table_markdown(table) + "\n" + plots;
   return section;
 }
 
@@ -414,11 +477,12 @@ Section run_work(BenchRun& run, const std::string& out_dir) {
       for (int level : p.levels) {
         const std::uint64_t lights = run.light_count(p.scene, level);
         const Measurement& m = scaling_measure(run, p.scene, level, t);
-        table.rows.push_back({text_cell(p.scene), count_cell(lights), text_cell(tolerance_text(t)),
-                              text_cell(pixels_text(m.request.stride)), number_cell(m.lights_tested_avg(), 1),
-                              number_cell(m.nodes_visited_avg(), 1), number_cell(m.shadow_rays_avg(), 1),
-                              number_cell(thesis_lookup(thesis_work_tested(p.scene), lights, t), 0),
-                              number_cell(thesis_lookup(thesis_work_nodes(p.scene), lights, t), 0)});
+        table.rows.push_back(
+            {text_cell(p.scene), count_cell(lights), text_cell(tolerance_text(t)),
+             text_cell(pixels_text(m.request.stride)), number_cell(m.lights_tested_avg(), 1),
+             number_cell(m.nodes_visited_avg(), 1), number_cell(m.shadow_rays_avg(), 1),
+             number_cell(thesis_lookup(thesis_work_tested(p.scene), lights, t), 0),
+             number_cell(thesis_lookup(thesis_work_nodes(p.scene), lights, t), 0)});
         st.x.push_back(static_cast<double>(lights));
         st.y.push_back(m.lights_tested_avg());
         sn.x.push_back(static_cast<double>(lights));
@@ -433,10 +497,13 @@ Section run_work(BenchRun& run, const std::string& out_dir) {
   write_table(run, out_dir, "work", table);
   Section section;
   section.markdown =
-      "## work: lights tested and extent volumes checked per shading point (thesis Tables 12-15)\n\n" +
+      "## work: lights tested and extent volumes checked per shading point (thesis Tables "
+      "12-15)\n\n" +
       quick_note(run) +
-      "From the scaling runs. *Lights tested* are the lights the walk returns (each gets a shadow ray unless it "
-      "is behind the surface: *shadow rays*). *Volumes checked* counts every box test of the walk (a union "
+      "From the scaling runs. *Lights tested* are the lights the walk returns (each gets a shadow "
+      "ray unless it "
+      "is behind the surface: *shadow rays*). *Volumes checked* counts every box test of the walk "
+      "(a union "
       "tests its children's boxes before descending) and every light's exact irradiance test.\n\n" +
       missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
@@ -468,12 +535,14 @@ Section run_fraction(BenchRun& run, const std::string& out_dir) {
       const std::uint64_t lights = run.light_count(scene, level);
       Series s{format_count(lights) + " lights", {}, {}};
       for (double t : c.fraction_tolerances) {
-        const Measurement& m = run.measure({scene, level, "lev", t, run.stride_for(scene, level, "lev", t), 1});
+        const Measurement& m =
+            run.measure({scene, level, "lev", t, run.stride_for(scene, level, "lev", t), 1});
         const double fraction = 100.0 * m.lights_tested_avg() / static_cast<double>(lights);
         const double thesis = thesis_lookup(thesis_fraction_tested(scene), lights, t);
         table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(tolerance_text(t)),
-                              text_cell(pixels_text(m.request.stride)), number_cell(m.lights_tested_avg(), 1),
-                              number_cell(fraction, 2), number_cell(m.nodes_visited_avg(), 1), number_cell(thesis, 0),
+                              text_cell(pixels_text(m.request.stride)),
+                              number_cell(m.lights_tested_avg(), 1), number_cell(fraction, 2),
+                              number_cell(m.nodes_visited_avg(), 1), number_cell(thesis, 0),
                               number_cell(100.0 * thesis / static_cast<double>(lights), 2)});
         s.x.push_back(t);
         s.y.push_back(fraction);
@@ -484,15 +553,16 @@ Section run_fraction(BenchRun& run, const std::string& out_dir) {
   }
   write_table(run, out_dir, "fraction", table);
   Section section;
-  section.markdown = "## fraction: lights tested against tolerance (thesis Tables 6-9)\n\n" + quick_note(run) +
-                     "Average lights selected for a shadow test per shading point (primary and secondary hits), "
-                     "as a fraction of all lights. At tolerance 0 every light is selected by definition. Counts "
-                     "are exact averages of one deterministic render; `1/" +
-                     std::to_string(c.subsample_stride * c.subsample_stride) +
-                     "` px marks the costly ones (a frame over " + format_fixed(c.max_full_frame_seconds, 0) +
-                     " s: tolerance 0 at many lights, the hall) taken on one pixel of every " +
-                     std::to_string(c.subsample_stride) + "x" + std::to_string(c.subsample_stride) + " block.\n\n" + missing_scenes_note(run) +
-                     table_markdown(table) + "\n" + plots;
+  section.markdown =
+      "## fraction: lights tested against tolerance (thesis Tables 6-9)\n\n" + quick_note(run) +
+      "Average lights selected for a shadow test per shading point (primary and secondary hits), "
+      "as a fraction of all lights. At tolerance 0 every light is selected by definition. Counts "
+      "are exact averages of one deterministic render; `1/" +
+      std::to_string(c.subsample_stride * c.subsample_stride) +
+      "` px marks the costly ones (a frame over " + format_fixed(c.max_full_frame_seconds, 0) +
+      " s: tolerance 0 at many lights, the hall) taken on one pixel of every " +
+      std::to_string(c.subsample_stride) + "x" + std::to_string(c.subsample_stride) +
+      " block.\n\n" + missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
 }
 
@@ -529,10 +599,12 @@ Section run_error(BenchRun& run, const std::string& out_dir) {
       for (double t : c.error_tolerances) {
         const Measurement& m = run.measure({scene, level, "lev", t, stride, 1});
         const PixelErrors e = pixel_errors(m, reference);
-        table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(tolerance_text(t)),
-                              text_cell(pixels_text(stride)), number_cell(e.average_pct, 4), number_cell(e.max_pct, 3),
-                              number_cell(thesis_lookup(thesis_error_avg_pct(scene), lights, t), 4),
-                              number_cell(thesis_lookup(thesis_error_max_pct(scene), lights, t), 3)});
+        table.rows.push_back(
+            {text_cell(scene), count_cell(lights), text_cell(tolerance_text(t)),
+             text_cell(pixels_text(stride)), number_cell(e.average_pct, 4),
+             number_cell(e.max_pct, 3),
+             number_cell(thesis_lookup(thesis_error_avg_pct(scene), lights, t), 4),
+             number_cell(thesis_lookup(thesis_error_max_pct(scene), lights, t), 3)});
         sa.x.push_back(t);
         sa.y.push_back(e.average_pct);
         sm.x.push_back(t);
@@ -554,24 +626,31 @@ Section run_error(BenchRun& run, const std::string& out_dir) {
     plots += write_chart(run, out_dir, "error_avg_" + scene + ".png", avg);
     plots += write_chart(run, out_dir, "error_max_" + scene + ".png", max);
     if (scene == "building" || scene == "maze") {
-      const std::string thesis_avg = scene == "building" ? "0.175% (4,096 lights)" : "0.172% (largest of Table 11)";
-      const std::string thesis_max = scene == "building" ? "20.9% (4,096 lights)" : "6.37% (largest of Table 11)";
-      const std::string where = ", " + scene + ", tol " + tolerance_text(c.tolerance) + ", worst over light counts";
-      section.headline.push_back({"accuracy: average pixel error" + where, "< 0.1%", thesis_avg,
-                                  format_fixed(worst_avg, 4) + "% (" + format_count(worst_avg_lights) + " lights)",
-                                  status(!c.quick, worst_avg < kErrorAvgLimitPct)});
-      section.headline.push_back({"accuracy: maximum pixel error" + where, "< 5%", thesis_max,
-                                  format_fixed(worst_max, 3) + "% (" + format_count(worst_max_lights) + " lights)",
-                                  status(!c.quick, worst_max < kErrorMaxLimitPct)});
+      const std::string thesis_avg =
+          scene == "building" ? "0.175% (4,096 lights)" : "0.172% (largest of Table 11)";
+      const std::string thesis_max =
+          scene == "building" ? "20.9% (4,096 lights)" : "6.37% (largest of Table 11)";
+      const std::string where =
+          ", " + scene + ", tol " + tolerance_text(c.tolerance) + ", worst over light counts";
+      section.headline.push_back(
+          {"accuracy: average pixel error" + where, "< 0.1%", thesis_avg,
+           format_fixed(worst_avg, 4) + "% (" + format_count(worst_avg_lights) + " lights)",
+           status(!c.quick, worst_avg < kErrorAvgLimitPct)});
+      section.headline.push_back(
+          {"accuracy: maximum pixel error" + where, "< 5%", thesis_max,
+           format_fixed(worst_max, 3) + "% (" + format_count(worst_max_lights) + " lights)",
+           status(!c.quick, worst_max < kErrorMaxLimitPct)});
     }
   }
   write_table(run, out_dir, "error", table);
   section.markdown =
       "## error: pixel error of lev against rt (thesis Tables 10, 11)\n\n" + quick_note(run) +
-      "Per pixel |dR|+|dG|+|dB| on the 0..255 scale as a percentage of 765, against the rt image of the same "
+      "Per pixel |dR|+|dG|+|dB| on the 0..255 scale as a percentage of 765, against the rt image "
+      "of the same "
       "view; average and maximum over the pixels. Where the rt reference was subsampled (px `1/" +
       std::to_string(c.subsample_stride * c.subsample_stride) +
-      "`, as in the speed table) lev is taken on the same pixels, so the maximum is over fewer of them. Table 11's light counts did not survive in the "
+      "`, as in the speed table) lev is taken on the same pixels, so the maximum is over fewer of "
+      "them. Table 11's light counts did not survive in the "
       "thesis text; its largest values are quoted in the headline.\n\n" +
       missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
@@ -589,7 +668,8 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
                    {"lights", "lights"},
                    {"method", "method"},
                    {"tolerance", "tolerance"},
-                   {"time_s", "time (s)"},
+                   {"time_cpu_s", "time (CPU s)"},
+                   {"time_wall_s", "time (s)", false},
                    {"speedup_over_rt", "speedup over rt"},
                    {"pixel_error_avg_pct", "avg error (%)"},
                    {"pixel_error_max_pct", "max error (%)"},
@@ -599,7 +679,7 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
   max.title = "Time against maximum pixel error (dashed: rt, exact)";
   avg.x_label = "average pixel error (%, 0 drawn at 1e-4)";
   max.x_label = "maximum pixel error (%, 0 drawn at 1e-4)";
-  avg.y_label = max.y_label = "seconds per frame";
+  avg.y_label = max.y_label = "CPU seconds per frame";
   avg.log_x = avg.log_y = max.log_x = max.log_y = true;
   std::vector<Series> references;
   for (const std::string& scene : run.available_scenes()) {
@@ -607,29 +687,34 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
     if (levels.empty()) continue;
     const auto wanted = c.trade_lights.find(scene);
     const int level =
-        nearest_level(run, scene, levels, wanted != c.trade_lights.end() ? wanted->second : c.trade_default_lights);
+        nearest_level(run, scene, levels,
+                      wanted != c.trade_lights.end() ? wanted->second : c.trade_default_lights);
     const std::uint64_t lights = run.light_count(scene, level);
     std::vector<MeasureRequest> requests{{scene, level, "rt", 0.0, 1, c.runs}};
     for (double t : c.trade_lev_tolerances) requests.push_back({scene, level, "lev", t, 1, c.runs});
     for (double t : c.trade_ast_tolerances) requests.push_back({scene, level, "ast", t, 1, c.runs});
     run.measure_together(requests);
     const Measurement& reference = run.measure(requests.front());
-    const double rt_seconds = reference.full_frame_seconds();
+    const double rt_seconds = reference.full_frame_cpu_seconds();
     table.rows.push_back({text_cell(scene), count_cell(lights), text_cell("rt"), text_cell("-"),
-                          number_cell(rt_seconds, 3), ratio_cell(1.0), number_cell(0.0, 4), number_cell(0.0, 3),
+                          number_cell(rt_seconds, 3),
+                          number_cell(reference.full_frame_seconds(), 3), ratio_cell(1.0),
+                          number_cell(0.0, 4), number_cell(0.0, 3),
                           number_cell(reference.lights_tested_avg(), 1)});
     references.push_back({scene + " rt", {0.0}, {rt_seconds}, true});
     for (const char* method : {"lev", "ast"}) {
-      const std::vector<double>& tolerances = std::string(method) == "lev" ? c.trade_lev_tolerances : c.trade_ast_tolerances;
+      const std::vector<double>& tolerances =
+          std::string(method) == "lev" ? c.trade_lev_tolerances : c.trade_ast_tolerances;
       Series sa{scene + " " + method, {}, {}}, sm = sa;
       for (double t : tolerances) {
         const Measurement& m = run.measure({scene, level, method, t, 1, c.runs});
         const PixelErrors e = pixel_errors(m, reference);
-        const double seconds = m.full_frame_seconds();
-        table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(method), text_cell(tolerance_text(t)),
-                              number_cell(seconds, 3), ratio_cell(rt_seconds / seconds),
-                              number_cell(e.average_pct, 4), number_cell(e.max_pct, 3),
-                              number_cell(m.lights_tested_avg(), 1)});
+        const double seconds = m.full_frame_cpu_seconds();
+        table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(method),
+                              text_cell(tolerance_text(t)), number_cell(seconds, 3),
+                              number_cell(m.full_frame_seconds(), 3),
+                              ratio_cell(rt_seconds / seconds), number_cell(e.average_pct, 4),
+                              number_cell(e.max_pct, 3), number_cell(m.lights_tested_avg(), 1)});
         sa.x.push_back(std::max(e.average_pct, kErrorFloorPct));
         sa.y.push_back(seconds);
         sm.x.push_back(std::max(e.max_pct, kErrorFloorPct));
@@ -644,15 +729,19 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
     max.series.push_back(r);
   }
   write_table(run, out_dir, "trade", table);
-  const std::string plots = write_chart(run, out_dir, "trade_avg.png", avg) + write_chart(run, out_dir, "trade_max.png", max);
+  const std::string plots = write_chart(run, out_dir, "trade_avg.png", avg) +
+                            write_chart(run, out_dir, "trade_max.png", max);
   Section section;
-  section.markdown =
-      "## trade: time against pixel error, per method and scene (new)\n\n" + quick_note(run) +
-      "The speed/accuracy trade a user makes with the tolerance, at one light count per scene, full frame, "
-      "median of " + std::to_string(c.runs) +
-      " runs. lev's tolerance bounds each culled light's irradiance; ast's bounds the sum of the untested "
-      "potential contributions (Ward's criterion), after which it estimates the rest from hit ratios.\n\n" +
-      missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
+  section.markdown = "## trade: time against pixel error, per method and scene (new)\n\n" +
+                     quick_note(run) +
+                     "The speed/accuracy trade a user makes with the tolerance, at one light count "
+                     "per scene, full frame: CPU seconds, median of at least " +
+                     std::to_string(c.runs) +
+                     " runs, every method and tolerance of a scene measured in turns. lev's "
+                     "tolerance bounds each culled light's irradiance; ast's bounds the sum of the "
+                     "untested potential contributions (Ward's criterion), after which it "
+                     "estimates the rest from hit ratios.\n\n" +
+                     missing_scenes_note(run) + table_markdown(table) + "\n" + plots;
   return section;
 }
 
@@ -664,22 +753,25 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
   Table table;
   table.columns = {{"scene", "scene"},
                    {"lights", "lights"},
-                   {"render_s", "levrt render (s)"},
-                   {"bare_s", "bare Embree (s)"},
+                   {"render_cpu_s", "levrt render (CPU s)"},
+                   {"bare_cpu_s", "bare Embree (CPU s)"},
                    {"render_over_bare", "render / bare"},
+                   {"render_wall_s", "levrt render (s)", false},
+                   {"bare_wall_s", "bare Embree (s)", false},
                    {"closest_hit_rays", "closest-hit rays"},
                    {"shadow_rays", "shadow rays"},
-                   {"render_mrays_per_s", "render Mrays/s"},
-                   {"bare_mrays_per_s", "bare Mrays/s"}};
+                   {"bare_mrays_per_cpu_s", "bare Mrays per CPU s"}};
   Chart chart;
-  chart.title = "lev at tolerance " + tolerance_text(c.tolerance) + ": whole render and bare Embree on the same rays";
+  chart.title = "lev at tolerance " + tolerance_text(c.tolerance) +
+                ": whole render and bare Embree on the same rays";
   chart.x_label = "lights";
-  chart.y_label = "seconds per frame";
+  chart.y_label = "CPU seconds per frame";
   chart.log_x = chart.log_y = true;
   Section section;
   std::string skipped;
   for (const std::string& scene : run.available_scenes()) {
-    Series render_series{scene + ": levrt render", {}, {}}, bare_series{scene + ": bare Embree", {}, {}};
+    Series render_series{scene + ": levrt render", {}, {}};
+    Series bare_series{scene + ": bare Embree", {}, {}};
     double last_ratio = kNaN;
     std::uint64_t last_lights = 0;
     for (int level : run.levels(scene, c.min_lights, c.max_lights)) {
@@ -689,11 +781,15 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
         skipped += (skipped.empty() ? "" : ", ") + scene + " " + format_count(lights);
         continue;
       }
-      const Measurement& full = run.measure({scene, level, "lev", c.tolerance, 1, c.runs});
       renderer::RayLogTotals rays;
-      double bare = kNaN;
-      const double cost = run.render_cost("lev", lights, c.tolerance, 1) * (1.0 + 0.7 * c.runs);
-      const bool ran = run.run_job(scene + " " + format_count(lights) + " lights: recorded one lev pass, cast its rays bare", cost, [&] {
+      std::vector<double> render_cpu, bare_cpu, render_wall, bare_wall;
+      // One recording pass, then whole renders and bare loops in turns, so that both see the
+      // same machine load; a bare loop takes about half a render.
+      const double cost =
+          run.predicted_seconds({scene, level, "lev", c.tolerance, 1, 1}) * (1.0 + 1.5 * c.runs);
+      const std::string what =
+          scene + " " + format_count(lights) + " lights: recorded one lev pass, cast its rays bare";
+      const bool ran = run.run_job(what, cost, [&] {
         LoadedScene& loaded = run.scene(scene, level);
         Settings s;
         s.scene = scene;
@@ -702,24 +798,38 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
         s.width = c.width;
         s.height = c.height;
         s.threads = run.threads();
-        renderer::RenderStatePtr state = renderer::make_render_state(loaded.scene, *loaded.rays, render_settings_from(s));
+        const renderer::RenderSettings rs = render_settings_from(s);
         renderer::RayLog log;
-        renderer::record_rays(*state, &log);
-        renderer::render_pass(*state);
+        {
+          renderer::RenderStatePtr state =
+              renderer::make_render_state(loaded.scene, *loaded.rays, rs);
+          renderer::record_rays(*state, &log);
+          renderer::render_pass(*state);
+        }
         rays = renderer::count_logged_rays(log);
-        std::vector<double> times;
-        for (int r = 0; r < c.runs; ++r) times.push_back(renderer::cast_logged_rays(*loaded.rays, log, run.threads()).seconds);
-        std::sort(times.begin(), times.end());
-        bare = times[times.size() / 2];
+        for (int r = 0; r < c.runs; ++r) {
+          double start = process_cpu_seconds();
+          renderer::RenderStatePtr state =
+              renderer::make_render_state(loaded.scene, *loaded.rays, rs);
+          renderer::render_pass(*state);
+          render_cpu.push_back(process_cpu_seconds() - start);
+          render_wall.push_back(renderer::render_seconds(*state));
+          start = process_cpu_seconds();
+          bare_wall.push_back(renderer::cast_logged_rays(*loaded.rays, log, run.threads()).seconds);
+          bare_cpu.push_back(process_cpu_seconds() - start);
+        }
       });
       if (!ran) continue;
-      const double ratio = full.seconds / bare;
+      const double render = median(render_cpu), bare = median(bare_cpu);
+      const double ratio = render / bare;
       const double total_rays = static_cast<double>(rays.closest_hit + rays.shadow);
-      table.rows.push_back({text_cell(scene), count_cell(lights), number_cell(full.seconds, 3), number_cell(bare, 3),
-                            ratio_cell(ratio), count_cell(rays.closest_hit), count_cell(rays.shadow),
-                            number_cell(total_rays / full.seconds * 1e-6, 2), number_cell(total_rays / bare * 1e-6, 2)});
+      table.rows.push_back({text_cell(scene), count_cell(lights), number_cell(render, 3),
+                            number_cell(bare, 3), ratio_cell(ratio),
+                            number_cell(median(render_wall), 3), number_cell(median(bare_wall), 3),
+                            count_cell(rays.closest_hit), count_cell(rays.shadow),
+                            number_cell(total_rays / bare * 1e-6, 2)});
       render_series.x.push_back(static_cast<double>(lights));
-      render_series.y.push_back(full.seconds);
+      render_series.y.push_back(render);
       bare_series.x.push_back(static_cast<double>(lights));
       bare_series.y.push_back(bare);
       last_ratio = ratio;
@@ -730,7 +840,8 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
     if (last_lights > 0 || run.planning()) {
       section.headline.push_back({"limit: levrt render / bare Embree on its rays, " + scene + " " +
                                       format_count(last_lights) + " lights",
-                                  "<= 2x", "-", format_ratio(last_ratio), status(!c.quick, last_ratio <= kLimitRatio)});
+                                  "<= 2x", "-", format_ratio(last_ratio),
+                                  status(!c.quick, last_ratio <= kLimitRatio)});
     }
   }
   write_table(run, out_dir, "limit", table);
@@ -738,11 +849,13 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
   section.markdown =
       "## limit: levrt's render against the ray-casting limit (new)\n\n" + quick_note(run) +
       "One lev pass (tolerance " + tolerance_text(c.tolerance) +
-      ", full frame) records every ray it casts (renderer/ray_log.h); the same rays are then cast again by a bare "
-      "loop, `rtcIntersect1` for primary and secondary rays and `rtcOccluded1` for shadow rays, tile by tile on "
-      "the same threads, with no selection and no shading. *levrt render* is the median of the full renders "
-      "above; *bare* the median of " +
-      std::to_string(c.runs) + " bare loops. A ratio of 1 would mean levrt spends all its time in Embree." +
+      ", full frame) records every ray it casts (renderer/ray_log.h); the same rays are then cast "
+      "again by a bare loop, `rtcIntersect1` for primary and secondary rays and `rtcOccluded1` "
+      "for shadow rays, tile by tile on the same threads, with no selection and no shading. "
+      "Then " +
+      std::to_string(c.runs) + " whole renders and " + std::to_string(c.runs) +
+      " bare loops run in turns; the table has the medians of their CPU seconds (the CSV the "
+      "wall-clock ones too). A ratio of 1 would mean levrt spends all its time in Embree." +
       (skipped.empty() ? std::string()
                        : " Left out (lev tests over " + format_fixed(kLimitMaxTests, 0) +
                              " lights per point there, too many rays to log): " + skipped + ".") +
@@ -754,11 +867,14 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
 
 const std::vector<ExperimentInfo>& experiments() {
   static const std::vector<ExperimentInfo> table = {
-      {"speed", "Tables 1, 2", "time of rt, ast and lev per light count, and their ratios", run_speed},
-      {"memory", "Table 3", "hierarchy bytes with and without instancing; ast's bookkeeping", run_memory},
+      {"speed", "Tables 1, 2", "time of rt, ast and lev per light count, and their ratios",
+       run_speed},
+      {"memory", "Table 3", "hierarchy bytes with and without instancing; ast's bookkeeping",
+       run_memory},
       {"scaling", "Tables 4, 5", "lev time per light count at three tolerances", run_scaling},
       {"fraction", "Tables 6-9", "lights tested per point against tolerance", run_fraction},
-      {"error", "Tables 10, 11", "pixel error of lev against rt per tolerance and light count", run_error},
+      {"error", "Tables 10, 11", "pixel error of lev against rt per tolerance and light count",
+       run_error},
       {"work", "Tables 12-15", "lights tested and volumes checked per point", run_work},
       {"trade", "new", "time against pixel error per method and scene", run_trade},
       {"limit", "new", "levrt's render against a bare Embree loop on the same rays", run_limit},

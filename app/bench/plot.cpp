@@ -18,8 +18,9 @@ struct Rgb {
 };
 
 // Tableau 10: distinct at a glance and readable on white.
-constexpr Rgb kPalette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},  {148, 103, 189},
-                            {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
+constexpr Rgb kPalette[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
+                            {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127},
+                            {188, 189, 34},  {23, 190, 207}};
 constexpr int kPaletteSize = static_cast<int>(sizeof(kPalette) / sizeof(kPalette[0]));
 constexpr Rgb kBlack{0, 0, 0};
 constexpr Rgb kGrid{225, 225, 225};
@@ -36,7 +37,9 @@ enum class Align { left, centre, right };
 class Canvas {
  public:
   Canvas(int width, int height)
-      : w_(width), h_(height), rgb_(static_cast<std::size_t>(width) * height * 3, 255),
+      : w_(width),
+        h_(height),
+        rgb_(static_cast<std::size_t>(width) * height * 3, 255),
         mask_(static_cast<std::size_t>(width) * height, 0.0f) {}
 
   int width() const { return w_; }
@@ -79,13 +82,20 @@ class Canvas {
         const float dx = static_cast<float>(x) + 0.5f - cx, dy = static_cast<float>(y) + 0.5f - cy;
         float d = 0.0f;  // signed distance to the shape's edge, negative inside
         switch (shape) {
-          case Shape::circle: d = std::sqrt(dx * dx + dy * dy) - r; break;
-          case Shape::square: d = std::max(std::abs(dx), std::abs(dy)) - 0.85f * r; break;
-          case Shape::diamond: d = (std::abs(dx) + std::abs(dy) - 1.2f * r) * 0.7071f; break;
+          case Shape::circle:
+            d = std::sqrt(dx * dx + dy * dy) - r;
+            break;
+          case Shape::square:
+            d = std::max(std::abs(dx), std::abs(dy)) - 0.85f * r;
+            break;
+          case Shape::diamond:
+            d = (std::abs(dx) + std::abs(dy) - 1.2f * r) * 0.7071f;
+            break;
           case Shape::triangle: {
             // Upward triangle: the three edge half-planes.
             const float k = 0.8660f;
-            d = std::max({dy - 0.6f * r, -k * dx - 0.5f * dy - 0.6f * r, k * dx - 0.5f * dy - 0.6f * r});
+            d = std::max(
+                {dy - 0.6f * r, -k * dx - 0.5f * dy - 0.6f * r, k * dx - 0.5f * dy - 0.6f * r});
             break;
           }
         }
@@ -115,13 +125,15 @@ class Canvas {
 
   // stb_easy_font text at an integer scale; (x, y) is the top of the line, aligned as asked.
   // vertical: turned 90 degrees counter-clockwise, (x, y) then the centre of its left edge.
-  void text(float x, float y, const std::string& s, int scale, Rgb c, Align align, bool vertical = false) {
+  void text(float x, float y, const std::string& s, int scale, Rgb c, Align align,
+            bool vertical = false) {
     std::string buffer = s;
     const float w = static_cast<float>(text_width(s) * scale);
     float ox = x;
     if (align == Align::centre) ox -= 0.5f * w;
     if (align == Align::right) ox -= w;
-    std::vector<char> vertices(buffer.size() * 1200 + 256);  // stb: about 270 bytes a glyph on average
+    std::vector<char> vertices(buffer.size() * 1200 +
+                               256);  // stb: about 270 bytes a glyph on average
     const int quads = stb_easy_font_print(0.0f, 0.0f, buffer.data(), nullptr, vertices.data(),
                                           static_cast<int>(vertices.size()));
     for (int q = 0; q < quads; ++q) {
@@ -133,12 +145,14 @@ class Canvas {
       const float qx1 = corner[1][0] * scale, qy1 = corner[1][1] * scale;
       if (!vertical) {
         fill_rect(static_cast<int>(std::lround(ox + qx0)), static_cast<int>(std::lround(y + qy0)),
-                  static_cast<int>(std::lround(ox + qx1)), static_cast<int>(std::lround(y + qy1)), c);
+                  static_cast<int>(std::lround(ox + qx1)), static_cast<int>(std::lround(y + qy1)),
+                  c);
       } else {
         // Text runs upwards: its x becomes -y, its y becomes x.
         const float base_y = y + 0.5f * w;
-        fill_rect(static_cast<int>(std::lround(x + qy0)), static_cast<int>(std::lround(base_y - qx1)),
-                  static_cast<int>(std::lround(x + qy1)), static_cast<int>(std::lround(base_y - qx0)), c);
+        fill_rect(
+            static_cast<int>(std::lround(x + qy0)), static_cast<int>(std::lround(base_y - qx1)),
+            static_cast<int>(std::lround(x + qy1)), static_cast<int>(std::lround(base_y - qx0)), c);
       }
     }
   }
@@ -182,7 +196,9 @@ struct Axis {
   std::vector<double> minor_ticks;  // grid only
 };
 
-bool placeable(const Axis& axis, double v) { return std::isfinite(v) && (!axis.log || v > 0.0); }
+bool placeable(const Axis& axis, double v) {
+  return std::isfinite(v) && (!axis.log || v > 0.0);
+}
 
 double unit(const Axis& a, double v) {
   if (a.log) return (std::log10(v) - std::log10(a.lo)) / (std::log10(a.hi) - std::log10(a.lo));
@@ -227,7 +243,8 @@ Axis make_axis(bool log, double lo, double hi) {
       a.hi *= 10.0;
     }
     const bool few_decades = a.hi / a.lo <= 1000.0;
-    for (double d = std::floor(std::log10(a.lo)) - 1.0; d <= std::ceil(std::log10(a.hi)) + 1e-9; d += 1.0) {
+    for (double d = std::floor(std::log10(a.lo)) - 1.0; d <= std::ceil(std::log10(a.hi)) + 1e-9;
+         d += 1.0) {
       const double p = std::pow(10.0, d);
       for (int m = 1; m <= 9; ++m) {
         const double t = m * p;
@@ -250,7 +267,8 @@ Axis make_axis(bool log, double lo, double hi) {
   const double step = nice_step((hi - lo) / 6.0);
   a.lo = std::floor(lo / step + 1e-9) * step;
   a.hi = std::ceil(hi / step - 1e-9) * step;
-  for (double t = a.lo; t <= a.hi + 0.5 * step; t += step) a.ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  for (double t = a.lo; t <= a.hi + 0.5 * step; t += step)
+    a.ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
   return a;
 }
 
@@ -298,11 +316,13 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
 
   // Layout: legend on the right, outside the plot.
   int legend_width = 0;
-  for (const Series& s : chart.series) legend_width = std::max(legend_width, Canvas::text_width(s.label) * kTextScale);
+  for (const Series& s : chart.series)
+    legend_width = std::max(legend_width, Canvas::text_width(s.label) * kTextScale);
   legend_width += 60;
   // Room on the left for the widest y tick label and the turned axis label beside it.
   int y_label_width = 0;
-  for (double t : ay.ticks) y_label_width = std::max(y_label_width, Canvas::text_width(tick_label(t)) * kTextScale);
+  for (double t : ay.ticks)
+    y_label_width = std::max(y_label_width, Canvas::text_width(tick_label(t)) * kTextScale);
   const int left = 56 + y_label_width, top = 56, bottom = 72;
   const int right = std::min(width / 2, legend_width + 24);
   const int px0 = left, px1 = width - right, py0 = top, py1 = height - bottom;
@@ -320,7 +340,8 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
   for (double t : ay.ticks) {
     canvas.line(px0, to_py(t), px1, to_py(t), 1.0f, kGrid);
     canvas.line(px0 - 6, to_py(t), px0, to_py(t), 1.5f, kFrame);
-    canvas.text(px0 - 10, to_py(t) - 0.35f * kLineHeight, tick_label(t), kTextScale, kBlack, Align::right);
+    canvas.text(px0 - 10, to_py(t) - 0.35f * kLineHeight, tick_label(t), kTextScale, kBlack,
+                Align::right);
   }
   canvas.line(px0, py0, px1, py0, 1.5f, kFrame);
   canvas.line(px0, py1, px1, py1, 1.5f, kFrame);
@@ -333,22 +354,26 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
     const Rgb colour = kPalette[k % kPaletteSize];
     const Shape shape = kShapes[k % 4];
     if (s.horizontal_line) {
-      if (!s.y.empty() && placeable(ay, s.y[0])) canvas.line(px0, to_py(s.y[0]), px1, to_py(s.y[0]), 2.0f, colour, 8.0f);
+      if (!s.y.empty() && placeable(ay, s.y[0]))
+        canvas.line(px0, to_py(s.y[0]), px1, to_py(s.y[0]), 2.0f, colour, 8.0f);
       continue;
     }
     std::vector<std::pair<float, float>> points;
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-      if (placeable(ax, s.x[i]) && placeable(ay, s.y[i])) points.emplace_back(to_px(s.x[i]), to_py(s.y[i]));
+      if (placeable(ax, s.x[i]) && placeable(ay, s.y[i]))
+        points.emplace_back(to_px(s.x[i]), to_py(s.y[i]));
     }
     for (std::size_t i = 1; i < points.size(); ++i) {
-      canvas.mask_segment(points[i - 1].first, points[i - 1].second, points[i].first, points[i].second, 2.5f);
+      canvas.mask_segment(points[i - 1].first, points[i - 1].second, points[i].first,
+                          points[i].second, 2.5f);
     }
     canvas.flush_mask(colour);
     for (const auto& [x, y] : points) canvas.mask_marker(x, y, shape, 5.0f);
     canvas.flush_mask(colour);
   }
   if (!any_point) {
-    canvas.text(0.5f * (px0 + px1), 0.5f * (py0 + py1), "no data", kTextScale, kFrame, Align::centre);
+    canvas.text(0.5f * (px0 + px1), 0.5f * (py0 + py1), "no data", kTextScale, kFrame,
+                Align::centre);
   }
 
   // Legend.
@@ -369,15 +394,16 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
 
   // Title and axis labels.
   canvas.text(0.5f * (px0 + px1), 16, chart.title, kTextScale, kBlack, Align::centre);
-  canvas.text(0.5f * (px0 + px1), height - 34, chart.x_label + (ax.log ? " (log scale)" : ""), kTextScale, kBlack,
-              Align::centre);
-  canvas.text(14, 0.5f * (py0 + py1), chart.y_label + (ay.log ? " (log scale)" : ""), kTextScale, kBlack,
-              Align::centre, true);
+  canvas.text(0.5f * (px0 + px1), height - 34, chart.x_label + (ax.log ? " (log scale)" : ""),
+              kTextScale, kBlack, Align::centre);
+  canvas.text(14, 0.5f * (py0 + py1), chart.y_label + (ay.log ? " (log scale)" : ""), kTextScale,
+              kBlack, Align::centre, true);
   return canvas.take_pixels();
 }
 
 void write_chart_png(const std::string& path, const Chart& chart) {
-  renderer::write_png_rgb8(path, kChartWidth, kChartHeight, render_chart(chart, kChartWidth, kChartHeight));
+  renderer::write_png_rgb8(path, kChartWidth, kChartHeight,
+                           render_chart(chart, kChartWidth, kChartHeight));
 }
 
 }  // namespace app::bench

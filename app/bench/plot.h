@@ -12,7 +12,7 @@ namespace app::bench {
 
 struct Series {
   std::string label;
-  std::vector<double> x, y;  // same length; points that cannot be placed on an axis are skipped
+  std::vector<double> x, y;      // same length; points that cannot be placed on an axis are skipped
   bool horizontal_line = false;  // draw y[0] as a dashed line across the plot (a reference level)
 };
 

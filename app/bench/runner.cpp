@@ -1,5 +1,7 @@
 #include "app/bench/runner.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -42,16 +44,30 @@ double Measurement::full_frame_seconds() const {
   return seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
 }
 
+double Measurement::full_frame_cpu_seconds() const {
+  if (pixels == 0) return kNaN;
+  return cpu_seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
+}
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 double Measurement::lights_tested_avg() const {
-  return totals.shading_points ? static_cast<double>(totals.lights_tested) / totals.shading_points : kNaN;
+  return totals.shading_points ? static_cast<double>(totals.lights_tested) / totals.shading_points
+                               : kNaN;
 }
 
 double Measurement::nodes_visited_avg() const {
-  return totals.shading_points ? static_cast<double>(totals.nodes_visited) / totals.shading_points : kNaN;
+  return totals.shading_points ? static_cast<double>(totals.nodes_visited) / totals.shading_points
+                               : kNaN;
 }
 
 double Measurement::shadow_rays_avg() const {
-  return totals.shading_points ? static_cast<double>(totals.shadow_rays) / totals.shading_points : kNaN;
+  return totals.shading_points ? static_cast<double>(totals.shadow_rays) / totals.shading_points
+                               : kNaN;
 }
 
 PixelErrors pixel_errors(const Measurement& image, const Measurement& reference) {
@@ -64,18 +80,39 @@ PixelErrors pixel_errors(const Measurement& image, const Measurement& reference)
   return e;
 }
 
-std::string pixels_text(int stride) { return stride <= 1 ? "all" : "1/" + std::to_string(stride * stride); }
+double median(std::vector<double> values) {
+  if (values.empty()) return kNaN;
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
 
-BenchRun::BenchRun(SuiteConfig config, int threads) : config_(std::move(config)), threads_(threads) {
+std::string duration_text(double seconds) {
+  if (seconds >= 90.0) return "about " + std::to_string(std::lround(seconds / 60.0)) + " min";
+  return "about " + std::to_string(std::lround(seconds)) + " s";
+}
+
+std::string pixels_text(int stride) {
+  return stride <= 1 ? "all" : "1/" + std::to_string(stride * stride);
+}
+
+BenchRun::BenchRun(SuiteConfig config, int threads)
+    : config_(std::move(config)), threads_(threads) {
   placeholder_.planned_only = true;
 }
 
 void BenchRun::start_running() {
   planning_ = false;
   started_ = std::chrono::steady_clock::now();
+  int jobs = 0;
+  for (const auto& [name, count] : jobs_planned_) jobs += count;
+  std::fprintf(stderr,
+               "levrt bench: planned %d renders and jobs, %s at this machine's present pace\n",
+               jobs, duration_text(seconds_planned_).c_str());
 }
 
-void BenchRun::begin_experiment(const std::string& name) { experiment_ = name; }
+void BenchRun::begin_experiment(const std::string& name) {
+  experiment_ = name;
+}
 
 std::vector<std::string> BenchRun::available_scenes() const {
   std::vector<std::string> names;
@@ -93,7 +130,8 @@ std::vector<std::string> BenchRun::missing_scenes() const {
   return names;
 }
 
-std::vector<int> BenchRun::levels(const std::string& scene, std::uint64_t lo, std::uint64_t hi) const {
+std::vector<int> BenchRun::levels(const std::string& scene, std::uint64_t lo,
+                                  std::uint64_t hi) const {
   std::vector<int> out;
   const scenes::SceneModel* model = scenes::find_scene_model(scene);
   if (!model) return out;
@@ -109,49 +147,44 @@ std::uint64_t BenchRun::light_count(const std::string& scene, int level) const {
   return model ? model->light_count(level) : 0;
 }
 
-namespace {
-
-// Lights shadow-tested per shading point, roughly (thesis Tables 12, 14 and our own runs): what
-// the progress estimate and the subsample policy go by, not a figure of the report.
-double estimated_tests(const std::string& method, std::uint64_t lights, double tolerance) {
-  const double all = 0.8 * static_cast<double>(lights);  // the lights above the surface
-  if (method == "rt") return all;
-  if (method == "ast") return 0.25 * all;  // evaluates every light, tests a fraction of them
-  if (tolerance <= 0.0) return all;
-  return std::min(all, 40.0 * 0.01 / tolerance);
-}
-
-}  // namespace
-
-int BenchRun::stride_for(const std::string& scene, int level, const std::string& method, double tolerance) {
-  if (method != "lev" && light_count(scene, level) > config_.subsample_above) return config_.subsample_stride;
-  return full_frame_estimate(scene, level, method, tolerance) > config_.max_full_frame_seconds
+int BenchRun::stride_for(const std::string& scene, int level, const std::string& method,
+                         double tolerance) {
+  if (method != "lev" && light_count(scene, level) > config_.subsample_above)
+    return config_.subsample_stride;
+  return probe(scene, level, method, tolerance).full_frame_seconds() >
+                 config_.max_full_frame_seconds
              ? config_.subsample_stride
              : 1;
 }
 
-const Measurement& BenchRun::probe(const std::string& scene, int level, const std::string& method, double tolerance) {
-  constexpr int kProbeStride = 8;
-  return measure({scene, level, method, tolerance, kProbeStride, 1});
-}
-
-double BenchRun::full_frame_estimate(const std::string& scene, int level, const std::string& method, double tolerance) {
-  if (planning_) {
-    constexpr double kUnitsPerSecond = 5e6;  // what this machine did, roughly: for the plan only
-    return render_cost(method, light_count(scene, level), tolerance, 1) / kUnitsPerSecond;
-  }
-  return probe(scene, level, method, tolerance).full_frame_seconds();
-}
-
 double BenchRun::lev_tests_per_point(const std::string& scene, int level, double tolerance) {
-  if (planning_) return estimated_tests("lev", light_count(scene, level), tolerance);
   return probe(scene, level, "lev", tolerance).lights_tested_avg();
 }
 
-double BenchRun::render_cost(const std::string& method, std::uint64_t lights, double tolerance, int stride) const {
-  const double pixels = std::ceil(static_cast<double>(config_.width) / stride) *
-                        std::ceil(static_cast<double>(config_.height) / stride);
-  return pixels * 1.25 * (3.0 + 1.2 * estimated_tests(method, lights, tolerance));
+const Measurement& BenchRun::probe(const std::string& scene, int level, const std::string& method,
+                                   double tolerance) {
+  const MeasureRequest request{scene, level, method, tolerance, kProbeStride, 1};
+  const auto found = cache_.find(key_of(request));
+  if (found != cache_.end()) return found->second;
+  const Measurement& m = *render(std::vector<MeasureRequest>{request}).front();
+  if (planning_ && ++probes_ % 25 == 0) {
+    std::fprintf(stderr,
+                 "levrt bench: planning: %d probe renders so far (1/%d of the pixels each)\n",
+                 probes_, kProbeStride * kProbeStride);
+  }
+  return m;
+}
+
+double BenchRun::predicted_seconds(const MeasureRequest& r) {
+  if (r.stride == kProbeStride && r.runs == 1) return 0.0;  // a probe: made while planning
+  const double per_run = probe(r.scene, r.level, r.method, r.tolerance).full_frame_seconds() /
+                         static_cast<double>(r.stride * r.stride);
+  double runs = r.runs;
+  if (r.runs > 1 && per_run > 0.0) {
+    runs = std::max(
+        runs, std::min<double>(config_.max_runs, std::ceil(config_.extra_runs_seconds / per_run)));
+  }
+  return per_run * runs;
 }
 
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
@@ -160,37 +193,46 @@ BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
 }
 
 LoadedScene& BenchRun::scene(const std::string& name, int level) {
-  if (!loaded_ || loaded_name_ != name || loaded_level_ != level) {
-    loaded_.reset();  // free the previous scene first: the largest ones are big
+  // The levels of one scene model stay loaded together (measurements across levels are run in
+  // turns); moving to another model frees them first.
+  if (loaded_name_ != name) {
+    loaded_.clear();
+    loaded_name_ = name;
+  }
+  std::unique_ptr<LoadedScene>& slot = loaded_[level];
+  if (!slot) {
     Settings s;
     s.scene = name;
     s.level = level;
-    loaded_ = load_scene(s);
-    loaded_name_ = name;
-    loaded_level_ = level;
+    slot = load_scene(s);
   }
-  return *loaded_;
+  return *slot;
 }
 
-const Measurement& BenchRun::measure(const MeasureRequest& request) { return *measure_together({request}).front(); }
+const Measurement& BenchRun::measure(const MeasureRequest& request) {
+  return *measure_together({request}).front();
+}
 
-std::vector<const Measurement*> BenchRun::measure_together(const std::vector<MeasureRequest>& requests) {
-  std::vector<const Measurement*> out(requests.size(), &placeholder_);
-  if (planning_) {
-    for (const MeasureRequest& r : requests) {
-      int& planned = planned_runs_[key_of(r)];
-      if (planned >= r.runs) continue;
-      planned = r.runs;
-      units_planned_ += render_cost(r.method, light_count(r.scene, r.level), r.tolerance, r.stride) * r.runs;
-      jobs_planned_[experiment_] += 1;
-    }
-    if (!requests.empty()) {
-      placeholder_.request = requests.back();
-      placeholder_.lights = light_count(requests.back().scene, requests.back().level);
-    }
-    return out;
+std::vector<const Measurement*> BenchRun::measure_together(
+    const std::vector<MeasureRequest>& requests) {
+  if (!planning_) return render(requests);
+  for (const MeasureRequest& r : requests) {
+    int& planned = planned_runs_[key_of(r)];
+    if (planned >= r.runs) continue;
+    planned = r.runs;
+    seconds_planned_ += predicted_seconds(r);
+    jobs_planned_[experiment_] += 1;
   }
+  std::vector<const Measurement*> out(requests.size(), &placeholder_);
+  if (!requests.empty()) {
+    placeholder_.request = requests.back();
+    placeholder_.lights = light_count(requests.back().scene, requests.back().level);
+  }
+  return out;
+}
 
+std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureRequest>& requests) {
+  std::vector<const Measurement*> out(requests.size(), nullptr);
   // What is not cached yet, with its settings.
   struct Pending {
     std::size_t index;
@@ -226,11 +268,14 @@ std::vector<const Measurement*> BenchRun::measure_together(const std::vector<Mea
     bool any = false;
     for (Pending& p : pending) {
       const bool base = round < p.m.request.runs;
-      const bool extra = p.m.request.runs > 1 && round < config_.max_runs && p.spent < config_.extra_runs_seconds;
+      const bool extra =
+          p.m.request.runs > 1 && round < config_.max_runs && p.spent < config_.extra_runs_seconds;
       if (!base && !extra) continue;
       const MeasureRequest& r = p.m.request;
       LoadedScene& loaded = scene(r.scene, r.level);
+      const double cpu_start = process_cpu_seconds();
       p.last = render_image(loaded, p.settings, r.method);
+      p.m.run_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
       p.m.run_seconds.push_back(p.last.seconds);
       p.spent += p.last.seconds;
       any = true;
@@ -243,10 +288,10 @@ std::vector<const Measurement*> BenchRun::measure_together(const std::vector<Mea
     const MeasureRequest& r = m.request;
     LoadedScene& loaded = scene(r.scene, r.level);
     m.lights = loaded.scene.lights.light_count;
-    std::vector<double> sorted = m.run_seconds;
-    std::sort(sorted.begin(), sorted.end());
-    m.seconds = sorted[sorted.size() / 2];
-    m.full_pixels = static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
+    m.seconds = median(m.run_seconds);
+    m.cpu_seconds = median(m.run_cpu_seconds);
+    m.full_pixels =
+        static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
     m.totals = renderer::sum_framebuffer(p.last.framebuffer);
     m.pixels = m.totals.samples;
     m.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
@@ -262,44 +307,47 @@ std::vector<const Measurement*> BenchRun::measure_together(const std::vector<Mea
     const MeasureRequest& done = stored.request;  // r was moved with m
 
     char what[256];
-    std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s", done.scene.c_str(),
-                  format_count(stored.lights).c_str(), done.method.c_str(), done.tolerance,
-                  pixels_text(done.stride).c_str(), stored.seconds,
+    std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s",
+                  done.scene.c_str(), format_count(stored.lights).c_str(), done.method.c_str(),
+                  done.tolerance, pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
-    report(what, render_cost(done.method, stored.lights, done.tolerance, done.stride) * done.runs);
+    if (!planning_) report(what, predicted_seconds(done));
   }
   return out;
 }
 
-bool BenchRun::run_job(const std::string& what, double cost_units, const std::function<void()>& body) {
+bool BenchRun::run_job(const std::string& what, double predicted,
+                       const std::function<void()>& body) {
   if (planning_) {
-    units_planned_ += cost_units;
+    seconds_planned_ += predicted;
     jobs_planned_[experiment_] += 1;
     return false;
   }
   body();
-  report(what, cost_units);
+  report(what, predicted);
   return true;
 }
 
-void BenchRun::report(const std::string& what, double cost_units) {
-  units_done_ += cost_units;
+void BenchRun::report(const std::string& what, double predicted) {
+  seconds_done_ += predicted;
   const int done = ++jobs_done_[experiment_];
   const int planned = std::max(done, jobs_planned_[experiment_]);
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  const double fraction = units_planned_ > 0.0 ? std::min(1.0, units_done_ / units_planned_) : 1.0;
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  const double fraction =
+      seconds_planned_ > 0.0 ? std::min(1.0, seconds_done_ / seconds_planned_) : 1.0;
   std::string eta;
   if (fraction >= 1.0) {
     eta = "finishing";
-  } else if (units_done_ > 0.0 && elapsed > 0.5) {
-    const double left = elapsed * (units_planned_ - units_done_) / units_done_;
-    eta = left >= 90.0 ? "about " + std::to_string(static_cast<int>(std::lround(left / 60.0))) + " min left"
-                       : "about " + std::to_string(static_cast<int>(std::lround(left))) + " s left";
+  } else if (seconds_done_ > 0.0 && elapsed > 0.5) {
+    // The predictions come from probes; scaling them by how the run is going so far follows
+    // the machine's load.
+    eta = duration_text(elapsed * (seconds_planned_ - seconds_done_) / seconds_done_) + " left";
   } else {
     eta = "estimating";
   }
-  std::fprintf(stderr, "levrt bench: [%s %d/%d] %s | %d%% done, %s\n", experiment_.c_str(), done, planned,
-               what.c_str(), static_cast<int>(100.0 * fraction), eta.c_str());
+  std::fprintf(stderr, "levrt bench: [%s %d/%d] %s | %d%% done, %s\n", experiment_.c_str(), done,
+               planned, what.c_str(), static_cast<int>(100.0 * fraction), eta.c_str());
   std::fflush(stderr);
 }
 

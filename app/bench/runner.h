@@ -1,9 +1,9 @@
 // The machinery every experiment of `levrt bench` shares: the suite's sizes, one scene loaded at
 // a time, measurements cached by what they measured (an rt reference or a lev run serves several
 // experiments), medians of repeated runs, and progress on stderr with an estimate of the time
-// left. The suite runs twice: a planning pass walks every experiment without rendering (each
-// measurement only adds its estimated cost), then the real pass renders, so the estimate covers
-// the whole suite from the first line.
+// left. The suite runs twice: a planning pass walks every experiment, rendering only a probe of
+// each configuration (one pixel in 64) to predict its time, then the real pass renders, so the
+// estimate covers the whole suite from the first line.
 #pragma once
 
 #include <chrono>
@@ -43,13 +43,15 @@ struct SuiteConfig {
   std::uint64_t subsample_above = 4096;
   int subsample_stride = 4;
   double max_full_frame_seconds = 40.0;
-  double tolerance = 0.01;  // thesis Test 1.1
-  std::vector<double> scaling_tolerances{0.001, 0.01, 0.1};                              // Tables 4, 5
-  std::vector<double> fraction_tolerances{0.0, 0.0001, 0.002, 0.004, 0.006, 0.008, 0.01};  // Tables 6-9
-  std::vector<double> error_tolerances{0.002, 0.004, 0.006, 0.008, 0.01};               // Tables 10, 11
+  double tolerance = 0.01;                                   // thesis Test 1.1
+  std::vector<double> scaling_tolerances{0.001, 0.01, 0.1};  // Tables 4, 5
+  std::vector<double> fraction_tolerances{0.0,   0.0001, 0.002, 0.004,
+                                          0.006, 0.008,  0.01};            // Tables 6-9
+  std::vector<double> error_tolerances{0.002, 0.004, 0.006, 0.008, 0.01};  // Tables 10, 11
   // trade: per scene, the level nearest this many lights (the hall, where every light reaches
   // everything, at fewer: its rt and ast frames take minutes at 1,024).
-  std::map<std::string, std::uint64_t> trade_lights{{"building", 1024}, {"maze", 765}, {"hall", 256}};
+  std::map<std::string, std::uint64_t> trade_lights{
+      {"building", 1024}, {"maze", 765}, {"hall", 256}};
   std::uint64_t trade_default_lights = 1024;
   std::vector<double> trade_lev_tolerances{0.1, 0.03, 0.01, 0.003, 0.001};
   std::vector<double> trade_ast_tolerances{1.0, 0.3, 0.1, 0.03, 0.01};
@@ -74,14 +76,20 @@ struct Measurement {
   bool planned_only = false;  // the planning pass: no figures
   double seconds = kNaN;      // median wall time of the render passes
   std::vector<double> run_seconds;
+  // Median CPU time of the process (every thread, user and system, as /bin/time sums it, which
+  // is how the thesis timed) over each whole render: what the comparisons use, because the
+  // machine's other load moves it far less than the wall time.
+  double cpu_seconds = kNaN;
+  std::vector<double> run_cpu_seconds;
   std::uint64_t pixels = 0;  // pixels rendered
   std::uint64_t full_pixels = 0;
   renderer::FramebufferTotals totals;
   std::size_t hierarchy_bytes = 0;
   std::vector<std::uint8_t> rgb;  // the rendered pixels, 8-bit RGB, for pixel errors
 
-  // The median time scaled to every pixel of the frame (the identity without a subsample).
+  // The median times scaled to every pixel of the frame (the identity without a subsample).
   double full_frame_seconds() const;
+  double full_frame_cpu_seconds() const;
   double lights_tested_avg() const;
   double nodes_visited_avg() const;
   double shadow_rays_avg() const;
@@ -93,6 +101,15 @@ struct PixelErrors {
 };
 // Thesis 5.4.2.4 against the reference on the same pixels; NaN when they do not match.
 PixelErrors pixel_errors(const Measurement& image, const Measurement& reference);
+
+// The middle value (the upper one of an even count); NaN for none.
+double median(std::vector<double> values);
+
+// CPU seconds used so far by the whole process (every thread, user and system).
+double process_cpu_seconds();
+
+// "about 12 s", "about 25 min".
+std::string duration_text(double seconds);
 
 // "all" or "1/16" for a stride.
 std::string pixels_text(int stride);
@@ -117,34 +134,40 @@ class BenchRun {
   // The pixel stride a measurement uses: rt and ast subsample above config.subsample_above
   // lights (thesis sizes), and any method whose full frame would take more than
   // config.max_full_frame_seconds (the maze and the hall, where rays are dearer or most lights
-  // reach every point; lev at tolerance 0). A probe render on one pixel of every 8x8 block tells.
+  // reach every point; lev at tolerance 0). The probe render tells.
   int stride_for(const std::string& scene, int level, const std::string& method, double tolerance);
-  // lev's lights tested per shading point, from the probe (an estimate while planning).
+  // lev's lights tested per shading point, from the probe.
   double lev_tests_per_point(const std::string& scene, int level, double tolerance);
 
   // Renders (or, while planning, only counts) the request; cached by what it measured, so asking
   // again with no more runs than before returns the earlier measurement.
   const Measurement& measure(const MeasureRequest& request);
-  // Several requests on one scene and level, their runs interleaved (run k of each before run
-  // k+1 of any), so that the ratios between them see the same machine load.
+  // Several requests, their runs interleaved (run k of each before run k+1 of any), so that the
+  // ratios between them see the same machine load.
   std::vector<const Measurement*> measure_together(const std::vector<MeasureRequest>& requests);
 
-  // The loaded scene (built on first use; one scene is kept at a time). Not while planning.
+  // The loaded scene (built on first use; the levels of one scene model are kept together).
   LoadedScene& scene(const std::string& name, int level);
 
-  // A job that is not a render: while planning only its estimated cost counts; otherwise it
+  // A job that is not a render: while planning only its predicted seconds count; otherwise it
   // runs and reports progress. Returns whether it ran.
-  bool run_job(const std::string& what, double cost_units, const std::function<void()>& body);
+  bool run_job(const std::string& what, double predicted_seconds,
+               const std::function<void()>& body);
 
-  // Estimated cost of a render in the units the progress estimate uses (about one per ray).
-  double render_cost(const std::string& method, std::uint64_t lights, double tolerance, int stride) const;
+  // What a measurement will take, all its runs, from its probe.
+  double predicted_seconds(const MeasureRequest& request);
 
  private:
   using Key = std::tuple<std::string, int, std::string, double, int>;
+  static constexpr int kProbeStride = 8;
   Key key_of(const MeasureRequest& request) const;
-  const Measurement& probe(const std::string& scene, int level, const std::string& method, double tolerance);
-  double full_frame_estimate(const std::string& scene, int level, const std::string& method, double tolerance);
-  void report(const std::string& what, double cost_units);
+  // A render of one pixel in every kProbeStride^2, made once (also while planning): what the
+  // plan, the subsample policy and lev_tests_per_point go by.
+  const Measurement& probe(const std::string& scene, int level, const std::string& method,
+                           double tolerance);
+  // Renders what is not cached yet (in turns), whatever the pass.
+  std::vector<const Measurement*> render(const std::vector<MeasureRequest>& requests);
+  void report(const std::string& what, double predicted_seconds);
 
   SuiteConfig config_;
   int threads_;
@@ -152,12 +175,12 @@ class BenchRun {
   std::map<Key, Measurement> cache_;
   std::map<Key, int> planned_runs_;
   Measurement placeholder_;
-  std::unique_ptr<LoadedScene> loaded_;
+  std::map<int, std::unique_ptr<LoadedScene>> loaded_;  // by level, all of loaded_name_
   std::string loaded_name_;
-  int loaded_level_ = -1;
   std::string experiment_;
   std::map<std::string, int> jobs_planned_, jobs_done_;
-  double units_planned_ = 0.0, units_done_ = 0.0;
+  double seconds_planned_ = 0.0, seconds_done_ = 0.0;
+  int probes_ = 0;
   std::chrono::steady_clock::time_point started_;
 };
 

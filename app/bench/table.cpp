@@ -34,7 +34,9 @@ std::string format_bytes(double bytes) {
   return format_fixed(bytes, 0) + " B";
 }
 
-Cell text_cell(const std::string& text) { return {text, text}; }
+Cell text_cell(const std::string& text) {
+  return {text, text};
+}
 
 Cell number_cell(double value, int decimals) {
   if (!std::isfinite(value)) return {"n/a", ""};
@@ -43,7 +45,9 @@ Cell number_cell(double value, int decimals) {
   return {format_fixed(value, decimals), buffer};
 }
 
-Cell count_cell(std::uint64_t value) { return {format_count(value), std::to_string(value)}; }
+Cell count_cell(std::uint64_t value) {
+  return {format_count(value), std::to_string(value)};
+}
 
 Cell ratio_cell(double value) {
   if (!std::isfinite(value)) return {"n/a", ""};
@@ -66,7 +70,8 @@ std::string csv_field(const std::string& s) {
 
 std::string table_csv(const Table& table) {
   std::string out;
-  for (std::size_t c = 0; c < table.columns.size(); ++c) out += (c ? "," : "") + csv_field(table.columns[c].csv_name);
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out += (c ? "," : "") + csv_field(table.columns[c].csv_name);
   out += "\n";
   for (const std::vector<Cell>& row : table.rows) {
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
@@ -78,14 +83,19 @@ std::string table_csv(const Table& table) {
 }
 
 std::string table_markdown(const Table& table) {
-  std::string out = "|";
-  for (const Column& c : table.columns) out += " " + c.header + " |";
-  out += "\n|";
-  for (std::size_t c = 0; c < table.columns.size(); ++c) out += c == 0 ? "---|" : "---:|";
-  out += "\n";
+  std::string header = "|", rule = "|";
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    if (!table.columns[c].markdown) continue;
+    header += " " + table.columns[c].header + " |";
+    rule += rule.size() == 1 ? "---|" : "---:|";
+  }
+  std::string out = header + "\n" + rule + "\n";
   for (const std::vector<Cell>& row : table.rows) {
     out += "|";
-    for (std::size_t c = 0; c < table.columns.size(); ++c) out += " " + (c < row.size() ? row[c].text : std::string()) + " |";
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      if (table.columns[c].markdown)
+        out += " " + (c < row.size() ? row[c].text : std::string()) + " |";
+    }
     out += "\n";
   }
   return out;

@@ -25,6 +25,7 @@ Cell ratio_cell(double value);
 struct Column {
   std::string csv_name;  // snake_case, the CSV header
   std::string header;    // markdown header
+  bool markdown = true;  // false: in the CSV only (results.md keeps to what reads at a glance)
 };
 
 struct Table {

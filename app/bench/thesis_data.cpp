@@ -8,11 +8,13 @@ namespace {
 const std::vector<ThesisPoint> kEmpty;
 
 // Expands a table given as rows of tolerances and columns of light counts.
-std::vector<ThesisPoint> grid(const std::vector<std::uint64_t>& lights, const std::vector<double>& tolerances,
+std::vector<ThesisPoint> grid(const std::vector<std::uint64_t>& lights,
+                              const std::vector<double>& tolerances,
                               const std::vector<std::vector<double>>& rows) {
   std::vector<ThesisPoint> out;
   for (std::size_t t = 0; t < tolerances.size(); ++t) {
-    for (std::size_t l = 0; l < lights.size(); ++l) out.push_back({lights[l], tolerances[t], rows[t][l]});
+    for (std::size_t l = 0; l < lights.size(); ++l)
+      out.push_back({lights[l], tolerances[t], rows[t][l]});
   }
   return out;
 }
@@ -51,11 +53,10 @@ const std::vector<ThesisPoint>& thesis_scaling_seconds(const std::string& scene)
            {{97.97, 321.29, 490.75, 746.31, 1081.29, 1117.16},
             {46.38, 78.96, 101.29, 134.56, 184.14, 191.14},
             {15.73, 23.97, 29.20, 38.52, 56.99, 57.80}});
-  static const std::vector<ThesisPoint> maze =
-      grid({45, 189, 765, 3069, 12285}, {0.001, 0.01, 0.1},
-           {{99.12, 198.42, 908.95, 1347.80, 1529.20},
-            {57.88, 62.76, 218.19, 287.73, 296.19},
-            {12.27, 13.23, 41.63, 52.76, 58.11}});
+  static const std::vector<ThesisPoint> maze = grid({45, 189, 765, 3069, 12285}, {0.001, 0.01, 0.1},
+                                                    {{99.12, 198.42, 908.95, 1347.80, 1529.20},
+                                                     {57.88, 62.76, 218.19, 287.73, 296.19},
+                                                     {12.27, 13.23, 41.63, 52.76, 58.11}});
   if (scene == "building") return building;
   if (scene == "maze") return maze;
   return kEmpty;
@@ -142,9 +143,11 @@ const std::vector<ThesisPoint>& thesis_error_max_pct(const std::string& scene) {
   return scene == "building" ? building : kEmpty;
 }
 
-double thesis_lookup(const std::vector<ThesisPoint>& table, std::uint64_t lights, double tolerance) {
+double thesis_lookup(const std::vector<ThesisPoint>& table, std::uint64_t lights,
+                     double tolerance) {
   for (const ThesisPoint& p : table) {
-    if (p.lights == lights && std::abs(p.tolerance - tolerance) <= 1e-9 * std::max(1.0, tolerance)) return p.value;
+    if (p.lights == lights && std::abs(p.tolerance - tolerance) <= 1e-9 * std::max(1.0, tolerance))
+      return p.value;
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

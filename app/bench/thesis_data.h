@@ -28,12 +28,15 @@ struct ThesisPoint {  // one cell of a table indexed by light count and toleranc
   double value;
 };
 
-const std::vector<ThesisPoint>& thesis_scaling_seconds(const std::string& scene);   // Tables 4, 5
-const std::vector<ThesisPoint>& thesis_fraction_tested(const std::string& scene);   // Tables 6-9: average lights tested
-const std::vector<ThesisPoint>& thesis_work_tested(const std::string& scene);       // Tables 12, 14
-const std::vector<ThesisPoint>& thesis_work_nodes(const std::string& scene);        // Tables 13, 15
-const std::vector<ThesisPoint>& thesis_error_avg_pct(const std::string& scene);     // Table 10 (building)
-const std::vector<ThesisPoint>& thesis_error_max_pct(const std::string& scene);     // Table 10 (building)
+const std::vector<ThesisPoint>& thesis_scaling_seconds(const std::string& scene);  // Tables 4, 5
+const std::vector<ThesisPoint>& thesis_fraction_tested(
+    const std::string& scene);  // Tables 6-9: average lights tested
+const std::vector<ThesisPoint>& thesis_work_tested(const std::string& scene);  // Tables 12, 14
+const std::vector<ThesisPoint>& thesis_work_nodes(const std::string& scene);   // Tables 13, 15
+const std::vector<ThesisPoint>& thesis_error_avg_pct(
+    const std::string& scene);  // Table 10 (building)
+const std::vector<ThesisPoint>& thesis_error_max_pct(
+    const std::string& scene);  // Table 10 (building)
 
 // The cell for (lights, tolerance), or NaN.
 double thesis_lookup(const std::vector<ThesisPoint>& table, std::uint64_t lights, double tolerance);

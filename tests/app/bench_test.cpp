@@ -60,7 +60,8 @@ class Bench : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("levrt_bench_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("levrt_bench_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -75,41 +76,56 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
   EXPECT_NE(r.output.find("% done"), std::string::npos) << "progress goes to stderr";
 
   const std::map<std::string, std::string> columns = {
-      {"speed", "scene,lights,rt_s,rt_pixels,ast_s,ast_pixels,lev_s,lev_pixels,ast_over_rt_pct,lev_over_rt_pct,"
-                "rt_over_lev,ast_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,"
-                "ast_tests_per_point,lev_tests_per_point"},
-      {"memory", "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
-                 "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"
-                 "thesis_lev_instanced_bytes"},
-      {"scaling", "scene,lights,lev_s_tol_0.001,pixels_tol_0.001,lev_s_tol_0.01,pixels_tol_0.01,lev_s_tol_0.1,"
-                  "pixels_tol_0.1,thesis_s_tol_0.001,thesis_s_tol_0.01,thesis_s_tol_0.1"},
-      {"fraction", "scene,lights,tolerance,pixels,lights_tested_avg,fraction_pct,nodes_visited_avg,"
-                   "thesis_lights_tested,thesis_fraction_pct"},
-      {"error", "scene,lights,tolerance,pixels,pixel_error_avg_pct,pixel_error_max_pct,thesis_avg_pct,thesis_max_pct"},
-      {"work", "scene,lights,tolerance,pixels,lights_tested_avg,nodes_visited_avg,shadow_rays_avg,"
-               "thesis_lights_tested,thesis_nodes_visited"},
-      {"trade", "scene,lights,method,tolerance,time_s,speedup_over_rt,pixel_error_avg_pct,pixel_error_max_pct,"
-                "lights_tested_avg"},
-      {"limit", "scene,lights,render_s,bare_s,render_over_bare,closest_hit_rays,shadow_rays,render_mrays_per_s,"
-                "bare_mrays_per_s"},
+      {"speed",
+       "scene,lights,rt_cpu_s,rt_wall_s,rt_pixels,ast_cpu_s,ast_wall_s,ast_pixels,lev_cpu_s,"
+       "lev_wall_s,lev_pixels,ast_over_rt_pct,lev_over_rt_pct,rt_over_lev,ast_over_lev,"
+       "thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,ast_tests_per_point,"
+       "lev_tests_per_point"},
+      {"memory",
+       "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
+       "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"
+       "thesis_lev_instanced_bytes"},
+      {"scaling",
+       "scene,lights,lev_cpu_s_tol_0.001,lev_wall_s_tol_0.001,pixels_tol_0.001,lev_cpu_s_tol_0.01,"
+       "lev_wall_s_tol_0.01,pixels_tol_0.01,lev_cpu_s_tol_0.1,lev_wall_s_tol_0.1,pixels_tol_0.1,"
+       "thesis_s_tol_0.001,thesis_s_tol_0.01,thesis_s_tol_0.1"},
+      {"fraction",
+       "scene,lights,tolerance,pixels,lights_tested_avg,fraction_pct,nodes_visited_avg,"
+       "thesis_lights_tested,thesis_fraction_pct"},
+      {"error",
+       "scene,lights,tolerance,pixels,pixel_error_avg_pct,pixel_error_max_pct,thesis_avg_pct,"
+       "thesis_max_pct"},
+      {"work",
+       "scene,lights,tolerance,pixels,lights_tested_avg,nodes_visited_avg,shadow_rays_avg,"
+       "thesis_lights_tested,thesis_nodes_visited"},
+      {"trade",
+       "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
+       "pixel_error_max_pct,lights_tested_avg"},
+      {"limit",
+       "scene,lights,render_cpu_s,bare_cpu_s,render_over_bare,render_wall_s,bare_wall_s,"
+       "closest_hit_rays,shadow_rays,bare_mrays_per_cpu_s"},
   };
   for (const auto& [name, header] : columns) {
     const fs::path csv = out / (name + ".csv");
     ASSERT_TRUE(fs::exists(csv)) << name;
     EXPECT_EQ(first_line(csv), header) << name;
     const std::string text = read_file(csv);
-    EXPECT_GE(std::count(text.begin(), text.end(), '\n'), 2) << name << ": a header and at least one row";
+    EXPECT_GE(std::count(text.begin(), text.end(), '\n'), 2)
+        << name << ": a header and at least one row";
   }
-  for (const char* png : {"speed_building.png", "memory_building.png", "scaling_building.png", "fraction_building.png",
-                          "error_avg_building.png", "error_max_building.png", "work_lights_building.png",
-                          "work_volumes_building.png", "trade_avg.png", "trade_max.png", "limit.png"}) {
+  for (const char* png :
+       {"speed_building.png", "memory_building.png", "scaling_building.png",
+        "fraction_building.png", "error_avg_building.png", "error_max_building.png",
+        "work_lights_building.png", "work_volumes_building.png", "trade_avg.png", "trade_max.png",
+        "limit.png"}) {
     const fs::path p = out / png;
     ASSERT_TRUE(fs::exists(p)) << png;
     EXPECT_EQ(read_file(p).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
   }
   const std::string md = read_file(out / "results.md");
   EXPECT_NE(md.find("## Headline"), std::string::npos);
-  for (const auto& [name, header] : columns) EXPECT_NE(md.find("## " + name + ":"), std::string::npos) << name;
+  for (const auto& [name, header] : columns)
+    EXPECT_NE(md.find("## " + name + ":"), std::string::npos) << name;
   EXPECT_NE(md.find("(speed_building.png)"), std::string::npos);
   for (const auto& entry : fs::directory_iterator(out)) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
@@ -118,13 +134,15 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
 
 TEST_F(Bench, OnlyRunsTheNamedExperiments) {
   const fs::path out = dir_ / "only";
-  const LevrtRun r = run_levrt({"bench", "--quick", "--only", "memory,limit", "--threads", "1", "--out", out.string()});
+  const LevrtRun r = run_levrt(
+      {"bench", "--quick", "--only", "memory,limit", "--threads", "1", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(out / "memory.csv"));
   EXPECT_TRUE(fs::exists(out / "limit.csv"));
   EXPECT_FALSE(fs::exists(out / "speed.csv"));
   EXPECT_FALSE(fs::exists(out / "scaling.csv"));
-  EXPECT_NE(read_file(out / "results.md").find("--only memory,limit --threads 1"), std::string::npos);
+  EXPECT_NE(read_file(out / "results.md").find("--only memory,limit --threads 1"),
+            std::string::npos);
 }
 
 TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
