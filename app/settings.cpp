@@ -37,7 +37,7 @@ const std::vector<SettingSpec>& setting_table() {
       {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
       {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
-       RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true}},
+       RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0}},
       {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, 16384}},
       {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, 16384}},
       {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
@@ -77,9 +77,10 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
     range << "must be a finite number in [" << d->min << ", " << d->max << "]";
     if (text.empty()) reject(spec, range.str(), text);
     char* end = nullptr;
-    errno = 0;
     const double v = std::strtod(text.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(v) || v < d->min || v > d->max || (errno == ERANGE && v != 0.0)) {
+    // Overflow comes back infinite and is refused; underflow (ERANGE with a subnormal or zero
+    // result) is the typed value rounded, so the smallest positive double is taken as itself.
+    if (*end != '\0' || !std::isfinite(v) || v < d->min || v > d->max) {
       reject(spec, range.str(), text);
     }
     settings.*(d->field) = v;

@@ -37,6 +37,9 @@ struct RealRange {
   double Settings::*field;
   double min, max;
   bool logarithmic;  // the viewer's slider
+  // The viewer's log slider spans [slider_min, slider_max] (within [min, max]); typed values may
+  // leave it, and a 0 button sits beside it when min allows 0.
+  double slider_min = 0.0, slider_max = 0.0;
 };
 struct Choice {
   std::string Settings::*field;

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -73,19 +74,23 @@ class LightSelector {
 
 // The shading loop shared by rt and lev: every selected light is counted as tested and, when it
 // can light the surface at all, gets a shadow ray. Summation order is the order of `lights`.
+// The sum is kept in double and rounded to float once: a float running sum of a million similar
+// terms drifts by up to 1% (each term is rounded against an ever larger sum), a double one stays
+// within one float rounding of the exact sum. Clamped to the largest float on the way back, as
+// irradiance() clamps each term, so that huge lights never overflow the conversion.
 template <typename LightRange, typename Filter>
 glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
                              SelectionCounters& counters) {
-  glm::vec3 sum(0.0f);
+  glm::dvec3 sum(0.0);
   for (const Light& light : lights) {
     if (!selected(light)) continue;
     ++counters.lights_tested;
     const glm::vec3 radiance = point.unshadowed_radiance(light);
     if (radiance == glm::vec3(0.0f)) continue;
     ++counters.shadow_rays;
-    if (point.visible(light)) sum += radiance;
+    if (point.visible(light)) sum += glm::dvec3(radiance);
   }
-  return sum;
+  return glm::vec3(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
 }
 
 }  // namespace lev

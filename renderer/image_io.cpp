@@ -8,7 +8,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include <stb/stb_image_write.h>
 
@@ -74,6 +76,24 @@ void write_png_rgb8(const std::string& path, int width, int height, const std::v
 
 void write_text_file(const std::string& path, const std::string& text) {
   write_bytes_atomically(path, text);
+}
+
+void publish_staging_folder(const std::string& staging, const std::string& destination) {
+  namespace fs = std::filesystem;
+  const TerminationSignalsBlocked blocked;
+  for (const fs::directory_entry& entry : fs::directory_iterator(staging)) {
+    const fs::path target = fs::path(destination) / entry.path().filename();
+    std::error_code ec;
+    fs::rename(entry.path(), target, ec);
+    if (ec) throw std::runtime_error(target.string() + ": cannot move into place (" + ec.message() + ")");
+  }
+  std::error_code ec;
+  fs::remove(staging, ec);
+}
+
+void discard_staging_folder(const std::string& staging) noexcept {
+  std::error_code ec;
+  std::filesystem::remove_all(staging, ec);
 }
 
 }  // namespace renderer

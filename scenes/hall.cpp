@@ -62,22 +62,32 @@ SceneDescription describe_hall(int level) {
                                    add_master(scene, "robot_green", robot_node({green, chrome, metal, tyre})),
                                    add_master(scene, "robot_blue", robot_node({blue, chrome, metal, tyre}))};
 
-  // A spotlight and its can, the light at the can's mouth shining down (-z).
-  std::uint32_t fixture = add_master(
-      scene, "spot",
-      union_node({cylinder_node(can, {0.0f, 0.0f, 0.05f}, {0.0f, 0.0f, 0.9f}, 0.35f, 16),
-                  spot_light_node(kSpotIntensity * glm::vec3(1.0f, 0.95f, 0.85f), kSpotConeDegrees, kSpotDropoff)}));
-  // Each level splits a spotlight into four at half the scale, in the four quarters of its place
-  // in the grid: a quarter of the intensity, the same cone, the same aim.
-  for (int k = 1; k <= level - kHallMinLevel; ++k) {
+  // A spotlight and its can, the light at the can's mouth shining down (-z), at the size of the
+  // level's smallest fixture: each split halves the scale and so quarters the intensity (thesis
+  // 4.2.2), and the light folds that scale into itself.
+  const int splits = level - kHallMinLevel;
+  Affine shrink;
+  shrink.scale = std::ldexp(1.0f, -splits);
+  const SceneNode spot = affine_node(
+      shrink, union_node({cylinder_node(can, {0.0f, 0.0f, 0.05f}, {0.0f, 0.0f, 0.9f}, 0.35f, 16),
+                          spot_light_node(kSpotIntensity * glm::vec3(1.0f, 0.95f, 0.85f), kSpotConeDegrees,
+                                          kSpotDropoff)}));
+  // Each level splits a spotlight into four, in the four quarters of its place in the grid, with
+  // the same cone and the same aim. The fixtures are built from the smallest up at their final
+  // size, so that every split is a pure translation: the walk then tests each quarter's box once,
+  // where a scaled instance would have its master's box tested again. The smallest split holds
+  // its four spots themselves rather than instances of one: a light in a union gets its exact
+  // test straight away, where an instance would first have its box tested, and that box contains
+  // nearly every point the four spots' common box does.
+  std::uint32_t fixture = 0;
+  for (int k = 1; k <= splits; ++k) {
+    const float offset = 0.25f * kRigSpacing * std::ldexp(1.0f, k - splits);
     std::vector<SceneNode> quarters;
     for (int j = 0; j < 2; ++j) {
       for (int i = 0; i < 2; ++i) {
-        Affine a;
-        a.translate = {kRigSpacing * (static_cast<float>(i) - 0.5f) * 0.5f,
-                       kRigSpacing * (static_cast<float>(j) - 0.5f) * 0.5f, 0.0f};
-        a.scale = 0.5f;
-        quarters.push_back(affine_node(a, instance_node(fixture)));
+        const glm::vec3 t{offset * (2.0f * static_cast<float>(i) - 1.0f),
+                          offset * (2.0f * static_cast<float>(j) - 1.0f), 0.0f};
+        quarters.push_back(translate_node(t, k == 1 ? spot : instance_node(fixture)));
       }
     }
     fixture = add_master(scene, "spots" + std::to_string(k), union_node(std::move(quarters)));
@@ -99,12 +109,31 @@ SceneDescription describe_hall(int level) {
     a.rotate_degrees = 180.0f + 20.0f * static_cast<float>(r - 1);
     parts.push_back(affine_node(a, instance_node(robots[r])));
   }
-  // The rig: 8x8 places over the stage, each aimed at its centre.
-  for (int j = 0; j < 8; ++j) {
-    for (int i = 0; i < 8; ++i) {
-      const glm::vec3 at{kRigSpacing * (static_cast<float>(i) - 3.5f),
-                         kStageCentre.y + kRigSpacing * (static_cast<float>(j) - 3.5f), kRigHeight};
-      parts.push_back(affine_node(aimed(at, kStageCentre - at), instance_node(fixture)));
+  // The rig: 8x8 places over the stage, each aimed at its centre, grouped 2x2 into blocks and
+  // the blocks 2x2 into quadrants. A group is a master instanced once, only so that its box is
+  // tested before its fixtures' (a union has no box of its own): a point below the rig's reach
+  // then tests four boxes, not 64.
+  const auto fixture_at = [&](int i, int j) {
+    const glm::vec3 at{kRigSpacing * (static_cast<float>(i) - 3.5f),
+                       kStageCentre.y + kRigSpacing * (static_cast<float>(j) - 3.5f), kRigHeight};
+    // Unsplit (level 3), the spot itself: its aim folds into the light, which needs no box.
+    return affine_node(aimed(at, kStageCentre - at), splits == 0 ? spot : instance_node(fixture));
+  };
+  for (int qj = 0; qj < 2; ++qj) {
+    for (int qi = 0; qi < 2; ++qi) {
+      std::vector<SceneNode> blocks;
+      for (int bj = 2 * qj; bj < 2 * qj + 2; ++bj) {
+        for (int bi = 2 * qi; bi < 2 * qi + 2; ++bi) {
+          std::vector<SceneNode> spots;
+          for (int j = 2 * bj; j < 2 * bj + 2; ++j) {
+            for (int i = 2 * bi; i < 2 * bi + 2; ++i) spots.push_back(fixture_at(i, j));
+          }
+          const std::string block = "rig_block_" + std::to_string(bi) + "_" + std::to_string(bj);
+          blocks.push_back(instance_node(add_master(scene, block, union_node(std::move(spots)))));
+        }
+      }
+      const std::string quadrant = "rig_quadrant_" + std::to_string(qi) + "_" + std::to_string(qj);
+      parts.push_back(instance_node(add_master(scene, quadrant, union_node(std::move(blocks)))));
     }
   }
   scene.root = union_node(std::move(parts));

@@ -6,6 +6,9 @@
 // on the stage is lit by most of the lights, the case LEV is not made for (thesis 5.4.2.2): once
 // the lights are many and weak, each falls below the tolerance while together they still light
 // the stage.
+// The light hierarchy groups the rig 2x2 into blocks and the blocks into quadrants, and splits
+// each fixture by pure translations, so that a point out of the lights' reach costs a few box
+// tests rather than one per fixture.
 #pragma once
 
 #include <cstdint>

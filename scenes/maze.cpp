@@ -90,7 +90,7 @@ SceneDescription describe_maze(int level) {
     posts.push_back(translate_node(
         {kMazeCell * (static_cast<float>(2 * k + 1) / 6.0f), 0.0f, 0.0f},
         union_node({affine_node(robot_frame, instance_node(robots[k])), instance_node(pole),
-                    translate_node({0.0f, -0.3f, h}, point_light_node(kStreetlightIntensity * glm::vec3(1.0f, 0.9f, 0.7f)))})));
+                    translate_node({0.0f, -0.3f, h}, spot_light_node(kStreetlightIntensity * glm::vec3(1.0f, 0.9f, 0.7f), kStreetlightConeDegrees, kStreetlightDropoff))})));
   }
   const std::uint32_t segment = add_master(scene, "segment", union_node(std::move(posts)));
 

@@ -19,9 +19,14 @@ inline constexpr float kMazeCell = 6.0f;        // corridor cell, wall to wall
 inline constexpr float kMazeHalfWall = 0.15f;   // each cell owns half of a wall it has
 inline constexpr float kMazeWallHeight = 2.0f;
 inline constexpr float kStreetlightHeight = 3.2f;
-// Calibrated so that at tolerance 0.01 a shading point tests about 18 lights at the larger levels
+// Streetlights are Warn spots pointing down, as the thesis' maze lights were (Test 2.4, Table 11
+// measures them with cones of 25 to 90 degrees): a 75-degree cone with a cosine dropoff lights a
+// pool under each lamp and reaches the ground a few cells away only at grazing angles.
+inline constexpr float kStreetlightConeDegrees = 75.0f;
+inline constexpr float kStreetlightDropoff = 1.0f;
+// Calibrated so that at tolerance 0.01 a shading point tests about 19 lights at the larger levels
 // (thesis Tables 9 and 14: 17 to 19).
-inline constexpr float kStreetlightIntensity = 0.83f;
+inline constexpr float kStreetlightIntensity = 3.0f;
 
 std::uint64_t maze_light_count(int level);
 // Levels kMazeMinLevel..kMazeMaxLevel; throws std::invalid_argument otherwise.

@@ -390,7 +390,8 @@ bool is_light_leaf(const lev::LightTreeNode& n) {
 
 class LightTreeBuilder {
  public:
-  LightTreeBuilder(const SceneDescription& scene, const Analysis& analysis)
+  // root: the scene's root, or its stand-in in render space.
+  LightTreeBuilder(const SceneDescription& scene, const SceneNode& root, const Analysis& analysis)
       : light_master_(scene.masters.size(), kNone) {
     for (std::uint32_t m : analysis.order()) {
       if (analysis.master(m).lights == 0) continue;
@@ -399,8 +400,8 @@ class LightTreeBuilder {
       tree_.masters.push_back(node ? std::move(*node) : lev::union_node({}));
       tree_.master_names.push_back(scene.masters[m].name);
     }
-    std::optional<lev::LightTreeNode> root = convert(scene.root);
-    tree_.root = root ? std::move(*root) : lev::union_node({});
+    std::optional<lev::LightTreeNode> lights = convert(root);
+    tree_.root = lights ? std::move(*lights) : lev::union_node({});
   }
 
   lev::LightTree take() { return std::move(tree_); }
@@ -532,11 +533,11 @@ class PrototypeBuilder {
 
 class GeometryBuilder {
  public:
-  GeometryBuilder(const SceneDescription& scene, const Analysis& analysis)
+  // root: the scene's root, or its stand-in in render space.
+  GeometryBuilder(const SceneDescription& scene, const SceneNode& root, const Analysis& analysis)
       : scene_(scene), analysis_(analysis), baked_(scene.masters.size(), kNone),
         flattened_(scene.masters.size()), flattened_done_(scene.masters.size(), false) {
-    const Flattened root = flatten(scene.root);
-    place(root, lev::Similarity{});
+    place(flatten(root), lev::Similarity{});
   }
 
   renderer::Geometry take() { return std::move(geometry_); }
@@ -624,7 +625,43 @@ class GeometryBuilder {
   renderer::Geometry geometry_;
 };
 
+// --- render space ---------------------------------------------------------------------------
+
+// Moves a subtree by `offset`, as if a translation sat right above it, without adding a level
+// where the subtree has coordinates of its own: an affine node takes the offset into its
+// translation (one subtraction, exact for floats of like magnitude), shapes shift their points,
+// a union passes it to each child. Lights and instances have no coordinates of their own (a
+// master is shared, so it cannot be moved) and get a translate node. Depth is bounded by
+// kMaxNodeDepth, checked before.
+void move_subtree(SceneNode& node, const glm::vec3& offset) {
+  if (auto* a = std::get_if<Affine>(&node.data)) {
+    a->translate += offset;
+  } else if (std::holds_alternative<Union>(node.data)) {
+    for (SceneNode& c : node.children) move_subtree(c, offset);
+  } else if (auto* sphere = std::get_if<SphereShape>(&node.data)) {
+    sphere->centre += offset;
+  } else if (auto* box = std::get_if<BoxShape>(&node.data)) {
+    box->lo += offset;
+    box->hi += offset;
+  } else if (auto* cylinder = std::get_if<CylinderShape>(&node.data)) {
+    cylinder->a += offset;
+    cylinder->b += offset;
+  } else if (auto* quad = std::get_if<QuadShape>(&node.data)) {
+    quad->corner += offset;
+  } else {
+    node = translate_node(offset, std::move(node));
+  }
+}
+
 }  // namespace
+
+glm::vec3 render_space_origin(const renderer::Camera& camera) {
+  const glm::vec3 reach3 = glm::abs(camera.position);
+  const float reach = std::max(std::max(reach3.x, reach3.y), reach3.z);
+  const float view = glm::length(camera.target - camera.position);
+  if (reach < kRenderSpaceRebaseDistance || reach <= kRenderSpaceRebaseRatio * view) return glm::vec3(0.0f);
+  return glm::round(camera.position);
+}
 
 void validate_description(const SceneDescription& scene) { Analysis analysis(scene); }
 
@@ -633,12 +670,22 @@ renderer::Scene instantiate_scene(const SceneDescription& description) {
   renderer::Scene scene;
   scene.name = description.name;
   scene.level = description.level;
+  scene.world_origin = render_space_origin(description.camera);
   scene.camera = description.camera;
+  scene.camera.position -= scene.world_origin;
+  scene.camera.target -= scene.world_origin;
   scene.ambient = description.ambient;
   scene.background = description.background;
   for (const NamedMaterial& m : description.materials) scene.materials.push_back(m.material);
-  scene.light_tree = LightTreeBuilder(description, analysis).take();
-  scene.geometry = GeometryBuilder(description, analysis).take();
+  // Only the root is copied and moved; masters are placed by the nodes above their instances.
+  std::optional<SceneNode> moved_root;
+  if (scene.world_origin != glm::vec3(0.0f)) {
+    moved_root = description.root;
+    move_subtree(*moved_root, -scene.world_origin);
+  }
+  const SceneNode& root = moved_root ? *moved_root : description.root;
+  scene.light_tree = LightTreeBuilder(description, root, analysis).take();
+  scene.geometry = GeometryBuilder(description, root, analysis).take();
   scene.lights = lev::build_hierarchy(scene.light_tree, 0.01f);
   return scene;
 }

@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include <glm/glm.hpp>
+
 #include "renderer/scene.h"
 #include "scenes/scene_description.h"
 
@@ -45,8 +47,24 @@ inline constexpr std::size_t kMaxUnstructuredLights = 8;
 // The path is where a scene file (scene_file.h) holds the offending value.
 void validate_description(const SceneDescription& scene);
 
+// Render space. Floats near 1e6 are 0.0625 apart, and ray offsets grow with the coordinates, so a
+// scene traced where it stands near 1e6 gets coarse hit points and shadow rays that start past
+// the occluders (light leaks) or inside the surface (acne). A far scene is therefore
+// instantiated moved by -origin, origin being the camera position rounded to whole units:
+// geometry, lights, light hierarchy and camera alike, so every ray, hit and hierarchy query is
+// computed near the origin. Moving is a subtraction of floats of like magnitude (exact).
+// Far means: the camera is at least kRenderSpaceRebaseDistance from the world origin and more
+// than kRenderSpaceRebaseRatio times farther from it than from its target (the size of what is
+// in view). Moving gains little otherwise, and an instance moved gets a transform node of its
+// own; so nearer scenes, and scenes that merely extend far from the origin such as the largest
+// buildings, stay where they are (origin 0) and render exactly as before.
+// renderer::Scene::world_origin records the origin.
+inline constexpr float kRenderSpaceRebaseDistance = 4096.0f;
+inline constexpr float kRenderSpaceRebaseRatio = 16.0f;
+glm::vec3 render_space_origin(const renderer::Camera& camera);
+
 // Validates, then builds the light hierarchy (refit for tolerance 0.01; renders refit it) and
-// the geometry.
+// the geometry, in render space.
 renderer::Scene instantiate_scene(const SceneDescription& scene);
 
 }  // namespace scenes

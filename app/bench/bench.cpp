@@ -16,6 +16,7 @@
 
 #include "app/bench/experiments.h"
 #include "app/bench/runner.h"
+#include "app/interrupt.h"
 #include "app/settings.h"
 #include "renderer/image_io.h"
 
@@ -147,13 +148,15 @@ void add_bench_flags(CLI::App& command, BenchFlags& flags) {
       ->each([&flags](const std::string&) { flags.threads_given = true; });
 }
 
-int run_bench(const BenchFlags& flags) {
-  const BenchOptions options = parse_options(flags);
+namespace {
+
+// The whole suite, its files written into out_dir (the staging folder). Returns how many
+// experiments ran.
+std::size_t run_suite(const BenchOptions& options, const std::string& out_dir) {
 #ifndef NDEBUG
   std::fprintf(stderr,
                "levrt bench: warning: not a Release build, the timings are not representative\n");
 #endif
-  const auto started = std::chrono::steady_clock::now();
   bench::BenchRun run(bench::thesis_suite(options.quick), options.threads);
 
   // Planning pass: every selected experiment walks its measurements without rendering, so the
@@ -161,17 +164,16 @@ int run_bench(const BenchFlags& flags) {
   for (const bench::ExperimentInfo& e : bench::experiments()) {
     if (!selected(options, e.name)) continue;
     run.begin_experiment(e.name);
-    e.run(run, options.out);
+    e.run(run, out_dir);
   }
   run.start_running();
-  fs::create_directories(options.out);
 
   std::vector<bench::Section> sections;
   std::vector<std::string> names;
   for (const bench::ExperimentInfo& e : bench::experiments()) {
     if (!selected(options, e.name)) continue;
     run.begin_experiment(e.name);
-    sections.push_back(e.run(run, options.out));
+    sections.push_back(e.run(run, out_dir));
     names.emplace_back(e.name);
   }
 
@@ -223,12 +225,38 @@ int run_bench(const BenchFlags& flags) {
         ".csv`, ...) next to this file.\n\n";
   for (std::size_t i = 0; i < sections.size(); ++i)
     md += "<a id=\"" + names[i] + "\"></a>\n\n" + sections[i].markdown + "\n";
-  renderer::write_text_file(options.out + "/results.md", md);
+  renderer::write_text_file(out_dir + "/results.md", md);
+  return sections.size();
+}
+
+}  // namespace
+
+int run_bench(const BenchFlags& flags) {
+  const BenchOptions options = parse_options(flags);
+  const auto started = std::chrono::steady_clock::now();
+  // Ctrl-C stops the suite between renders; nothing reaches the output folder unless the whole
+  // suite finished (its files are staged, then moved in together).
+  const InterruptScope interrupt_scope;
+  std::error_code ec;
+  const bool out_existed = fs::exists(options.out, ec);
+  fs::create_directories(options.out);
+  const std::string staging = options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid()));
+  std::size_t experiments = 0;
+  try {
+    fs::create_directories(staging);
+    experiments = run_suite(options, staging);
+    InterruptScope::throw_if_interrupted();
+    renderer::publish_staging_folder(staging, options.out);
+  } catch (...) {
+    renderer::discard_staging_folder(staging);
+    if (!out_existed) fs::remove(options.out, ec);  // only if empty: never anything else's
+    throw;
+  }
 
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::printf("levrt bench: wrote %s/results.md and %zu experiments' CSVs and plots in %.0f s\n",
-              options.out.c_str(), sections.size(), seconds);
+              options.out.c_str(), experiments, seconds);
   return 0;
 }
 

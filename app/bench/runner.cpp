@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/bench/table.h"
+#include "app/interrupt.h"
 #include "app/render_command.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/pixel_error.h"
@@ -274,7 +275,8 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       const MeasureRequest& r = p.m.request;
       LoadedScene& loaded = scene(r.scene, r.level);
       const double cpu_start = process_cpu_seconds();
-      p.last = render_image(loaded, p.settings, r.method);
+      InterruptScope::throw_if_interrupted();  // the scene may have just been built
+      p.last = render_image(loaded, p.settings, r.method, &InterruptScope::flag());
       p.m.run_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
       p.m.run_seconds.push_back(p.last.seconds);
       p.spent += p.last.seconds;

@@ -12,9 +12,6 @@
 namespace app::viewer {
 namespace {
 
-constexpr double kSliderMin = 1e-6;  // the log slider's span; typed values may leave it
-constexpr double kSliderMax = 1.0;
-
 void help_tooltip(const SettingSpec& spec) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (--%s)", spec.help, spec.name);
 }
@@ -65,7 +62,7 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
   const float full = ImGui::CalcItemWidth();
   if (range.logarithmic) {
     // One row: the log slider, a 0 button and the typed value.
-    const double lo = std::max(range.min, kSliderMin), hi = std::min(range.max, kSliderMax);
+    const double lo = std::max(range.min, range.slider_min), hi = std::min(range.max, range.slider_max);
     double slider = std::clamp(value, lo, hi);
     ImGui::SetNextItemWidth(full * 0.55f);
     if (ImGui::SliderScalar("##log", ImGuiDataType_Double, &slider, &lo, &hi,

@@ -1,7 +1,6 @@
 // `levrt bench`: the quick suite writes results.md, every experiment's CSV with its columns and
 // its plots (the figures themselves are benchmarks, never checked here); bad flags exit 2 with
 // one line and write nothing.
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -12,33 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/run_command.h"
+
 namespace {
 namespace fs = std::filesystem;
-
-struct LevrtRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-LevrtRun run_levrt(const std::vector<std::string>& args) {
-  std::string command = LEVRT_BINARY;
-  for (const std::string& a : args) command += " " + quote(a);
-  command += " 2>&1";
-  LevrtRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using levrt_test::CommandRun;
+using levrt_test::run_levrt;
 
 std::string read_file(const fs::path& path) {
   std::string text;
@@ -71,7 +49,7 @@ class Bench : public ::testing::Test {
 
 TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
   const fs::path out = dir_ / "results";
-  const LevrtRun r = run_levrt({"bench", "--suite", "thesis", "--quick", "--out", out.string()});
+  const CommandRun r = run_levrt({"bench", "--suite", "thesis", "--quick", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("% done"), std::string::npos) << "progress goes to stderr";
 
@@ -134,7 +112,7 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
 
 TEST_F(Bench, OnlyRunsTheNamedExperiments) {
   const fs::path out = dir_ / "only";
-  const LevrtRun r = run_levrt(
+  const CommandRun r = run_levrt(
       {"bench", "--quick", "--only", "memory,limit", "--threads", "1", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(out / "memory.csv"));
@@ -170,7 +148,7 @@ TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
   for (const std::vector<std::string>& c : cases) {
     std::vector<std::string> args = {"bench"};
     args.insert(args.end(), c.begin(), c.end());
-    const LevrtRun r = run_levrt(args);
+    const CommandRun r = run_levrt(args);
     std::string label;
     for (const std::string& a : c) label += a + " ";
     label += ": " + r.output;

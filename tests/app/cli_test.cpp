@@ -1,4 +1,3 @@
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -9,33 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/run_command.h"
+
 namespace {
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-CliRun run_levrt(const std::vector<std::string>& args) {
-  std::string command = LEVRT_BINARY;
-  for (const std::string& a : args) command += " " + quote(a);
-  command += " 2>&1";
-  CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using levrt_test::CommandRun;
+using levrt_test::run_levrt;
 
 class Cli : public ::testing::Test {
  protected:
@@ -70,7 +48,7 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
   const std::string out = path("image.png");
   for (const auto& [flag, values] : cases) {
     for (const std::string& value : values) {
-      const CliRun r = run_levrt({"render", flag, value, "--width", "8", "--height", "8", "--out", out});
+      const CommandRun r = run_levrt({"render", flag, value, "--width", "8", "--height", "8", "--out", out});
       const std::string label = flag + " '" + value + "': " + r.output;
       EXPECT_EQ(r.exit_code, 2) << label;
       EXPECT_NE(r.output.find(flag), std::string::npos) << label;
@@ -81,20 +59,20 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
 }
 
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
-  const CliRun r = run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
+  const CommandRun r = run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--width"), std::string::npos) << r.output;
   EXPECT_TRUE(folder_is_empty());
 }
 
 TEST_F(Cli, LightsListsTheValidCounts) {
-  const CliRun r = run_levrt({"render", "--lights", "100", "--out", path("a.png")});
+  const CommandRun r = run_levrt({"render", "--lights", "100", "--out", path("a.png")});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("64, 256, 1024, 4096, 16384"), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, LevelAndLightsTogetherAreRejected) {
-  const CliRun r = run_levrt({"render", "--level", "3", "--lights", "64"});
+  const CommandRun r = run_levrt({"render", "--level", "3", "--lights", "64"});
   EXPECT_EQ(r.exit_code, 2) << r.output;
 }
 
@@ -110,7 +88,7 @@ TEST_F(Cli, BadOutputPathsExitTwoAndWriteNothing) {
   for (const auto& c : cases) {
     std::vector<std::string> args = {"render", "--width", "8", "--height", "8"};
     args.insert(args.end(), c.begin(), c.end());
-    const CliRun r = run_levrt(args);
+    const CommandRun r = run_levrt(args);
     EXPECT_EQ(r.exit_code, 2) << c[0] << " " << c[1] << ": " << r.output;
     EXPECT_NE(r.output.find(c.size() > 2 ? c[2] : c[0]), std::string::npos) << r.output;
     EXPECT_TRUE(folder_is_empty()) << r.output;
@@ -118,7 +96,7 @@ TEST_F(Cli, BadOutputPathsExitTwoAndWriteNothing) {
   if (::geteuid() != 0) {  // root writes anywhere; the check only means something for users
     fs::create_directories(dir_ / "locked");
     fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
-    const CliRun r = run_levrt({"render", "--out", path("locked/a.png")});
+    const CommandRun r = run_levrt({"render", "--out", path("locked/a.png")});
     EXPECT_EQ(r.exit_code, 2) << r.output;
   }
 }
@@ -130,7 +108,7 @@ TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
 }
 
 TEST_F(Cli, RenderWritesEveryOutputWithTheDocumentedStats) {
-  const CliRun r = run_levrt({"render", "--scene", "building", "--lights", "64", "--method", "lev",
+  const CommandRun r = run_levrt({"render", "--scene", "building", "--lights", "64", "--method", "lev",
                            "--tolerance", "0.01", "--width", "40", "--height", "30", "--spp", "2",
                            "--out", path("i.png"), "--heatmap-lights", path("l.png"), "--heatmap-nodes",
                            path("n.png"), "--stats", path("s.json"), "--reference", "rt"});

@@ -1,4 +1,5 @@
-// Ctrl-C (SIGINT) and SIGTERM during a render: levrt stops, exits 130 and leaves no file behind.
+// Ctrl-C (SIGINT) and SIGTERM during a render or a bench run: levrt stops, exits 130 and leaves
+// no file behind (and a bench run leaves an existing results folder as it was).
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -30,11 +31,9 @@ bool catches_termination_signals(pid_t pid) {
   return false;
 }
 
-int interrupt_render_after(int signal_number, std::chrono::milliseconds delay, const fs::path& dir) {
-  const std::vector<std::string> args = {
-      LEVRT_BINARY, "render", "--lights", "16384", "--method", "rt", "--width", "640", "--height", "480",
-      "--spp", "4", "--out", (dir / "i.png").string(), "--stats", (dir / "s.json").string(),
-      "--heatmap-lights", (dir / "l.png").string()};
+// Runs levrt with args, signals it `delay` after its handlers are installed, and returns its
+// exit code (1000 + the signal when the signal killed it, so that is never mistaken for 130).
+int interrupt_after(const std::vector<std::string>& args, int signal_number, std::chrono::milliseconds delay) {
   const pid_t pid = fork();
   if (pid == 0) {
     std::vector<char*> argv;
@@ -51,7 +50,14 @@ int interrupt_render_after(int signal_number, std::chrono::milliseconds delay, c
   kill(pid, signal_number);
   int status = 0;
   waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+int interrupt_render_after(int signal_number, std::chrono::milliseconds delay, const fs::path& dir) {
+  return interrupt_after({LEVRT_BINARY, "render", "--lights", "16384", "--method", "rt", "--width", "640",
+                          "--height", "480", "--spp", "4", "--out", (dir / "i.png").string(), "--stats",
+                          (dir / "s.json").string(), "--heatmap-lights", (dir / "l.png").string()},
+                         signal_number, delay);
 }
 
 TEST(Interrupt, SignalDuringRenderLeavesNoOutput) {
@@ -66,6 +72,31 @@ TEST(Interrupt, SignalDuringRenderLeavesNoOutput) {
       fs::remove_all(dir);
     }
   }
+}
+
+TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
+  const fs::path dir = fs::temp_directory_path() / "levrt_interrupt_bench";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "kept");
+  { std::ofstream(dir / "kept" / "results.md") << "an earlier run"; }
+  for (int delay_ms : {0, 1500}) {  // while the scenes are planned, and during the renders
+    for (const char* out : {"new", "kept"}) {
+      const fs::path out_dir = dir / out;
+      EXPECT_EQ(interrupt_after({LEVRT_BINARY, "bench", "--suite", "thesis", "--quick", "--out", out_dir.string()},
+                                SIGINT, std::chrono::milliseconds(delay_ms)),
+                130)
+          << out << " after " << delay_ms << " ms";
+    }
+    EXPECT_FALSE(fs::exists(dir / "new")) << "after " << delay_ms << " ms";
+    std::vector<fs::path> kept;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "kept")) kept.push_back(e.path().filename());
+    ASSERT_EQ(kept.size(), 1u) << "after " << delay_ms << " ms";
+    std::ifstream in(dir / "kept" / "results.md");
+    std::string text;
+    std::getline(in, text);
+    EXPECT_EQ(text, "an earlier run");
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -1,8 +1,6 @@
 // `levrt export` and `--scene FILE.json` through the binary: a file exported from a model
 // renders the same PNG bytes; a bad file is one line and exit code 2, with nothing written.
-#include <sys/wait.h>
 
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,33 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/run_command.h"
+
 namespace {
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-CliRun run_levrt(const std::vector<std::string>& args) {
-  std::string command = LEVRT_BINARY;
-  for (const std::string& a : args) command += " " + quote(a);
-  command += " 2>&1";
-  CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using levrt_test::CommandRun;
+using levrt_test::run_levrt;
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -63,7 +40,7 @@ class SceneFileCli : public ::testing::Test {
 TEST_F(SceneFileCli, ExportedFileRendersTheSamePngAndHierarchy) {
   for (const std::string scene : {"building", "maze", "hall"}) {
     const std::string file = path(scene + ".json");
-    const CliRun e = run_levrt({"export", "--scene", scene, "--level", "4", "--out", file});
+    const CommandRun e = run_levrt({"export", "--scene", scene, "--level", "4", "--out", file});
     ASSERT_EQ(e.exit_code, 0) << e.output;
     const std::vector<std::string> common = {"--width", "40", "--height", "30", "--method", "lev"};
     std::vector<std::string> a = {"render", "--scene", scene, "--level", "4", "--out", path("a.png"), "--stats", path("a.json")};
@@ -71,7 +48,7 @@ TEST_F(SceneFileCli, ExportedFileRendersTheSamePngAndHierarchy) {
     a.insert(a.end(), common.begin(), common.end());
     b.insert(b.end(), common.begin(), common.end());
     ASSERT_EQ(run_levrt(a).exit_code, 0);
-    const CliRun rb = run_levrt(b);
+    const CommandRun rb = run_levrt(b);
     ASSERT_EQ(rb.exit_code, 0) << rb.output;
     EXPECT_EQ(read_file(path("a.png")), read_file(path("b.png"))) << scene;
     const std::string sa = read_file(path("a.json")), sb = read_file(path("b.json"));
@@ -95,14 +72,14 @@ TEST_F(SceneFileCli, BadFilesExitTwoWithOneLineAndNoOutput) {
   for (const auto& [text, problem] : cases) {
     const std::string file = path("bad.json");
     { std::ofstream(file) << text; }
-    const CliRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8", "--out", path("x.png")});
+    const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8", "--out", path("x.png")});
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find(file + ": "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(problem), std::string::npos) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_FALSE(fs::exists(path("x.png")));
   }
-  const CliRun missing = run_levrt({"render", "--scene", path("none.json"), "--out", path("x.png")});
+  const CommandRun missing = run_levrt({"render", "--scene", path("none.json"), "--out", path("x.png")});
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
@@ -110,13 +87,13 @@ TEST_F(SceneFileCli, BadFilesExitTwoWithOneLineAndNoOutput) {
 TEST_F(SceneFileCli, LevelsAndLightCountsBelongToModels) {
   const std::string file = path("maze.json");
   ASSERT_EQ(run_levrt({"export", "--scene", "maze", "--lights", "189", "--out", file}).exit_code, 0);
-  const CliRun level = run_levrt({"render", "--scene", file, "--level", "2", "--out", path("x.png")});
+  const CommandRun level = run_levrt({"render", "--scene", file, "--level", "2", "--out", path("x.png")});
   EXPECT_EQ(level.exit_code, 2) << level.output;
   EXPECT_NE(level.output.find("--level"), std::string::npos) << level.output;
-  const CliRun lights = run_levrt({"render", "--scene", file, "--lights", "189", "--out", path("x.png")});
+  const CommandRun lights = run_levrt({"render", "--scene", file, "--lights", "189", "--out", path("x.png")});
   EXPECT_EQ(lights.exit_code, 2) << lights.output;
   EXPECT_NE(lights.output.find("--lights"), std::string::npos) << lights.output;
-  const CliRun model = run_levrt({"render", "--scene", "maze", "--lights", "64", "--out", path("x.png")});
+  const CommandRun model = run_levrt({"render", "--scene", "maze", "--lights", "64", "--out", path("x.png")});
   EXPECT_EQ(model.exit_code, 2) << model.output;
   EXPECT_NE(model.output.find("45, 189, 765, 3069, 12285"), std::string::npos) << model.output;
   EXPECT_FALSE(fs::exists(path("x.png")));
@@ -131,7 +108,7 @@ TEST_F(SceneFileCli, ExportRefusesBadArgumentsAndWritesNothing) {
       {"export", "--scene", "hall", "--level", "3", "--lights", "64", "--out", path("m.json")},
   };
   for (const auto& args : cases) {
-    const CliRun r = run_levrt(args);
+    const CommandRun r = run_levrt(args);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_TRUE(fs::is_empty(dir_)) << r.output;

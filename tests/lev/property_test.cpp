@@ -11,61 +11,12 @@
 #include "lev/important_lights.h"
 #include "lev/light_bvh.h"
 #include "lev/light_hierarchy.h"
+#include "tests/lev/random_light_scenes.h"
 
 namespace {
 
-struct Random {
-  std::mt19937_64 engine;
-  explicit Random(std::uint64_t seed) : engine(seed) {}
-  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(engine); }
-  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine); }
-  glm::vec3 direction() {
-    glm::vec3 d;
-    do {
-      d = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-    } while (glm::dot(d, d) < 1e-4f || glm::dot(d, d) > 1.0f);
-    return glm::normalize(d);
-  }
-};
-
-lev::Light random_light(Random& r) {
-  const glm::vec3 p(r.uniform(-5, 5), r.uniform(-5, 5), r.uniform(-5, 5));
-  const float intensity = std::pow(10.0f, r.uniform(-3.0f, 3.0f));
-  if (r.integer(0, 2) == 0) return lev::make_point_light(p, glm::vec3(intensity, 0.5f * intensity, 0.0f));
-  static const float kAngles[] = {0.0f, 1e-4f, 0.3f, 1.5707964f, 2.5f, 3.1415927f};
-  static const float kDropoffs[] = {0.0f, 1.0f, 7.5f, 10000.0f};
-  return lev::make_spot_light(p, r.direction(), glm::vec3(intensity), kAngles[r.integer(0, 5)],
-                              kDropoffs[r.integer(0, 3)]);
-}
-
-lev::Similarity random_similarity(Random& r) {
-  lev::Similarity xf = lev::make_rotation(r.direction(), r.uniform(0.0f, 6.2831853f));
-  xf = lev::compose(lev::make_translation({r.uniform(-20, 20), r.uniform(-20, 20), r.uniform(-5, 5)}), xf);
-  return lev::compose(xf, lev::make_scale(std::pow(2.0f, r.uniform(-2.0f, 2.0f))));
-}
-
-lev::LightTree random_instanced_tree(Random& r) {
-  lev::LightTree tree;
-  const int masters = r.integer(1, 4);
-  for (int m = 0; m < masters; ++m) {
-    std::vector<lev::LightTreeNode> children;
-    const int count = r.integer(1, 5);
-    for (int c = 0; c < count; ++c) {
-      if (m > 0 && r.integer(0, 1) == 0) {
-        children.push_back(lev::affine_node(random_similarity(r), lev::instance_node(static_cast<std::uint32_t>(r.integer(0, m - 1)))));
-      } else {
-        children.push_back(lev::extent_volume_node(lev::affine_node(random_similarity(r), lev::light_node(random_light(r)))));
-      }
-    }
-    tree.masters.push_back(lev::union_node(std::move(children)));
-  }
-  std::vector<lev::LightTreeNode> roots;
-  for (int i = 0; i < 4; ++i) {
-    roots.push_back(lev::affine_node(random_similarity(r), lev::instance_node(static_cast<std::uint32_t>(r.integer(0, masters - 1)))));
-  }
-  tree.root = lev::union_node(std::move(roots));
-  return tree;
-}
+using lev_test::Random;
+using lev_test::random_instanced_tree;
 
 TEST(Property, WalkNeverMissesAndNeverAddsALight) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {

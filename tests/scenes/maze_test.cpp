@@ -126,7 +126,7 @@ TEST(Maze, WallsStandWhereverTheHilbertCurveDoesNotPass) {
   for (int level = 1; level <= 3; ++level) EXPECT_EQ(built_walls(level), expected_walls(level)) << "level " << level;
 }
 
-TEST(Maze, EveryStreetlightHangsOverTheCorridor) {
+TEST(Maze, EveryStreetlightHangsOverTheCorridorAndShinesDown) {
   const int level = 2;
   const int side = 1 << (level + 1);
   std::vector<glm::vec2> centres;
@@ -137,6 +137,9 @@ TEST(Maze, EveryStreetlightHangsOverTheCorridor) {
   const renderer::Scene scene = scenes::build_maze(level);
   for (const lev::Light& l : lev::flatten_lights(scene.lights)) {
     EXPECT_FLOAT_EQ(l.position.z, scenes::kStreetlightHeight);
+    ASSERT_EQ(l.kind, lev::LightKind::spot);
+    EXPECT_NEAR(l.direction.z, -1.0f, 1e-6f);
+    EXPECT_NEAR(std::acos(l.cos_cone_half_angle), glm::radians(scenes::kStreetlightConeDegrees), 1e-5f);
     // Within the lamp's offset (0.3) of the curve through the cell centres.
     float nearest = 1e9f;
     const glm::vec2 p(l.position.x, l.position.y);

@@ -3,11 +3,9 @@
 // snapshot, and write the window to a PNG. Skipped only when xvfb-run is missing. Labelled
 // "threads": under the tsan preset the UI thread, the tile workers and the reference thread
 // share the display buffers and the cancel flag.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,32 +13,16 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "tests/support/run_command.h"
 #include <stb/stb_image.h>
 
 namespace {
+
+using levrt_test::CommandRun;
+using levrt_test::run_shell;
+using levrt_test::shell_quote;
 namespace fs = std::filesystem;
-
-struct CommandRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-CommandRun run_shell(const std::string& command) {
-  CommandRun run;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
 
 bool have_xvfb() {
   return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
@@ -52,8 +34,8 @@ bool have_xvfb() {
 CommandRun run_viewer(const std::vector<std::string>& args) {
   std::string command =
       "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" xvfb-run -a -s '-screen 0 1280x800x24' " +
-      quote(LEVRT_BINARY) + " view";
-  for (const std::string& a : args) command += " " + quote(a);
+      shell_quote(LEVRT_BINARY) + " view";
+  for (const std::string& a : args) command += " " + shell_quote(a);
   return run_shell(command);
 }
 
@@ -119,7 +101,7 @@ class ViewerWindow : public ::testing::Test {
 
 TEST_F(ViewerWindow, WithoutADisplayExitsTwoNamingTheHeadlessRoute) {
   const CommandRun r =
-      run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + quote(LEVRT_BINARY) + " view");
+      run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + shell_quote(LEVRT_BINARY) + " view");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   EXPECT_NE(r.output.find("levrt render"), std::string::npos) << r.output;
@@ -128,12 +110,12 @@ TEST_F(ViewerWindow, WithoutADisplayExitsTwoNamingTheHeadlessRoute) {
 
 TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
   for (const char* change : {"tolerance=abc@3", "view=sideways@1", "colour=red@2", "method=lev"}) {
-    const CommandRun r = run_shell("env -u DISPLAY " + quote(LEVRT_BINARY) +
-                                   " view --frames 3 --set " + quote(change));
+    const CommandRun r = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
+                                   " view --frames 3 --set " + shell_quote(change));
     EXPECT_EQ(r.exit_code, 2) << change << ": " << r.output;
     EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
   }
-  const CommandRun r = run_shell("env -u DISPLAY " + quote(LEVRT_BINARY) + " view --window 10x10");
+  const CommandRun r = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view --window 10x10");
   EXPECT_EQ(r.exit_code, 2) << r.output;
 }
 
