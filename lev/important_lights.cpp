@@ -37,9 +37,33 @@ Light& push_world_light(std::vector<Light>& out, const Light& light, const WalkL
 
 constexpr std::uint32_t kNoNode = ~0u;
 
+// One light node: with kCull its exact test (one volume checked), else just its world copy. A
+// translation moves a point light and changes nothing else, so such a light is tested before it
+// is copied (the same floats as push_world_light's); any other is transformed, then tested.
+template <bool kCull>
+inline void visit_light(const Light& local, const glm::vec3& point, float tolerance, const WalkLinear& linear,
+                        bool identity, const glm::vec3& translation, std::vector<Light>& out,
+                        std::uint64_t& visited) {
+  if (identity && local.kind == LightKind::point) {
+    Light world = local;
+    world.position = local.position + translation;
+    if constexpr (kCull) {
+      ++visited;
+      if (!is_important(world, point, tolerance)) return;
+    }
+    out.emplace_back(local).position = world.position;
+    return;
+  }
+  const Light& world = push_world_light(out, local, linear, identity, translation);
+  if constexpr (kCull) {
+    ++visited;
+    if (!is_important(world, point, tolerance)) out.pop_back();
+  }
+}
+
 // The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
-glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std::uint32_t linear_index,
-                              const glm::vec3& xf_translation, const glm::vec3& translation) {
+inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std::uint32_t linear_index,
+                                     const glm::vec3& xf_translation, const glm::vec3& translation) {
   if (linear_index == 0) return xf_translation + translation;
   const WalkLinear& outer = linear[linear_index];
   return outer.rotation * (outer.scale * xf_translation) + translation;
@@ -59,6 +83,8 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
   std::vector<WalkFrame>& stack = scratch.stack;
   std::vector<WalkLinear>& linear = scratch.linear;
   std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
+  // Locals too, rather than reloaded after every write to the output.
+  const float tolerance = h.tolerance;
   stack.clear();
   linear.clear();
   linear.emplace_back();
@@ -78,27 +104,10 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
       bool descend = false;
       switch (node.kind) {
         case NodeKind::point_light:
-        case NodeKind::spot_light: {
-          const Light& local = h.lights[node.payload];
-          if (linear_index == 0 && local.kind == LightKind::point) {
-            // A translation moves a point light and changes nothing else: test first, and copy
-            // only the lights that pass (the same floats as push_world_light's).
-            Light world = local;
-            world.position = local.position + translation;
-            if constexpr (kCull) {
-              ++visited;
-              if (!is_important(world, point, h.tolerance)) break;
-            }
-            out.emplace_back(local).position = world.position;
-            break;
-          }
-          const Light& world = push_world_light(out, local, linear[linear_index], linear_index == 0, translation);
-          if constexpr (kCull) {
-            ++visited;
-            if (!is_important(world, point, h.tolerance)) out.pop_back();
-          }
+        case NodeKind::spot_light:
+          visit_light<kCull>(h.lights[node.payload], point, tolerance, linear[linear_index], linear_index == 0,
+                             translation, out, visited);
           break;
-        }
         case NodeKind::affine: {
           const Similarity& xf = h.transforms[node.payload];
           const bool translation_only = (node.flags & kTranslationOnly) != 0;
@@ -140,6 +149,15 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
         case NodeKind::set_union: {
           const std::uint32_t* children = &h.union_children[node.payload];
           const std::uint32_t count = children[0];
+          // Leading light children are decided here rather than each pushed as a frame: nothing
+          // else of this subtree comes before them, so the order is the same.
+          std::uint32_t first_pending = 1;
+          for (; first_pending <= count; ++first_pending) {
+            const HierarchyNode& c = h.nodes[children[first_pending]];
+            if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
+            visit_light<kCull>(h.lights[c.payload], point, tolerance, linear[linear_index], linear_index == 0,
+                               translation, out, visited);
+          }
           // The first child that passes is walked right away; the later ones are pushed
           // last-first so that they come off the stack in order (depth-first, left to right).
           // (Plain locals, not frame structs: a struct assembled field by field and then copied
@@ -147,7 +165,7 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
           glm::vec3 first_point(0.0f), first_translation(0.0f);
           std::uint32_t first = kNoNode;
           bool first_tested = false;
-          for (std::uint32_t k = count; k > 0; --k) {
+          for (std::uint32_t k = count; k >= first_pending; --k) {
             glm::vec3 child_point = local_point, child_translation = translation;
             std::uint32_t child = children[k];
             bool tested = false;

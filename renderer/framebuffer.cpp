@@ -36,19 +36,21 @@ std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& f) {
   return rgb;
 }
 
+void add_pixel_totals(const Framebuffer& f, std::size_t i, FramebufferTotals& t) {
+  t.samples += f.samples[i];
+  t.shading_points += f.shading_points[i];
+  t.lights_tested += f.lights_tested[i];
+  t.nodes_visited += f.nodes_visited[i];
+  t.shadow_rays += f.shadow_rays[i];
+  if (f.shading_points[i] > 0) {
+    const auto per_point = static_cast<std::uint32_t>(f.lights_tested[i] / f.shading_points[i]);
+    t.lights_tested_max = std::max(t.lights_tested_max, per_point);
+  }
+}
+
 FramebufferTotals sum_framebuffer(const Framebuffer& f) {
   FramebufferTotals t;
-  for (std::size_t i = 0; i < f.samples.size(); ++i) {
-    t.samples += f.samples[i];
-    t.shading_points += f.shading_points[i];
-    t.lights_tested += f.lights_tested[i];
-    t.nodes_visited += f.nodes_visited[i];
-    t.shadow_rays += f.shadow_rays[i];
-    if (f.shading_points[i] > 0) {
-      const auto per_point = static_cast<std::uint32_t>(f.lights_tested[i] / f.shading_points[i]);
-      t.lights_tested_max = std::max(t.lights_tested_max, per_point);
-    }
-  }
+  for (std::size_t i = 0; i < f.samples.size(); ++i) add_pixel_totals(f, i, t);
   return t;
 }
 

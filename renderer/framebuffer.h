@@ -35,6 +35,8 @@ struct FramebufferTotals {
   std::uint64_t shadow_rays = 0;
   std::uint32_t lights_tested_max = 0;  // per shading point, over pixels (pixel mean)
 };
+// Adds pixel i's counters to totals (sum_framebuffer is this over every pixel).
+void add_pixel_totals(const Framebuffer& framebuffer, std::size_t i, FramebufferTotals& totals);
 FramebufferTotals sum_framebuffer(const Framebuffer& framebuffer);
 
 }  // namespace renderer

@@ -45,16 +45,7 @@ TileUpdate copy_tile(const renderer::Framebuffer& f, std::uint64_t generation, i
           n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;
       u.nodes_visited[k] =
           n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
-      TileTotals& t = u.totals;
-      t.samples += n;
-      t.shading_points += f.shading_points[i];
-      t.lights_tested += f.lights_tested[i];
-      t.nodes_visited += f.nodes_visited[i];
-      t.shadow_rays += f.shadow_rays[i];
-      if (f.shading_points[i] > 0) {
-        const auto per_point = static_cast<std::uint32_t>(f.lights_tested[i] / f.shading_points[i]);
-        t.lights_tested_max = std::max(t.lights_tested_max, per_point);
-      }
+      renderer::add_pixel_totals(f, i, u.totals);
     }
   }
   return u;

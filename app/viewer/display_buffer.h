@@ -14,15 +14,8 @@
 
 namespace app::viewer {
 
-// Sums over a tile's pixels, every pass so far (the same quantities as FramebufferTotals).
-struct TileTotals {
-  std::uint64_t samples = 0;
-  std::uint64_t shading_points = 0;
-  std::uint64_t lights_tested = 0;
-  std::uint64_t nodes_visited = 0;
-  std::uint64_t shadow_rays = 0;
-  std::uint32_t lights_tested_max = 0;  // per shading point, over pixels (pixel mean)
-};
+// Sums over a tile's pixels, every pass so far.
+using TileTotals = renderer::FramebufferTotals;
 
 struct TileRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixels, x1 and y1 exclusive
