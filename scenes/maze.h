@@ -20,9 +20,11 @@ inline constexpr float kMazeHalfWall = 0.15f;   // each cell owns half of a wall
 inline constexpr float kMazeWallHeight = 2.0f;
 inline constexpr float kStreetlightHeight = 3.2f;
 // Streetlights are Warn spots pointing down, as the thesis' maze lights were (Test 2.4, Table 11
-// measures them with cones of 25 to 90 degrees): a 75-degree cone with a cosine dropoff lights a
-// pool under each lamp and reaches the ground a few cells away only at grazing angles.
-inline constexpr float kStreetlightConeDegrees = 75.0f;
+// measures them with cones of 25 to 90 degrees): the thesis' default cone of 90 degrees (ch. 4.2.2)
+// with a cosine dropoff, so a lamp lights a pool under it and everything below its height, at
+// grazing angles, which keeps every light non-zero at every point in the corridors (what `rt`
+// tests) as with the thesis' maze.
+inline constexpr float kStreetlightConeDegrees = 90.0f;
 inline constexpr float kStreetlightDropoff = 1.0f;
 // Calibrated so that at tolerance 0.01 a shading point tests about 19 lights at the larger levels
 // (thesis Tables 9 and 14: 17 to 19).

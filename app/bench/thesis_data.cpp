@@ -120,7 +120,7 @@ const std::vector<ThesisPoint>& thesis_work_nodes(const std::string& scene) {
 }
 
 // Table 11 (maze) is per streetlight cone angle (25, 45, 75, 90 degrees), not per light count, so
-// it has no rows here; the report quotes its 75-degree column, the cone levrt's streetlights have.
+// it has no rows here; the report quotes its 90-degree column, the cone levrt's streetlights have.
 const std::vector<ThesisPoint>& thesis_error_avg_pct(const std::string& scene) {
   static const std::vector<ThesisPoint> building =
       grid({64, 256, 1024, 4096}, {0.002, 0.004, 0.006, 0.008, 0.01},
