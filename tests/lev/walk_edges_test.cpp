@@ -5,6 +5,7 @@
 // test selects over the flattened lights, in the same order and with the same floats.
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -71,23 +72,31 @@ void expect_walk_equals_brute_force(const lev::LightHierarchy& h, const std::vec
   kept += found.size();
 }
 
+// Refits h for each tolerance and compares the walk with the brute force at points straddling
+// the edge of every light's extent volume; counts the points and the lights kept.
+void check_every_edge(lev::LightHierarchy& h, std::initializer_list<float> tolerances, Random& r,
+                      std::uint64_t seed, std::size_t& points, std::size_t& kept) {
+  const std::vector<lev::Light> flat = lev::flatten_lights(h);
+  lev::WalkScratch scratch;
+  for (float tolerance : tolerances) {
+    lev::refit_hierarchy(h, tolerance);
+    for (const lev::Light& light : flat) {
+      for (const glm::vec3& p : points_near_the_edge(r, light, tolerance)) {
+        ++points;
+        expect_walk_equals_brute_force(h, flat, p, tolerance, scratch, seed, kept);
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+    }
+  }
+}
+
 TEST(WalkEdges, MatchesTheBruteForceAtTheVolumeEdges) {
   std::size_t points = 0, kept = 0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     Random r(seed);
     lev::LightHierarchy h = lev::build_hierarchy(lev_test::random_instanced_tree(r), 0.01f);
-    const std::vector<lev::Light> flat = lev::flatten_lights(h);
-    lev::WalkScratch scratch;
-    for (float tolerance : {1e-3f, 0.01f, 1.0f, 100.0f}) {
-      lev::refit_hierarchy(h, tolerance);
-      for (const lev::Light& light : flat) {
-        for (const glm::vec3& p : points_near_the_edge(r, light, tolerance)) {
-          ++points;
-          expect_walk_equals_brute_force(h, flat, p, tolerance, scratch, seed, kept);
-          if (HasFatalFailure()) return;
-        }
-      }
-    }
+    check_every_edge(h, {1e-3f, 0.01f, 1.0f, 100.0f}, r, seed, points, kept);
+    if (HasFatalFailure()) return;
   }
   // The points straddle the edges: many lights pass there and many do not.
   EXPECT_GT(points, 1000u);
@@ -113,18 +122,8 @@ TEST(WalkEdges, MatchesTheBruteForceThroughDeepNesting) {
     lev::LightTree tree;
     tree.root = lev::union_node(std::move(children));
     lev::LightHierarchy h = lev::build_hierarchy(tree, 0.01f);
-    const std::vector<lev::Light> flat = lev::flatten_lights(h);
-    lev::WalkScratch scratch;
-    for (float tolerance : {1e-2f, 3.0f}) {
-      lev::refit_hierarchy(h, tolerance);
-      for (const lev::Light& light : flat) {
-        for (const glm::vec3& p : points_near_the_edge(r, light, tolerance)) {
-          ++points;
-          expect_walk_equals_brute_force(h, flat, p, tolerance, scratch, seed, kept);
-          if (HasFatalFailure()) return;
-        }
-      }
-    }
+    check_every_edge(h, {1e-2f, 3.0f}, r, seed, points, kept);
+    if (HasFatalFailure()) return;
   }
   EXPECT_GT(points, 500u);
   EXPECT_GT(kept, points / 4);
