@@ -558,8 +558,7 @@ Section run_fraction(BenchRun& run, const std::string& out_dir) {
       "## fraction: lights tested against tolerance (thesis Tables 6-9)\n\n" + quick_note(run) +
       "Average lights selected for a shadow test per shading point (primary and secondary hits), "
       "as a fraction of all lights. At tolerance 0 every light is selected by definition. Counts "
-      "are exact averages of one deterministic render; `1/" +
-      std::to_string(c.subsample_stride * c.subsample_stride) +
+      "are exact averages of one deterministic render; `" + pixels_text(c.subsample_stride) +
       "` px marks the costly ones (a frame over " + format_fixed(c.max_full_frame_seconds, 0) +
       " s: tolerance 0 at many lights, the hall) taken on one pixel of every " +
       std::to_string(c.subsample_stride) + "x" + std::to_string(c.subsample_stride) +
@@ -648,8 +647,7 @@ Section run_error(BenchRun& run, const std::string& out_dir) {
       "## error: pixel error of lev against rt (thesis Tables 10, 11)\n\n" + quick_note(run) +
       "Per pixel |dR|+|dG|+|dB| on the 0..255 scale as a percentage of 765, against the rt image "
       "of the same "
-      "view; average and maximum over the pixels. Where the rt reference was subsampled (px `1/" +
-      std::to_string(c.subsample_stride * c.subsample_stride) +
+      "view; average and maximum over the pixels. Where the rt reference was subsampled (px `" + pixels_text(c.subsample_stride) +
       "`, as in the speed table) lev is taken on the same pixels, so the maximum is over fewer of "
       "them. The thesis' Table 11 measured the maze per streetlight cone (25 to 90 degrees) rather "
       "than per light count; levrt's streetlights are 90-degree Warn spots with a cosine dropoff, "

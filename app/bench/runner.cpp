@@ -98,7 +98,7 @@ std::string pixels_text(int stride) {
 
 BenchRun::BenchRun(SuiteConfig config, int threads)
     : config_(std::move(config)), threads_(threads) {
-  placeholder_.planned_only = true;
+  planned_measurement_.planned_only = true;
 }
 
 void BenchRun::start_running() {
@@ -224,10 +224,10 @@ std::vector<const Measurement*> BenchRun::measure_together(
     seconds_planned_ += predicted_seconds(r);
     jobs_planned_[experiment_] += 1;
   }
-  std::vector<const Measurement*> out(requests.size(), &placeholder_);
+  std::vector<const Measurement*> out(requests.size(), &planned_measurement_);
   if (!requests.empty()) {
-    placeholder_.request = requests.back();
-    placeholder_.lights = light_count(requests.back().scene, requests.back().level);
+    planned_measurement_.request = requests.back();
+    planned_measurement_.lights = light_count(requests.back().scene, requests.back().level);
   }
   return out;
 }

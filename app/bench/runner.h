@@ -174,7 +174,9 @@ class BenchRun {
   bool planning_ = true;
   std::map<Key, Measurement> cache_;
   std::map<Key, int> planned_runs_;
-  Measurement placeholder_;
+  // What the planning pass hands back for every request: no figures (planned_only), only the
+  // request and its light count, which experiments need to lay out their tables.
+  Measurement planned_measurement_;
   std::map<int, std::unique_ptr<LoadedScene>> loaded_;  // by level, all of loaded_name_
   std::string loaded_name_;
   std::string experiment_;

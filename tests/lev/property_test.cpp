@@ -4,6 +4,7 @@
 // twin.
 #include <cmath>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -39,11 +40,8 @@ TEST(Property, WalkNeverMissesAndNeverAddsALight) {
         lev::find_important_lights(h, p, scratch, found, c1);
         lev::find_important_lights(flattened, p, scratch, found_flat, c2);
         const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
-        ASSERT_EQ(found.size(), expected.size()) << "seed " << seed << " tau " << tau;
-        for (std::size_t i = 0; i < found.size(); ++i) {
-          ASSERT_EQ(found[i].position, expected[i].position) << "seed " << seed;
-          ASSERT_EQ(found[i].intensity, expected[i].intensity) << "seed " << seed;
-        }
+        lev_test::expect_same_lights(found, expected, "seed " + std::to_string(seed) + " tau " + std::to_string(tau));
+        if (HasFatalFailure()) return;
         ASSERT_EQ(found_flat.size(), expected.size()) << "seed " << seed << " tau " << tau;
       }
     }

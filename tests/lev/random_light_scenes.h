@@ -1,11 +1,15 @@
 // Random light scenes for property tests (fixed seeds): lights with intensities over six decades,
-// spotlights at the extremes of their parameters, and instanced trees of random similarities.
+// spotlights at the extremes of their parameters, and instanced trees of random similarities; and
+// the check that two light selections are the same lights, in the same order, bit for bit.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "lev/light_tree.h"
 
@@ -62,6 +66,17 @@ inline lev::LightTree random_instanced_tree(Random& r) {
   }
   tree.root = lev::union_node(std::move(roots));
   return tree;
+}
+
+// Same count, order, positions, intensities and directions; `context` names the case on failure.
+inline void expect_same_lights(const std::vector<lev::Light>& found, const std::vector<lev::Light>& expected,
+                               const std::string& context) {
+  ASSERT_EQ(found.size(), expected.size()) << context;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    ASSERT_EQ(found[i].position, expected[i].position) << context << ", light " << i;
+    ASSERT_EQ(found[i].intensity, expected[i].intensity) << context << ", light " << i;
+    ASSERT_EQ(found[i].direction, expected[i].direction) << context << ", light " << i;
+  }
 }
 
 }  // namespace lev_test

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -63,12 +64,8 @@ void expect_walk_equals_brute_force(const lev::LightHierarchy& h, const std::vec
   lev::WalkCounters counters;
   lev::find_important_lights(h, p, scratch, found, counters);
   const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tolerance);
-  ASSERT_EQ(found.size(), expected.size()) << "seed " << seed << " tolerance " << tolerance;
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    ASSERT_EQ(found[i].position, expected[i].position) << "seed " << seed;
-    ASSERT_EQ(found[i].intensity, expected[i].intensity) << "seed " << seed;
-    ASSERT_EQ(found[i].direction, expected[i].direction) << "seed " << seed;
-  }
+  lev_test::expect_same_lights(found, expected,
+                               "seed " + std::to_string(seed) + " tolerance " + std::to_string(tolerance));
   kept += found.size();
 }
 
