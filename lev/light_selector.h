@@ -4,6 +4,7 @@
 // stochastic LEV, LEV + AST) plug in here and get a per-sample random stream for free.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -55,6 +56,9 @@ struct AstCandidate {
 
 // Per-thread buffers a method may reuse between shading points.
 struct SelectorScratch {
+  // Raised by the caller to stop a render: long light loops read it every kCancelCheckLights
+  // lights and return early (the caller discards that result).
+  const std::atomic<bool>* cancel = nullptr;
   std::vector<Light> lights;
   WalkScratch walk;
   std::vector<AstCandidate> candidates;
@@ -78,11 +82,16 @@ class LightSelector {
 // terms drifts by up to 1% (each term is rounded against an ever larger sum), a double one stays
 // within one float rounding of the exact sum. Clamped to the largest float on the way back, as
 // irradiance() clamps each term, so that huge lights never overflow the conversion.
+// cancel (may be null) is read every kCancelCheckLights lights; once raised the sum so far is
+// returned, which the caller discards.
+inline constexpr std::size_t kCancelCheckLights = 4096;
 template <typename LightRange, typename Filter>
 glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
-                             SelectionCounters& counters) {
+                             SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr) {
   glm::dvec3 sum(0.0);
+  std::size_t seen = 0;
   for (const Light& light : lights) {
+    if (cancel && ++seen % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed)) break;
     if (!selected(light)) continue;
     ++counters.lights_tested;
     const glm::vec3 radiance = point.unshadowed_radiance(light);

@@ -11,7 +11,7 @@ glm::vec3 LevSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   find_important_lights(hierarchy_, point.position(), scratch.walk, scratch.lights, walk_counters);
   counters.nodes_visited += walk_counters.nodes_visited;
   return sum_visible_lights(
-      scratch.lights, [](const Light&) { return true; }, point, counters);
+      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
 }
 
 }  // namespace lev

@@ -6,11 +6,12 @@ namespace lev {
 
 RtSelector::RtSelector(const LightHierarchy& hierarchy) : world_lights_(flatten_lights(hierarchy)) {}
 
-glm::vec3 RtSelector::direct_radiance(ShadingPoint& point, SelectorScratch&,
+glm::vec3 RtSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                       SelectionCounters& counters) const {
   const glm::vec3 x = point.position();
   return sum_visible_lights(
-      world_lights_, [&](const Light& l) { return is_important(l, x, 0.0f); }, point, counters);
+      world_lights_, [&](const Light& l) { return is_important(l, x, 0.0f); }, point, counters,
+      scratch.cancel);
 }
 
 }  // namespace lev

@@ -2,17 +2,27 @@
 
 #include <cmath>
 
+#include "renderer/direction.h"
+
 namespace renderer {
 
+CameraBasis camera_basis(const Camera& camera) {
+  CameraBasis basis;
+  basis.forward = robust_normalize(camera.target - camera.position);
+  basis.right = robust_normalize(glm::cross(basis.forward, camera.up));
+  if (basis.right == glm::vec3(0.0f)) return CameraBasis{};
+  basis.up = glm::cross(basis.right, basis.forward);
+  return basis;
+}
+
 Ray primary_ray(const Camera& camera, int width, int height, float image_x, float image_y) {
-  const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  const glm::vec3 up = glm::cross(right, forward);
+  const CameraBasis basis = camera_basis(camera);
+  const glm::vec3 &forward = basis.forward, &right = basis.right, &up = basis.up;
   const float half_h = std::tan(glm::radians(camera.vertical_fov_deg) * 0.5f);
   const float half_w = half_h * static_cast<float>(width) / static_cast<float>(height);
   const float sx = (2.0f * image_x / static_cast<float>(width) - 1.0f) * half_w;
   const float sy = (1.0f - 2.0f * image_y / static_cast<float>(height)) * half_h;
-  return {camera.position, glm::normalize(forward + sx * right + sy * up)};
+  return {camera.position, robust_normalize(forward + sx * right + sy * up)};
 }
 
 }  // namespace renderer

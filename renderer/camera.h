@@ -17,7 +17,16 @@ struct Ray {
   glm::vec3 direction{0.0f, 0.0f, 1.0f};  // unit
 };
 
+// The camera's orthonormal frame as the render threads compute it (direction.h): forward, right
+// and up are zero when the target equals the position or up is zero or parallel to the view, in
+// the float mode of the caller. Scene validation calls it in the render mode to refuse such cameras.
+struct CameraBasis {
+  glm::vec3 forward{0.0f}, right{0.0f}, up{0.0f};
+};
+CameraBasis camera_basis(const Camera& camera);
+
 // (image_x, image_y) in pixels from the top-left corner, fractional (0.5 = pixel centre).
+// The direction is zero (the ray is not cast) when the camera has no basis.
 Ray primary_ray(const Camera& camera, int width, int height, float image_x, float image_y);
 
 }  // namespace renderer

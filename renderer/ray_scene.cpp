@@ -1,9 +1,12 @@
 #include "renderer/ray_scene.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "renderer/direction.h"
 
 namespace renderer {
 
@@ -142,6 +145,8 @@ RTCRayHit make_ray_hit(const Ray& ray) {
 }  // namespace
 
 float RayScene::closest_distance(const Ray& ray) const {
+  assert(castable(ray.origin, ray.direction));
+  if (!castable(ray.origin, ray.direction)) return std::numeric_limits<float>::infinity();
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh = make_ray_hit(ray);
@@ -150,6 +155,8 @@ float RayScene::closest_distance(const Ray& ray) const {
 }
 
 bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
+  assert(castable(ray.origin, ray.direction));
+  if (!castable(ray.origin, ray.direction)) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh = make_ray_hit(ray);
@@ -160,8 +167,10 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   const Prototype& prototype = geometry_.prototypes[placed.prototype];
   const glm::mat3& rotation = placed.world_from_object.rotation;
   // Embree reports Ng in the instance's object space; similarities need only the rotation.
-  glm::vec3 ng = rotation * glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-  ng = glm::normalize(ng);
+  // Ng is the unnormalised cross product of two edges: 1e-20 for a 1e-10 triangle, 1e24 for a
+  // 1e12 one, both beyond what glm::normalize survives in the render mode.
+  const glm::vec3 ng = robust_normalize(rotation * glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+  if (ng == glm::vec3(0.0f)) return false;
   glm::vec3 ns = ng;
   if (rh.hit.geomID < prototype.meshes.size()) {
     const TriangleMesh& mesh = prototype.meshes[rh.hit.geomID];
@@ -169,8 +178,8 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     const float u = rh.hit.u, v = rh.hit.v;
     const glm::vec3 n =
         (1.0f - u - v) * mesh.normals[tri.x] + u * mesh.normals[tri.y] + v * mesh.normals[tri.z];
-    const float len = glm::length(n);
-    if (len > 0.0f) ns = rotation * (n / len);
+    const glm::vec3 unit = robust_normalize(n);
+    if (unit != glm::vec3(0.0f)) ns = rotation * unit;
     hit.material = mesh.material;
   } else {
     hit.material = prototype.spheres[rh.hit.primID].material;
@@ -185,6 +194,9 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
 }
 
 bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const {
+  // A shadow ray that cannot be cast lets no light through: it contributes nothing.
+  assert(castable(origin, direction) && !std::isnan(max_distance));
+  if (!castable(origin, direction) || std::isnan(max_distance)) return true;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r;

@@ -48,17 +48,30 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
   return s.next_u64();
 }
 
-void render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch) {
+// One sample for each pixel of the tile, or nothing: the samples are made in a local buffer and
+// added to the framebuffer only when the whole tile is done, so a tile cancelled mid-way (the
+// flag is read per row and in the recursion) leaves no pixel with a sample a resumed pass would
+// add again. Returns false when cancelled.
+bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, const std::atomic<bool>* cancel) {
   DenormalModeGuard denormals;
   const RenderSettings& rs = state.settings;
   int x0, y0, x1, y1;
   render_tile_rect(state, tile, x0, y0, x1, y1);
-  Framebuffer& fb = state.framebuffer;
-  TraceContext context{state.scene, state.rays, *state.selector, scratch, rs.max_depth,
-                       state.ray_log ? &state.ray_log->tiles[static_cast<std::size_t>(tile)] : nullptr};
+  std::vector<LoggedRay>* ray_log = state.ray_log ? &state.ray_log->tiles[static_cast<std::size_t>(tile)] : nullptr;
+  const std::size_t logged_before = ray_log ? ray_log->size() : 0;
+  scratch.cancel = cancel;
+  TraceContext context{state.scene, state.rays, *state.selector, scratch, rs.max_depth, ray_log, cancel};
+  struct PixelSample {
+    std::size_t pixel;
+    glm::vec3 radiance;
+    PathCounters counters;
+  };
+  std::vector<PixelSample> samples;
+  samples.reserve(static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0));
   const auto pass = static_cast<std::uint64_t>(state.passes_done);
   for (int y = y0; y < y1; ++y) {
     if (y % rs.pixel_stride != 0) continue;
+    if (cancel && cancel->load(std::memory_order_relaxed)) break;
     for (int x = x0; x < x1; ++x) {
       if (x % rs.pixel_stride != 0) continue;
       const auto pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(rs.width) +
@@ -72,16 +85,25 @@ void render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch) {
       scratch.random.state = random.next_u64();
       const Ray ray = primary_ray(state.scene.camera, rs.width, rs.height,
                                   static_cast<float>(x) + jx, static_cast<float>(y) + jy);
-      PathCounters counters;
-      const glm::vec3 radiance = trace_radiance(context, ray, 0, counters);
-      fb.radiance_sum[pixel] += radiance;
-      fb.samples[pixel] += 1;
-      fb.shading_points[pixel] += counters.shading_points;
-      fb.lights_tested[pixel] += counters.selection.lights_tested;
-      fb.nodes_visited[pixel] += counters.selection.nodes_visited;
-      fb.shadow_rays[pixel] += counters.selection.shadow_rays;
+      PixelSample& sample = samples.emplace_back();
+      sample.pixel = pixel;
+      sample.radiance = trace_radiance(context, ray, 0, sample.counters);
     }
   }
+  if (cancel && cancel->load(std::memory_order_relaxed)) {
+    if (ray_log) ray_log->resize(logged_before);
+    return false;
+  }
+  Framebuffer& fb = state.framebuffer;
+  for (const PixelSample& sample : samples) {
+    fb.radiance_sum[sample.pixel] += sample.radiance;
+    fb.samples[sample.pixel] += 1;
+    fb.shading_points[sample.pixel] += sample.counters.shading_points;
+    fb.lights_tested[sample.pixel] += sample.counters.selection.lights_tested;
+    fb.nodes_visited[sample.pixel] += sample.counters.selection.nodes_visited;
+    fb.shadow_rays[sample.pixel] += sample.counters.selection.shadow_rays;
+  }
+  return true;
 }
 
 }  // namespace
@@ -128,7 +150,11 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const Tile
             int& passes = state.tile_passes[static_cast<std::size_t>(tile)];
             if (passes > state.passes_done) continue;
             state.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
-            render_tile(state, tile, state.scratch.local());
+            if (!render_tile(state, tile, state.scratch.local(), cancel)) {
+              state.tiles[tile].store(TileStatus::waiting, std::memory_order_release);
+              cancelled.store(true, std::memory_order_relaxed);
+              break;
+            }
             passes += 1;
             if (on_tile_done) on_tile_done(tile);
             state.tiles[tile].store(TileStatus::done, std::memory_order_release);

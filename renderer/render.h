@@ -2,7 +2,8 @@
 // a RenderState plus render_pass, which renders one more sample per pixel over all tiles on a
 // oneTBB arena. Pass 0 samples pixel centres, pass k > 0 a jittered position drawn from the
 // (pixel, pass) random stream, so images never depend on thread count or tile order. A pass can
-// be cancelled between tiles; finished tiles keep their sample.
+// be cancelled at any time (the flag is read between tiles, per row, in the recursion and every
+// few thousand lights); finished tiles keep their sample, an interrupted tile adds none.
 #pragma once
 
 #include <atomic>

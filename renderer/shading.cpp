@@ -1,6 +1,9 @@
 #include "renderer/shading.h"
 
+#include <cassert>
 #include <cmath>
+
+#include "renderer/direction.h"
 
 namespace renderer {
 namespace {
@@ -44,6 +47,7 @@ class SurfacePoint final : public lev::ShadingPoint {
     // Stop just short of the light so a light resting on a surface is not hidden by it.
     const glm::vec3 direction = to_light / d;
     const float max_distance = d * (1.0f - 1e-5f);
+    if (!castable(shadow_origin_, direction)) return false;
     if (ray_log_) ray_log_->push_back({shadow_origin_, max_distance, direction, RayKind::shadow});
     return !rays_.occluded(shadow_origin_, direction, max_distance);
   }
@@ -57,7 +61,12 @@ class SurfacePoint final : public lev::ShadingPoint {
 
 }  // namespace
 
-glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathCounters& counters) {
+glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathCounters& counters,
+                         float path_weight) {
+  // A ray the float mode degenerated (a NaN or zero direction) is not cast and adds nothing.
+  assert(castable(ray.origin, ray.direction));
+  if (!castable(ray.origin, ray.direction)) return glm::vec3(0.0f);
+  if (context.cancel && context.cancel->load(std::memory_order_relaxed)) return glm::vec3(0.0f);
   SurfaceHit hit;
   if (context.ray_log) context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
   if (!context.rays.intersect(ray, hit)) return context.scene.background;
@@ -75,23 +84,29 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
 
   if (depth >= context.max_depth) return radiance;
   const float cos_i = glm::dot(to_viewer, facing);
-  if (material.kr > 0.0f) {
+  const float reflected_weight = path_weight * material.kr;
+  if (material.kr > 0.0f && reflected_weight >= kSmallestVisibleWeight) {
     const Ray reflected{offset_ray_origin(hit.position, side, hit.distance),
-                        glm::normalize(2.0f * cos_i * facing - to_viewer)};
-    radiance += material.kr * trace_radiance(context, reflected, depth + 1, counters);
+                        robust_normalize(2.0f * cos_i * facing - to_viewer)};
+    if (castable(reflected.origin, reflected.direction)) {
+      radiance += material.kr * trace_radiance(context, reflected, depth + 1, counters, reflected_weight);
+    }
   }
-  if (material.kt > 0.0f) {
+  const float transmitted_weight = path_weight * material.kt;
+  if (material.kt > 0.0f && transmitted_weight >= kSmallestVisibleWeight) {
     const float eta = entering ? 1.0f / material.ior : material.ior;
     const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
     Ray transmitted;
     if (k < 0.0f) {  // total internal reflection
       transmitted = {offset_ray_origin(hit.position, side, hit.distance),
-                     glm::normalize(2.0f * cos_i * facing - to_viewer)};
+                     robust_normalize(2.0f * cos_i * facing - to_viewer)};
     } else {
       transmitted = {offset_ray_origin(hit.position, -side, hit.distance),
-                     glm::normalize(eta * ray.direction + (eta * cos_i - std::sqrt(k)) * facing)};
+                     robust_normalize(eta * ray.direction + (eta * cos_i - std::sqrt(k)) * facing)};
     }
-    radiance += material.kt * trace_radiance(context, transmitted, depth + 1, counters);
+    if (castable(transmitted.origin, transmitted.direction)) {
+      radiance += material.kt * trace_radiance(context, transmitted, depth + 1, counters, transmitted_weight);
+    }
   }
   return radiance;
 }

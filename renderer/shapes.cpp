@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "renderer/direction.h"
+
 namespace renderer {
 namespace {
 
@@ -19,14 +21,14 @@ void add_face(TriangleMesh& mesh, const glm::vec3& p0, const glm::vec3& p1, cons
 // Any unit vector perpendicular to n.
 glm::vec3 perpendicular(const glm::vec3& n) {
   const glm::vec3 helper = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  return glm::normalize(glm::cross(n, helper));
+  return robust_normalize(glm::cross(n, helper));
 }
 
 }  // namespace
 
 void add_quad(TriangleMesh& mesh, const glm::vec3& corner, const glm::vec3& edge_u,
               const glm::vec3& edge_v) {
-  const glm::vec3 n = glm::normalize(glm::cross(edge_u, edge_v));
+  const glm::vec3 n = robust_normalize(glm::cross(edge_u, edge_v));
   add_face(mesh, corner, corner + edge_u, corner + edge_u + edge_v, corner + edge_v, n);
 }
 
@@ -43,7 +45,7 @@ void add_box(TriangleMesh& mesh, const glm::vec3& lo, const glm::vec3& hi) {
 
 void add_cylinder(TriangleMesh& mesh, const glm::vec3& a, const glm::vec3& b, float radius,
                   int segments) {
-  const glm::vec3 axis = glm::normalize(b - a);
+  const glm::vec3 axis = robust_normalize(b - a);
   const glm::vec3 u = perpendicular(axis), v = glm::cross(axis, u);
   const float step = 2.0f * static_cast<float>(M_PI) / static_cast<float>(segments);
   for (int i = 0; i < segments; ++i) {

@@ -11,6 +11,9 @@
 #include <vector>
 
 #include "lev/light_bvh.h"
+#include "renderer/camera.h"
+#include "renderer/denormal_mode.h"
+#include "renderer/direction.h"
 #include "renderer/shapes.h"
 
 namespace scenes {
@@ -146,10 +149,19 @@ class Analysis {
     check_point("/camera/position", c.position);
     check_point("/camera/target", c.target);
     check_point("/camera/up", c.up);
-    const glm::vec3 forward = c.target - c.position;
-    if (!(glm::length(forward) > 0.0f)) fail("/camera/target", "must differ from the position " + vec_text(c.target));
-    const glm::vec3 side = glm::cross(glm::normalize(forward), c.up);
-    if (!(glm::length(side) > 1e-6f * glm::length(c.up))) {
+    // The frame is computed as the render threads compute it, in their float mode (flush to
+    // zero): a camera that degenerates there (a target 1e-40 from the position, up 1e-39) is
+    // refused here rather than casting NaN rays.
+    renderer::CameraBasis basis;
+    glm::vec3 forward(0.0f), unit_up(0.0f);
+    {
+      renderer::DenormalModeGuard render_float_mode;
+      basis = renderer::camera_basis(c);
+      forward = renderer::robust_normalize(c.target - c.position);
+      unit_up = renderer::robust_normalize(c.up);
+    }
+    if (forward == glm::vec3(0.0f)) fail("/camera/target", "must differ from the position " + vec_text(c.target));
+    if (basis.right == glm::vec3(0.0f) || !(glm::length(glm::cross(forward, unit_up)) > 1e-6f)) {
       fail("/camera/up", "must not be zero or parallel to the view direction " + vec_text(c.up));
     }
     if (!std::isfinite(c.vertical_fov_deg) || !(c.vertical_fov_deg > 0.0f) || !(c.vertical_fov_deg < 180.0f)) {
@@ -175,7 +187,11 @@ class Analysis {
       check_non_negative(path + "/shininess", m.shininess, 1e6f);
       check_non_negative(path + "/kr", m.kr, 1e3f);
       check_non_negative(path + "/kt", m.kt, 1e3f);
-      check_positive(path + "/ior", m.ior, 100.0f);
+      // Below 0.01 the refraction ratio's square overflows (1/ior^2), and a head-on ray of ior
+      // 1e-30 computed inf * 0; [0.01, 100] is symmetric and holds every physical medium.
+      if (!std::isfinite(m.ior) || m.ior < 0.01f || m.ior > 100.0f) {
+        fail(path + "/ior", "must be in [0.01, 100] (" + number_text(m.ior) + ")");
+      }
     }
   }
 

@@ -31,9 +31,14 @@ bool catches_termination_signals(pid_t pid) {
   return false;
 }
 
+// Exit code of a process that did not exit within the bound after the signal (it is then killed).
+constexpr int kIgnoredSignal = 2000;
+
 // Runs levrt with args, signals it `delay` after its handlers are installed, and returns its
-// exit code (1000 + the signal when the signal killed it, so that is never mistaken for 130).
-int interrupt_after(const std::vector<std::string>& args, int signal_number, std::chrono::milliseconds delay) {
+// exit code (1000 + the signal when the signal killed it, so that is never mistaken for 130;
+// kIgnoredSignal when it was still running `exit_bound` after the signal).
+int interrupt_after(const std::vector<std::string>& args, int signal_number, std::chrono::milliseconds delay,
+                    std::chrono::milliseconds exit_bound = std::chrono::seconds(60)) {
   const pid_t pid = fork();
   if (pid == 0) {
     std::vector<char*> argv;
@@ -48,8 +53,16 @@ int interrupt_after(const std::vector<std::string>& args, int signal_number, std
   }
   std::this_thread::sleep_for(delay);
   kill(pid, signal_number);
+  const auto exit_deadline = std::chrono::steady_clock::now() + exit_bound;
   int status = 0;
-  waitpid(pid, &status, 0);
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > exit_deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      return kIgnoredSignal;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
 }
 
@@ -72,6 +85,30 @@ TEST(Interrupt, SignalDuringRenderLeavesNoOutput) {
       fs::remove_all(dir);
     }
   }
+}
+
+// A glass box reflecting and refracting with weight 1 at every hit (kr = kt = 1) at depth 64: a
+// tree of 2^64 rays per pixel. Before the cancel was read inside tiles and the recursion, such a
+// render ignored SIGINT and SIGTERM for minutes.
+TEST(Interrupt, SignalDuringADepthBombExitsPromptly) {
+  const fs::path dir = fs::temp_directory_path() / "levrt_interrupt_depth_bomb";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "out");
+  const fs::path scene = dir / "bomb.json";
+  std::ofstream(scene) << R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0]},
+    "materials": [{"name": "bomb", "kd": 0.1, "kr": 1, "kt": 1, "ior": 1.5}],
+    "root": {"type": "union", "children": [
+      {"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]},
+      {"type": "affine", "translate": [1, -2, 6], "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
+  for (int sig : {SIGINT, SIGTERM}) {
+    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", scene.string(), "--depth", "64", "--width", "64",
+                               "--height", "48", "--out", (dir / "out" / "i.png").string()},
+                              sig, std::chrono::seconds(1), std::chrono::seconds(2)),
+              130)
+        << "signal " << sig;
+    EXPECT_TRUE(fs::is_empty(dir / "out")) << "signal " << sig;
+  }
+  fs::remove_all(dir);
 }
 
 TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
