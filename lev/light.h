@@ -26,9 +26,12 @@ struct Light {
 };
 
 // Distances below this are clamped when evaluating 1/d^2: a shading point that sits on the light
-// gets the (finite) irradiance of a point 1e-6 units away instead of Inf/NaN. Clamping only lowers
-// irradiance, so every extent volume stays conservative.
-inline constexpr float kMinLightDistance = 1e-6f;
+// gets the (finite) irradiance of a point 1e-18 units away instead of Inf/NaN. Clamping only
+// lowers irradiance, so every extent volume stays conservative. 1e-18 keeps d^2 (1e-36) a normal
+// float, which the render threads' flush-to-zero leaves alone, and lies far below any distance in
+// a scene within the scale limits (a 1e-6 clamp dimmed every light of a scene scaled by 1e-6
+// that stood less than a unit, scaled, from a surface).
+inline constexpr float kMinLightDistance = 1e-18f;
 
 Light make_point_light(const glm::vec3& position, const glm::vec3& intensity);
 // cone_half_angle_rad in [0, pi]; a cone of pi lights every direction. dropoff >= 0.

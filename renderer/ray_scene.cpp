@@ -10,10 +10,17 @@
 
 namespace renderer {
 
-glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude) {
+glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude,
+                            float offset_floor) {
   const glm::vec3 a = glm::abs(position);
   const float magnitude = std::max(std::max(a.x, a.y), a.z) + extra_magnitude;
-  return position + normal * (1e-5f + 4e-6f * magnitude);
+  return position + normal * (offset_floor + 4e-6f * magnitude);
+}
+
+float offset_floor_for_extent(float extent) {
+  constexpr float kUnitSceneFloor = 1e-5f;
+  if (!(extent < 1.0f)) return kUnitSceneFloor;
+  return kUnitSceneFloor * std::max(extent, std::numeric_limits<float>::min());
 }
 
 void RayScene::record_error(void* user, RTCError code, const char* message) {
@@ -113,6 +120,12 @@ RayScene::RayScene(const Geometry& geometry)
   }
   rtcCommitScene(top_);
   throw_if_error("embree scene build");
+  RTCBounds bounds;
+  rtcGetSceneBounds(top_, &bounds);
+  const float extent = std::max({bounds.upper_x - bounds.lower_x, bounds.upper_y - bounds.lower_y,
+                                 bounds.upper_z - bounds.lower_z});
+  // An empty scene reports inverted bounds: it casts no secondary ray, any floor will do.
+  offset_floor_ = offset_floor_for_extent(extent > 0.0f ? extent : 1.0f);
 }
 
 RayScene::~RayScene() {

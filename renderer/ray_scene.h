@@ -25,9 +25,17 @@ struct SurfaceHit {
   std::uint32_t material = 0;
 };
 
-// Origin offset along the normal that keeps a secondary ray off the surface it leaves: a fixed
-// floor plus ~32 float ulps of the largest coordinate, so it holds at large coordinates too.
-glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude);
+// Origin offset along the normal that keeps a secondary ray off the surface it leaves: a floor
+// (RayScene::offset_floor, which follows the scene's size) plus ~32 float ulps of the largest
+// coordinate, so it holds at large coordinates too.
+glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude,
+                            float offset_floor);
+
+// The offset floor of a scene whose geometry spans extent units (its bounding box's largest
+// side): 1e-5 for scenes of a unit or more (every built-in model; their images keep every bit),
+// 1e-5 * extent below, so a scene scaled by 1e-6 is offset as it is at its own size instead of
+// by half its width.
+float offset_floor_for_extent(float extent);
 
 class RayScene {
  public:
@@ -45,6 +53,7 @@ class RayScene {
   float closest_distance(const Ray& ray) const;
 
   std::size_t instance_count() const { return instances_.size(); }
+  float offset_floor() const { return offset_floor_; }
 
  private:
   struct ErrorLog {
@@ -58,6 +67,7 @@ class RayScene {
   RTCDevice device_ = nullptr;
   RTCScene top_ = nullptr;
   std::vector<RTCScene> prototype_scenes_;
+  float offset_floor_ = 1e-5f;
   const Geometry& geometry_;
   std::vector<PlacedPrototype> instances_;
 };

@@ -17,7 +17,7 @@ class SurfacePoint final : public lev::ShadingPoint {
                std::vector<LoggedRay>* ray_log)
       : rays_(rays), material_(material), normal_(normal), to_viewer_(to_viewer),
         position_(hit.position),
-        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance)), ray_log_(ray_log) {}
+        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance, rays.offset_floor())), ray_log_(ray_log) {}
 
   glm::vec3 position() const override { return position_; }
 
@@ -86,7 +86,7 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   const float cos_i = glm::dot(to_viewer, facing);
   const float reflected_weight = path_weight * material.kr;
   if (material.kr > 0.0f && reflected_weight >= kSmallestVisibleWeight) {
-    const Ray reflected{offset_ray_origin(hit.position, side, hit.distance),
+    const Ray reflected{offset_ray_origin(hit.position, side, hit.distance, context.rays.offset_floor()),
                         robust_normalize(2.0f * cos_i * facing - to_viewer)};
     if (castable(reflected.origin, reflected.direction)) {
       radiance += material.kr * trace_radiance(context, reflected, depth + 1, counters, reflected_weight);
@@ -98,10 +98,10 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
     const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
     Ray transmitted;
     if (k < 0.0f) {  // total internal reflection
-      transmitted = {offset_ray_origin(hit.position, side, hit.distance),
+      transmitted = {offset_ray_origin(hit.position, side, hit.distance, context.rays.offset_floor()),
                      robust_normalize(2.0f * cos_i * facing - to_viewer)};
     } else {
-      transmitted = {offset_ray_origin(hit.position, -side, hit.distance),
+      transmitted = {offset_ray_origin(hit.position, -side, hit.distance, context.rays.offset_floor()),
                      robust_normalize(eta * ray.direction + (eta * cos_i - std::sqrt(k)) * facing)};
     }
     if (castable(transmitted.origin, transmitted.direction)) {

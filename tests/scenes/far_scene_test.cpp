@@ -59,9 +59,9 @@ scenes::Affine far_away() {
   return a;
 }
 
-scenes::Affine tiny() {
+scenes::Affine scaled(float scale) {
   scenes::Affine a;
-  a.scale = 1e-3f;
+  a.scale = scale;
   return a;
 }
 
@@ -117,7 +117,44 @@ void expect_same_picture(const scenes::Affine& placement, const std::string& lab
 // units at 1e6, and hit points were 0.0625 apart.
 TEST(FarScene, TranslatedNearOneMillionMatchesTheOrigin) { expect_same_picture(far_away(), "translated"); }
 
-TEST(FarScene, ScaledToOneThousandthMatchesTheOrigin) { expect_same_picture(tiny(), "scaled"); }
+TEST(FarScene, ScaledToOneThousandthMatchesTheOrigin) { expect_same_picture(scaled(1e-3f), "scaled"); }
+
+TEST(FarScene, ScaledToOneMillionthMatchesTheOrigin) { expect_same_picture(scaled(1e-6f), "scaled by 1e-6"); }
+
+TEST(FarScene, ScaledByTenThousandMatchesTheOrigin) { expect_same_picture(scaled(1e4f), "scaled by 1e4"); }
+
+// A floor quad lit from above and seen at 45 degrees; the quad's edges are `edge` units under an
+// affine scale of `scale` (the camera and light are where the unscaled floor has them).
+scenes::SceneDescription floor_scene(float edge, float scale) {
+  scenes::SceneDescription d;
+  d.name = "floor";
+  const std::uint32_t grey = scenes::add_material(d, "grey", renderer::Material{});
+  scenes::Affine placement;
+  placement.scale = scale;
+  std::vector<scenes::SceneNode> content;
+  content.push_back(scenes::affine_node(
+      placement, scenes::quad_node(grey, {-edge / 2, -edge / 2, 0}, {edge, 0, 0}, {0, edge, 0})));
+  content.push_back(scenes::translate_node({0, 0, 5e4f}, scenes::point_light_node({2.5e9f, 2.5e9f, 2.5e9f})));
+  d.root = scenes::union_node(std::move(content));
+  d.camera.position = {0, -1e5f, 1e5f};
+  d.camera.target = {0, 0, 0};
+  return d;
+}
+
+// A quad of 1e4 under scale 1e6 spans 1e10: the cross product of its edges (1e20) squared to
+// +inf and its normal came out zero, so it rendered unlit. It must render as a 1e6 floor does.
+TEST(FarScene, HugeQuadUnderScaleOneMillionIsLitLikeTheUnscaledFloor) {
+  for (lev::Method method : {lev::Method::rt, lev::Method::lev}) {
+    const std::vector<std::uint8_t> reference = render(floor_scene(1e6f, 1.0f), method);
+    const std::vector<std::uint8_t> image = render(floor_scene(1e4f, 1e6f), method);
+    int lit = 0;
+    for (std::uint8_t v : reference) lit += v > 0 ? 1 : 0;
+    EXPECT_GT(lit, static_cast<int>(reference.size() / 2));
+    const Difference d = compare(image, reference);
+    EXPECT_LT(d.differing_fraction, 0.005) << lev::method_info(method).name;
+    EXPECT_EQ(d.darker, 0) << lev::method_info(method).name;
+  }
+}
 
 // The far scene is traced around its camera: camera, geometry and lights are moved by the same
 // whole-unit origin, and the lights land exactly where the origin scene has them, shifted.
