@@ -1,6 +1,8 @@
 #include "renderer/image_io.h"
 
+#include <fcntl.h>
 #include <pthread.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -16,10 +18,6 @@
 
 namespace renderer {
 namespace {
-
-std::string temporary_name(const std::string& path) {
-  return path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
-}
 
 // Blocks the termination signals while the temporary exists, so Ctrl-C cannot leave it behind;
 // a signal that arrives meanwhile is delivered when the file is complete and renamed.
@@ -39,22 +37,92 @@ class TerminationSignalsBlocked {
   sigset_t saved_;
 };
 
-void write_bytes_atomically(const std::string& path, const std::string& bytes) {
+[[noreturn]] void throw_errno(const std::string& path, const char* what, int error) {
+  throw std::runtime_error(path + ": " + what + " (" + std::strerror(error) + ")");
+}
+
+// write() until done; returns 0 or the errno of the failure. SIGXFSZ is ignored for the call, so
+// a file-size limit (ulimit -f) comes back as EFBIG instead of killing the process with the
+// temporary file left behind.
+int write_all(int fd, const std::string& bytes) {
+  struct sigaction ignore {}, saved {};
+  ignore.sa_handler = SIG_IGN;
+  sigemptyset(&ignore.sa_mask);
+  sigaction(SIGXFSZ, &ignore, &saved);
+  int error = 0;
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = n < 0 ? errno : EIO;
+      break;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  sigaction(SIGXFSZ, &saved, nullptr);
+  return error;
+}
+
+// An existing pipe, device or socket is written in place: renaming over it would replace the
+// special file (as root, /dev/null itself) and nothing would reach its reader.
+void write_in_place(const std::string& path, const std::string& bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) throw_errno(path, "cannot write", errno);
+  const int error = write_all(fd, bytes);
+  const int close_error = ::close(fd) != 0 ? errno : 0;
+  if (error != 0) throw_errno(path, "write failed", error);
+  if (close_error != 0) throw_errno(path, "write failed", close_error);
+}
+
+void write_to_standard_output(const std::string& bytes) {
+  std::fflush(stdout);
+  const int error = write_all(STDOUT_FILENO, bytes);
+  if (error != 0) throw_errno("-", "write to standard output failed", error);
+}
+
+// A regular file or a new name: the bytes go to a temporary in the target's own folder (so the
+// rename is atomic) and are renamed onto it when complete. A symlink is followed, never
+// replaced: the rename lands on the file it points to.
+void write_by_rename(const std::string& path, const std::filesystem::path& target, const std::string& bytes) {
   const TerminationSignalsBlocked blocked;
-  const std::string tmp = temporary_name(path);
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!written || !closed) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": write failed");
+  const std::filesystem::path folder = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+  // A short fixed name: a target name near the 255-byte limit must not overflow the temporary's.
+  std::string tmp = (folder / (".levrt-" + std::to_string(static_cast<long>(::getpid())) + ".XXXXXX")).string();
+  const int fd = ::mkstemp(tmp.data());
+  if (fd < 0) throw_errno(path, "cannot write", errno);
+  const int error = write_all(fd, bytes);
+  const int close_error = ::close(fd) != 0 ? errno : 0;
+  if (error != 0 || close_error != 0) {
+    ::unlink(tmp.c_str());
+    throw_errno(path, "write failed", error != 0 ? error : close_error);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot rename into place (" + reason + ")");
+  // mkstemp makes the file 0600; an output gets the usual mode for new files.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(tmp.c_str(), 0666 & ~mask);
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
+    const int rename_error = errno;
+    ::unlink(tmp.c_str());
+    throw_errno(path, "cannot rename into place", rename_error);
   }
+}
+
+void write_output_bytes(const std::string& path, const std::string& bytes) {
+  namespace fs = std::filesystem;
+  if (path == kStandardOutputName) {
+    write_to_standard_output(bytes);
+    return;
+  }
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);  // follows symlinks
+  if (!ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
+    write_in_place(path, bytes);
+    return;
+  }
+  const fs::path target = fs::is_symlink(fs::symlink_status(path, ec)) ? fs::weakly_canonical(fs::absolute(path), ec)
+                                                                       : fs::path(path);
+  write_by_rename(path, ec ? fs::path(path) : target, bytes);
 }
 
 void append_to_string(void* context, void* data, int size) {
@@ -71,11 +139,11 @@ void write_png_rgb8(const std::string& path, int width, int height, const std::v
   if (!stbi_write_png_to_func(append_to_string, &png, width, height, 3, rgb.data(), width * 3)) {
     throw std::runtime_error(path + ": PNG encoding failed");
   }
-  write_bytes_atomically(path, png);
+  write_output_bytes(path, png);
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  write_bytes_atomically(path, text);
+  write_output_bytes(path, text);
 }
 
 void publish_staging_folder(const std::string& staging, const std::string& destination) {
