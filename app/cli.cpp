@@ -107,7 +107,8 @@ int run_cli(int argc, char** argv) {
   add_setting_flags(*render, render_flags);
   std::string lights_text;
   CLI::Option* lights_option =
-      render->add_option("--lights", lights_text, "light count (selects the level with that many lights)");
+      render->add_option("--lights", lights_text, "light count (selects the level with that many lights)")
+          ->type_name("COUNT");
   RenderOutputs outputs;
   const std::vector<CLI::Option*> output_options = {
       render->add_option("--out", outputs.image, "image PNG (- for standard output)")->type_name("FILE.png"),
@@ -117,7 +118,8 @@ int run_cli(int argc, char** argv) {
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   CLI::Option* reference_option =
-      render->add_option("--reference", reference, "also render this method's image and report pixel errors (rt)");
+      render->add_option("--reference", reference, "also render this method's image and report pixel errors (rt)")
+          ->type_name("{rt}");
 
   CLI::App* export_command = cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
   ExportFlags export_flags;
@@ -134,7 +136,8 @@ int run_cli(int argc, char** argv) {
   add_setting_flags(*view, view_flags);
   std::string view_lights_text;
   CLI::Option* view_lights_option =
-      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)");
+      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
+          ->type_name("COUNT");
   ViewFlags view_options;
   add_view_flags(*view, view_options);
 

@@ -37,12 +37,13 @@ bool is_existing_special_file(const fs::path& p) {
 
 // The identity of an output for the same-file check: device and inode for an existing file (so
 // hard links and symlinks match), else the absolute path with symlinks and ".." resolved.
-std::string output_identity(const fs::path& p) {
+std::string output_identity(const std::string& path) {
   struct stat st {};
-  if (::stat(p.c_str(), &st) == 0) return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  if (::stat(path.c_str(), &st) == 0) return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
   std::error_code ec;
-  const fs::path resolved = fs::weakly_canonical(fs::absolute(p, ec), ec);
-  return "path " + (ec ? p.string() : resolved.string());
+  const fs::path target = renderer::output_target(path);
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  return "path " + (ec ? target.string() : resolved.string());
 }
 
 void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
@@ -64,7 +65,7 @@ void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
       throw UsageError(flag + ": must end in " + output.extension + " (" + output.format + "), got '" + path + "'");
     }
     // A symlink is followed: the rename happens in its target's folder.
-    const fs::path target = fs::is_symlink(fs::symlink_status(p, ec)) ? fs::weakly_canonical(fs::absolute(p), ec) : p;
+    const fs::path target = renderer::output_target(path);
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(parent, ec)) throw UsageError(flag + ": folder does not exist, got '" + path + "'");
     if (::access(parent.c_str(), W_OK) != 0) throw UsageError(flag + ": folder is not writable, got '" + path + "'");
@@ -74,7 +75,7 @@ void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
                        std::to_string(name_max_bytes(parent)) + " its folder allows, got '" + path + "'");
     }
   }
-  if (!seen.insert(output_identity(p)).second) {
+  if (!seen.insert(output_identity(path)).second) {
     throw UsageError(flag + ": names a file another output also writes, got '" + path + "'");
   }
 }

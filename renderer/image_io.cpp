@@ -10,7 +10,6 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <stdexcept>
 #include <system_error>
 
@@ -120,9 +119,7 @@ void write_output_bytes(const std::string& path, const std::string& bytes) {
     write_in_place(path, bytes);
     return;
   }
-  const fs::path target = fs::is_symlink(fs::symlink_status(path, ec)) ? fs::weakly_canonical(fs::absolute(path), ec)
-                                                                       : fs::path(path);
-  write_by_rename(path, ec ? fs::path(path) : target, bytes);
+  write_by_rename(path, output_target(path), bytes);
 }
 
 void append_to_string(void* context, void* data, int size) {
@@ -130,6 +127,22 @@ void append_to_string(void* context, void* data, int size) {
 }
 
 }  // namespace
+
+std::filesystem::path output_target(const std::string& path) {
+  namespace fs = std::filesystem;
+  fs::path target(path);
+  // The kernel's own bound on a chain of links (MAXSYMLINKS); a longer chain or a loop is left
+  // as it is and fails when opened.
+  constexpr int kMaxSymlinkHops = 40;
+  for (int hop = 0; hop < kMaxSymlinkHops; ++hop) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(target, ec))) break;
+    const fs::path link = fs::read_symlink(target, ec);
+    if (ec) break;
+    target = link.is_absolute() ? link : target.parent_path() / link;
+  }
+  return target;
+}
 
 void write_png_rgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
   if (rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,9 @@ namespace renderer {
 
 // The output name that means standard output.
 inline constexpr const char* kStandardOutputName = "-";
+
+// The file an output path writes: symlinks followed, dangling ones too (their target is made).
+std::filesystem::path output_target(const std::string& path);
 
 // Throws std::runtime_error naming the path on failure.
 void write_png_rgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);
