@@ -10,7 +10,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
+#include <thread>
 #include <system_error>
 
 #include <stb/stb_image_write.h>
@@ -40,14 +42,12 @@ class TerminationSignalsBlocked {
   throw std::runtime_error(path + ": " + what + " (" + std::strerror(error) + ")");
 }
 
-// write() until done; returns 0 or the errno of the failure. SIGXFSZ is ignored for the call, so
-// a file-size limit (ulimit -f) comes back as EFBIG instead of killing the process with the
-// temporary file left behind.
+// write() until done; returns 0 or the errno of the failure. SIGXFSZ is ignored from the first
+// write on (setting SIG_IGN again is harmless, so concurrent writers cannot race to restore it),
+// so a file-size limit (ulimit -f) comes back as EFBIG, reported and cleaned up, instead of
+// killing the process with the temporary file left behind.
 int write_all(int fd, const std::string& bytes) {
-  struct sigaction ignore {}, saved {};
-  ignore.sa_handler = SIG_IGN;
-  sigemptyset(&ignore.sa_mask);
-  sigaction(SIGXFSZ, &ignore, &saved);
+  std::signal(SIGXFSZ, SIG_IGN);
   int error = 0;
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -59,7 +59,6 @@ int write_all(int fd, const std::string& bytes) {
     }
     done += static_cast<std::size_t>(n);
   }
-  sigaction(SIGXFSZ, &saved, nullptr);
   return error;
 }
 
@@ -86,9 +85,19 @@ void write_to_standard_output(const std::string& bytes) {
 void write_by_rename(const std::string& path, const std::filesystem::path& target, const std::string& bytes) {
   const TerminationSignalsBlocked blocked;
   const std::filesystem::path folder = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
-  // A short fixed name: a target name near the 255-byte limit must not overflow the temporary's.
-  std::string tmp = (folder / (".levrt-" + std::to_string(static_cast<long>(::getpid())) + ".XXXXXX")).string();
-  const int fd = ::mkstemp(tmp.data());
+  // A short name (a target name near the 255-byte limit must not overflow the temporary's),
+  // unique per process and thread; O_EXCL never reuses an existing file, and the mode 0666 goes
+  // through the umask like any new file's.
+  const std::string stem = ".levrt-" + std::to_string(static_cast<long>(::getpid())) + "-" +
+                           std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 1000000);
+  std::string tmp;
+  int fd = -1;
+  constexpr int kMaxNameAttempts = 100;
+  for (int attempt = 0; fd < 0 && attempt < kMaxNameAttempts; ++attempt) {
+    tmp = (folder / (stem + "-" + std::to_string(attempt) + ".tmp")).string();
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) break;
+  }
   if (fd < 0) throw_errno(path, "cannot write", errno);
   const int error = write_all(fd, bytes);
   const int close_error = ::close(fd) != 0 ? errno : 0;
@@ -96,10 +105,6 @@ void write_by_rename(const std::string& path, const std::filesystem::path& targe
     ::unlink(tmp.c_str());
     throw_errno(path, "write failed", error != 0 ? error : close_error);
   }
-  // mkstemp makes the file 0600; an output gets the usual mode for new files.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::chmod(tmp.c_str(), 0666 & ~mask);
   if (std::rename(tmp.c_str(), target.c_str()) != 0) {
     const int rename_error = errno;
     ::unlink(tmp.c_str());
