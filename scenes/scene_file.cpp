@@ -56,11 +56,19 @@ class DomBuilder {
   DomBuilder(const std::string& source, const std::string& text, json& root)
       : source_(source), text_(text), root_(root) {}
 
+  // JSON path -> the number as typed, for the numbers a float rounds.
+  const std::map<std::string, std::string>& typed_numbers() const { return typed_numbers_; }
+
   bool null() { return add(nullptr); }
   bool boolean(bool v) { return add(v); }
   bool number_integer(json::number_integer_t v) { return add(v); }
   bool number_unsigned(json::number_unsigned_t v) { return add(v); }
-  bool number_float(json::number_float_t v, const std::string& /*text*/) { return add(v); }
+  bool number_float(json::number_float_t v, const std::string& text) {
+    // A number the 32-bit float does not hold exactly keeps its text, so that a message about
+    // its value repeats what was typed (180.00001, not the float's 180).
+    if (static_cast<double>(static_cast<float>(v)) != v) typed_numbers_[path()] = text;
+    return add(v);
+  }
   bool string(std::string& v) { return add(std::move(v)); }
   bool binary(json::binary_t& v) { return add(std::move(v)); }
   bool start_object(std::size_t /*elements*/) { return open(json::object()); }
@@ -155,7 +163,19 @@ class DomBuilder {
   std::vector<json*> stack_;
   std::vector<std::string> keys_;
   std::size_t values_ = 0;
+  std::map<std::string, std::string> typed_numbers_;
 };
+
+// validate_description reports "/json/path: problem (value)" with the value it checked, a float;
+// where the file's text for that path was rounded to get it, the text replaces the float.
+std::string with_typed_value(const std::string& message, const std::map<std::string, std::string>& typed_numbers) {
+  const std::size_t path_end = message.find(": ");
+  const std::size_t value_start = message.rfind(" (");
+  if (path_end == std::string::npos || value_start == std::string::npos || message.back() != ')') return message;
+  const auto typed = typed_numbers.find(message.substr(0, path_end));
+  if (typed == typed_numbers.end()) return message;
+  return message.substr(0, value_start) + " (" + typed->second + ")";
+}
 
 // Turns the JSON document into a description, checking keys and types; values are checked by
 // validate_description afterwards, with the same paths.
@@ -563,7 +583,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": " + escape_control_characters(e.what()));
+    throw std::invalid_argument(source + ": " + escape_control_characters(with_typed_value(e.what(), builder.typed_numbers())));
   }
   return scene;
 }

@@ -72,28 +72,24 @@ class Outputs : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(Outputs, AFifoReadByAnotherProcessReceivesThePngAndStaysAFifo) {
-  const std::string fifo = path("pipe.png");
-  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  const std::string received = path("received.bin");
-  std::thread reader([&] { run_shell("cat " + shell_quote(fifo) + " > " + shell_quote(received)); });
-  const CommandRun r = run_levrt(render_args({"--out", fifo}));
+// Renders with `flag` naming a FIFO that a child process (cat) reads; returns what it received.
+std::string render_into_fifo(const fs::path& fifo, const std::string& flag) {
+  EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path received = fifo.string() + ".received";
+  std::thread reader([&] { run_shell("cat " + shell_quote(fifo.string()) + " > " + shell_quote(received.string())); });
+  const CommandRun r = run_levrt(render_args({flag, fifo.string()}));
   reader.join();
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::is_fifo(fifo));
-  EXPECT_TRUE(is_png(read_bytes(received)));
+  return read_bytes(received);
+}
+
+TEST_F(Outputs, AFifoReadByAnotherProcessReceivesThePngAndStaysAFifo) {
+  EXPECT_TRUE(is_png(render_into_fifo(dir_ / "pipe.png", "--out")));
 }
 
 TEST_F(Outputs, AFifoReceivesTheStats) {
-  const std::string fifo = path("pipe.json");
-  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  const std::string received = path("received.txt");
-  std::thread reader([&] { run_shell("cat " + shell_quote(fifo) + " > " + shell_quote(received)); });
-  const CommandRun r = run_levrt(render_args({"--stats", fifo}));
-  reader.join();
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(fs::is_fifo(fifo));
-  EXPECT_NE(read_bytes(received).find("\"shading_points\""), std::string::npos);
+  EXPECT_NE(render_into_fifo(dir_ / "pipe.json", "--stats").find("\"shading_points\""), std::string::npos);
 }
 
 TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
@@ -246,10 +242,29 @@ TEST_F(Outputs, LightCountsAreReportedAsTyped) {
   }
 }
 
+TEST_F(Outputs, SceneNumbersAreReportedAsTypedNotAsTheRoundedFloat) {
+  const std::string camera = R"("camera": {"position": [0, 1, 5], "target": [0, 0, 0]})";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"levrt_scene": 1, )" + camera + R"(, "root": {"type": "spot_light", "intensity": [1, 1, 1],
+          "cone_degrees": 180.00001, "dropoff": 1}})",
+       "(180.00001)"},
+      {R"({"levrt_scene": 1, )" + camera + R"(, "root": {"type": "affine", "scale": 1e-50,
+          "child": {"type": "union", "children": []}}})",
+       "(1e-50)"},
+  };
+  for (const auto& [text, typed] : cases) {
+    const std::string scene = path("typed.json");
+    std::ofstream(scene) << text;
+    const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(typed), std::string::npos) << r.output;
+  }
+}
+
 TEST_F(Outputs, ANulByteInASceneFileIsAnErrorNamingItsOffset) {
   const std::string scene = path("nul.json");
   const std::string valid = R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
-    "root": {"type": "group", "children": []}})";
+    "root": {"type": "union", "children": []}})";
   {
     std::ofstream out(scene, std::ios::binary);
     out << valid << '\0' << "garbage";
