@@ -42,15 +42,20 @@ std::string read_bytes(const fs::path& p) {
   return s.str();
 }
 
-bool is_png(const std::string& bytes) { return bytes.size() > 8 && bytes.compare(1, 3, "PNG") == 0; }
+bool is_png(const std::string& bytes) {
+  return bytes.size() > 8 && bytes.compare(1, 3, "PNG") == 0;
+}
 
-long line_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+long line_count(const std::string& text) {
+  return std::count(text.begin(), text.end(), '\n');
+}
 
 class Outputs : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("levrt_outputs_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+           ("levrt_outputs_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
             std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
@@ -59,7 +64,8 @@ class Outputs : public ::testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    for (const auto& e : fs::directory_iterator(dir_))
+      names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
   }
@@ -76,7 +82,9 @@ class Outputs : public ::testing::Test {
 std::string render_into_fifo(const fs::path& fifo, const std::string& flag) {
   EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const fs::path received = fifo.string() + ".received";
-  std::thread reader([&] { run_shell("cat " + shell_quote(fifo.string()) + " > " + shell_quote(received.string())); });
+  std::thread reader([&] {
+    run_shell("cat " + shell_quote(fifo.string()) + " > " + shell_quote(received.string()));
+  });
   const CommandRun r = run_levrt(render_args({flag, fifo.string()}));
   reader.join();
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -89,7 +97,8 @@ TEST_F(Outputs, AFifoReadByAnotherProcessReceivesThePngAndStaysAFifo) {
 }
 
 TEST_F(Outputs, AFifoReceivesTheStats) {
-  EXPECT_NE(render_into_fifo(dir_ / "pipe.json", "--stats").find("\"shading_points\""), std::string::npos);
+  EXPECT_NE(render_into_fifo(dir_ / "pipe.json", "--stats").find("\"shading_points\""),
+            std::string::npos);
 }
 
 TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
@@ -104,8 +113,9 @@ TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
 }
 
 TEST_F(Outputs, DashWritesThePngToStandardOutput) {
-  const CommandRun r = run_shell(shell_quote(LEVRT_BINARY) + " render --width 8 --height 8 --out - 2>/dev/null > " +
-                                 shell_quote(path("stdout.bin")));
+  const CommandRun r =
+      run_shell(shell_quote(LEVRT_BINARY) + " render --width 8 --height 8 --out - 2>/dev/null > " +
+                shell_quote(path("stdout.bin")));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(is_png(read_bytes(path("stdout.bin"))));
 }
@@ -118,7 +128,8 @@ TEST_F(Outputs, TwoOutputsOnStandardOutputAreRefused) {
 
 TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
   fs::create_directories(dir_ / "sub");
-  for (const std::string& other : std::vector<std::string>{"./X.png", "sub/../X.png", path("X.png")}) {
+  for (const std::string& other :
+       std::vector<std::string>{"./X.png", "sub/../X.png", path("X.png")}) {
     const CommandRun r = run_here(render_args({"--out", "X.png", "--heatmap-lights", other}));
     EXPECT_EQ(r.exit_code, 2) << other << ": " << r.output;
     EXPECT_NE(r.output.find("another output also writes"), std::string::npos) << r.output;
@@ -130,22 +141,27 @@ TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
 TEST_F(Outputs, AHardLinkToAnotherOutputIsTheSameFile) {
   { std::ofstream(path("a.png")) << "old"; }
   fs::create_hard_link(path("a.png"), path("b.png"));
-  const CommandRun r = run_levrt(render_args({"--out", path("a.png"), "--heatmap-nodes", path("b.png")}));
+  const CommandRun r =
+      run_levrt(render_args({"--out", path("a.png"), "--heatmap-nodes", path("b.png")}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(read_bytes(path("a.png")), "old");
 }
 
 TEST_F(Outputs, ANameTooLongIsRefusedBeforeRenderingWithNothingWritten) {
   const std::string long_name = std::string(296, 'n') + ".png";
-  const CommandRun r = run_levrt(render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
+  const CommandRun r =
+      run_levrt(render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("file name of 300 bytes"), std::string::npos) << r.output;
   EXPECT_TRUE(entries().empty());
 }
 
 TEST_F(Outputs, AWrongExtensionIsRefusedWithNothingWritten) {
-  for (const auto& [flag, name] : std::vector<std::pair<std::string, std::string>>{
-           {"--out", "x.txt"}, {"--heatmap-lights", "x.json"}, {"--stats", "x.png"}, {"--out", "noext"}}) {
+  for (const auto& [flag, name] :
+       std::vector<std::pair<std::string, std::string>>{{"--out", "x.txt"},
+                                                        {"--heatmap-lights", "x.json"},
+                                                        {"--stats", "x.png"},
+                                                        {"--out", "noext"}}) {
     const CommandRun r = run_levrt(render_args({flag, path(name)}));
     EXPECT_EQ(r.exit_code, 2) << flag << " " << name << ": " << r.output;
     EXPECT_NE(r.output.find("must end in"), std::string::npos) << r.output;
@@ -168,9 +184,9 @@ TEST_F(Outputs, DevFullStaysADeviceAndTheErrorNamesTheReason) {
 }
 
 TEST_F(Outputs, AFileSizeLimitLeavesNoTemporaryFile) {
-  const CommandRun limited =
-      run_shell("cd " + shell_quote(dir_.string()) + " && ulimit -f 1 && " + shell_quote(LEVRT_BINARY) +
-                " render --width 256 --height 256 --quiet --out big.png");
+  const CommandRun limited = run_shell("cd " + shell_quote(dir_.string()) + " && ulimit -f 1 && " +
+                                       shell_quote(LEVRT_BINARY) +
+                                       " render --width 256 --height 256 --quiet --out big.png");
   EXPECT_EQ(limited.exit_code, 1) << limited.output;
   EXPECT_NE(limited.output.find("File too large"), std::string::npos) << limited.output;
   EXPECT_TRUE(entries().empty());
@@ -178,9 +194,10 @@ TEST_F(Outputs, AFileSizeLimitLeavesNoTemporaryFile) {
 
 TEST_F(Outputs, TheLargestReferenceRenderIsRefusedUpFrontWithinTheMemoryBudget) {
   // Under a 2 GiB address-space limit: a render that tried would die of bad_alloc, exit 1.
-  const CommandRun r = run_shell("ulimit -v 2097152 && " + shell_quote(LEVRT_BINARY) +
-                                 " render --width 8192 --height 8192 --subsample 64 --reference rt --stats " +
-                                 shell_quote(path("s.json")));
+  const CommandRun r =
+      run_shell("ulimit -v 2097152 && " + shell_quote(LEVRT_BINARY) +
+                " render --width 8192 --height 8192 --subsample 64 --reference rt --stats " +
+                shell_quote(path("s.json")));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("budget"), std::string::npos) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
@@ -188,10 +205,12 @@ TEST_F(Outputs, TheLargestReferenceRenderIsRefusedUpFrontWithinTheMemoryBudget) 
 }
 
 TEST_F(Outputs, WroteLineNamesEveryFileAndQuietSilencesIt) {
-  const CommandRun r = run_levrt({"render", "--width", "8", "--height", "8", "--out", path("a.png"), "--stats",
-                                  path("s.json")});
+  const CommandRun r = run_levrt({"render", "--width", "8", "--height", "8", "--out", path("a.png"),
+                                  "--stats", path("s.json")});
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("wrote " + path("a.png") + ", " + path("s.json") + "\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("wrote " + path("a.png") + ", " + path("s.json") + "\n"),
+            std::string::npos)
+      << r.output;
   const CommandRun quiet = run_levrt(render_args({"--out", path("b.png")}));
   EXPECT_EQ(quiet.exit_code, 0);
   EXPECT_EQ(quiet.output, "");
@@ -200,9 +219,11 @@ TEST_F(Outputs, WroteLineNamesEveryFileAndQuietSilencesIt) {
 TEST_F(Outputs, SubsampledStatsEstimateTheFullFrameTime) {
   const CommandRun r = run_levrt(render_args({"--subsample", "4", "--stats", path("s.json")}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(read_bytes(path("s.json")).find("\"time_render_full_frame_estimate_s\""), std::string::npos);
+  EXPECT_NE(read_bytes(path("s.json")).find("\"time_render_full_frame_estimate_s\""),
+            std::string::npos);
   const CommandRun full = run_levrt(render_args({"--stats", path("full.json")}));
-  EXPECT_EQ(read_bytes(path("full.json")).find("time_render_full_frame_estimate_s"), std::string::npos);
+  EXPECT_EQ(read_bytes(path("full.json")).find("time_render_full_frame_estimate_s"),
+            std::string::npos);
 }
 
 TEST_F(Outputs, NewlinesAndEscapesInNamesAndValuesStayOnOneLine) {
@@ -223,7 +244,8 @@ TEST_F(Outputs, NewlinesAndEscapesInNamesAndValuesStayOnOneLine) {
 
 TEST_F(Outputs, AMasterNameWithNewlinesAndEscapesIsReportedOnOneLine) {
   const std::string scene = path("cycle.json");
-  std::ofstream(scene) << R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+  std::ofstream(scene)
+      << R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
     "masters": [{"name": "a\nb\nc\u001b[2J", "node": {"type": "instance", "master": "a\nb\nc\u001b[2J"}}],
     "root": {"type": "instance", "master": "a\nb\nc\u001b[2J"}})";
   const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
@@ -245,7 +267,8 @@ TEST_F(Outputs, LightCountsAreReportedAsTyped) {
 TEST_F(Outputs, SceneNumbersAreReportedAsTypedNotAsTheRoundedFloat) {
   const std::string camera = R"("camera": {"position": [0, 1, 5], "target": [0, 0, 0]})";
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {R"({"levrt_scene": 1, )" + camera + R"(, "root": {"type": "spot_light", "intensity": [1, 1, 1],
+      {R"({"levrt_scene": 1, )" + camera +
+           R"(, "root": {"type": "spot_light", "intensity": [1, 1, 1],
           "cone_degrees": 180.00001, "dropoff": 1}})",
        "(180.00001)"},
       {R"({"levrt_scene": 1, )" + camera + R"(, "root": {"type": "affine", "scale": 1e-50,
@@ -263,7 +286,8 @@ TEST_F(Outputs, SceneNumbersAreReportedAsTypedNotAsTheRoundedFloat) {
 
 TEST_F(Outputs, ANulByteInASceneFileIsAnErrorNamingItsOffset) {
   const std::string scene = path("nul.json");
-  const std::string valid = R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+  const std::string valid =
+      R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
     "root": {"type": "union", "children": []}})";
   {
     std::ofstream out(scene, std::ios::binary);
@@ -271,7 +295,8 @@ TEST_F(Outputs, ANulByteInASceneFileIsAnErrorNamingItsOffset) {
   }
   const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("NUL byte at offset " + std::to_string(valid.size())), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("NUL byte at offset " + std::to_string(valid.size())), std::string::npos)
+      << r.output;
 }
 
 TEST_F(Outputs, TooManyJsonValuesAreRefusedWhileParsing) {
@@ -282,8 +307,8 @@ TEST_F(Outputs, TooManyJsonValuesAreRefusedWhileParsing) {
     for (int i = 0; i < 1'100'000; ++i) out << "{},";
     out << "{}]";
   }
-  const CommandRun r = run_shell("ulimit -v 1048576 && " + shell_quote(LEVRT_BINARY) + " render --scene " +
-                                 shell_quote(scene) + " --width 8 --height 8");
+  const CommandRun r = run_shell("ulimit -v 1048576 && " + shell_quote(LEVRT_BINARY) +
+                                 " render --scene " + shell_quote(scene) + " --width 8 --height 8");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("more than 1000000 JSON values"), std::string::npos) << r.output;
 }
@@ -299,11 +324,13 @@ TEST_F(Outputs, HelpListsEverySettingsDefaultAndRange) {
     const std::string line = r.output.substr(at, r.output.find('\n', at) - at);
     EXPECT_NE(line.find("=" + app::setting_text(defaults, spec)), std::string::npos) << line;
     if (const auto* range = std::get_if<app::IntRange>(&spec.kind)) {
-      EXPECT_NE(line.find("[" + std::to_string(range->min) + ", " + std::to_string(range->max) + "]"),
-                std::string::npos)
+      EXPECT_NE(
+          line.find("[" + std::to_string(range->min) + ", " + std::to_string(range->max) + "]"),
+          std::string::npos)
           << line;
     } else if (const auto* choice = std::get_if<app::Choice>(&spec.kind)) {
-      for (const std::string& option : choice->options()) EXPECT_NE(line.find(option), std::string::npos) << line;
+      for (const std::string& option : choice->options())
+        EXPECT_NE(line.find(option), std::string::npos) << line;
     } else {
       EXPECT_NE(line.find("FLOAT"), std::string::npos) << line;
     }
@@ -317,6 +344,16 @@ TEST_F(Outputs, AnUnknownCommandListsTheCommands) {
   for (const std::string command : {"render", "export", "bench", "snapshot", "view"}) {
     EXPECT_NE(r.output.find(command), std::string::npos) << r.output;
   }
+}
+
+TEST_F(Outputs, WithoutADisplayLevrtSaysItWritesTheSnapshotAndWhere) {
+  // stderr alone: the summary on stdout goes to /dev/null.
+  const CommandRun r = run_shell("(cd " + shell_quote(dir_.string()) + " && env -u DISPLAY " +
+                                 shell_quote(LEVRT_BINARY) + " 2>&1 >/dev/null)");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((fs::canonical(dir_) / "out").string()), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "building.png"));
 }
 
 }  // namespace
