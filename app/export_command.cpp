@@ -30,8 +30,11 @@ int run_export(const ExportFlags& flags) {
   check_output_paths({{"--out", flags.out, ".json", "a scene file"}});
   const scenes::SceneDescription description = describe_scene(settings);
   renderer::write_text_file(flags.out, scenes::scene_file_json(description));
-  std::printf("wrote %s: %s level %d, %zu masters\n", flags.out.c_str(), description.name.c_str(),
-              description.level, description.masters.size());
+  // With --out - the scene file is standard output, so the note goes to stderr.
+  std::fprintf(flags.out == renderer::kStandardOutputName ? stderr : stdout, "wrote %s: %s level %d, %zu masters\n",
+               scenes::escape_control_characters(flags.out).c_str(),
+               scenes::escape_control_characters(description.name).c_str(), description.level,
+               description.masters.size());
   return 0;
 }
 

@@ -113,11 +113,23 @@ TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
 }
 
 TEST_F(Outputs, DashWritesThePngToStandardOutput) {
-  const CommandRun r =
-      run_shell(shell_quote(LEVRT_BINARY) + " render --width 8 --height 8 --out - 2>/dev/null > " +
-                shell_quote(path("stdout.bin")));
+  // Parenthesised: run_shell appends 2>&1, which must not send stderr into the file.
+  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) + " render --width 8 --height 8 --out - 2>/dev/null > " +
+                                 shell_quote(path("stdout.bin")) + ")");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(is_png(read_bytes(path("stdout.bin"))));
+  const std::string bytes = read_bytes(path("stdout.bin"));
+  EXPECT_TRUE(is_png(bytes));
+  // Nothing but the PNG: it ends with its IEND chunk and CRC.
+  ASSERT_GT(bytes.size(), 12u);
+  EXPECT_EQ(bytes.compare(bytes.size() - 8, 4, "IEND"), 0);
+}
+
+TEST_F(Outputs, ExportToDashWritesOnlyTheSceneFileToStandardOutput) {
+  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) + " export --scene maze --level 1 --out - 2>/dev/null > " +
+                                 shell_quote(path("maze.json")) + ")");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const CommandRun rendered = run_levrt(render_args({"--scene", path("maze.json")}));
+  EXPECT_EQ(rendered.exit_code, 0) << rendered.output;
 }
 
 TEST_F(Outputs, TwoOutputsOnStandardOutputAreRefused) {
