@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <variant>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -24,10 +27,45 @@ struct SettingFlags {
   std::map<std::string, CLI::Option*> options;
 };
 
-void add_setting_flags(CLI::App& command, SettingFlags& flags) {
-  for (const SettingSpec& spec : setting_table()) {
-    flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], spec.help);
+// The allowed values of a setting as --help shows them, from the table's ranges and choices.
+std::string setting_type_name(const SettingSpec& spec) {
+  if (const auto* r = std::get_if<IntRange>(&spec.kind)) {
+    return "INT in [" + std::to_string(r->min) + ", " + std::to_string(r->max) + "]";
   }
+  if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
+    std::ostringstream text;
+    text << "FLOAT";
+    if (d->max == std::numeric_limits<double>::max()) {
+      text << " >= " << d->min;
+    } else {
+      text << " in [" << d->min << ", " << d->max << "]";
+    }
+    return text.str();
+  }
+  const auto& c = std::get<Choice>(spec.kind);
+  std::string valid;
+  for (const std::string& o : c.options()) valid += (valid.empty() ? "" : "|") + o;
+  return "{" + valid + "}" + (c.also_accepts_label ? std::string(" or ") + c.also_accepts_label : "");
+}
+
+void add_setting_flags(CLI::App& command, SettingFlags& flags) {
+  const Settings defaults;
+  for (const SettingSpec& spec : setting_table()) {
+    flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], spec.help)
+                                   ->type_name(setting_type_name(spec))
+                                   ->default_str(setting_text(defaults, spec));
+  }
+}
+
+// `levrt NAME` where NAME is no command: CLI11 would call it an unexpected argument.
+void check_subcommand_name(const CLI::App& cli, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  std::string names;
+  for (const CLI::App* sub : cli.get_subcommands({})) {
+    if (sub->get_name() == argv[1]) return;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  throw UsageError("unknown command '" + std::string(argv[1]) + "'; the commands are " + names);
 }
 
 Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_option, const std::string& lights_text) {
@@ -40,12 +78,7 @@ Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_opti
   }
   if (lights_option->count() > 0) {
     if (flags.options.at("level")->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
-    char* end = nullptr;
-    const unsigned long long n = std::strtoull(lights_text.c_str(), &end, 10);
-    if (lights_text.empty() || *end != '\0' || lights_text[0] == '-') {
-      throw UsageError("--lights: must be a light count of the scene, got '" + lights_text + "'");
-    }
-    apply_light_count(settings, n);
+    apply_light_count_flag(settings, lights_text);
   }
   return settings;
 }
@@ -60,10 +93,7 @@ int run_snapshot() {
   outputs.heatmap_nodes = "out/building_nodes_visited.png";
   outputs.stats = "out/building_stats.json";
   outputs.reference_rt = true;
-  const int code = run_render(settings, outputs);
-  std::printf("wrote out/building.png, out/building_lights_tested.png, out/building_nodes_visited.png, "
-              "out/building_stats.json\n");
-  return code;
+  return run_render(settings, outputs);
 }
 
 }  // namespace
@@ -77,16 +107,19 @@ int run_cli(int argc, char** argv) {
   add_setting_flags(*render, render_flags);
   std::string lights_text;
   CLI::Option* lights_option =
-      render->add_option("--lights", lights_text, "light count (selects the level with that many lights)");
+      render->add_option("--lights", lights_text, "light count (selects the level with that many lights)")
+          ->type_name("COUNT");
   RenderOutputs outputs;
   const std::vector<CLI::Option*> output_options = {
-      render->add_option("--out", outputs.image, "image PNG"),
-      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG"),
-      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG"),
-      render->add_option("--stats", outputs.stats, "statistics JSON")};
+      render->add_option("--out", outputs.image, "image PNG (- for standard output)")->type_name("FILE.png"),
+      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")->type_name("FILE.png"),
+      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")->type_name("FILE.png"),
+      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json")};
+  render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   CLI::Option* reference_option =
-      render->add_option("--reference", reference, "also render this method's image and report pixel errors (rt)");
+      render->add_option("--reference", reference, "also render this method's image and report pixel errors (rt)")
+          ->type_name("{rt}");
 
   CLI::App* export_command = cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
   ExportFlags export_flags;
@@ -103,10 +136,12 @@ int run_cli(int argc, char** argv) {
   add_setting_flags(*view, view_flags);
   std::string view_lights_text;
   CLI::Option* view_lights_option =
-      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)");
+      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
+          ->type_name("COUNT");
   ViewFlags view_options;
   add_view_flags(*view, view_options);
 
+  check_subcommand_name(cli, argc, argv);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -147,6 +182,8 @@ int run_cli(int argc, char** argv) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }
   }
+  std::fprintf(stderr, "levrt: no display to open a window on; writing the headless snapshot into %s instead\n",
+               (std::filesystem::current_path() / "out").string().c_str());
   return run_snapshot();
 }
 

@@ -24,21 +24,17 @@ int run_export(const ExportFlags& flags) {
   if (flags.level_option->count() > 0) set_setting(settings, *find_setting("level"), flags.level);
   if (flags.lights_option->count() > 0) {
     if (flags.level_option->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
-    char* end = nullptr;
-    const unsigned long long n = std::strtoull(flags.lights.c_str(), &end, 10);
-    if (flags.lights.empty() || *end != '\0' || flags.lights[0] == '-') {
-      throw UsageError("--lights: must be a light count of the scene, got '" + flags.lights + "'");
-    }
-    apply_light_count(settings, n);
+    apply_light_count_flag(settings, flags.lights);
   }
   if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
-  RenderOutputs outputs;
-  outputs.image = flags.out;  // the same checks as render's --out
-  check_output_paths(outputs);
+  check_output_paths({{"--out", flags.out, ".json", "a scene file"}});
   const scenes::SceneDescription description = describe_scene(settings);
   renderer::write_text_file(flags.out, scenes::scene_file_json(description));
-  std::printf("wrote %s: %s level %d, %zu masters\n", flags.out.c_str(), description.name.c_str(),
-              description.level, description.masters.size());
+  // With --out - the scene file is standard output, so the note goes to stderr.
+  std::fprintf(flags.out == renderer::kStandardOutputName ? stderr : stdout, "wrote %s: %s level %d, %zu masters\n",
+               scenes::escape_control_characters(flags.out).c_str(),
+               scenes::escape_control_characters(description.name).c_str(), description.level,
+               description.masters.size());
   return 0;
 }
 

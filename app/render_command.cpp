@@ -1,7 +1,9 @@
 #include "app/render_command.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -14,27 +16,67 @@
 #include "renderer/image_io.h"
 #include "renderer/pixel_error.h"
 #include "renderer/render.h"
+#include "scenes/scene_file.h"
 
 namespace app {
 namespace fs = std::filesystem;
 
 namespace {
 
-void check_output_path(const char* flag, const std::string& path, std::set<std::string>& seen) {
-  if (path.empty()) throw UsageError(std::string(flag) + ": needs a file name, got ''");
+// The bytes that name a file in `folder` may have (255 on the usual file systems).
+std::size_t name_max_bytes(const fs::path& folder) {
+  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  return limit > 0 ? static_cast<std::size_t>(limit) : 255;
+}
+
+bool is_existing_special_file(const fs::path& p) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(p, ec);  // follows symlinks
+  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
+// The identity of an output for the same-file check: device and inode for an existing file (so
+// hard links and symlinks match), else the absolute path with symlinks and ".." resolved.
+std::string output_identity(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  std::error_code ec;
+  const fs::path target = renderer::output_target(path);
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  return "path " + (ec ? target.string() : resolved.string());
+}
+
+void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
+  const std::string& path = output.path;
+  const std::string flag = output.flag;
+  if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
+  if (path == renderer::kStandardOutputName) {
+    if (!seen.insert(path).second) throw UsageError(flag + ": standard output is written by another output too, got '-'");
+    return;
+  }
   const fs::path p(path);
   std::error_code ec;
-  if (fs::is_directory(p, ec)) throw UsageError(std::string(flag) + ": is a folder, got '" + path + "'");
-  const fs::path parent = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-  if (!fs::is_directory(parent, ec)) {
-    throw UsageError(std::string(flag) + ": folder does not exist, got '" + path + "'");
+  if (fs::is_directory(p, ec)) throw UsageError(flag + ": is a folder, got '" + path + "'");
+  if (is_existing_special_file(p)) {
+    // A pipe or device is written in place: it needs no folder, extension or rename.
+    if (::access(p.c_str(), W_OK) != 0) throw UsageError(flag + ": is not writable, got '" + path + "'");
+  } else {
+    if (p.extension() != output.extension) {
+      throw UsageError(flag + ": must end in " + output.extension + " (" + output.format + "), got '" + path + "'");
+    }
+    // A symlink is followed: the rename happens in its target's folder.
+    const fs::path target = renderer::output_target(path);
+    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    if (!fs::is_directory(parent, ec)) throw UsageError(flag + ": folder does not exist, got '" + path + "'");
+    if (::access(parent.c_str(), W_OK) != 0) throw UsageError(flag + ": folder is not writable, got '" + path + "'");
+    const std::size_t name_bytes = target.filename().string().size();
+    if (name_bytes > name_max_bytes(parent)) {
+      throw UsageError(flag + ": file name of " + std::to_string(name_bytes) + " bytes, more than the " +
+                       std::to_string(name_max_bytes(parent)) + " its folder allows, got '" + path + "'");
+    }
   }
-  if (::access(parent.c_str(), W_OK) != 0) {
-    throw UsageError(std::string(flag) + ": folder is not writable, got '" + path + "'");
-  }
-  const std::string key = fs::weakly_canonical(p, ec).string();
-  if (!seen.insert(ec ? path : key).second) {
-    throw UsageError(std::string(flag) + ": names a file another output also writes, got '" + path + "'");
+  if (!seen.insert(output_identity(path)).second) {
+    throw UsageError(flag + ": names a file another output also writes, got '" + path + "'");
   }
 }
 
@@ -61,25 +103,54 @@ std::vector<std::uint8_t> rendered_pixels(const renderer::Framebuffer& fb) {
 
 }  // namespace
 
-void check_output_paths(const RenderOutputs& o) {
+void check_output_paths(const std::vector<OutputPath>& outputs) {
   std::set<std::string> seen;
-  const std::pair<const char*, const std::string*> outputs[] = {
-      {"--out", &o.image}, {"--heatmap-lights", &o.heatmap_lights},
-      {"--heatmap-nodes", &o.heatmap_nodes}, {"--stats", &o.stats}};
-  for (const auto& [flag, path] : outputs) {
-    if (path != nullptr && !path->empty()) check_output_path(flag, *path, seen);
+  for (const OutputPath& output : outputs) {
+    if (!output.path.empty()) check_output_path(output, seen);
+  }
+}
+
+std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
+  return {{"--out", o.image, ".png", "PNG"},
+          {"--heatmap-lights", o.heatmap_lights, ".png", "PNG"},
+          {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
+          {"--stats", o.stats, ".json", "JSON"}};
+}
+
+void check_memory_budget(const Settings& settings, bool reference) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+  const std::uint64_t per_pixel = reference ? kReferenceRenderBytesPerPixel : kRenderBytesPerPixel;
+  if (pixels * per_pixel > kRenderMemoryBudgetBytes) {
+    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                     (reference ? " with --reference" : "") + " needs about " +
+                     std::to_string((pixels * per_pixel) >> 20) + " MiB (" + std::to_string(per_pixel) +
+                     " bytes per pixel, subsampled or not), more than the " +
+                     std::to_string(kRenderMemoryBudgetBytes >> 20) + " MiB budget");
   }
 }
 
 RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
-                          const std::atomic<bool>* cancel) {
+                          const std::atomic<bool>* cancel, bool show_progress) {
   Settings s = settings;
   s.method = method;
   renderer::RenderStatePtr state =
       renderer::make_render_state(loaded.scene, *loaded.rays, render_settings_from(s));
+  const auto start = std::chrono::steady_clock::now();
+  bool progress_shown = false;
   for (int pass = 0; pass < settings.spp; ++pass) {
-    if (!renderer::render_pass(*state, cancel)) throw Interrupted();
+    if (!renderer::render_pass(*state, cancel)) {
+      if (progress_shown) std::fprintf(stderr, "\n");
+      throw Interrupted();
+    }
+    const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (show_progress && elapsed_s >= 1.0 && pass + 1 < settings.spp) {
+      const double left_s = elapsed_s / (pass + 1) * (settings.spp - pass - 1);
+      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", method.c_str(), pass + 1, settings.spp,
+                   left_s);
+      progress_shown = true;
+    }
   }
+  if (progress_shown) std::fprintf(stderr, "\r\033[K");
   RenderResult result;
   result.framebuffer = renderer::render_framebuffer(*state);
   result.seconds = renderer::render_seconds(*state);
@@ -104,6 +175,14 @@ nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& s
   j["subsample"] = settings.subsample;
   j["time_build_s"] = loaded.build_seconds;
   j["time_render_s"] = result.seconds;
+  if (settings.subsample > 1) {
+    // The rendered pixels' time scaled to every pixel of the frame.
+    std::size_t rendered = 0;
+    for (std::uint32_t samples : result.framebuffer.samples) rendered += samples > 0 ? 1 : 0;
+    const double frame_pixels = static_cast<double>(settings.width) * settings.height;
+    j["time_render_full_frame_estimate_s"] =
+        rendered > 0 ? result.seconds * frame_pixels / static_cast<double>(rendered) : 0.0;
+  }
   j["shading_points"] = t.shading_points;
   j["shadow_rays"] = t.shadow_rays;
   j["lights_tested_avg"] = static_cast<double>(t.lights_tested) / points;
@@ -123,15 +202,17 @@ nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& s
 
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
   render_settings_from(settings);  // validates the combination of settings before any work
-  check_output_paths(outputs);
+  check_memory_budget(settings, outputs.reference_rt);
+  check_output_paths(render_output_paths(outputs));
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   InterruptScope::throw_if_interrupted();
-  const RenderResult result = render_image(*loaded, settings, settings.method, cancel);
+  const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
+  const RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
   RenderResult reference;
   if (outputs.reference_rt) {
-    reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt", cancel);
+    reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt", cancel, show_progress);
   }
   nlohmann::ordered_json stats =
       render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
@@ -153,17 +234,33 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   stats["heatmap_scale"] = "log(1 + value per sample), viridis";
   if (!outputs.stats.empty()) renderer::write_text_file(outputs.stats, stats.dump(2) + "\n");
 
-  std::printf("%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
-              "%.2f nodes visited/point",
-              loaded->scene.name.c_str(), loaded->scene.level,
-              static_cast<unsigned long long>(loaded->scene.lights.light_count), settings.method.c_str(),
-              settings.tolerance, result.seconds, stats["lights_tested_avg"].get<double>(),
-              stats["nodes_visited_avg"].get<double>());
+  if (outputs.quiet) return 0;
+  // Standard output may carry an output file ("-"): the summary then goes to stderr.
+  std::FILE* summary = outputs.image == renderer::kStandardOutputName || outputs.stats == renderer::kStandardOutputName ||
+                               outputs.heatmap_lights == renderer::kStandardOutputName ||
+                               outputs.heatmap_nodes == renderer::kStandardOutputName
+                           ? stderr
+                           : stdout;
+  std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
+               "%.2f nodes visited/point",
+               scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
+               static_cast<unsigned long long>(loaded->scene.lights.light_count), settings.method.c_str(),
+               settings.tolerance, result.seconds, stats["lights_tested_avg"].get<double>(),
+               stats["nodes_visited_avg"].get<double>());
   if (outputs.reference_rt) {
-    std::printf(", pixel error avg %.4f%% max %.4f%%", stats["pixel_error_avg_pct"].get<double>(),
-                stats["pixel_error_max_pct"].get<double>());
+    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", stats["pixel_error_avg_pct"].get<double>(),
+                 stats["pixel_error_max_pct"].get<double>());
   }
-  std::printf("\n");
+  std::fprintf(summary, "\n");
+  std::string written;
+  for (const OutputPath& output : render_output_paths(outputs)) {
+    if (!output.path.empty()) {
+      written += (written.empty() ? "" : ", ") +
+                 (output.path == renderer::kStandardOutputName ? std::string("standard output")
+                                                               : scenes::escape_control_characters(output.path));
+    }
+  }
+  if (!written.empty()) std::fprintf(stderr, "wrote %s\n", written.c_str());
   return 0;
 }
 

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -19,11 +21,36 @@ struct RenderOutputs {
   std::string heatmap_nodes;   // PNG
   std::string stats;           // JSON
   bool reference_rt = false;
+  bool quiet = false;  // no progress, no summary, no "wrote" line
 };
 
-// Throws UsageError for unusable paths: empty, a folder, a missing or unwritable folder, or two
-// outputs naming the same file.
-void check_output_paths(const RenderOutputs& outputs);
+// One output file of a command: the flag that names it, and the extension its format needs.
+struct OutputPath {
+  const char* flag;
+  std::string path;       // empty: not written
+  const char* extension;  // ".png", ".json"
+  const char* format;     // for the message
+};
+
+// Throws UsageError, before any work, for a path that could not be written: empty, a folder, a
+// missing or unwritable folder, a name longer than the folder allows, the wrong extension (not
+// checked for an existing pipe or device, which is written in place, nor for "-", standard
+// output), or two outputs naming the same file however spelled (resolved paths, device+inode).
+void check_output_paths(const std::vector<OutputPath>& outputs);
+std::vector<OutputPath> render_output_paths(const RenderOutputs& outputs);
+
+// Peak memory of `levrt render` per image pixel (framebuffer, counters, heatmaps; the reference
+// adds a second framebuffer), measured as the slope of peak RSS (/usr/bin/time -v) between
+// 2048x2048 and 4096x4096 renders with --subsample 64 and every output: subsampling does not
+// reduce it, the framebuffer is full size.
+inline constexpr std::uint64_t kRenderBytesPerPixel = 96;
+inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 144;
+// The memory a render may plan for; larger images are refused before any work.
+inline constexpr std::uint64_t kRenderMemoryBudgetBytes = std::uint64_t{8} << 30;
+
+// Throws UsageError when width x height (with or without the rt reference) would need more
+// than kRenderMemoryBudgetBytes.
+void check_memory_budget(const Settings& settings, bool reference);
 
 struct RenderResult {
   renderer::Framebuffer framebuffer;
@@ -33,8 +60,10 @@ struct RenderResult {
 
 // Renders settings.spp passes of `method` over the loaded scene. Throws Interrupted when
 // *cancel is raised (Ctrl-C) before the last pass completes.
+// show_progress: after each pass, once the render has run a second, a line on stderr with the
+// passes done and an estimate of the time left (rewritten in place; for a terminal).
 RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
-                          const std::atomic<bool>* cancel = nullptr);
+                          const std::atomic<bool>* cancel = nullptr, bool show_progress = false);
 
 // The stats JSON of a finished render (reference may be null).
 nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& settings,

@@ -1,5 +1,9 @@
 #include "app/scene_loading.h"
 
+#include <cerrno>
+#include <cstdlib>
+#include <string>
+
 #include <chrono>
 
 #include "scenes/scene_file.h"
@@ -22,17 +26,40 @@ const scenes::SceneModel& model_for(const Settings& settings) {
 
 bool is_scene_file(const Settings& settings) { return scenes::is_scene_file_name(settings.scene); }
 
-void apply_light_count(Settings& settings, std::uint64_t lights) {
+namespace {
+
+// `typed` is the count as the user gave it, so the message repeats it exactly.
+void apply_light_count_typed(Settings& settings, std::uint64_t lights, const std::string& typed) {
   if (is_scene_file(settings)) {
-    throw UsageError("--lights: a scene file has the lights it describes, got '" + std::to_string(lights) + "'");
+    throw UsageError("--lights: a scene file has the lights it describes, got '" + typed + "'");
   }
   const scenes::SceneModel& model = model_for(settings);
   const int level = scenes::level_for_light_count(model, lights);
   if (level < 0) {
     throw UsageError("--lights: " + std::string(model.name) + " has " + scenes::light_counts_text(model) +
-                     " lights, got '" + std::to_string(lights) + "'");
+                     " lights, got '" + typed + "'");
   }
   settings.level = level;
+}
+
+}  // namespace
+
+void apply_light_count(Settings& settings, std::uint64_t lights) {
+  apply_light_count_typed(settings, lights, std::to_string(lights));
+}
+
+void apply_light_count_flag(Settings& settings, const std::string& text) {
+  // Digits only: strtoull would take " -1" as 2^64 - 1 and clamp a 20-digit count to it.
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  std::uint64_t lights = 0;
+  if (digits) {
+    errno = 0;
+    lights = std::strtoull(text.c_str(), nullptr, 10);
+  }
+  if (!digits || errno == ERANGE) {
+    throw UsageError("--lights: must be a light count of the scene, got '" + text + "'");
+  }
+  apply_light_count_typed(settings, lights, text);
 }
 
 scenes::SceneDescription describe_scene(const Settings& settings) {

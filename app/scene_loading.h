@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "app/settings.h"
 #include "renderer/ray_scene.h"
@@ -24,6 +25,8 @@ bool is_scene_file(const Settings& settings);
 
 // Resolves --lights into settings.level; throws UsageError listing the valid counts.
 void apply_light_count(Settings& settings, std::uint64_t lights);
+// The --lights flag's text: decimal digits only, reported as typed when it is refused.
+void apply_light_count_flag(Settings& settings, const std::string& text);
 
 // The description --scene names: a model's level, or a scene file read and validated (throws
 // std::invalid_argument "FILE: /json/path: problem" for a bad file).

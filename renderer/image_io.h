@@ -1,12 +1,21 @@
-// PNG output that never leaves a half-written file: the image goes to a temporary name in the
-// same folder and is renamed over the target only when complete.
+// PNG and text output that never leaves a half-written file: a regular file (or a new name) is
+// written to a temporary in the target's folder and renamed onto it when complete; a symlink is
+// followed and stays a symlink; an existing pipe or device is written in place, never replaced;
+// "-" is standard output. Write errors name their reason (strerror).
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace renderer {
+
+// The output name that means standard output.
+inline constexpr const char* kStandardOutputName = "-";
+
+// The file an output path writes: symlinks followed, dangling ones too (their target is made).
+std::filesystem::path output_target(const std::string& path);
 
 // Throws std::runtime_error naming the path on failure.
 void write_png_rgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb);

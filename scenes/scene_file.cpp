@@ -35,11 +35,10 @@ std::string pointer_segment(const std::string& key) {
   return s;
 }
 
-// Control characters would break the one-line message.
-std::string one_line(std::string s, std::size_t max_length) {
-  for (char& c : s) {
-    if (static_cast<unsigned char>(c) < 0x20) c = ' ';
-  }
+// Control characters would break the one-line message (or drive the terminal): escaped, then
+// shortened in the middle.
+std::string one_line(const std::string& raw, std::size_t max_length) {
+  std::string s = escape_control_characters(raw);
   if (s.size() > max_length) s = s.substr(0, max_length / 2) + "..." + s.substr(s.size() - max_length / 2);
   return s;
 }
@@ -57,11 +56,19 @@ class DomBuilder {
   DomBuilder(const std::string& source, const std::string& text, json& root)
       : source_(source), text_(text), root_(root) {}
 
+  // JSON path -> the number as typed, for the numbers a float rounds.
+  const std::map<std::string, std::string>& typed_numbers() const { return typed_numbers_; }
+
   bool null() { return add(nullptr); }
   bool boolean(bool v) { return add(v); }
   bool number_integer(json::number_integer_t v) { return add(v); }
   bool number_unsigned(json::number_unsigned_t v) { return add(v); }
-  bool number_float(json::number_float_t v, const std::string& /*text*/) { return add(v); }
+  bool number_float(json::number_float_t v, const std::string& text) {
+    // A number the 32-bit float does not hold exactly keeps its text, so that a message about
+    // its value repeats what was typed (180.00001, not the float's 180).
+    if (static_cast<double>(static_cast<float>(v)) != v) typed_numbers_[path()] = text;
+    return add(v);
+  }
   bool string(std::string& v) { return add(std::move(v)); }
   bool binary(json::binary_t& v) { return add(std::move(v)); }
   bool start_object(std::size_t /*elements*/) { return open(json::object()); }
@@ -121,12 +128,21 @@ class DomBuilder {
     return &slot;
   }
 
+  // Counted before the value exists, so a file of many small values stops near the budget.
+  void count_value() {
+    if (++values_ > kMaxJsonValues) {
+      fail(source_, path(), "more than " + std::to_string(kMaxJsonValues) + " JSON values in the file");
+    }
+  }
+
   bool add(json&& v) {
+    count_value();
     place(std::move(v));
     return true;
   }
 
   bool open(json&& container) {
+    count_value();
     if (stack_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
       fail(source_, path(), "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     }
@@ -146,7 +162,20 @@ class DomBuilder {
   json& root_;
   std::vector<json*> stack_;
   std::vector<std::string> keys_;
+  std::size_t values_ = 0;
+  std::map<std::string, std::string> typed_numbers_;
 };
+
+// validate_description reports "/json/path: problem (value)" with the value it checked, a float;
+// where the file's text for that path was rounded to get it, the text replaces the float.
+std::string with_typed_value(const std::string& message, const std::map<std::string, std::string>& typed_numbers) {
+  const std::size_t path_end = message.find(": ");
+  const std::size_t value_start = message.rfind(" (");
+  if (path_end == std::string::npos || value_start == std::string::npos || message.back() != ')') return message;
+  const auto typed = typed_numbers.find(message.substr(0, path_end));
+  if (typed == typed_numbers.end()) return message;
+  return message.substr(0, value_start) + " (" + typed->second + ")";
+}
 
 // Turns the JSON document into a description, checking keys and types; values are checked by
 // validate_description afterwards, with the same paths.
@@ -514,12 +543,39 @@ void print(const ordered& j, int indent, std::string& out) {
 
 }  // namespace
 
+std::string escape_control_characters(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    const unsigned char byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 bool is_scene_file_name(std::string_view name) {
   constexpr std::string_view kSuffix = ".json";
   return name.size() > kSuffix.size() && name.substr(name.size() - kSuffix.size()) == kSuffix;
 }
 
 SceneDescription parse_scene_json(const std::string& text, const std::string& source) {
+  const std::size_t nul = text.find('\0');
+  if (nul != std::string::npos) {
+    throw std::invalid_argument(source + ": NUL byte at offset " + std::to_string(nul) + " (a scene file is text)");
+  }
   json doc;
   DomBuilder builder(source, text, doc);
   if (!json::sax_parse(text, &builder)) fail(source, "", "invalid JSON");
@@ -527,7 +583,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": " + e.what());
+    throw std::invalid_argument(source + ": " + escape_control_characters(with_typed_value(e.what(), builder.typed_numbers())));
   }
   return scene;
 }

@@ -3,11 +3,14 @@
 // "FILE: /json/path: problem (value)" in a std::invalid_argument: unknown keys, wrong types,
 // missing fields, values out of range, undefined masters or materials, instance cycles, and the
 // limits of scene_instantiation.h. The file size and the JSON nesting depth are checked while
-// reading, before any deep structure exists, so a huge or deeply nested file fails cleanly.
+// reading, before any deep structure exists, so a huge or deeply nested file fails cleanly; so is
+// the number of JSON values (kMaxJsonValues), which bounds the memory the document takes. A NUL
+// byte anywhere is refused with its offset, since it would silently end the text for C readers.
 // Writing is exact: every float is written so that it reads back as the same float, so a scene
 // written and read back instantiates to the same scene, bit for bit.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -18,7 +21,18 @@ namespace scenes {
 
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
 inline constexpr int kMaxJsonDepth = 256;
+// JSON values (numbers, strings, objects, arrays...) a scene file may hold. The document costs
+// about 110 bytes per value in memory (2.3 GB for the 21 million values of a 64 MiB file of
+// `{},`), so this bounds a file's document near 110 MB plus its strings, whatever its shape; the
+// largest built-in scene exported (hall level 8) has about 2,000 values.
+inline constexpr std::size_t kMaxJsonValues = 1'000'000;
 inline constexpr int kSceneFileVersion = 1;
+
+// Text as it may appear in a one-line message: control characters and DEL become escapes (\n,
+// \t, \r, \x1b, ...), so a name can neither break the line nor drive the terminal. Escaping
+// twice changes nothing (no control character is left), so the command line may escape a whole
+// message again at its boundary.
+std::string escape_control_characters(std::string_view text);
 
 // True for names ending in ".json": what --scene takes as a file rather than a model name.
 bool is_scene_file_name(std::string_view name);

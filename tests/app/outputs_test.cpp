@@ -1,0 +1,382 @@
+// levrt render's output files and messages at their extremes (issues 14 and 15): special files
+// written in place, symlinks followed, standard output, every path checked before the render,
+// write errors with their reason, the memory budget, and one-line messages that repeat what the
+// user typed.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "app/settings.h"
+#include "tests/support/run_command.h"
+
+namespace {
+namespace fs = std::filesystem;
+using levrt_test::CommandRun;
+using levrt_test::run_levrt;
+using levrt_test::run_shell;
+using levrt_test::shell_quote;
+
+const std::vector<std::string> kTiny = {"--width", "8", "--height", "8", "--quiet"};
+
+std::vector<std::string> render_args(std::vector<std::string> outputs) {
+  std::vector<std::string> args = {"render"};
+  args.insert(args.end(), kTiny.begin(), kTiny.end());
+  args.insert(args.end(), outputs.begin(), outputs.end());
+  return args;
+}
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A shell prefix limiting the address space to `kib` KiB. AddressSanitizer reserves terabytes of
+// shadow memory up front, so under it the limit is left out and the tests assert the refusal alone.
+std::string address_space_limit(long kib) {
+#if defined(__SANITIZE_ADDRESS__)
+  (void)kib;
+  return "";
+#else
+  return "ulimit -v " + std::to_string(kib) + " && ";
+#endif
+}
+
+bool is_png(const std::string& bytes) {
+  return bytes.size() > 8 && bytes.compare(1, 3, "PNG") == 0;
+}
+
+long line_count(const std::string& text) {
+  return std::count(text.begin(), text.end(), '\n');
+}
+
+class Outputs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("levrt_outputs_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_))
+      names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  // Runs levrt in the test's folder, so relative spellings resolve there.
+  CommandRun run_here(const std::vector<std::string>& args) const {
+    std::string command = "cd " + shell_quote(dir_.string()) + " && " + shell_quote(LEVRT_BINARY);
+    for (const std::string& a : args) command += " " + shell_quote(a);
+    return run_shell(command);
+  }
+  fs::path dir_;
+};
+
+// Renders with `flag` naming a FIFO that a child process (cat) reads; returns what it received.
+std::string render_into_fifo(const fs::path& fifo, const std::string& flag) {
+  EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path received = fifo.string() + ".received";
+  std::thread reader([&] {
+    run_shell("cat " + shell_quote(fifo.string()) + " > " + shell_quote(received.string()));
+  });
+  const CommandRun r = run_levrt(render_args({flag, fifo.string()}));
+  reader.join();
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  return read_bytes(received);
+}
+
+TEST_F(Outputs, AFifoReadByAnotherProcessReceivesThePngAndStaysAFifo) {
+  EXPECT_TRUE(is_png(render_into_fifo(dir_ / "pipe.png", "--out")));
+}
+
+TEST_F(Outputs, AFifoReceivesTheStats) {
+  EXPECT_NE(render_into_fifo(dir_ / "pipe.json", "--stats").find("\"shading_points\""),
+            std::string::npos);
+}
+
+TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
+  fs::create_directories(dir_ / "elsewhere");
+  const fs::path target = dir_ / "elsewhere" / "real.png";
+  fs::create_symlink(target, path("link.png"));
+  const CommandRun r = run_levrt(render_args({"--out", path("link.png")}));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::is_symlink(path("link.png")));
+  EXPECT_TRUE(is_png(read_bytes(target)));
+  EXPECT_EQ(entries(), (std::vector<std::string>{"elsewhere", "link.png"}));
+}
+
+TEST_F(Outputs, DashWritesThePngToStandardOutput) {
+  // Parenthesised: run_shell appends 2>&1, which must not send stderr into the file.
+  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) + " render --width 8 --height 8 --out - 2>/dev/null > " +
+                                 shell_quote(path("stdout.bin")) + ")");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string bytes = read_bytes(path("stdout.bin"));
+  EXPECT_TRUE(is_png(bytes));
+  // Nothing but the PNG: it ends with its IEND chunk and CRC.
+  ASSERT_GT(bytes.size(), 12u);
+  EXPECT_EQ(bytes.compare(bytes.size() - 8, 4, "IEND"), 0);
+}
+
+TEST_F(Outputs, ExportToDashWritesOnlyTheSceneFileToStandardOutput) {
+  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) + " export --scene maze --level 1 --out - 2>/dev/null > " +
+                                 shell_quote(path("maze.json")) + ")");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const CommandRun rendered = run_levrt(render_args({"--scene", path("maze.json")}));
+  EXPECT_EQ(rendered.exit_code, 0) << rendered.output;
+}
+
+TEST_F(Outputs, TwoOutputsOnStandardOutputAreRefused) {
+  const CommandRun r = run_levrt(render_args({"--out", "-", "--heatmap-lights", "-"}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+}
+
+TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
+  fs::create_directories(dir_ / "sub");
+  for (const std::string& other :
+       std::vector<std::string>{"./X.png", "sub/../X.png", path("X.png")}) {
+    const CommandRun r = run_here(render_args({"--out", "X.png", "--heatmap-lights", other}));
+    EXPECT_EQ(r.exit_code, 2) << other << ": " << r.output;
+    EXPECT_NE(r.output.find("another output also writes"), std::string::npos) << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_EQ(entries(), (std::vector<std::string>{"sub"})) << other;
+  }
+}
+
+TEST_F(Outputs, AHardLinkToAnotherOutputIsTheSameFile) {
+  { std::ofstream(path("a.png")) << "old"; }
+  fs::create_hard_link(path("a.png"), path("b.png"));
+  const CommandRun r =
+      run_levrt(render_args({"--out", path("a.png"), "--heatmap-nodes", path("b.png")}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(read_bytes(path("a.png")), "old");
+}
+
+TEST_F(Outputs, ANameTooLongIsRefusedBeforeRenderingWithNothingWritten) {
+  const std::string long_name = std::string(296, 'n') + ".png";
+  const CommandRun r =
+      run_levrt(render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("file name of 300 bytes"), std::string::npos) << r.output;
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(Outputs, AWrongExtensionIsRefusedWithNothingWritten) {
+  for (const auto& [flag, name] :
+       std::vector<std::pair<std::string, std::string>>{{"--out", "x.txt"},
+                                                        {"--heatmap-lights", "x.json"},
+                                                        {"--stats", "x.png"},
+                                                        {"--out", "noext"}}) {
+    const CommandRun r = run_levrt(render_args({flag, path(name)}));
+    EXPECT_EQ(r.exit_code, 2) << flag << " " << name << ": " << r.output;
+    EXPECT_NE(r.output.find("must end in"), std::string::npos) << r.output;
+    EXPECT_TRUE(entries().empty()) << name;
+  }
+}
+
+TEST_F(Outputs, DevFullStaysADeviceAndTheErrorNamesTheReason) {
+  if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  struct stat before {};
+  ASSERT_EQ(::stat("/dev/full", &before), 0);
+  const CommandRun r = run_levrt(render_args({"--out", "/dev/full"}));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  struct stat after {};
+  ASSERT_EQ(::stat("/dev/full", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode));
+  EXPECT_EQ(after.st_rdev, before.st_rdev);
+}
+
+TEST_F(Outputs, AFileSizeLimitLeavesNoTemporaryFile) {
+  const CommandRun limited = run_shell("cd " + shell_quote(dir_.string()) + " && ulimit -f 1 && " +
+                                       shell_quote(LEVRT_BINARY) +
+                                       " render --width 256 --height 256 --quiet --out big.png");
+  EXPECT_EQ(limited.exit_code, 1) << limited.output;
+  EXPECT_NE(limited.output.find("File too large"), std::string::npos) << limited.output;
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(Outputs, TheLargestReferenceRenderIsRefusedUpFrontWithinTheMemoryBudget) {
+  // Under a 2 GiB address-space limit: a render that tried would die of bad_alloc, exit 1.
+  const CommandRun r =
+      run_shell(address_space_limit(2097152) + shell_quote(LEVRT_BINARY) +
+                " render --width 8192 --height 8192 --subsample 64 --reference rt --stats " +
+                shell_quote(path("s.json")));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("budget"), std::string::npos) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(Outputs, WroteLineNamesEveryFileAndQuietSilencesIt) {
+  const CommandRun r = run_levrt({"render", "--width", "8", "--height", "8", "--out", path("a.png"),
+                                  "--stats", path("s.json")});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("wrote " + path("a.png") + ", " + path("s.json") + "\n"),
+            std::string::npos)
+      << r.output;
+  const CommandRun quiet = run_levrt(render_args({"--out", path("b.png")}));
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_EQ(quiet.output, "");
+}
+
+TEST_F(Outputs, SubsampledStatsEstimateTheFullFrameTime) {
+  const CommandRun r = run_levrt(render_args({"--subsample", "4", "--stats", path("s.json")}));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_bytes(path("s.json")).find("\"time_render_full_frame_estimate_s\""),
+            std::string::npos);
+  const CommandRun full = run_levrt(render_args({"--stats", path("full.json")}));
+  EXPECT_EQ(read_bytes(path("full.json")).find("time_render_full_frame_estimate_s"),
+            std::string::npos);
+}
+
+TEST_F(Outputs, NewlinesAndEscapesInNamesAndValuesStayOnOneLine) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"render", "--method", "lev\nrt"},
+      {"render", "--scene", "evil\n\x1b[31mred.json"},
+      {"render", "--out", path("a\nb.txt")},
+  };
+  for (const auto& args : cases) {
+    const CommandRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  }
+  const CommandRun escaped = run_levrt({"render", "--scene", "evil\n\x1b[31mred.json"});
+  EXPECT_NE(escaped.output.find("evil\\n\\x1b[31mred.json"), std::string::npos) << escaped.output;
+}
+
+TEST_F(Outputs, AMasterNameWithNewlinesAndEscapesIsReportedOnOneLine) {
+  const std::string scene = path("cycle.json");
+  std::ofstream(scene)
+      << R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "masters": [{"name": "a\nb\nc\u001b[2J", "node": {"type": "instance", "master": "a\nb\nc\u001b[2J"}}],
+    "root": {"type": "instance", "master": "a\nb\nc\u001b[2J"}})";
+  const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("a\\nb\\nc\\x1b[2J"), std::string::npos) << r.output;
+}
+
+TEST_F(Outputs, LightCountsAreReportedAsTyped) {
+  for (const std::string typed : {" -1", "99999999999999999999", "+64", "64 "}) {
+    const CommandRun r = run_levrt(render_args({"--lights", typed}));
+    EXPECT_EQ(r.exit_code, 2) << typed;
+    EXPECT_NE(r.output.find("got '" + typed + "'"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("18446744073709551615"), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(Outputs, SceneNumbersAreReportedAsTypedNotAsTheRoundedFloat) {
+  const std::string camera = R"("camera": {"position": [0, 1, 5], "target": [0, 0, 0]})";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"levrt_scene": 1, )" + camera +
+           R"(, "root": {"type": "spot_light", "intensity": [1, 1, 1],
+          "cone_degrees": 180.00001, "dropoff": 1}})",
+       "(180.00001)"},
+      {R"({"levrt_scene": 1, )" + camera + R"(, "root": {"type": "affine", "scale": 1e-50,
+          "child": {"type": "union", "children": []}}})",
+       "(1e-50)"},
+  };
+  for (const auto& [text, typed] : cases) {
+    const std::string scene = path("typed.json");
+    std::ofstream(scene) << text;
+    const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(typed), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(Outputs, ANulByteInASceneFileIsAnErrorNamingItsOffset) {
+  const std::string scene = path("nul.json");
+  const std::string valid =
+      R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "root": {"type": "union", "children": []}})";
+  {
+    std::ofstream out(scene, std::ios::binary);
+    out << valid << '\0' << "garbage";
+  }
+  const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("NUL byte at offset " + std::to_string(valid.size())), std::string::npos)
+      << r.output;
+}
+
+TEST_F(Outputs, TooManyJsonValuesAreRefusedWhileParsing) {
+  const std::string scene = path("many.json");
+  {
+    std::ofstream out(scene);
+    out << "[";
+    for (int i = 0; i < 1'100'000; ++i) out << "{},";
+    out << "{}]";
+  }
+  const CommandRun r = run_shell(address_space_limit(1048576) + shell_quote(LEVRT_BINARY) +
+                                 " render --scene " + shell_quote(scene) + " --width 8 --height 8");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("more than 1000000 JSON values"), std::string::npos) << r.output;
+}
+
+TEST_F(Outputs, HelpListsEverySettingsDefaultAndRange) {
+  const CommandRun r = run_levrt({"render", "--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  const app::Settings defaults;
+  for (const app::SettingSpec& spec : app::setting_table()) {
+    const std::string flag = std::string("--") + spec.name + " ";
+    const std::size_t at = r.output.find(flag);
+    ASSERT_NE(at, std::string::npos) << flag << "\n" << r.output;
+    const std::string line = r.output.substr(at, r.output.find('\n', at) - at);
+    EXPECT_NE(line.find("=" + app::setting_text(defaults, spec)), std::string::npos) << line;
+    if (const auto* range = std::get_if<app::IntRange>(&spec.kind)) {
+      EXPECT_NE(
+          line.find("[" + std::to_string(range->min) + ", " + std::to_string(range->max) + "]"),
+          std::string::npos)
+          << line;
+    } else if (const auto* choice = std::get_if<app::Choice>(&spec.kind)) {
+      for (const std::string& option : choice->options())
+        EXPECT_NE(line.find(option), std::string::npos) << line;
+    } else {
+      EXPECT_NE(line.find("FLOAT"), std::string::npos) << line;
+    }
+  }
+}
+
+TEST_F(Outputs, AnUnknownCommandListsTheCommands) {
+  const CommandRun r = run_levrt({"rendr"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  for (const std::string command : {"render", "export", "bench", "snapshot", "view"}) {
+    EXPECT_NE(r.output.find(command), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(Outputs, WithoutADisplayLevrtSaysItWritesTheSnapshotAndWhere) {
+  // stderr alone: the summary on stdout goes to /dev/null.
+  const CommandRun r = run_shell("(cd " + shell_quote(dir_.string()) + " && env -u DISPLAY " +
+                                 shell_quote(LEVRT_BINARY) + " 2>&1 >/dev/null)");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((fs::canonical(dir_) / "out").string()), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "building.png"));
+}
+
+}  // namespace
