@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/log_slider.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -62,12 +63,14 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
   const float full = ImGui::CalcItemWidth();
   if (range.logarithmic) {
     // One row: the log slider, a 0 button and the typed value.
-    const double lo = std::max(range.min, range.slider_min), hi = std::min(range.max, range.slider_max);
-    double slider = std::clamp(value, lo, hi);
+    const LogSpan span{std::max(range.min, range.slider_min), std::min(range.max, range.slider_max)};
+    float position = log_slider_position(value, span);
+    const float left = log_slider_position(span.lo, span), right = log_slider_position(span.hi, span);
     ImGui::SetNextItemWidth(full * 0.55f);
-    if (ImGui::SliderScalar("##log", ImGuiDataType_Double, &slider, &lo, &hi,
-                            value == 0.0 ? "0 (exact)" : "%.2e", ImGuiSliderFlags_Logarithmic)) {
-      value = slider;
+    // The handle's text has no '%' conversion: ImGui prints it as it is.
+    if (ImGui::SliderFloat("##log", &position, left, right, log_slider_text(value).c_str(),
+                           ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_AlwaysClamp)) {
+      value = log_slider_value(position, span);
       changed = true;
     }
     help_tooltip(spec);
