@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <imgui.h>
 
@@ -47,6 +48,8 @@ void draw_view_section(ViewerState& state) {
     if (i % 2 == 1) ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
     if (ImGui::RadioButton(modes[i].label, state.view == modes[i].mode))
       select_view(state, modes[i].mode);
+    if (state.record_controls)
+      record_item(&state.control_rects, std::string("view:") + modes[i].name);
   }
   const ViewModeInfo& info = view_mode_info(state.view);
   if (state.view == ViewMode::image) {

@@ -70,7 +70,7 @@ WindowSize parse_window_size(const std::string& text) {
   throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
 }
 
-void check_png_path(const char* flag, const std::string& path) {
+void check_output_path(const char* flag, const std::string& path) {
   namespace fs = std::filesystem;
   if (path.empty()) throw UsageError(std::string(flag) + ": needs a file name, got ''");
   std::error_code ec;
@@ -337,11 +337,12 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 int run_viewer(const Settings& settings, const ViewFlags& flags) {
   const WindowSize window_size = parse_window_size(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
-  if (!flags.screenshot.empty()) check_png_path("--screenshot", flags.screenshot);
+  if (!flags.screenshot.empty()) check_output_path("--screenshot", flags.screenshot);
+  if (!flags.controls.empty()) check_output_path("--controls", flags.controls);
   if (!flags.screenshot.empty() && flags.frames == 0)
     throw UsageError("--screenshot: needs --frames N");
   for (const ScriptedChange& c : script) {
-    if (c.key == "screenshot") check_png_path("--set screenshot", c.value);
+    if (c.key == "screenshot") check_output_path("--set screenshot", c.value);
   }
 
   // Ctrl-C, SIGTERM and SIGHUP close the window like its close button (exit 130).
@@ -352,7 +353,9 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
 
   ViewerState state;
   state.settings = settings;
-  state.mouse_input = flags.frames == 0;
+  state.mouse_input = flags.frames == 0 || flags.real_input;
+  state.record_controls = !flags.controls.empty();
+  std::string controls_written;
   FrameLog log;
   Picture picture;
   ErrorClock error_clock;
@@ -412,11 +415,18 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       const Layout layout = window_layout(ImGui::GetIO().DisplaySize);
+      state.control_rects.clear();
       draw_panel(state, snapshots, now, layout);
       draw_results(state, now, layout);
       compose_picture(state, picture, error_clock, now, screenshot_now);
       draw_picture_window(state, picture, layout);
       ImGui::Render();
+      if (state.record_controls) {
+        const std::string controls = controls_json(state.control_rects, state.settings, state.view,
+                                                   ImGui::IsAnyItemActive() || ImGui::IsAnyMouseDown());
+        if (controls != controls_written) write_controls_file(flags.controls, controls);
+        controls_written = controls;
+      }
 
       if (state.request_dirty) {
         last_posted = worker.post(make_request(state));
