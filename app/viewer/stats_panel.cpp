@@ -2,11 +2,13 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <imgui.h>
 
 #include "app/viewer/live_stats.h"
+#include "lev/methods.h"
 
 namespace app::viewer {
 namespace {
@@ -75,7 +77,11 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
     return;
   row("scene", "%s, %llu lights", st.scene_name.c_str(),
       static_cast<unsigned long long>(st.light_count));
-  row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
+  const std::optional<lev::Method> method = lev::parse_method(st.method);
+  if (method && !lev::method_info(*method).uses_tolerance)
+    row("method", "%s (ignores the tolerance)", st.method.c_str());
+  else
+    row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
   row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
   row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
   row("Mrays/s", "%.2f (primary + shadow)", s.mrays_per_second);
