@@ -73,8 +73,10 @@ void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_
 void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::time_point now) {
   const WorkerStatus& st = state.status;
   const LiveStats s = collect_live_stats(state.image, st, state.error, now);
-  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp))
-    return;
+  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg)) return;
+  // The names keep their full width; the values take the rest.
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
   row("scene", "%s, %llu lights", st.scene_name.c_str(),
       static_cast<unsigned long long>(st.light_count));
   const std::optional<lev::Method> method = lev::parse_method(st.method);
