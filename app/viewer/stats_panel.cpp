@@ -90,7 +90,10 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   row("shading points", "%llu", static_cast<unsigned long long>(s.shading_points));
   row("shadow rays", "%llu", static_cast<unsigned long long>(s.shadow_rays));
   row("lights tested/point", "%.2f avg, %u max", s.lights_tested_avg, s.lights_tested_max);
-  row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
+  if (s.shading_points > 0 && s.nodes_visited_avg == 0.0)
+    row("nodes visited/point", "none (%s walks no light hierarchy)", st.method.c_str());
+  else
+    row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
   row("hierarchy", "%s", bytes_text(st.hierarchy_bytes).c_str());
   if (st.method_bytes > 0) row("method memory", "%s", bytes_text(st.method_bytes).c_str());
   row("build / refit", "%.3f s / %.4f s", st.build_seconds, st.refit_seconds);

@@ -361,6 +361,7 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 int run_viewer(const Settings& settings, const ViewFlags& flags) {
   const WindowSize window_size = parse_window_size(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
+  check_hover_pixels(script, settings);
   if (!flags.screenshot.empty()) check_output_path("--screenshot", flags.screenshot);
   if (!flags.controls.empty()) check_output_path("--controls", flags.controls);
   if (!flags.screenshot.empty() && flags.frames == 0)
