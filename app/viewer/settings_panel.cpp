@@ -164,7 +164,9 @@ void draw_settings_section(ViewerState& state) {
   if (ImGui::Button("Reset camera")) reset_camera(state);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene's preset view");
   ImGui::SameLine();
-  ImGui::TextDisabled("drag: orbit, right drag: pan, wheel: zoom");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("drag: orbit, right drag: pan, wheel: zoom");
+  ImGui::PopStyleColor();
 }
 
 }  // namespace app::viewer

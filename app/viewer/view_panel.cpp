@@ -53,9 +53,10 @@ void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange&
   }
   ImGui::Dummy(ImVec2(width, bar_height + 4.0f + ImGui::GetTextLineHeight()));
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("%s, %.4g .. %.4g over the rendered pixels; log scale above the minimum. "
-                     "Grey: not rendered yet.",
-                     info.unit, range.min, range.max);
+  // The range leads its own line, so wrapping never splits a number.
+  ImGui::TextWrapped("%s", info.unit);
+  ImGui::TextWrapped("%.4g .. %.4g, log scale from the minimum; grey: not rendered yet",
+                     range.min, range.max);
   ImGui::PopStyleColor();
 }
 

@@ -42,6 +42,7 @@ constexpr double kComposeSeconds = 1.0 / 30.0;  // the texture is rebuilt at mos
 constexpr double kErrorSeconds = 0.25;          // and the error image at most this often
 constexpr float kPanelWidth = 430.0f;
 constexpr float kSideBySideWidth = 720.0f;  // narrower results show statistics and plot as tabs
+constexpr float kRoomyHeight = 720.0f;      // lower windows pack the panel's rows closer
 
 double seconds_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -293,6 +294,9 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
                 const Layout& layout) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
   ImGui::SetNextWindowSize(layout.panel_size);
+  // Below kRoomyHeight the rows pack closer, so the whole panel fits from 600 pixels up.
+  const bool compact = layout.panel_size.y < kRoomyHeight;
+  if (compact) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(8.0f, 2.0f));
   ImGui::Begin("levrt", nullptr, kFixedWindow);
   draw_status_line(state, now);
   if (ImGui::CollapsingHeader("Scene and method", ImGuiTreeNodeFlags_DefaultOpen))
@@ -304,6 +308,7 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
     draw_snapshot_section(state, snapshots, now);
   }
   ImGui::End();
+  if (compact) ImGui::PopStyleVar();
 }
 
 void draw_trade_section(const ViewerState& state) {
