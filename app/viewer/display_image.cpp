@@ -166,7 +166,8 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
   }
   if (any) range = {lo, hi};
   for (std::size_t i = 0; i < n; ++i) {
-    const glm::u8vec3 heat = renderer::viridis(static_cast<float>(heatmap_position(values[i], range)));
+    const glm::u8vec3 heat =
+        renderer::viridis(static_cast<float>(heatmap_position(values[i], range)));
     for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[c] : kNotRendered[c];
   }
   return rgb;

@@ -1,9 +1,10 @@
 // Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
 // the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
 // scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y in image pixels,
-// inside the image: show that pixel's tooltip; scripted mode ignores the real mouse), and three actions: `snapshot`
-// (save into a folder), `screenshot` (write the window to a PNG) and `await=idle` (hold the
-// frame count until the render, and the reference if requested, are complete).
+// inside the image: show that pixel's tooltip; scripted mode ignores the real mouse), and three
+// actions: `snapshot` (save into a folder), `screenshot` (write the window to a PNG) and
+// `await=idle` (hold the frame count until the render, and the reference if requested, are
+// complete).
 #pragma once
 
 #include <string>

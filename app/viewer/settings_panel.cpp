@@ -76,9 +76,11 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
   const float full = ImGui::CalcItemWidth();
   if (range.logarithmic) {
     // One row: the log slider, a 0 button and the typed value.
-    const LogSpan span{std::max(range.min, range.slider_min), std::min(range.max, range.slider_max)};
+    const LogSpan span{std::max(range.min, range.slider_min),
+                       std::min(range.max, range.slider_max)};
     float position = log_slider_position(value, span);
-    const float left = log_slider_position(span.lo, span), right = log_slider_position(span.hi, span);
+    const float left = log_slider_position(span.lo, span),
+                right = log_slider_position(span.hi, span);
     ImGui::SetNextItemWidth(full * 0.55f);
     // The handle's text has no '%' conversion: ImGui prints it as it is.
     if (ImGui::SliderFloat("##log", &position, left, right, log_slider_text(value).c_str(),

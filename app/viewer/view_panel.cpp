@@ -55,8 +55,8 @@ void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange&
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   // The range leads its own line, so wrapping never splits a number.
   ImGui::TextWrapped("%s", info.unit);
-  ImGui::TextWrapped("%.4g .. %.4g, log scale from the minimum; grey: not rendered yet",
-                     range.min, range.max);
+  ImGui::TextWrapped("%.4g .. %.4g, log scale from the minimum; grey: not rendered yet", range.min,
+                     range.max);
   ImGui::PopStyleColor();
 }
 
@@ -72,13 +72,14 @@ void draw_view_section(ViewerState& state) {
   const ViewModeInfo& info = view_mode_info(state.view);
   if (state.view == ViewMode::image) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("Dimmed: the previous render, until its tiles are redrawn. Outlined: tiles "
-                       "being traced now.");
+    ImGui::TextWrapped(
+        "Dimmed: the previous render, until its tiles are redrawn. Outlined: tiles "
+        "being traced now.");
     ImGui::PopStyleColor();
     return;
   }
-  const bool rendered = state.view == ViewMode::error ? state.error.pixels_compared > 0
-                                                      : state.image.tiles_seen > 0;
+  const bool rendered =
+      state.view == ViewMode::error ? state.error.pixels_compared > 0 : state.image.tiles_seen > 0;
   draw_heatmap_legend(info, state.heatmap_range, rendered, state.status.method);
 }
 

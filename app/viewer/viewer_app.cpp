@@ -453,8 +453,9 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       draw_picture_window(state, picture, layout);
       ImGui::Render();
       if (state.record_controls) {
-        const std::string controls = controls_json(state.control_rects, state.settings, state.view,
-                                                   ImGui::IsAnyItemActive() || ImGui::IsAnyMouseDown());
+        const std::string controls =
+            controls_json(state.control_rects, state.settings, state.view,
+                          ImGui::IsAnyItemActive() || ImGui::IsAnyMouseDown());
         if (controls != controls_written) write_controls_file(flags.controls, controls);
         controls_written = controls;
       }

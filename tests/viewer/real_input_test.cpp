@@ -51,11 +51,12 @@ class RealInput : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // -displayfd picks a free display number and writes it once the server accepts clients.
-    run_in_background("Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>" +
-                          shell_quote(path("display")),
-                      "xvfb.pid", "xvfb.rc");
-    ASSERT_TRUE(wait_for([&] { return read_text(path("display")).find('\n') != std::string::npos; }))
-        << "Xvfb did not start";
+    run_in_background(
+        "Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>" + shell_quote(path("display")),
+        "xvfb.pid", "xvfb.rc");
+    ASSERT_TRUE(wait_for([&] {
+      return read_text(path("display")).find('\n') != std::string::npos;
+    })) << "Xvfb did not start";
     display_ = ":" + read_text(path("display")).substr(0, read_text(path("display")).find('\n'));
   }
 
@@ -97,9 +98,7 @@ class RealInput : public ::testing::Test {
     return false;
   }
 
-  Json controls() const {
-    return Json::parse(read_text(dir_ / "controls.json"), nullptr, false);
-  }
+  Json controls() const { return Json::parse(read_text(dir_ / "controls.json"), nullptr, false); }
 
   // Waits until the viewer's file satisfies the condition with the mouse released and no control
   // held, and returns it.
@@ -153,7 +152,8 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
                         "--frames 100000000 --real-input --controls " +
                         shell_quote(path("controls.json")),
                     "viewer.pid", "viewer.rc");
-  Json c = wait_for_controls([](const Json& j) { return j["controls"].contains("tolerance_slider"); });
+  Json c =
+      wait_for_controls([](const Json& j) { return j["controls"].contains("tolerance_slider"); });
   ASSERT_TRUE(c.is_object() && c["controls"].contains("tolerance_slider"))
       << read_text(path("viewer.rc.log"));
 
