@@ -124,18 +124,31 @@ class RealInput : public ::testing::Test {
     return std::to_string(static_cast<int>(x)) + " " + std::to_string(static_cast<int>(y));
   }
 
+  // Moves the pointer onto a named control and waits until the viewer sees it there, so the
+  // click that follows reaches the window whatever the load.
+  bool hover(const std::string& control, double fx) {
+    const Json rect = controls()["controls"][control];
+    EXPECT_TRUE(rect.is_array()) << control;
+    if (!rect.is_array()) return false;
+    xdotool("mousemove " + point(rect, fx, 0.5));
+    const Json c =
+        wait_for_controls([&](const Json& j) { return setting(j, "hovered") == control; });
+    EXPECT_EQ(setting(c, "hovered"), control);
+    return setting(c, "hovered") == control;
+  }
+
   // Clicks a named control and waits until the file shows `key` different from `before`.
   Json click_and_wait(const std::string& control, double fx, const std::string& key,
                       const std::string& before) {
-    const Json rect = controls()["controls"][control];
-    EXPECT_TRUE(rect.is_array()) << control;
-    if (!rect.is_array()) return Json{};
-    xdotool("mousemove " + point(rect, fx, 0.5) + " click 1");
+    if (!hover(control, fx)) return Json{};
+    xdotool("click 1");
     return wait_for_controls([&](const Json& c) { return setting(c, key) != before; });
   }
 
   static std::string setting(const Json& c, const std::string& key) {
-    const Json* holder = key == "view" ? &c : (c.contains("settings") ? &c["settings"] : nullptr);
+    // The view and the hovered control are top-level keys, the settings under "settings".
+    const bool top = key == "view" || key == "hovered";
+    const Json* holder = top ? &c : (c.contains("settings") ? &c["settings"] : nullptr);
     if (!holder || !holder->contains(key) || !(*holder)[key].is_string()) return "";
     return (*holder)[key].get_ref<const std::string&>();
   }
@@ -181,7 +194,8 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
   const Json slider = c["controls"]["tolerance_slider"];
   // The pauses let the viewer draw frames between the steps (ImGui reads the pointer once a
   // frame), as a hand would; the result is checked by value, not by time.
-  xdotool("mousemove " + point(slider, 0.9, 0.5) + " sleep 0.2 mousedown 1 sleep 0.2 mousemove " +
+  ASSERT_TRUE(hover("tolerance_slider", 0.9));
+  xdotool("sleep 0.2 mousedown 1 sleep 0.2 mousemove " +
           point(slider, 0.6, 0.5) + " sleep 0.2 mousemove " + point(slider, 0.2, 0.5) +
           " sleep 0.2 mouseup 1");
   c = wait_for_controls([&](const Json& j) {
@@ -197,7 +211,8 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
 
   // The method combo: open it, then pick rt from the list it shows.
   ASSERT_EQ(setting(c, "method"), "lev");
-  xdotool("mousemove " + point(c["controls"]["method"], 0.5, 0.5) + " click 1");
+  ASSERT_TRUE(hover("method", 0.5));
+  xdotool("click 1");
   c = wait_for_controls([](const Json& j) { return j["controls"].contains("method:rt"); });
   c = click_and_wait("method:rt", 0.5, "method", "lev");
   EXPECT_EQ(setting(c, "method"), "rt");
