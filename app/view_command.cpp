@@ -20,6 +20,11 @@ void add_view_flags(CLI::App& command, ViewFlags& flags) {
   command.add_flag("--report-fps", flags.report_fps,
                    "print UI frame times and first-tile latencies at exit");
   command.add_option("--window", flags.window, "window size, WIDTHxHEIGHT");
+  command.add_flag("--real-input", flags.real_input,
+                   "scripted: let the real mouse drive the picture as well as the panel");
+  command.add_option("--controls", flags.controls,
+                     "write the panel's control rectangles and the settings to this JSON file "
+                     "whenever they change (for tests driving the window with real input)");
 }
 
 bool viewer_display_available() {

@@ -21,6 +21,8 @@ struct ViewFlags {
   std::vector<std::string> changes;  // scripted: "key=value@frame"
   bool report_fps = false;           // print frame times and first-tile latencies at exit
   std::string window = "1280x800";   // window size, WIDTHxHEIGHT
+  bool real_input = false;           // scripted: the real mouse drives the picture too
+  std::string controls;              // write the named controls' rectangles and the settings here
 };
 
 // There is no display to open a window on (exit code 2, like any usage error).

@@ -10,12 +10,14 @@ namespace lev {
 
 const std::vector<MethodInfo>& method_table() {
   static const std::vector<MethodInfo> table = {
-      {Method::rt, "rt", "RT (every light)", "a shadow ray to every light with non-zero irradiance"},
+      {Method::rt, "rt", "RT (every light)", "a shadow ray to every light with non-zero irradiance",
+       false},
       {Method::ast, "ast", "AST (Ward 1991)",
        "adaptive shadow testing: test the largest potential contributions until the untested "
-       "rest is below the tolerance, estimate the rest from hit ratios"},
+       "rest is below the tolerance, estimate the rest from hit ratios",
+       true},
       {Method::lev, "lev", "LEV (extent volumes)",
-       "walk the light extent volume hierarchy; shadow rays only to the lights returned"},
+       "walk the light extent volume hierarchy; shadow rays only to the lights returned", true},
   };
   return table;
 }

@@ -20,6 +20,7 @@ struct MethodInfo {
   const char* name;   // CLI value and stats JSON
   const char* label;  // viewer
   const char* summary;
+  bool uses_tolerance;  // false: the images do not depend on the tolerance (no restart, no refit)
 };
 
 const std::vector<MethodInfo>& method_table();

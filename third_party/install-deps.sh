@@ -7,7 +7,7 @@ packages=(
   libglm-dev libembree-dev libtbb-dev libstb-dev
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libgl-dev libopengl-dev libegl-dev libx11-dev
-  xvfb xauth mesa-utils
+  xvfb xauth mesa-utils xdotool
   clang
 )
 missing=()

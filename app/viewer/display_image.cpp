@@ -1,4 +1,5 @@
 #include "app/viewer/display_image.h"
+#include "app/viewer/heatmap_scale.h"
 
 #include <algorithm>
 #include <limits>
@@ -164,9 +165,10 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
     hi = std::max(hi, values[i]);
   }
   if (any) range = {lo, hi};
-  const std::vector<std::uint8_t> heat = renderer::heatmap_rgb8(values, range, true);
   for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[3 * i + c] : kNotRendered[c];
+    const glm::u8vec3 heat =
+        renderer::viridis(static_cast<float>(heatmap_position(values[i], range)));
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[c] : kNotRendered[c];
   }
   return rgb;
 }

@@ -52,8 +52,9 @@ struct ErrorImage {
 };
 ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference);
 
-// RGBA texels of one view. Heatmaps are viridis on log(1 + value) over the rendered pixels'
-// range (returned in `range`); pixels not rendered yet are dark grey, stale colours dimmed.
+// RGBA texels of one view. Heatmaps are viridis over the rendered pixels' range, min to max
+// (returned in `range`; heatmap_scale.h); pixels not rendered yet are dark grey, stale colours
+// dimmed.
 void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
                        std::vector<std::uint8_t>& rgba, renderer::HeatmapRange& range);
 

@@ -13,6 +13,7 @@
 #include "app/scene_loading.h"
 #include "app/viewer/reference_render.h"
 #include "lev/light_hierarchy.h"
+#include "lev/methods.h"
 #include "renderer/render.h"
 
 namespace app::viewer {
@@ -179,9 +180,11 @@ struct Worker {
     const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth,
                       rs.pixel_stride};
     const bool view_changed = !view || !same_view(key, *view);
+    // A method that ignores the tolerance keeps rendering when only the tolerance moves.
+    const bool tolerance_matters =
+        rs.tolerance != main_settings.tolerance && lev::method_info(rs.method).uses_tolerance;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              rs.tolerance != main_settings.tolerance ||
-                              rs.threads != main_settings.threads;
+                              tolerance_matters || rs.threads != main_settings.threads;
     const bool refits = main_changed && rs.tolerance != sc.lights.tolerance;
 
     // Nothing may render on the scene while it changes: the reference is joined (or dropped

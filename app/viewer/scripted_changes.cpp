@@ -93,6 +93,33 @@ std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string
   return changes;
 }
 
+void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial) {
+  // The frame loop applies the changes frame by frame, each frame's in command-line order: the
+  // size at a hover is the last width and height change before it in that order.
+  const auto before = [&](std::size_t a, std::size_t b) {
+    return changes[a].frame < changes[b].frame || (changes[a].frame == changes[b].frame && a < b);
+  };
+  for (std::size_t h = 0; h < changes.size(); ++h) {
+    if (changes[h].key != "hover") continue;
+    Settings at_hover = initial;
+    for (const char* key : {"width", "height"}) {
+      std::size_t last = changes.size();
+      for (std::size_t i = 0; i < changes.size(); ++i) {
+        if (changes[i].key == key && before(i, h) && (last == changes.size() || before(last, i)))
+          last = i;
+      }
+      if (last != changes.size()) set_setting(at_hover, *find_setting(key), changes[last].value);
+    }
+    int x = 0, y = 0;
+    parse_pixel(changes[h].value, x, y);
+    if (x >= at_hover.width || y >= at_hover.height) {
+      reject("hover=" + changes[h].value + "@" + std::to_string(changes[h].frame),
+             "hover is in image pixels and must be inside the " + std::to_string(at_hover.width) +
+                 "x" + std::to_string(at_hover.height) + " image");
+    }
+  }
+}
+
 ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) {
   const std::string label = c.key + "=" + c.value + " (frame " + std::to_string(c.frame) + ")";
   if (const SettingSpec* spec = find_setting(c.key)) {

@@ -1,9 +1,10 @@
 // Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
 // the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
-// scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y: show that
-// pixel's tooltip; scripted mode ignores the real mouse), and three actions: `snapshot`
-// (save into a folder), `screenshot` (write the window to a PNG) and `await=idle` (hold the
-// frame count until the render, and the reference if requested, are complete).
+// scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y in image pixels,
+// inside the image: show that pixel's tooltip; scripted mode ignores the real mouse), and three
+// actions: `snapshot` (save into a folder), `screenshot` (write the window to a PNG) and
+// `await=idle` (hold the frame count until the render, and the reference if requested, are
+// complete).
 #pragma once
 
 #include <string>
@@ -24,6 +25,10 @@ struct ScriptedChange {
 // Throws UsageError ("--set: ...") for a malformed change or a value its key rejects.
 ScriptedChange parse_scripted_change(const std::string& text);
 std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string>& texts);
+
+// Refuses (UsageError) a hover pixel outside the image: the image size at the hover's frame is
+// the initial settings' with the script's width and height changes up to that frame applied.
+void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial);
 
 // Applies a control change to the state, or returns the action the frame loop must perform.
 // Throws UsageError for a light count the current scene does not have.

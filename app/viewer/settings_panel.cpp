@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/log_slider.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -17,7 +18,8 @@ void help_tooltip(const SettingSpec& spec) {
 }
 
 // Light counts of the scene's levels, for the level control.
-bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRange& range) {
+bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRange& range,
+                      ControlRects* rects) {
   const scenes::SceneModel* model = scenes::find_scene_model(settings.scene);
   if (!model) {
     ImGui::LabelText("Lights", "from the scene");
@@ -36,18 +38,29 @@ bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRang
         settings.*(range.field) = l;
         changed = true;
       }
+      record_item(rects, "lights:" + std::to_string(model->light_count(l)));
     }
     ImGui::EndCombo();
   }
+  record_item(rects, "lights");
   help_tooltip(spec);
   return changed;
 }
 
-bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range) {
-  if (range.field == &Settings::level) return draw_light_count(settings, spec, range);
+bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range,
+              ControlRects* rects) {
+  if (range.field == &Settings::level) return draw_light_count(settings, spec, range, rects);
   int value = settings.*(range.field);
+  const float width = ImGui::CalcItemWidth();
   const bool edited =
       ImGui::InputInt(spec.label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue);
+  // ImGui lays out the field, then square "-" and "+" buttons, within the item width.
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const float button = ImGui::GetFrameHeight(), gap = ImGui::GetStyle().ItemInnerSpacing.x;
+  record_rect(rects, std::string(spec.name) + "+", min.x + width - button, min.y, min.x + width,
+              max.y);
+  record_rect(rects, std::string(spec.name) + "-", min.x + width - 2.0f * button - gap, min.y,
+              min.x + width - button - gap, max.y);
   help_tooltip(spec);
   value = std::clamp(value, range.min, range.max);
   if (!edited || value == settings.*(range.field)) return false;
@@ -55,27 +68,34 @@ bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range
   return true;
 }
 
-bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& range) {
+bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& range,
+               ControlRects* rects) {
   double value = settings.*(range.field);
   bool changed = false;
   ImGui::PushID(spec.name);
   const float full = ImGui::CalcItemWidth();
   if (range.logarithmic) {
     // One row: the log slider, a 0 button and the typed value.
-    const double lo = std::max(range.min, range.slider_min), hi = std::min(range.max, range.slider_max);
-    double slider = std::clamp(value, lo, hi);
+    const LogSpan span{std::max(range.min, range.slider_min),
+                       std::min(range.max, range.slider_max)};
+    float position = log_slider_position(value, span);
+    const float left = log_slider_position(span.lo, span),
+                right = log_slider_position(span.hi, span);
     ImGui::SetNextItemWidth(full * 0.55f);
-    if (ImGui::SliderScalar("##log", ImGuiDataType_Double, &slider, &lo, &hi,
-                            value == 0.0 ? "0 (exact)" : "%.2e", ImGuiSliderFlags_Logarithmic)) {
-      value = slider;
+    // The handle's text has no '%' conversion: ImGui prints it as it is.
+    if (ImGui::SliderFloat("##log", &position, left, right, log_slider_text(value).c_str(),
+                           ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_AlwaysClamp)) {
+      value = log_slider_value(position, span);
       changed = true;
     }
+    record_item(rects, std::string(spec.name) + "_slider");
     help_tooltip(spec);
     ImGui::SameLine(0.0f, 2.0f);
     if (ImGui::Button("0") && range.min <= 0.0) {
       value = 0.0;
       changed = true;
     }
+    record_item(rects, std::string(spec.name) + "_zero");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("tolerance 0: no culling, the image equals rt");
     ImGui::SameLine(0.0f, 2.0f);
     ImGui::SetNextItemWidth(std::max(full -
@@ -91,6 +111,7 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
       changed = true;
     }
   }
+  record_item(rects, std::string(spec.name) + "_field");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s (--%s); type a value and press Enter", spec.help, spec.name);
   ImGui::PopID();
@@ -99,7 +120,8 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
   return true;
 }
 
-bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choice) {
+bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choice,
+                 ControlRects* rects) {
   std::vector<std::string> options = choice.options();
   const std::string current = settings.*(choice.field);
   // A value from the command line outside the list (a scene file) stays selectable.
@@ -112,9 +134,11 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
         settings.*(choice.field) = o;
         changed = true;
       }
+      record_item(rects, std::string(spec.name) + ":" + o);
     }
     ImGui::EndCombo();
   }
+  record_item(rects, spec.name);
   help_tooltip(spec);
   return changed;
 }
@@ -122,16 +146,17 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
 }  // namespace
 
 void draw_settings_section(ViewerState& state) {
+  ControlRects* rects = state.record_controls ? &state.control_rects : nullptr;
   ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
   for (const SettingSpec& spec : setting_table()) {
     const Settings before = state.settings;
     bool changed = false;
     if (const auto* i = std::get_if<IntRange>(&spec.kind)) {
-      changed = draw_int(state.settings, spec, *i);
+      changed = draw_int(state.settings, spec, *i, rects);
     } else if (const auto* r = std::get_if<RealRange>(&spec.kind)) {
-      changed = draw_real(state.settings, spec, *r);
+      changed = draw_real(state.settings, spec, *r, rects);
     } else {
-      changed = draw_choice(state.settings, spec, std::get<Choice>(spec.kind));
+      changed = draw_choice(state.settings, spec, std::get<Choice>(spec.kind), rects);
     }
     if (changed)
       settings_changed(state, before,
@@ -141,7 +166,9 @@ void draw_settings_section(ViewerState& state) {
   if (ImGui::Button("Reset camera")) reset_camera(state);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene's preset view");
   ImGui::SameLine();
-  ImGui::TextDisabled("drag: orbit, right drag: pan, wheel: zoom");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("drag: orbit, right drag: pan, wheel: zoom");
+  ImGui::PopStyleColor();
 }
 
 }  // namespace app::viewer

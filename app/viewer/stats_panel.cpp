@@ -2,11 +2,13 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <imgui.h>
 
 #include "app/viewer/live_stats.h"
+#include "lev/methods.h"
 
 namespace app::viewer {
 namespace {
@@ -71,18 +73,27 @@ void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_
 void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::time_point now) {
   const WorkerStatus& st = state.status;
   const LiveStats s = collect_live_stats(state.image, st, state.error, now);
-  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp))
-    return;
+  if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_RowBg)) return;
+  // The names keep their full width; the values take the rest.
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
   row("scene", "%s, %llu lights", st.scene_name.c_str(),
       static_cast<unsigned long long>(st.light_count));
-  row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
+  const std::optional<lev::Method> method = lev::parse_method(st.method);
+  if (method && !lev::method_info(*method).uses_tolerance)
+    row("method", "%s (ignores the tolerance)", st.method.c_str());
+  else
+    row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
   row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
   row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
   row("Mrays/s", "%.2f (primary + shadow)", s.mrays_per_second);
   row("shading points", "%llu", static_cast<unsigned long long>(s.shading_points));
   row("shadow rays", "%llu", static_cast<unsigned long long>(s.shadow_rays));
   row("lights tested/point", "%.2f avg, %u max", s.lights_tested_avg, s.lights_tested_max);
-  row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
+  if (s.shading_points > 0 && s.nodes_visited_avg == 0.0)
+    row("nodes visited/point", "none (%s walks no light hierarchy)", st.method.c_str());
+  else
+    row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
   row("hierarchy", "%s", bytes_text(st.hierarchy_bytes).c_str());
   if (st.method_bytes > 0) row("method memory", "%s", bytes_text(st.method_bytes).c_str());
   row("build / refit", "%.3f s / %.4f s", st.build_seconds, st.refit_seconds);

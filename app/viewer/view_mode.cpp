@@ -6,10 +6,13 @@ namespace app::viewer {
 
 const std::vector<ViewModeInfo>& view_mode_table() {
   static const std::vector<ViewModeInfo> table = {
-      {ViewMode::image, "image", "Image", ""},
-      {ViewMode::lights, "lights", "Lights tested", "lights tested per sample"},
-      {ViewMode::nodes, "nodes", "Nodes visited", "nodes visited per sample"},
-      {ViewMode::error, "error", "Error vs rt", "pixel error, % of 765 (pass 0)"},
+      {ViewMode::image, "image", "Image", "", ""},
+      {ViewMode::lights, "lights", "Lights tested", "lights tested per sample (pixel mean)",
+       "no shadow ray to any light: every light was culled or unlit"},
+      {ViewMode::nodes, "nodes", "Nodes visited", "hierarchy nodes visited per sample (pixel mean)",
+       "this method does not walk the light hierarchy"},
+      {ViewMode::error, "error", "Error vs rt", "error per pixel, % of 765 (pass 0 against rt)",
+       "the image equals rt"},
   };
   return table;
 }

@@ -16,7 +16,8 @@ struct ViewModeInfo {
   ViewMode mode;
   const char* name;   // --set view=NAME, file names
   const char* label;  // panel
-  const char* unit;   // heatmap legend (empty for the image)
+  const char* unit;   // heatmap legend: the quantity, its unit, per sample or per pixel
+  const char* zero;   // legend of a field that is 0 in every rendered pixel: what that means
 };
 
 const std::vector<ViewModeInfo>& view_mode_table();

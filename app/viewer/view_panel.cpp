@@ -2,12 +2,29 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <imgui.h>
 
+#include "app/viewer/heatmap_scale.h"
+
 namespace app::viewer {
 
-void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange& range) {
+void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange& range,
+                         bool rendered, const std::string& method) {
+  if (!rendered) {
+    ImGui::TextWrapped("%s: nothing rendered yet.", info.unit);
+    return;
+  }
+  if (range.max == 0.0 && range.min == 0.0) {
+    ImGui::TextWrapped("%s: 0 in every rendered pixel; %s (%s).", info.unit, info.zero,
+                       method.c_str());
+    return;
+  }
+  if (range.max == range.min) {
+    ImGui::TextWrapped("%s: %.4g in every rendered pixel (one colour).", info.unit, range.min);
+    return;
+  }
   const float width = ImGui::GetContentRegionAvail().x;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float bar_height = 14.0f;
@@ -20,14 +37,13 @@ void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange&
                         ImVec2(origin.x + t1 * width, origin.y + bar_height),
                         IM_COL32(c.x, c.y, c.z, 255));
   }
-  // Ticks at equal steps of t = log(1 + v) / log(1 + max): v = (1 + max)^t - 1.
-  const double max = std::max(range.max, 0.0);
-  const int ticks = 5;
+  // Ticks at equal steps of the colour position, labelled with the values there; fewer ticks
+  // when the panel is narrow, so the labels never overlap.
+  const int ticks = width < 300.0f ? 3 : 5;
   for (int k = 0; k < ticks; ++k) {
     const double t = static_cast<double>(k) / (ticks - 1);
-    const double v = std::pow(1.0 + max, t) - 1.0;
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g", v);
+    std::snprintf(text, sizeof text, "%.3g", heatmap_value_at(t, range));
     const float x = origin.x + static_cast<float>(t) * width;
     draw->AddLine(ImVec2(x, origin.y + bar_height), ImVec2(x, origin.y + bar_height + 4.0f),
                   IM_COL32(220, 220, 220, 255));
@@ -36,9 +52,12 @@ void draw_heatmap_legend(const ViewModeInfo& info, const renderer::HeatmapRange&
     draw->AddText(ImVec2(tx, origin.y + bar_height + 4.0f), IM_COL32(220, 220, 220, 255), text);
   }
   ImGui::Dummy(ImVec2(width, bar_height + 4.0f + ImGui::GetTextLineHeight()));
-  ImGui::TextDisabled("%s; log(1 + value), viridis", info.unit);
-  ImGui::TextDisabled("rendered pixels range %.3g .. %.3g; grey: not rendered yet", range.min,
-                      range.max);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  // The range leads its own line, so wrapping never splits a number.
+  ImGui::TextWrapped("%s", info.unit);
+  ImGui::TextWrapped("%.4g .. %.4g, log scale from the minimum; grey: not rendered yet", range.min,
+                     range.max);
+  ImGui::PopStyleColor();
 }
 
 void draw_view_section(ViewerState& state) {
@@ -47,14 +66,21 @@ void draw_view_section(ViewerState& state) {
     if (i % 2 == 1) ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
     if (ImGui::RadioButton(modes[i].label, state.view == modes[i].mode))
       select_view(state, modes[i].mode);
+    if (state.record_controls)
+      record_item(&state.control_rects, std::string("view:") + modes[i].name);
   }
   const ViewModeInfo& info = view_mode_info(state.view);
   if (state.view == ViewMode::image) {
-    ImGui::TextDisabled("dimmed: the previous render, until its tiles are redrawn");
-    ImGui::TextDisabled("outlined: tiles being traced now");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped(
+        "Dimmed: the previous render, until its tiles are redrawn. Outlined: tiles "
+        "being traced now.");
+    ImGui::PopStyleColor();
     return;
   }
-  draw_heatmap_legend(info, state.heatmap_range);
+  const bool rendered =
+      state.view == ViewMode::error ? state.error.pixels_compared > 0 : state.image.tiles_seen > 0;
+  draw_heatmap_legend(info, state.heatmap_range, rendered, state.status.method);
 }
 
 }  // namespace app::viewer

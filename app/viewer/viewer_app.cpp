@@ -41,6 +41,8 @@ constexpr double kFrameSeconds = 1.0 / 60.0;    // display rate the loop paces i
 constexpr double kComposeSeconds = 1.0 / 30.0;  // the texture is rebuilt at most this often
 constexpr double kErrorSeconds = 0.25;          // and the error image at most this often
 constexpr float kPanelWidth = 430.0f;
+constexpr float kSideBySideWidth = 720.0f;  // narrower results show statistics and plot as tabs
+constexpr float kRoomyHeight = 720.0f;      // lower windows pack the panel's rows closer
 
 double seconds_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -70,7 +72,7 @@ WindowSize parse_window_size(const std::string& text) {
   throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
 }
 
-void check_png_path(const char* flag, const std::string& path) {
+void check_output_path(const char* flag, const std::string& path) {
   namespace fs = std::filesystem;
   if (path.empty()) throw UsageError(std::string(flag) + ": needs a file name, got ''");
   std::error_code ec;
@@ -263,15 +265,17 @@ void write_screenshot(GLFWwindow* window, const std::string& path) {
 }
 
 // The window's layout: the panel on the left; on the right the picture above the results
-// (statistics next to the speed/accuracy plot).
+// (statistics next to the speed/accuracy plot). The results are as tall as their content was in
+// the previous frame (so no row is cut), within a third and three fifths of the window.
 struct Layout {
   ImVec2 panel_size, picture_pos, picture_size, results_pos, results_size;
 };
 
-Layout window_layout(const ImVec2& display) {
+Layout window_layout(const ImVec2& display, float results_content_height) {
   Layout l;
   const float panel_width = std::min(kPanelWidth, display.x * 0.5f);
-  const float results_height = std::clamp(display.y * 0.36f, 180.0f, 330.0f);
+  const float results_height =
+      std::clamp(results_content_height, display.y / 3.0f, display.y * 0.6f);
   l.panel_size = ImVec2(panel_width, display.y);
   l.picture_pos = ImVec2(panel_width, 0.0f);
   l.picture_size = ImVec2(display.x - panel_width, display.y - results_height);
@@ -290,6 +294,9 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
                 const Layout& layout) {
   ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
   ImGui::SetNextWindowSize(layout.panel_size);
+  // Below kRoomyHeight the rows pack closer, so the whole panel fits from 600 pixels up.
+  const bool compact = layout.panel_size.y < kRoomyHeight;
+  if (compact) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(8.0f, 2.0f));
   ImGui::Begin("levrt", nullptr, kFixedWindow);
   draw_status_line(state, now);
   if (ImGui::CollapsingHeader("Scene and method", ImGuiTreeNodeFlags_DefaultOpen))
@@ -301,22 +308,44 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
     draw_snapshot_section(state, snapshots, now);
   }
   ImGui::End();
+  if (compact) ImGui::PopStyleVar();
 }
 
-void draw_results(const ViewerState& state, Clock::time_point now, const Layout& layout) {
+void draw_trade_section(const ViewerState& state) {
+  ImGui::TextUnformatted("Pass-0 time vs average error against rt");
+  draw_trade_plot(state.trade, state.status.generation);
+}
+
+// Returns the height the results' content took, for the next frame's layout.
+float draw_results(const ViewerState& state, Clock::time_point now, const Layout& layout) {
   ImGui::SetNextWindowPos(layout.results_pos);
   ImGui::SetNextWindowSize(layout.results_size);
   ImGui::Begin("Statistics and the speed/accuracy trade", nullptr, kFixedWindow);
-  if (ImGui::BeginTable("results", 2,
-                        ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame)) {
+  float content_bottom = 0.0f;
+  if (layout.results_size.x < kSideBySideWidth) {
+    if (ImGui::BeginTabBar("results")) {
+      if (ImGui::BeginTabItem("Statistics")) {
+        draw_stats_section(state, now);
+        content_bottom = ImGui::GetCursorPosY();
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("Speed/accuracy")) {
+        draw_trade_section(state);
+        ImGui::EndTabItem();
+      }
+      ImGui::EndTabBar();
+    }
+  } else if (ImGui::BeginTable("results", 2,
+                               ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame)) {
     ImGui::TableNextColumn();
     draw_stats_section(state, now);
+    content_bottom = ImGui::GetCursorPosY();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted("Pass-0 time vs average error against rt");
-    draw_trade_plot(state.trade, state.status.generation);
+    draw_trade_section(state);
     ImGui::EndTable();
   }
   ImGui::End();
+  return content_bottom + ImGui::GetStyle().WindowPadding.y;
 }
 
 void draw_picture_window(ViewerState& state, const Picture& picture, const Layout& layout) {
@@ -337,11 +366,13 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 int run_viewer(const Settings& settings, const ViewFlags& flags) {
   const WindowSize window_size = parse_window_size(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
-  if (!flags.screenshot.empty()) check_png_path("--screenshot", flags.screenshot);
+  check_hover_pixels(script, settings);
+  if (!flags.screenshot.empty()) check_output_path("--screenshot", flags.screenshot);
+  if (!flags.controls.empty()) check_output_path("--controls", flags.controls);
   if (!flags.screenshot.empty() && flags.frames == 0)
     throw UsageError("--screenshot: needs --frames N");
   for (const ScriptedChange& c : script) {
-    if (c.key == "screenshot") check_png_path("--set screenshot", c.value);
+    if (c.key == "screenshot") check_output_path("--set screenshot", c.value);
   }
 
   // Ctrl-C, SIGTERM and SIGHUP close the window like its close button (exit 130).
@@ -352,7 +383,9 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
 
   ViewerState state;
   state.settings = settings;
-  state.mouse_input = flags.frames == 0;
+  state.mouse_input = flags.frames == 0 || flags.real_input;
+  state.record_controls = !flags.controls.empty();
+  std::string controls_written;
   FrameLog log;
   Picture picture;
   ErrorClock error_clock;
@@ -366,6 +399,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     Clock::time_point previous_start = Clock::now();
     Clock::time_point next_frame = previous_start;
     bool first = true;
+    float results_content_height = 0.0f;
 
     while (!glfwWindowShouldClose(window.get()) && !InterruptScope::flag().load()) {
       for (Clock::time_point t = Clock::now(); t < next_frame; t = Clock::now()) {
@@ -411,12 +445,20 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      const Layout layout = window_layout(ImGui::GetIO().DisplaySize);
+      const Layout layout = window_layout(ImGui::GetIO().DisplaySize, results_content_height);
+      state.control_rects.clear();
       draw_panel(state, snapshots, now, layout);
-      draw_results(state, now, layout);
+      results_content_height = draw_results(state, now, layout);
       compose_picture(state, picture, error_clock, now, screenshot_now);
       draw_picture_window(state, picture, layout);
       ImGui::Render();
+      if (state.record_controls) {
+        const std::string controls =
+            controls_json(state.control_rects, state.settings, state.view,
+                          ImGui::IsAnyItemActive() || ImGui::IsAnyMouseDown());
+        if (controls != controls_written) write_controls_file(flags.controls, controls);
+        controls_written = controls;
+      }
 
       if (state.request_dirty) {
         last_posted = worker.post(make_request(state));

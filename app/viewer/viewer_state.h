@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/settings.h"
+#include "app/viewer/control_rects.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
 #include "app/viewer/trade_plot.h"
@@ -41,6 +42,9 @@ struct ViewerState {
   // pointer happens to be) and can hover a pixel instead.
   bool mouse_input = true;
   std::optional<TileRect> scripted_hover;  // the pixel x0, y0
+  // `--controls FILE`: the panel records its named controls' rectangles each frame.
+  bool record_controls = false;
+  ControlRects control_rects;
 };
 
 // Marks the request dirty; `label` names the change in the latency report.

@@ -12,6 +12,7 @@
 
 #include "app/scene_loading.h"
 #include "app/viewer/display_image.h"
+#include "lev/methods.h"
 #include "renderer/render.h"
 
 namespace {
@@ -107,6 +108,25 @@ TEST(RenderWorker, ALaterRequestCancelsTheRenderInFlightAndWins) {
   EXPECT_EQ(ui.image.width, 48);
   EXPECT_EQ(ui.status.tolerance, 0.1);
   EXPECT_EQ(ui.image.rgb, direct_render_rgb8(fast));
+}
+
+TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    Ui ui;
+    app::Settings s = small_settings();
+    s.method = method.name;
+    const std::uint64_t first = ui.worker.post(request_for(s));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); })) << method.name;
+    s.tolerance = 0.2;
+    const std::uint64_t second = ui.worker.post(request_for(s));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(second); })) << method.name;
+    // A restart starts a new generation; a method that ignores the tolerance keeps its image,
+    // which is still the image of the new settings.
+    EXPECT_EQ(ui.status.generation, method.uses_tolerance ? second : first) << method.name;
+    EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s)) << method.name;
+  }
+  EXPECT_FALSE(lev::method_info(lev::Method::rt).uses_tolerance);
+  EXPECT_TRUE(lev::method_info(lev::Method::lev).uses_tolerance);
 }
 
 TEST(RenderWorker, ResumedPassesKeepTheImageExact) {

@@ -85,6 +85,30 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   }
 }
 
+TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
+  app::Settings initial;
+  initial.width = 64;
+  initial.height = 48;
+  const auto check = [&](const std::vector<std::string>& texts) {
+    check_hover_pixels(parse_scripted_changes(texts), initial);
+  };
+  EXPECT_NO_THROW(check({"hover=63,47@3"}));
+  EXPECT_THROW(check({"hover=64,10@3"}), app::UsageError);
+  EXPECT_THROW(check({"hover=10,48@3"}), app::UsageError);
+  // The size in effect at the hover's frame counts: a later change does not, an earlier one
+  // (or one before it in the same frame) does.
+  EXPECT_NO_THROW(check({"width=200@2", "hover=150,10@3", "width=32@4"}));
+  EXPECT_THROW(check({"hover=150,10@3", "width=200@4"}), app::UsageError);
+  EXPECT_NO_THROW(check({"width=200@3", "hover=150,10@3"}));
+  EXPECT_THROW(check({"hover=150,10@3", "width=200@3"}), app::UsageError);
+  try {
+    check({"hover=100,10@3"});
+  } catch (const app::UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("64x48"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("image pixels"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScriptedChanges, ApplyChangesTheState) {
   ViewerState s;
   s.request_dirty = false;

@@ -1,0 +1,53 @@
+#include "app/viewer/control_rects.h"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+namespace app::viewer {
+
+void record_item(ControlRects* rects, const std::string& name) {
+  if (!rects) return;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  rects->push_back(ControlRect{name, min.x, min.y, max.x, max.y, ImGui::IsItemHovered()});
+}
+
+void record_rect(ControlRects* rects, const std::string& name, float x0, float y0, float x1,
+                 float y1) {
+  if (!rects) return;
+  const bool hovered =
+      ImGui::IsItemHovered() && ImGui::IsMouseHoveringRect(ImVec2(x0, y0), ImVec2(x1, y1));
+  rects->push_back(ControlRect{name, x0, y0, x1, y1, hovered});
+}
+
+std::string controls_json(const ControlRects& rects, const Settings& settings, ViewMode view,
+                          bool mouse_busy) {
+  nlohmann::json out;
+  out["controls"] = nlohmann::json::object();
+  out["hovered"] = "";
+  for (const ControlRect& r : rects) {
+    out["controls"][r.name] = {r.x0, r.y0, r.x1, r.y1};
+    if (r.hovered) out["hovered"] = r.name;
+  }
+  for (const SettingSpec& spec : setting_table())
+    out["settings"][spec.name] = setting_text(settings, spec);
+  out["view"] = view_mode_info(view).name;
+  out["mouse_busy"] = mouse_busy;
+  return out.dump(1) + "\n";
+}
+
+void write_controls_file(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    file << text;
+    if (!file.flush()) throw std::runtime_error("--controls: cannot write '" + temporary + "'");
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("--controls: cannot rename '" + temporary + "' to '" + path + "'");
+}
+
+}  // namespace app::viewer
