@@ -20,7 +20,7 @@ inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
 inline constexpr int kMaxJsonDepth = 256;
 inline constexpr int kSceneFileVersion = 1;
 
-// True for names ending in ".json": what --scene takes as a file rather than a model name.
+// True for names ending in ".json", ".gltf" or ".glb" (gltf_scene.h): what --scene takes as a file rather than a model name.
 bool is_scene_file_name(std::string_view name);
 
 // Parses and validates; `source` names the text in messages (the file name).
