@@ -12,6 +12,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <tiny_gltf.h>
 
+#include "scenes/scene_instantiation.h"
+
 namespace scenes {
 namespace {
 
@@ -264,7 +266,14 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
           : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), static_cast<unsigned int>(bytes.size()),
                                        base_dir);
   if (!ok) fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
-  return Importer(model, path, light_scale).run();
+  SceneDescription scene = Importer(model, path, light_scale).run();
+  // The limits every scene obeys (light count, intensities), with the file's name in front.
+  try {
+    validate_description(scene);
+  } catch (const std::invalid_argument& e) {
+    fail(path, "scene", e.what());
+  }
+  return scene;
 }
 
 }  // namespace scenes
