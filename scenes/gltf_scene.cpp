@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <tiny_gltf.h>
 
 #include "scenes/scene_instantiation.h"
 
@@ -36,8 +36,8 @@ std::string first_line(const std::string& text) {
 }
 
 // Images are never decoded: only material factors are used.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                void*) {
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void*) {
   return true;
 }
 
@@ -46,14 +46,20 @@ class Importer {
   Importer(const tinygltf::Model& model, const std::string& path, float light_scale)
       : model_(model), path_(path), light_scale_(light_scale) {}
 
+  // Printed only once the whole file is accepted, so a refused file stays one line.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
   SceneDescription run() {
     check_lights();
     const int scene_index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
     if (model_.scenes.empty()) fail(path_, "scenes", "none");
-    if (scene_index >= static_cast<int>(model_.scenes.size())) fail(path_, "scene", std::to_string(scene_index));
-    if (model_.nodes.size() > kMaxGltfNodes) fail(path_, "nodes", std::to_string(model_.nodes.size()));
+    if (scene_index >= static_cast<int>(model_.scenes.size()))
+      fail(path_, "scene", std::to_string(scene_index));
+    if (model_.nodes.size() > kMaxGltfNodes)
+      fail(path_, "nodes", std::to_string(model_.nodes.size()));
     on_path_.assign(model_.nodes.size(), false);
-    for (const int node : model_.scenes[static_cast<std::size_t>(scene_index)].nodes) visit(node, glm::dmat4(1.0));
+    for (const int node : model_.scenes[static_cast<std::size_t>(scene_index)].nodes)
+      visit(node, glm::dmat4(1.0));
     SceneDescription scene;
     scene.name = std::filesystem::path(path_).stem().string();
     scene.ambient = glm::vec3(0.0f);
@@ -70,7 +76,8 @@ class Importer {
       if (!std::isfinite(light.intensity) || light.intensity < 0.0) {
         fail(path_, where + "/intensity", number_text(light.intensity));
       }
-      if (!std::isfinite(light.range) || light.range < 0.0) fail(path_, where + "/range", number_text(light.range));
+      if (!std::isfinite(light.range) || light.range < 0.0)
+        fail(path_, where + "/range", number_text(light.range));
       if (!light.color.empty() && light.color.size() != 3) {
         fail(path_, where + "/color", std::to_string(light.color.size()) + " components");
       }
@@ -95,7 +102,8 @@ class Importer {
 
   glm::dmat4 local_matrix(const tinygltf::Node& node, const std::string& where) const {
     if (!node.matrix.empty()) {
-      if (node.matrix.size() != 16) fail(path_, where + "/matrix", std::to_string(node.matrix.size()) + " values");
+      if (node.matrix.size() != 16)
+        fail(path_, where + "/matrix", std::to_string(node.matrix.size()) + " values");
       glm::dmat4 m(1.0);
       for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r) {
@@ -109,16 +117,19 @@ class Importer {
     glm::dvec3 t(0.0), s(1.0);
     glm::dquat q(1.0, 0.0, 0.0, 0.0);
     auto read = [&](const std::vector<double>& values, std::size_t n, const char* key) {
-      if (!values.empty() && values.size() != n) fail(path_, where + "/" + key, std::to_string(values.size()) + " values");
+      if (!values.empty() && values.size() != n)
+        fail(path_, where + "/" + key, std::to_string(values.size()) + " values");
       for (const double v : values) {
         if (!std::isfinite(v)) fail(path_, where + "/" + key, number_text(v));
       }
       return !values.empty();
     };
-    if (read(node.translation, 3, "translation")) t = {node.translation[0], node.translation[1], node.translation[2]};
+    if (read(node.translation, 3, "translation"))
+      t = {node.translation[0], node.translation[1], node.translation[2]};
     if (read(node.scale, 3, "scale")) s = {node.scale[0], node.scale[1], node.scale[2]};
     if (read(node.rotation, 4, "rotation")) {
-      q = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // glTF: x y z w
+      q = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1],
+                     node.rotation[2]);  // glTF: x y z w
       const double length = glm::length(q);
       if (!(length > 0.0)) fail(path_, where + "/rotation", "zero quaternion");
       q = q / length;
@@ -132,17 +143,20 @@ class Importer {
     const tinygltf::Value& index = ext->second.Get("light");
     if (!index.IsNumber()) fail(path_, where + "/extensions/KHR_lights_punctual/light", "missing");
     const double value = index.GetNumberAsDouble();
-    if (!(value >= 0.0) || value >= static_cast<double>(model_.lights.size()) || value != std::floor(value)) {
+    if (!(value >= 0.0) || value >= static_cast<double>(model_.lights.size()) ||
+        value != std::floor(value)) {
       fail(path_, where + "/extensions/KHR_lights_punctual/light", number_text(value));
     }
     return static_cast<int>(value);
   }
 
   void visit(int index, const glm::dmat4& parent) {
-    if (index < 0 || index >= static_cast<int>(model_.nodes.size())) fail(path_, "node", std::to_string(index));
+    if (index < 0 || index >= static_cast<int>(model_.nodes.size()))
+      fail(path_, "node", std::to_string(index));
     const std::string where = "nodes[" + std::to_string(index) + "]";
     if (on_path_[static_cast<std::size_t>(index)]) fail(path_, where, "cycle in the node tree");
-    if (++visits_ > kMaxGltfNodes) fail(path_, where, "more than " + std::to_string(kMaxGltfNodes) + " node visits");
+    if (++visits_ > kMaxGltfNodes)
+      fail(path_, where, "more than " + std::to_string(kMaxGltfNodes) + " node visits");
     on_path_[static_cast<std::size_t>(index)] = true;
     const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
     const glm::dmat4 world = parent * local_matrix(node, where);
@@ -150,28 +164,30 @@ class Importer {
     // A glTF light and camera use the node's rotation only: the direction is the transformed -Z.
     const glm::dvec3 forward = -glm::dvec3(world[2]);
     const int light = light_of(node, where);
-    if (light >= 0) add_light(model_.lights[static_cast<std::size_t>(light)], position, forward, where);
+    if (light >= 0)
+      add_light(model_.lights[static_cast<std::size_t>(light)], position, forward, where);
     if (node.camera >= 0) add_camera(node, world, where);
     if (node.mesh >= 0 && !warned_mesh_) {
       warned_mesh_ = true;
-      std::fprintf(stderr, "%s: warning: triangle meshes are not imported (first: mesh %d '%s')\n", path_.c_str(),
-                   node.mesh,
-                   node.mesh < static_cast<int>(model_.meshes.size())
-                       ? model_.meshes[static_cast<std::size_t>(node.mesh)].name.c_str()
-                       : "");
+      const std::string name = node.mesh < static_cast<int>(model_.meshes.size())
+                                   ? model_.meshes[static_cast<std::size_t>(node.mesh)].name
+                                   : std::string();
+      warnings_.push_back("triangle meshes are not imported (first: mesh " +
+                          std::to_string(node.mesh) + " '" + name + "')");
     }
     for (const int child : node.children) visit(child, world);
     on_path_[static_cast<std::size_t>(index)] = false;
   }
 
-  void add_light(const tinygltf::Light& light, const glm::dvec3& position, const glm::dvec3& forward,
-                 const std::string& where) {
+  void add_light(const tinygltf::Light& light, const glm::dvec3& position,
+                 const glm::dvec3& forward, const std::string& where) {
     if (light.type == "directional") {
-      std::fprintf(stderr, "%s: warning: directional light '%s' is not imported\n", path_.c_str(), light.name.c_str());
+      warnings_.push_back("directional light '" + light.name + "' is not imported");
       return;
     }
     const double length = glm::length(forward);
-    if (!(length > 0.0) || !std::isfinite(length)) fail(path_, where, "degenerate transform of a light");
+    if (!(length > 0.0) || !std::isfinite(length))
+      fail(path_, where, "degenerate transform of a light");
     glm::dvec3 colour(1.0);
     if (light.color.size() == 3) colour = {light.color[0], light.color[1], light.color[2]};
     const glm::vec3 intensity(colour * light.intensity * static_cast<double>(light_scale_));
@@ -200,15 +216,18 @@ class Importer {
 
   void add_camera(const tinygltf::Node& node, const glm::dmat4& world, const std::string& where) {
     if (has_camera_) return;
-    if (node.camera >= static_cast<int>(model_.cameras.size())) fail(path_, where + "/camera", std::to_string(node.camera));
+    if (node.camera >= static_cast<int>(model_.cameras.size()))
+      fail(path_, where + "/camera", std::to_string(node.camera));
     const tinygltf::Camera& camera = model_.cameras[static_cast<std::size_t>(node.camera)];
     if (camera.type != "perspective") return;
     const double yfov = camera.perspective.yfov;
-    if (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi) fail(path_, where + "/camera/yfov", number_text(yfov));
+    if (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)
+      fail(path_, where + "/camera/yfov", number_text(yfov));
     const glm::dvec3 position(world[3]);
     const glm::dvec3 forward = -glm::dvec3(world[2]);
     const glm::dvec3 up(world[1]);
-    if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0)) fail(path_, where, "degenerate camera transform");
+    if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0))
+      fail(path_, where, "degenerate camera transform");
     camera_.position = glm::vec3(position);
     camera_.target = glm::vec3(position + glm::normalize(forward));
     camera_.up = glm::vec3(glm::normalize(up));
@@ -237,6 +256,7 @@ class Importer {
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::vector<SceneNode> lights_;
+  std::vector<std::string> warnings_;
   bool has_camera_ = false;
   bool warned_mesh_ = false;
   renderer::Camera camera_;
@@ -250,28 +270,38 @@ bool ends_with(std::string_view name, std::string_view suffix) {
 
 }  // namespace
 
-bool is_gltf_file_name(std::string_view name) { return ends_with(name, ".gltf") || ends_with(name, ".glb"); }
+bool is_gltf_file_name(std::string_view name) {
+  return ends_with(name, ".gltf") || ends_with(name, ".glb");
+}
 
-SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path, float light_scale) {
-  if (!std::isfinite(light_scale) || light_scale < 0.0f) fail(path, "light scale", number_text(light_scale));
+SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
+                                  float light_scale) {
+  if (!std::isfinite(light_scale) || light_scale < 0.0f)
+    fail(path, "light scale", number_text(light_scale));
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
   tinygltf::Model model;
-  std::string error, warning;
+  std::string error, loader_warning;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
   const bool ok =
       ends_with(path, ".glb")
-          ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
+          ? loader.LoadBinaryFromMemory(&model, &error, &loader_warning,
+                                        reinterpret_cast<const unsigned char*>(bytes.data()),
                                         static_cast<unsigned int>(bytes.size()), base_dir)
-          : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), static_cast<unsigned int>(bytes.size()),
-                                       base_dir);
-  if (!ok) fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
-  SceneDescription scene = Importer(model, path, light_scale).run();
+          : loader.LoadASCIIFromString(&model, &error, &loader_warning, bytes.data(),
+                                       static_cast<unsigned int>(bytes.size()), base_dir);
+  if (!ok)
+    fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
+  Importer importer(model, path, light_scale);
+  SceneDescription scene = importer.run();
   // The limits every scene obeys (light count, intensities), with the file's name in front.
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
     fail(path, "scene", e.what());
+  }
+  for (const std::string& warning : importer.warnings()) {
+    std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), warning.c_str());
   }
   return scene;
 }

@@ -12,7 +12,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   const std::string path = (data[0] & 1u) != 0 ? "fuzz.glb" : "fuzz.gltf";
   try {
-    (void)scenes::parse_gltf_scene(std::string(reinterpret_cast<const char*>(data + 1), size - 1), path);
+    (void)scenes::parse_gltf_scene(std::string(reinterpret_cast<const char*>(data + 1), size - 1),
+                                   path);
   } catch (const std::invalid_argument&) {
     // Refusing bad input with a message is the expected outcome.
   }

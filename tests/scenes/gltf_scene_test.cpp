@@ -1,6 +1,7 @@
 // glTF import (scenes/gltf_scene.h): KHR_lights_punctual lights land at their node's world
 // position and -Z direction after nested transforms, unscaled by the node; spot cones come from
-// outerConeAngle; the first perspective camera is used; bad files fail with one line naming the file.
+// outerConeAngle; the first perspective camera is used; bad files fail with one line naming the
+// file.
 
 #include "scenes/gltf_scene.h"
 
@@ -8,17 +9,19 @@
 #include <stdexcept>
 #include <string>
 
-#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/quaternion.hpp>
 
 namespace {
 
 constexpr char kPath[] = "test.gltf";
 
-std::string gltf_with(const std::string& lights, const std::string& nodes, const std::string& extra = "") {
+std::string gltf_with(const std::string& lights, const std::string& nodes,
+                      const std::string& extra = "") {
   return R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
     "extensions": {"KHR_lights_punctual": {"lights": [)" +
-         lights + R"(]}}, "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [)" + nodes + "]" + extra + "}";
+         lights + R"(]}}, "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [)" + nodes + "]" +
+         extra + "}";
 }
 
 const std::string kSpot =
@@ -36,7 +39,8 @@ const scenes::SceneNode& only_light(const scenes::SceneDescription& scene) {
 }
 
 TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(kSpot, kNestedNodes), kPath, 1.0f);
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(kSpot, kNestedNodes), kPath, 1.0f);
   const scenes::SceneNode& placed = only_light(scene);
   const auto& affine = std::get<scenes::Affine>(placed.data);
   EXPECT_NEAR(affine.translate.x, 3.0f, 1e-5f);
@@ -44,7 +48,8 @@ TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
   EXPECT_NEAR(affine.translate.z, 3.0f, 1e-5f);
   EXPECT_EQ(affine.scale, 1.0f);
   const glm::vec3 direction =
-      glm::angleAxis(glm::radians(affine.rotate_degrees), glm::normalize(affine.rotate_axis)) * glm::vec3(0, 0, -1);
+      glm::angleAxis(glm::radians(affine.rotate_degrees), glm::normalize(affine.rotate_axis)) *
+      glm::vec3(0, 0, -1);
   EXPECT_NEAR(direction.x, -1.0f, 1e-5f);
   EXPECT_NEAR(direction.y, 0.0f, 1e-5f);
   EXPECT_NEAR(direction.z, 0.0f, 1e-5f);
@@ -56,7 +61,8 @@ TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
 TEST(GltfScene, LightScaleMultipliesColourTimesIntensity) {
   const std::string point = R"({"type": "point", "color": [0, 1, 0.5], "intensity": 4})";
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, node), kPath, 0.5f);
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, node), kPath, 0.5f);
   const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
   EXPECT_EQ(light.intensity, glm::vec3(0.0f, 2.0f, 1.0f));
 }
@@ -67,9 +73,12 @@ TEST(GltfScene, MatrixNodesAndTheFirstPerspectiveCamera) {
       R"({"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 5,6,7,1], "children": [1, 2]},
          {"extensions": {"KHR_lights_punctual": {"light": 0}}},
          {"translation": [0, 0, 10], "camera": 0})";
-  const std::string cameras = R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 1.0, "znear": 0.1}}])";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, nodes, cameras), kPath, 1.0f);
-  EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate, glm::vec3(5.0f, 6.0f, 7.0f));
+  const std::string cameras =
+      R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 1.0, "znear": 0.1}}])";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, nodes, cameras), kPath, 1.0f);
+  EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
+            glm::vec3(5.0f, 6.0f, 7.0f));
   EXPECT_EQ(scene.camera.position, glm::vec3(5.0f, 6.0f, 17.0f));
   EXPECT_EQ(scene.camera.target, glm::vec3(5.0f, 6.0f, 16.0f));
   EXPECT_EQ(scene.camera.up, glm::vec3(0.0f, 1.0f, 0.0f));
@@ -78,8 +87,10 @@ TEST(GltfScene, MatrixNodesAndTheFirstPerspectiveCamera) {
 
 TEST(GltfScene, WithoutACameraTheViewFramesTheLightsFromFrontAbove) {
   const std::string point = R"({"type": "point"})";
-  const std::string node = R"({"translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, node), kPath, 1.0f);
+  const std::string node =
+      R"({"translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, node), kPath, 1.0f);
   EXPECT_EQ(scene.camera.target, glm::vec3(2.0f, 0.0f, 0.0f));
   EXPECT_GT(scene.camera.position.y, scene.camera.target.y);
   EXPECT_GT(scene.camera.position.z, scene.camera.target.z);
@@ -91,13 +102,17 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
       {"{\"asset\": ", "not a readable glTF file"},
       {gltf_with(R"({"type": "point", "intensity": -1})", node), "lights[0]/intensity: -1"},
       {gltf_with(R"({"type": "point", "range": -2})", node), "lights[0]/range: -2"},
-      {gltf_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})", node),
+      {gltf_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})",
+                 node),
        "lights[0]/spot/innerConeAngle: 0.6"},
-      {gltf_with(R"({"type": "spot", "spot": {"outerConeAngle": 2}})", node), "lights[0]/spot/outerConeAngle: 2"},
+      {gltf_with(R"({"type": "spot", "spot": {"outerConeAngle": 2}})", node),
+       "lights[0]/spot/outerConeAngle: 2"},
       {gltf_with(R"({"type": "area"})", node), "lights[0]/type: 'area'"},
-      {gltf_with(R"({"type": "point"})", R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
+      {gltf_with(R"({"type": "point"})",
+                 R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
        "KHR_lights_punctual/light: 3"},
-      {gltf_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"), "cycle in the node tree"},
+      {gltf_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
+       "cycle in the node tree"},
       {gltf_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0]/scale: 2 values"},
   };
   for (const auto& [text, problem] : cases) {
