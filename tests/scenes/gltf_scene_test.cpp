@@ -6,6 +6,7 @@
 #include "scenes/gltf_scene.h"
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -126,6 +127,32 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
   }
+}
+
+// A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
+std::string glb_of(std::string json, std::uint32_t length_delta_bytes) {
+  while (json.size() % 4 != 0) json += ' ';
+  auto word = [](std::uint32_t v) {
+    std::string bytes(4, '\0');
+    for (int i = 0; i < 4; ++i)
+      bytes[static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xffu);
+    return bytes;
+  };
+  const auto json_bytes = static_cast<std::uint32_t>(json.size());
+  return "glTF" + word(2) + word(12 + 8 + json_bytes + length_delta_bytes) + word(json_bytes) +
+         "JSON" + json;
+}
+
+TEST(GltfScene, BinaryFilesReadTheJsonChunkAndCheckTheLength) {
+  const std::string point = R"({"type": "point", "intensity": 2})";
+  const std::string node =
+      R"({"translation": [0, 1, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 0), "test.glb", 1.0f);
+  EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
+            glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_THROW(scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 4), "test.glb", 1.0f),
+               std::invalid_argument);
 }
 
 TEST(GltfScene, FileNames) {
