@@ -204,9 +204,20 @@ class Importer {
       place.rotate_axis = {1.0f, 0.0f, 0.0f};
       place.rotate_degrees = 180.0f;
     }
+    if (light.range > 0.0 && !warned_range_) {
+      warned_range_ = true;
+      warnings_.push_back("range of light '" + light.name + "' and any other is not applied (" +
+                          number_text(light.range) + ")");
+    }
     if (light.type == "point") {
       lights_.push_back(affine_node(place, point_light_node(intensity)));
     } else {
+      if (!warned_falloff_) {
+        warned_falloff_ = true;
+        warnings_.push_back(
+            "spot light '" + light.name +
+            "' and any other: a hard cone at outerConeAngle, no falloff from innerConeAngle");
+      }
       const auto cone_degrees = static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi);
       lights_.push_back(affine_node(place, spot_light_node(intensity, cone_degrees, 0.0f)));
     }
@@ -259,6 +270,8 @@ class Importer {
   std::vector<std::string> warnings_;
   bool has_camera_ = false;
   bool warned_mesh_ = false;
+  bool warned_range_ = false;
+  bool warned_falloff_ = false;
   renderer::Camera camera_;
   glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
