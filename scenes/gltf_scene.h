@@ -3,9 +3,10 @@
 // What is imported: the node tree of the default scene (TRS or matrix), KHR_lights_punctual point
 // and spot lights at their node's world position shining along its world -Z (a glTF light is
 // never scaled by its node, as the extension says), the first perspective camera or else a view
-// framing the lights. Triangle meshes and directional lights are not imported: each is named in
-// one warning line on stderr. Every problem in the file becomes one line "FILE: what: value" in a
-// std::invalid_argument.
+// framing the lights. Not imported: triangle meshes, directional lights, a spot's falloff from its
+// inner cone (the cone is hard at outerConeAngle) and `range`; the first of each is named in one
+// warning line on stderr, printed only once the file is accepted. Every problem in the file
+// becomes one line "FILE: what: value" in a std::invalid_argument.
 #pragma once
 
 #include <string>
