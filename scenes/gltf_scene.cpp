@@ -50,6 +50,7 @@ class Importer {
   const std::vector<std::string>& warnings() const { return warnings_; }
 
   SceneDescription run() {
+    check_buffers();
     check_lights();
     const int scene_index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
     if (model_.scenes.empty()) fail(path_, "scenes", "none");
@@ -69,6 +70,53 @@ class Importer {
   }
 
  private:
+  // Every view and accessor lies inside its data, so a truncated .bin fails here, by name.
+  void check_buffers() const {
+    for (std::size_t i = 0; i < model_.bufferViews.size(); ++i) {
+      const tinygltf::BufferView& view = model_.bufferViews[i];
+      const std::string where = "bufferViews[" + std::to_string(i) + "]";
+      if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size()) {
+        fail(path_, where + "/buffer", std::to_string(view.buffer));
+      }
+      const std::size_t available =
+          model_.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+      if (view.byteOffset > available || view.byteLength > available - view.byteOffset) {
+        fail(path_, where,
+             "bytes " + std::to_string(view.byteOffset) + "+" + std::to_string(view.byteLength) +
+                 " beyond the buffer's " + std::to_string(available));
+      }
+    }
+    for (std::size_t i = 0; i < model_.accessors.size(); ++i) {
+      const tinygltf::Accessor& accessor = model_.accessors[i];
+      const std::string where = "accessors[" + std::to_string(i) + "]";
+      if (accessor.bufferView < 0) continue;  // all zeros (or sparse only): no bytes to check
+      if (static_cast<std::size_t>(accessor.bufferView) >= model_.bufferViews.size()) {
+        fail(path_, where + "/bufferView", std::to_string(accessor.bufferView));
+      }
+      const tinygltf::BufferView& view =
+          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+      const int component_bytes =
+          tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType));
+      const int components =
+          tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type));
+      if (component_bytes <= 0 || components <= 0)
+        fail(path_, where, "unknown component type or type");
+      const auto element_bytes =
+          static_cast<std::size_t>(component_bytes) * static_cast<std::size_t>(components);
+      const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_bytes;
+      if (accessor.count == 0) continue;
+      const double end_bytes =
+          static_cast<double>(accessor.byteOffset) +
+          static_cast<double>(stride) * static_cast<double>(accessor.count - 1) +
+          static_cast<double>(element_bytes);
+      if (end_bytes > static_cast<double>(view.byteLength)) {
+        fail(path_, where,
+             number_text(accessor.count) + " elements beyond the view's " +
+                 std::to_string(view.byteLength) + " bytes");
+      }
+    }
+  }
+
   void check_lights() const {
     for (std::size_t i = 0; i < model_.lights.size(); ++i) {
       const tinygltf::Light& light = model_.lights[i];

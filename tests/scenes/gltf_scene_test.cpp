@@ -115,6 +115,12 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
       {gltf_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
        "cycle in the node tree"},
       {gltf_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0]/scale: 2 values"},
+      {gltf_with(
+           R"({"type": "point"})", R"({})",
+           R"(, "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
+                    "bufferViews": [{"buffer": 0, "byteLength": 12}],
+                    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 2}])"),
+       "accessors[0]: 2 elements beyond the view's 12 bytes"},
   };
   for (const auto& [text, problem] : cases) {
     try {
