@@ -32,8 +32,8 @@ std::vector<std::string> scene_options() {
 
 const std::vector<SettingSpec>& setting_table() {
   static const std::vector<SettingSpec> table = {
-      {"scene", "Scene", "scene model, or a scene file FILE.json (format: scenes/README.md)",
-       Choice{&Settings::scene, scene_options, is_scene_file_setting, "a FILE.json scene file"}},
+      {"scene", "Scene", "scene model, or a scene file FILE.json (scenes/README.md), .gltf or .glb",
+       Choice{&Settings::scene, scene_options, is_scene_file_setting, "a .json/.gltf/.glb scene file"}},
       {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
       {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",

@@ -1,5 +1,7 @@
 #include "scenes/scene_file.h"
 
+#include "scenes/gltf_scene.h"
+
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -568,7 +570,8 @@ std::string escape_control_characters(std::string_view text) {
 
 bool is_scene_file_name(std::string_view name) {
   constexpr std::string_view kSuffix = ".json";
-  return name.size() > kSuffix.size() && name.substr(name.size() - kSuffix.size()) == kSuffix;
+  return (name.size() > kSuffix.size() && name.substr(name.size() - kSuffix.size()) == kSuffix) ||
+         is_gltf_file_name(name);
 }
 
 SceneDescription parse_scene_json(const std::string& text, const std::string& source) {
@@ -610,6 +613,7 @@ SceneDescription load_scene_file(const std::string& path) {
   std::fclose(f);
   if (more) throw std::invalid_argument(path + ": the scene file changed while it was read");
   text.resize(got);
+  if (is_gltf_file_name(path)) return parse_gltf_scene(text, path);
   SceneDescription scene = parse_scene_json(text, path);
   if (scene.name.empty()) scene.name = fs::path(path).stem().string();
   return scene;

@@ -34,7 +34,8 @@ inline constexpr int kSceneFileVersion = 1;
 // message again at its boundary.
 std::string escape_control_characters(std::string_view text);
 
-// True for names ending in ".json": what --scene takes as a file rather than a model name.
+// True for names ending in ".json", ".gltf" or ".glb" (gltf_scene.h): what --scene takes as a
+// file rather than a model name.
 bool is_scene_file_name(std::string_view name);
 
 // Parses and validates; `source` names the text in messages (the file name).

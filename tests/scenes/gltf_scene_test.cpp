@@ -1,0 +1,171 @@
+// glTF import (scenes/gltf_scene.h): KHR_lights_punctual lights land at their node's world
+// position and -Z direction after nested transforms, unscaled by the node; spot cones come from
+// outerConeAngle; the first perspective camera is used; bad files fail with one line naming the
+// file.
+
+#include "scenes/gltf_scene.h"
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <glm/gtc/quaternion.hpp>
+
+namespace {
+
+constexpr char kPath[] = "test.gltf";
+
+std::string gltf_with(const std::string& lights, const std::string& nodes,
+                      const std::string& extra = "") {
+  return R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
+    "extensions": {"KHR_lights_punctual": {"lights": [)" +
+         lights + R"(]}}, "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [)" + nodes + "]" +
+         extra + "}";
+}
+
+const std::string kSpot =
+    R"({"type": "spot", "color": [1, 0.5, 0.25], "intensity": 8, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}})";
+
+// Parent: translate (1, 2, 3), scale 2. Child: translate (1, 0, 0), rotate 90 degrees about +Y.
+const std::string kNestedNodes =
+    R"({"translation": [1, 2, 3], "scale": [2, 2, 2], "children": [1]},
+       {"translation": [1, 0, 0], "rotation": [0, 0.70710678, 0, 0.70710678],
+        "extensions": {"KHR_lights_punctual": {"light": 0}}})";
+
+const scenes::SceneNode& only_light(const scenes::SceneDescription& scene) {
+  EXPECT_EQ(scene.root.children.size(), 1u);
+  return scene.root.children.at(0);
+}
+
+TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(kSpot, kNestedNodes), kPath, 1.0f);
+  const scenes::SceneNode& placed = only_light(scene);
+  const auto& affine = std::get<scenes::Affine>(placed.data);
+  EXPECT_NEAR(affine.translate.x, 3.0f, 1e-5f);
+  EXPECT_NEAR(affine.translate.y, 2.0f, 1e-5f);
+  EXPECT_NEAR(affine.translate.z, 3.0f, 1e-5f);
+  EXPECT_EQ(affine.scale, 1.0f);
+  const glm::vec3 direction =
+      glm::angleAxis(glm::radians(affine.rotate_degrees), glm::normalize(affine.rotate_axis)) *
+      glm::vec3(0, 0, -1);
+  EXPECT_NEAR(direction.x, -1.0f, 1e-5f);
+  EXPECT_NEAR(direction.y, 0.0f, 1e-5f);
+  EXPECT_NEAR(direction.z, 0.0f, 1e-5f);
+  const auto& spot = std::get<scenes::SpotLightSource>(placed.children.at(0).data);
+  EXPECT_NEAR(spot.cone_degrees, 0.5f * 180.0f / 3.14159265f, 1e-4f);
+  EXPECT_EQ(spot.intensity, glm::vec3(8.0f, 4.0f, 2.0f));
+}
+
+TEST(GltfScene, LightScaleMultipliesColourTimesIntensity) {
+  const std::string point = R"({"type": "point", "color": [0, 1, 0.5], "intensity": 4})";
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, node), kPath, 0.5f);
+  const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
+  EXPECT_EQ(light.intensity, glm::vec3(0.0f, 2.0f, 1.0f));
+}
+
+TEST(GltfScene, MatrixNodesAndTheFirstPerspectiveCamera) {
+  const std::string point = R"({"type": "point"})";
+  const std::string nodes =
+      R"({"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 5,6,7,1], "children": [1, 2]},
+         {"extensions": {"KHR_lights_punctual": {"light": 0}}},
+         {"translation": [0, 0, 10], "camera": 0})";
+  const std::string cameras =
+      R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 1.0, "znear": 0.1}}])";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, nodes, cameras), kPath, 1.0f);
+  EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
+            glm::vec3(5.0f, 6.0f, 7.0f));
+  EXPECT_EQ(scene.camera.position, glm::vec3(5.0f, 6.0f, 17.0f));
+  EXPECT_EQ(scene.camera.target, glm::vec3(5.0f, 6.0f, 16.0f));
+  EXPECT_EQ(scene.camera.up, glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_NEAR(scene.camera.vertical_fov_deg, 180.0f / 3.14159265f, 1e-4f);
+}
+
+TEST(GltfScene, WithoutACameraTheViewFramesTheLightsFromFrontAbove) {
+  const std::string point = R"({"type": "point"})";
+  const std::string node =
+      R"({"translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, node), kPath, 1.0f);
+  EXPECT_EQ(scene.camera.target, glm::vec3(2.0f, 0.0f, 0.0f));
+  EXPECT_GT(scene.camera.position.y, scene.camera.target.y);
+  EXPECT_GT(scene.camera.position.z, scene.camera.target.z);
+}
+
+TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const std::pair<std::string, std::string> cases[] = {
+      {"{\"asset\": ", "not a readable glTF file"},
+      {gltf_with(R"({"type": "point", "intensity": -1})", node), "lights[0]/intensity: -1"},
+      {gltf_with(R"({"type": "point", "range": -2})", node), "lights[0]/range: -2"},
+      {gltf_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})",
+                 node),
+       "lights[0]/spot/innerConeAngle: 0.6"},
+      {gltf_with(R"({"type": "spot", "spot": {"outerConeAngle": 2}})", node),
+       "lights[0]/spot/outerConeAngle: 2"},
+      {gltf_with(R"({"type": "area"})", node), "lights[0]/type: 'area'"},
+      {gltf_with(R"({"type": "point"})",
+                 R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
+       "KHR_lights_punctual/light: 3"},
+      {gltf_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
+       "cycle in the node tree"},
+      {gltf_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0]/scale: 2 values"},
+      {gltf_with(
+           R"({"type": "point"})", R"({})",
+           R"(, "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
+                    "bufferViews": [{"buffer": 0, "byteLength": 12}],
+                    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 2}])"),
+       "accessors[0]: 2 elements beyond the view's 12 bytes"},
+  };
+  for (const auto& [text, problem] : cases) {
+    try {
+      scenes::parse_gltf_scene(text, kPath, 1.0f);
+      ADD_FAILURE() << "accepted: " << problem;
+    } catch (const std::invalid_argument& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.rfind(std::string(kPath) + ": ", 0), 0u) << message;
+      EXPECT_NE(message.find(problem), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+}
+
+// A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
+std::string glb_of(std::string json, std::uint32_t length_delta_bytes) {
+  while (json.size() % 4 != 0) json += ' ';
+  auto word = [](std::uint32_t v) {
+    std::string bytes(4, '\0');
+    for (int i = 0; i < 4; ++i)
+      bytes[static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xffu);
+    return bytes;
+  };
+  const auto json_bytes = static_cast<std::uint32_t>(json.size());
+  return "glTF" + word(2) + word(12 + 8 + json_bytes + length_delta_bytes) + word(json_bytes) +
+         "JSON" + json;
+}
+
+TEST(GltfScene, BinaryFilesReadTheJsonChunkAndCheckTheLength) {
+  const std::string point = R"({"type": "point", "intensity": 2})";
+  const std::string node =
+      R"({"translation": [0, 1, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 0), "test.glb", 1.0f);
+  EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
+            glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_THROW(scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 4), "test.glb", 1.0f),
+               std::invalid_argument);
+}
+
+TEST(GltfScene, FileNames) {
+  EXPECT_TRUE(scenes::is_gltf_file_name("a.gltf"));
+  EXPECT_TRUE(scenes::is_gltf_file_name("dir/a.glb"));
+  EXPECT_FALSE(scenes::is_gltf_file_name("a.json"));
+  EXPECT_FALSE(scenes::is_gltf_file_name(".gltf"));
+}
+
+}  // namespace
