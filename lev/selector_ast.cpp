@@ -6,8 +6,8 @@
 
 namespace lev {
 
-AstSelector::AstSelector(const LightHierarchy& hierarchy)
-    : hierarchy_(hierarchy),
+AstSelector::AstSelector(const LightHierarchy& hierarchy, float tolerance)
+    : tolerance_(tolerance),
       world_lights_(flatten_lights(hierarchy)),
       hits_(world_lights_.size(), 0),
       tests_(world_lights_.size(), 0),
@@ -46,8 +46,7 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   // Step 4: test the largest until the untested rest is below the tolerance.
   glm::vec3 sum(0.0f);
   std::uint32_t point_hits = 0, point_tests = 0;
-  const double tolerance = hierarchy_.tolerance;
-  while (remaining > 0 && untested >= tolerance) {
+  while (remaining > 0 && untested >= tolerance_) {
     std::pop_heap(heap.begin(), heap.begin() + static_cast<std::ptrdiff_t>(remaining), smaller);
     --remaining;
     const AstCandidate& c = heap[remaining];

@@ -17,7 +17,7 @@
 namespace renderer {
 
 struct RenderState {
-  Scene& scene;
+  const Scene& scene;
   const RayScene& rays;
   RenderSettings settings;
   std::unique_ptr<lev::LightSelector> selector;
@@ -35,7 +35,7 @@ struct RenderState {
   // Addresses that only name the two edges of a pass for ThreadSanitizer (thread_annotations.h).
   char pass_start_edge = 0, pass_end_edge = 0;
 
-  RenderState(Scene& s, const RayScene& r, const RenderSettings& settings_in)
+  RenderState(const Scene& s, const RayScene& r, const RenderSettings& settings_in)
       : scene(s), rays(r), settings(settings_in) {}
 };
 
@@ -108,14 +108,13 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, co
 
 }  // namespace
 
-RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings) {
+RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays, const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
       settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0) {
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
-  if (scene.lights.tolerance != settings.tolerance) lev::refit_hierarchy(scene.lights, settings.tolerance);
-  state->selector = lev::make_selector(settings.method, scene.lights);
+  state->selector = lev::make_selector(settings.method, scene.lights, settings.tolerance);
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;

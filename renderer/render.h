@@ -40,9 +40,10 @@ struct RenderStateDeleter {
 };
 using RenderStatePtr = std::unique_ptr<RenderState, RenderStateDeleter>;
 
-// Refits scene.lights for settings.tolerance (the structure is not rebuilt) and makes the
-// method's selector. The state refers to scene and rays; they must outlive it.
-RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings);
+// Makes the method's selector for settings.tolerance (a `lev` state fits its own extent volumes;
+// the scene is only read, so states with different tolerances and methods may render one scene
+// at the same time). The state refers to scene and rays; they must outlive it.
+RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays, const RenderSettings& settings);
 
 // Called on the worker thread right after a tile's pixels are final for this pass; it may read
 // that tile's framebuffer pixels (nothing else writes them until the next pass). The viewer

@@ -185,15 +185,11 @@ struct Worker {
         rs.tolerance != main_settings.tolerance && lev::method_info(rs.method).uses_tolerance;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
                               tolerance_matters || rs.threads != main_settings.threads;
-    const bool refits = main_changed && rs.tolerance != sc.lights.tolerance;
 
-    // Nothing may render on the scene while it changes: the reference is joined (or dropped
-    // when its view is gone) and the main state destroyed before the camera or the refit.
-    if (view_changed || !request.want_reference) {
-      if (reference.has_state()) drop_reference(serial);
-    } else if (refits) {
-      reference.stop();
-    }
+    // Nothing may render on the scene while its camera moves: the reference is dropped when its
+    // view is gone and the main state destroyed first. A new method or tolerance changes nothing
+    // in the scene (each render state fits its own extent volumes), so the reference keeps going.
+    if ((view_changed || !request.want_reference) && reference.has_state()) drop_reference(serial);
     if (main_changed) drop_main(serial);
     if (!same_camera(key.camera, sc.camera)) sc.camera = key.camera;
     view = key;
@@ -232,10 +228,8 @@ struct Worker {
 
     if (request.want_reference && !reference.complete()) {
       if (!reference.has_state()) {
-        // rt ignores the tolerance; giving it the scene's current one means no refit.
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;
-        ref.tolerance = sc.lights.tolerance;
         shared.reference_tiles.raise_floor(serial);
         reference.begin(renderer::make_render_state(sc, *loaded->rays, ref), serial);
         update_status([&](WorkerStatus& st) {

@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <cstring>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -72,6 +74,51 @@ TEST(Render, SameImageWhateverTheThreadCount) {
     EXPECT_EQ(one.lights_tested, two.lights_tested);
     EXPECT_EQ(one.nodes_visited, two.nodes_visited);
   }
+}
+
+// The scene is read-only to a render: states with different methods and tolerances render it
+// at the same time (the viewer's main render and its rt reference do), each getting the image it
+// gets alone. Were a state to refit the shared hierarchy, the others would render with its
+// volumes (and ThreadSanitizer, which runs this test, would see the writes).
+TEST(Render, StatesWithDifferentTolerancesAndMethodsRenderOneSceneConcurrently) {
+  const TestScene t(3);
+  struct Job {
+    lev::Method method;
+    float tolerance;
+  };
+  const std::vector<Job> jobs = {
+      {lev::Method::lev, 0.002f}, {lev::Method::lev, 0.2f}, {lev::Method::ast, 0.05f}, {lev::Method::rt, 0.0f}};
+  auto settings_for = [](const Job& job) {
+    renderer::RenderSettings rs;
+    rs.width = 48;
+    rs.height = 36;
+    rs.tile_size = 8;
+    rs.threads = 2;
+    rs.method = job.method;
+    rs.tolerance = job.tolerance;
+    return rs;
+  };
+  std::vector<renderer::Framebuffer> alone;
+  for (const Job& job : jobs) {
+    auto state = renderer::make_render_state(t.scene, *t.rays, settings_for(job));
+    ASSERT_TRUE(renderer::render_pass(*state));
+    alone.push_back(renderer::render_framebuffer(*state));
+  }
+  std::vector<renderer::RenderStatePtr> states;
+  for (const Job& job : jobs) states.push_back(renderer::make_render_state(t.scene, *t.rays, settings_for(job)));
+  std::vector<std::thread> threads;
+  std::vector<int> complete(jobs.size(), 0);
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    threads.emplace_back([&, i] { complete[i] = renderer::render_pass(*states[i]) ? 1 : 0; });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    EXPECT_EQ(complete[i], 1);
+    EXPECT_TRUE(bitwise_equal(renderer::render_framebuffer(*states[i]), alone[i]))
+        << lev::method_info(jobs[i].method).name << " at " << jobs[i].tolerance;
+  }
+  // The two lev states really differ: each walked its own volumes.
+  EXPECT_GT(renderer::sum_framebuffer(alone[0]).nodes_visited, renderer::sum_framebuffer(alone[1]).nodes_visited);
 }
 
 TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
