@@ -1,7 +1,11 @@
 #include "app/viewer/scripted_changes.h"
 
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 #include "app/scene_loading.h"
 
@@ -78,11 +82,13 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
     if (c.value != "idle") reject(text, "await must be idle");
+  } else if (c.key == "memory") {
+    if (c.value != "report") reject(text, "memory must be report");
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
     reject(text,
-           "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await");
+           "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await|memory");
   }
   return c;
 }
@@ -91,6 +97,24 @@ std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string
   std::vector<ScriptedChange> changes;
   for (const std::string& t : texts) changes.push_back(parse_scripted_change(t));
   return changes;
+}
+
+std::vector<std::string> read_script_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError("--script: cannot read '" + path + "'");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) lines.push_back(line);
+  }
+  if (in.bad()) throw UsageError("--script: cannot read '" + path + "'");
+  return lines;
+}
+
+std::uint64_t current_resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t size_pages = 0, resident_pages = 0;
+  if (!(statm >> size_pages >> resident_pages)) return 0;
+  return resident_pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
 void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial) {
@@ -148,6 +172,11 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     pixel.x1 = pixel.x0 + 1;
     pixel.y1 = pixel.y0 + 1;
     state.scripted_hover = pixel;
+    return ScriptAction::none;
+  }
+  if (c.key == "memory") {
+    std::printf("levrt view: resident memory at frame %d: %llu bytes\n", c.frame,
+                static_cast<unsigned long long>(current_resident_bytes()));
     return ScriptAction::none;
   }
   if (c.key == "snapshot") return ScriptAction::snapshot;
