@@ -110,6 +110,23 @@ TEST(Interrupt, SignalDuringADepthBombExitsPromptly) {
   }
 }
 
+// A million lights (building level 10) at tolerance 0: lev's walk returns every light and AST ranks
+// and shadow-tests every light, so one shading point takes up to a second. The cancel is read
+// inside those light loops (every kCancelCheckLights lights), so the run stops promptly.
+TEST(Interrupt, SignalDuringAMillionLightRenderExitsPromptly) {
+  const levrt_test::TempDir temp("levrt_interrupt_million_lights_");
+  const fs::path& dir = temp.path();
+  for (const char* method : {"lev", "ast"}) {
+    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", "building", "--lights", "1048576", "--method",
+                               method, "--tolerance", "0", "--width", "320", "--height", "240", "--out",
+                               (dir / "i.png").string()},
+                              SIGINT, std::chrono::seconds(1), std::chrono::seconds(2)),
+              130)
+        << method;
+    EXPECT_TRUE(fs::is_empty(dir)) << method;
+  }
+}
+
 TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
   const levrt_test::TempDir temp("levrt_interrupt_bench_");
   const fs::path& dir = temp.path();
