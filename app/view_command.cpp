@@ -17,7 +17,7 @@ void add_view_flags(CLI::App& command, ViewFlags& flags) {
   command.add_option(
       "--set", flags.changes,
       "scripted: change a control at a frame, key=value@frame (a setting, lights, view, "
-      "reference, snapshot, screenshot, await)");
+      "reference, snapshot, screenshot, await, memory)");
   command.add_option("--script", flags.script,
                      "scripted: a file of --set changes, one key=value@frame per line");
   command.add_flag("--report-fps", flags.report_fps,

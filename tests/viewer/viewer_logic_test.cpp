@@ -1,6 +1,10 @@
 // The viewer's pure parts: camera moves, scripted changes, the UI-side image and its pixel
 // errors, the trade plot's points and the frame report.
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
@@ -11,6 +15,7 @@
 #include "app/viewer/scripted_changes.h"
 #include "app/viewer/trade_plot.h"
 #include "renderer/framebuffer.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 using namespace app::viewer;
@@ -71,7 +76,8 @@ TEST(ScriptedChanges, ParseValidChanges) {
   EXPECT_EQ(a.frame, 12);
   EXPECT_EQ(parse_scripted_change("screenshot=/tmp/a@b.png@3").value, "/tmp/a@b.png");
   for (const char* ok : {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1",
-                         "await=idle@2", "snapshot=out@9", "hover=10,20@4", "width=64@1"}) {
+                         "await=idle@2", "snapshot=out@9", "hover=10,20@4", "width=64@1",
+                         "memory=report@6", "scene=maze@3"}) {
     EXPECT_NO_THROW(parse_scripted_change(ok)) << ok;
   }
 }
@@ -80,9 +86,25 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   for (const char* bad :
        {"tolerance=0.1", "tolerance@3", "=1@2", "tolerance=-1@3", "method=foo@1", "view=x@1",
         "colour=red@1", "lights=-4@1", "lights=abc@1", "reference=maybe@1", "await=soon@1",
-        "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1"}) {
+        "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1",
+        "memory=peak@1", "scene=nowhere@1"}) {
     EXPECT_THROW(parse_scripted_change(bad), app::UsageError) << bad;
   }
+}
+
+TEST(ScriptedChanges, AScriptFileGivesItsLinesAndAMissingOneIsAUsageError) {
+  const levrt_test::TempDir temp("levrt_script_file_");
+  const std::string path = (temp.path() / "changes.txt").string();
+  std::ofstream(path) << "method=ast@1\n\nmemory=report@2\n";
+  EXPECT_EQ(read_script_file(path), (std::vector<std::string>{"method=ast@1", "memory=report@2"}));
+  EXPECT_THROW(read_script_file((temp.path() / "missing.txt").string()), app::UsageError);
+}
+
+TEST(ScriptedChanges, ResidentMemoryGrowsWithTouchedMemory) {
+  const std::uint64_t before = current_resident_bytes();
+  ASSERT_GT(before, 0u);
+  const std::vector<char> block(std::size_t{64} << 20, 1);  // 64 MiB written, so resident
+  EXPECT_GE(current_resident_bytes(), before + (std::uint64_t{60} << 20)) << int{block.back()};
 }
 
 TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
