@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -153,11 +152,13 @@ bool have_xvfb() {
 
 // The resident bytes of each `memory=report` line, in order.
 std::vector<std::uint64_t> reported_memory(const std::string& output) {
-  const std::regex line("resident memory at frame [0-9]+: ([0-9]+) bytes");
+  const std::string marker = "resident memory at frame ";
   std::vector<std::uint64_t> bytes;
-  for (auto it = std::sregex_iterator(output.begin(), output.end(), line);
-       it != std::sregex_iterator(); ++it) {
-    bytes.push_back(std::stoull((*it)[1].str()));
+  for (std::size_t at = output.find(marker); at != std::string::npos;
+       at = output.find(marker, at + 1)) {
+    const std::size_t colon = output.find(": ", at);
+    if (colon == std::string::npos) break;
+    bytes.push_back(std::strtoull(output.c_str() + colon + 2, nullptr, 10));
   }
   return bytes;
 }
