@@ -77,7 +77,7 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "snapshot" || c.key == "screenshot") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
-    if (c.value != "idle") reject(text, "await must be idle");
+    if (c.value != "idle" && c.value != "preview") reject(text, "await must be idle or preview");
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
@@ -152,7 +152,7 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "snapshot") return ScriptAction::snapshot;
   if (c.key == "screenshot") return ScriptAction::screenshot;
-  return ScriptAction::await_idle;
+  return c.value == "preview" ? ScriptAction::await_preview : ScriptAction::await_idle;
 }
 
 }  // namespace app::viewer

@@ -4,7 +4,8 @@
 // inside the image: show that pixel's tooltip; scripted mode ignores the real mouse), and three
 // actions: `snapshot` (save into a folder), `screenshot` (write the window to a PNG) and
 // `await=idle` (hold the frame count until the render, and the reference if requested, are
-// complete).
+// complete) and `await=preview` (hold it until the coarse preview of the latest change is on
+// screen).
 #pragma once
 
 #include <string>
@@ -14,7 +15,7 @@
 
 namespace app::viewer {
 
-enum class ScriptAction { none, snapshot, screenshot, await_idle };
+enum class ScriptAction { none, snapshot, screenshot, await_idle, await_preview };
 
 struct ScriptedChange {
   std::string key;

@@ -174,6 +174,21 @@ struct ErrorClock {
   Clock::time_point at;
 };
 
+enum class Await { nothing, idle, preview };
+
+// At least `levels` preview levels of the render the worker shows have reached the screen (all
+// of them when it has fewer).
+bool preview_shown(const ViewerState& state, int levels) {
+  const WorkerStatus& st = state.status;
+  const int wanted = std::min(levels, st.preview_levels);
+  return st.generation != 0 && st.preview_levels_done >= wanted &&
+         (wanted == 0 || state.preview.generation == st.generation);
+}
+
+bool preview_complete(const ViewerState& state) {
+  return preview_shown(state, state.status.preview_levels);
+}
+
 void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log,
                          Clock::time_point now) {
   // Status first: every tile a status refers to was posted before it, so it is in the buffer.
@@ -183,6 +198,11 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
   if (apply_tile_updates(state.image, worker.take_tiles().updates)) {
     record_first_tile(log, state.image.generation, now);
   }
+  if (apply_preview_updates(state.preview, state.image, worker.take_preview_tiles().updates)) {
+    record_first_tile(log, state.preview.generation, now);
+  }
+  if (preview_shown(state, 1)) record_preview(log, state.status.generation, false, now);
+  if (preview_complete(state)) record_preview(log, state.status.generation, true, now);
 
   const TakenTiles reference = worker.take_reference_tiles();
   if (state.reference.generation != 0 && state.reference.generation < reference.floor) {
@@ -239,7 +259,8 @@ void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clo
     return;
   }
   if (!force && seconds_between(picture.composed, now) < kComposeSeconds) return;
-  compose_view_rgba(state.image, state.error, state.view, picture.rgba, state.heatmap_range);
+  compose_view_rgba(state.image, state.preview, state.error, state.view, picture.rgba,
+                    state.heatmap_range);
   upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
   picture.image_version = state.image.version;
   picture.error_version = error_version;
@@ -256,6 +277,14 @@ bool render_settled(const ViewerState& state, std::uint64_t last_posted) {
   if (st.phase != WorkerPhase::idle) return false;
   if (state.want_reference && st.reference == ReferencePhase::rendering) return false;
   return st.generation == 0 || state.image.generation == st.generation;
+}
+
+// The latest request's preview levels are all on screen (or its render is past them).
+bool preview_settled(const ViewerState& state, std::uint64_t last_posted) {
+  const WorkerStatus& st = state.status;
+  if (state.request_dirty || st.request_serial < last_posted) return false;
+  if (st.phase == WorkerPhase::failed || st.generation == 0) return true;
+  return preview_complete(state);
 }
 
 void write_screenshot(GLFWwindow* window, const std::string& path) {
@@ -395,7 +424,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     RenderWorker worker;
     std::uint64_t last_posted = 0;
     int script_frame = 0;
-    bool awaiting = false;
+    Await awaiting = Await::nothing;
     Clock::time_point previous_start = Clock::now();
     Clock::time_point next_frame = previous_start;
     bool first = true;
@@ -414,7 +443,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
 
       std::vector<std::string> screenshots;
       bool snapshot_now = false;
-      if (!awaiting) {
+      if (awaiting == Await::nothing) {
         for (const ScriptedChange& c : script) {
           if (c.frame != script_frame) continue;
           switch (apply_scripted_change(state, c)) {
@@ -428,7 +457,10 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
               screenshots.push_back(c.value);
               break;
             case ScriptAction::await_idle:
-              awaiting = true;
+              awaiting = Await::idle;
+              break;
+            case ScriptAction::await_preview:
+              awaiting = Await::preview;
               break;
           }
         }
@@ -438,8 +470,12 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       update_error(state, error_clock, now, false);
       add_trade_point_when_ready(state, error_clock, now);
       if (snapshot_now) snapshots.start(make_snapshot_job(state, now));
-      if (awaiting && render_settled(state, last_posted)) awaiting = false;
-      const bool last_frame = flags.frames > 0 && !awaiting && script_frame + 1 >= flags.frames;
+      if ((awaiting == Await::idle && render_settled(state, last_posted)) ||
+          (awaiting == Await::preview && preview_settled(state, last_posted))) {
+        awaiting = Await::nothing;
+      }
+      const bool last_frame =
+          flags.frames > 0 && awaiting == Await::nothing && script_frame + 1 >= flags.frames;
       const bool screenshot_now = !screenshots.empty() || (last_frame && !flags.screenshot.empty());
 
       ImGui_ImplOpenGL3_NewFrame();
@@ -488,7 +524,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
                                            : 0.95 * state.ui_fps + 0.05 * 1000.0 / frame_ms;
       }
       first = false;
-      if (!awaiting) script_frame += 1;
+      if (awaiting == Await::nothing) script_frame += 1;
       if (last_frame) break;
     }
     if (state.status.phase == WorkerPhase::failed && flags.frames > 0) {

@@ -30,6 +30,7 @@ struct ViewerState {
 
   WorkerStatus status;
   DisplayImage image;
+  PreviewImage preview;  // shown where the render has not arrived yet; never saved
   DisplayImage reference;
   ErrorImage error;
   std::vector<TileRect> in_flight;
