@@ -1,6 +1,7 @@
 #include "app/viewer/scripted_changes.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cstdlib>
 
 #include "app/scene_loading.h"
@@ -40,6 +41,23 @@ bool parse_pixel(const std::string& text, int& x, int& y) {
 
 }  // namespace
 
+bool parse_window_size(const std::string& text, int& width, int& height) {
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) return false;
+  const std::string w = text.substr(0, x), h = text.substr(x + 1);
+  char* end_w = nullptr;
+  char* end_h = nullptr;
+  const long lw = std::strtol(w.c_str(), &end_w, 10);
+  const long lh = std::strtol(h.c_str(), &end_h, 10);
+  if (w.empty() || h.empty() || *end_w != '\0' || *end_h != '\0' || lw < 320 || lw > 16384 ||
+      lh < 240 || lh > 16384) {
+    return false;
+  }
+  width = static_cast<int>(lw);
+  height = static_cast<int>(lh);
+  return true;
+}
+
 ScriptedChange parse_scripted_change(const std::string& text) {
   const std::size_t eq = text.find('=');
   const std::size_t at = text.rfind('@');
@@ -74,6 +92,9 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "hover") {
     int x = 0, y = 0;
     if (!parse_pixel(c.value, x, y)) reject(text, "hover needs a pixel X,Y");
+  } else if (c.key == "window") {
+    int w = 0, h = 0;
+    if (!parse_window_size(c.value, w, h)) reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
   } else if (c.key == "snapshot" || c.key == "screenshot") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
@@ -82,7 +103,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
     reject(text,
-           "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await");
+           "key must be one of " + keys +
+               "lights|view|reference|hover|window|snapshot|screenshot|await");
   }
   return c;
 }
@@ -95,25 +117,28 @@ std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string
 
 void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial) {
   // The frame loop applies the changes frame by frame, each frame's in command-line order: the
-  // size at a hover is the last width and height change before it in that order.
-  const auto before = [&](std::size_t a, std::size_t b) {
-    return changes[a].frame < changes[b].frame || (changes[a].frame == changes[b].frame && a < b);
-  };
-  for (std::size_t h = 0; h < changes.size(); ++h) {
-    if (changes[h].key != "hover") continue;
-    Settings at_hover = initial;
-    for (const char* key : {"width", "height"}) {
-      std::size_t last = changes.size();
-      for (std::size_t i = 0; i < changes.size(); ++i) {
-        if (changes[i].key == key && before(i, h) && (last == changes.size() || before(last, i)))
-          last = i;
-      }
-      if (last != changes.size()) set_setting(at_hover, *find_setting(key), changes[last].value);
+  // size at a hover is the initial one with the size changes before it applied in that order. A
+  // fit resolution follows the window, so its size is only known while the viewer runs; hovers
+  // outside a fitted image show nothing.
+  std::vector<std::size_t> order(changes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return changes[a].frame < changes[b].frame; });
+  Settings at_hover = initial;
+  for (const std::size_t h : order) {
+    const ScriptedChange& c = changes[h];
+    if (c.key == "width" || c.key == "height" || c.key == "resolution") {
+      const Settings before = at_hover;
+      set_setting(at_hover, *find_setting(c.key), c.value);
+      const bool new_size = at_hover.width != before.width || at_hover.height != before.height;
+      if (new_size && at_hover.resolution == before.resolution) at_hover.resolution = "typed";
+      continue;
     }
+    if (c.key != "hover" || fit_divisor(at_hover.resolution) != 0) continue;
     int x = 0, y = 0;
-    parse_pixel(changes[h].value, x, y);
+    parse_pixel(c.value, x, y);
     if (x >= at_hover.width || y >= at_hover.height) {
-      reject("hover=" + changes[h].value + "@" + std::to_string(changes[h].frame),
+      reject("hover=" + c.value + "@" + std::to_string(c.frame),
              "hover is in image pixels and must be inside the " + std::to_string(at_hover.width) +
                  "x" + std::to_string(at_hover.height) + " image");
     }
@@ -150,6 +175,7 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     state.scripted_hover = pixel;
     return ScriptAction::none;
   }
+  if (c.key == "window") return ScriptAction::resize_window;
   if (c.key == "snapshot") return ScriptAction::snapshot;
   if (c.key == "screenshot") return ScriptAction::screenshot;
   return c.value == "preview" ? ScriptAction::await_preview : ScriptAction::await_idle;

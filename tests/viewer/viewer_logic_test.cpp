@@ -87,6 +87,7 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
 
 TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
   app::Settings initial;
+  initial.resolution = "typed";
   initial.width = 64;
   initial.height = 48;
   const auto check = [&](const std::vector<std::string>& texts) {
