@@ -109,6 +109,14 @@ bool shows_preview(const DisplayImage& image, const PreviewImage* preview, std::
   return preview != nullptr && image.samples[i] == 0 && preview->step[i] != 0;
 }
 
+// A tile of a newer render (or another size) starts that render's generation.
+void follow_generation(DisplayImage& image, const TileUpdate& u) {
+  if (u.generation > image.generation || image.width != u.image_width ||
+      image.height != u.image_height) {
+    start_generation(image, u.generation, u.image_width, u.image_height);
+  }
+}
+
 }  // namespace
 
 void clear_display_image(DisplayImage& image) {
@@ -121,10 +129,7 @@ bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& upda
   bool changed = false;
   for (const TileUpdate& u : updates) {
     if (u.generation < image.generation) continue;
-    if (u.generation > image.generation || image.width != u.image_width ||
-        image.height != u.image_height) {
-      start_generation(image, u.generation, u.image_width, u.image_height);
-    }
+    follow_generation(image, u);
     apply_tile_update(image, u);
     changed = true;
   }
@@ -137,10 +142,7 @@ bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
   bool changed = false;
   for (const TileUpdate& u : updates) {
     if (u.generation < image.generation || u.generation < preview.generation) continue;
-    if (u.generation > image.generation || image.width != u.image_width ||
-        image.height != u.image_height) {
-      start_generation(image, u.generation, u.image_width, u.image_height);
-    }
+    follow_generation(image, u);
     if (u.generation > preview.generation || preview.width != u.image_width ||
         preview.height != u.image_height) {
       start_preview(preview, u.generation, u.image_width, u.image_height);

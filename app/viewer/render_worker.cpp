@@ -286,7 +286,10 @@ struct Worker {
   void render_preview_level() {
     renderer::RenderState& state = *main;
     const int step = preview_steps[preview_levels_done];
-    update_status([](WorkerStatus& st) { st.phase = WorkerPhase::rendering; });
+    update_status([&](WorkerStatus& st) {
+      st.phase = WorkerPhase::rendering;
+      st.preview_step = step;
+    });
     const renderer::Framebuffer& preview = renderer::render_preview(state);
     const std::uint64_t gen = generation;
     const auto on_tile_done = [&](int tile) {

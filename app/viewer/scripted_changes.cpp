@@ -22,40 +22,30 @@ std::uint64_t parse_count(const std::string& text, const std::string& change) {
   return n;
 }
 
-bool parse_pixel(const std::string& text, int& x, int& y) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) return false;
-  const std::string xs = text.substr(0, comma), ys = text.substr(comma + 1);
-  char* end_x = nullptr;
-  char* end_y = nullptr;
-  const long lx = std::strtol(xs.c_str(), &end_x, 10);
-  const long ly = std::strtol(ys.c_str(), &end_y, 10);
-  if (xs.empty() || ys.empty() || *end_x != '\0' || *end_y != '\0' || lx < 0 || ly < 0 ||
-      lx > 16384 || ly > 16384) {
+// "A<separator>B" with A in [min_a, 16384] and B in [min_b, 16384].
+bool parse_int_pair(const std::string& text, char separator, long min_a, long min_b, int& a, int& b) {
+  const std::size_t at = text.find(separator);
+  if (at == std::string::npos) return false;
+  const std::string as = text.substr(0, at), bs = text.substr(at + 1);
+  char* end_a = nullptr;
+  char* end_b = nullptr;
+  const long la = std::strtol(as.c_str(), &end_a, 10);
+  const long lb = std::strtol(bs.c_str(), &end_b, 10);
+  if (as.empty() || bs.empty() || *end_a != '\0' || *end_b != '\0' || la < min_a || lb < min_b ||
+      la > 16384 || lb > 16384) {
     return false;
   }
-  x = static_cast<int>(lx);
-  y = static_cast<int>(ly);
+  a = static_cast<int>(la);
+  b = static_cast<int>(lb);
   return true;
 }
+
+bool parse_pixel(const std::string& text, int& x, int& y) { return parse_int_pair(text, ',', 0, 0, x, y); }
 
 }  // namespace
 
 bool parse_window_size(const std::string& text, int& width, int& height) {
-  const std::size_t x = text.find('x');
-  if (x == std::string::npos) return false;
-  const std::string w = text.substr(0, x), h = text.substr(x + 1);
-  char* end_w = nullptr;
-  char* end_h = nullptr;
-  const long lw = std::strtol(w.c_str(), &end_w, 10);
-  const long lh = std::strtol(h.c_str(), &end_h, 10);
-  if (w.empty() || h.empty() || *end_w != '\0' || *end_h != '\0' || lw < 320 || lw > 16384 ||
-      lh < 240 || lh > 16384) {
-    return false;
-  }
-  width = static_cast<int>(lw);
-  height = static_cast<int>(lh);
-  return true;
+  return parse_int_pair(text, 'x', 320, 240, width, height);
 }
 
 ScriptedChange parse_scripted_change(const std::string& text) {

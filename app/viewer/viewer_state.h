@@ -62,7 +62,7 @@ void mark_changed(ViewerState& state, const std::string& label);
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label);
 
 // The image area asks for a new render size (fit resolution): like a typed size, but the
-// resolution stays fit.
+// resolution stays fit and a reference asked for is kept asking for (at the new size).
 void set_fit_size(ViewerState& state, int width, int height);
 
 void select_view(ViewerState& state, ViewMode mode);

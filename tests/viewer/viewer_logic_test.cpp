@@ -132,8 +132,10 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
 TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
   ViewerState s;
   EXPECT_EQ(s.settings.resolution, "fit");
+  s.want_reference = true;
   set_fit_size(s, 500, 300);
   EXPECT_EQ(s.settings.resolution, "fit");
+  EXPECT_TRUE(s.want_reference);
   EXPECT_EQ(s.settings.width, 500);
   EXPECT_TRUE(s.request_dirty);
   const app::Settings before = s.settings;
