@@ -13,13 +13,14 @@ void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_bu
 
 void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
                  std::chrono::steady_clock::time_point when) {
-  log.latencies.push_back({label, serial, when, -1.0, -1.0, -1.0});
+  for (LatencyRecord& r : log.latencies) r.superseded = true;
+  log.latencies.push_back({label, serial, when, -1.0, -1.0, -1.0, false});
 }
 
 void record_first_tile(FrameLog& log, std::uint64_t generation,
                        std::chrono::steady_clock::time_point when) {
   for (LatencyRecord& r : log.latencies) {
-    if (r.first_tile_ms >= 0.0 || r.serial > generation) continue;
+    if (r.first_tile_ms >= 0.0 || r.serial > generation || r.superseded) continue;
     r.first_tile_ms = std::chrono::duration<double, std::milli>(when - r.posted).count();
   }
 }
@@ -28,7 +29,7 @@ void record_preview(FrameLog& log, std::uint64_t generation, bool every_level,
                     std::chrono::steady_clock::time_point when) {
   for (LatencyRecord& r : log.latencies) {
     double& ms = every_level ? r.preview_ms : r.whole_frame_ms;
-    if (ms >= 0.0 || r.serial > generation) continue;
+    if (ms >= 0.0 || r.serial > generation || r.superseded) continue;
     ms = std::chrono::duration<double, std::milli>(when - r.posted).count();
   }
 }

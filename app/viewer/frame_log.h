@@ -26,6 +26,9 @@ struct LatencyRecord {
   // this or a later render is on screen.
   double whole_frame_ms = -1.0;
   double preview_ms = -1.0;
+  // A later change was posted: what arrives from then on belongs to it (a change that started no
+  // render, like the tolerance under rt, must not claim the next change's tiles).
+  bool superseded = false;
 };
 
 struct FrameLog {

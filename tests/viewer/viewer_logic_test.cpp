@@ -372,6 +372,13 @@ TEST(FrameLog, ReportsTheWholeFramePreviewAndEveryLevel) {
                                    "preview after 70.0 ms, every preview level after 400.0 ms"),
             std::string::npos)
       << frame_report(log);
+  // A change that started no render (the tolerance under rt) never claims a later change's tiles.
+  record_post(log, "tolerance=0.1", 4, t0 + std::chrono::seconds(1));
+  record_post(log, "method=lev", 5, t0 + std::chrono::seconds(2));
+  record_first_tile(log, 5, t0 + std::chrono::milliseconds(2050));
+  EXPECT_LT(log.latencies[1].first_tile_ms, 0.0);
+  EXPECT_NEAR(log.latencies[2].first_tile_ms, 50.0, 1e-6);
+  EXPECT_NE(frame_report(log).find("tolerance=0.1: no new tile"), std::string::npos);
 }
 
 }  // namespace
