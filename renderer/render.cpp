@@ -57,8 +57,8 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
 // flag is read per row and in the recursion) leaves no pixel with a sample a resumed pass would
 // add again. Returns false when cancelled. A preview (preview_step > 1) samples every step-th
 // pixel into state.preview instead and records no rays.
-bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, const std::atomic<bool>* cancel,
-                 int preview_step) {
+bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
+                 const std::atomic<bool>* cancel, int preview_step) {
   DenormalModeGuard denormals;
   const RenderSettings& rs = state.settings;
   const bool preview = preview_step > 1;
@@ -97,7 +97,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, co
       const Ray ray = primary_ray(state.scene.camera, rs.width, rs.height,
                                   static_cast<float>(x) + jx, static_cast<float>(y) + jy);
       PixelSample& sample = samples.emplace_back();
-      sample.pixel = preview ? static_cast<std::size_t>(y / step) * static_cast<std::size_t>(state.preview.width) +
+      sample.pixel = preview ? static_cast<std::size_t>(y / step) *
+                                       static_cast<std::size_t>(state.preview.width) +
                                    static_cast<std::size_t>(x / step)
                              : pixel;
       sample.radiance = trace_radiance(context, ray, 0, sample.counters);
@@ -141,18 +142,21 @@ RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const Rende
   return state;
 }
 
-bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const TileDoneCallback& on_tile_done,
-                 int preview_step) {
-  if (preview_step < 1) throw std::invalid_argument("render_pass: the preview step must be at least 1");
+bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
+                 const TileDoneCallback& on_tile_done, int preview_step) {
+  if (preview_step < 1)
+    throw std::invalid_argument("render_pass: the preview step must be at least 1");
   const bool preview = preview_step > 1;
   if (preview) {
-    if (!state.preview_selector) state.preview_selector = lev::make_selector(state.settings.method, state.scene.lights);
+    if (!state.preview_selector)
+      state.preview_selector = lev::make_selector(state.settings.method, state.scene.lights);
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
                                      (state.settings.height + preview_step - 1) / preview_step);
   }
   const int tile_count = render_tile_count(state);
   for (int i = 0; i < tile_count; ++i) {
-    const bool finished = !preview && state.tile_passes[static_cast<std::size_t>(i)] > state.passes_done;
+    const bool finished =
+        !preview && state.tile_passes[static_cast<std::size_t>(i)] > state.passes_done;
     state.tiles[i].store(finished ? TileStatus::done : TileStatus::waiting);
   }
   const auto start = std::chrono::steady_clock::now();
@@ -199,7 +203,9 @@ void record_rays(RenderState& state, RayLog* log) {
 }
 
 const Framebuffer& render_framebuffer(const RenderState& state) { return state.framebuffer; }
-const Framebuffer& render_preview(const RenderState& state) { return state.preview; }
+const Framebuffer& render_preview(const RenderState& state) {
+  return state.preview;
+}
 const RenderSettings& render_settings(const RenderState& state) { return state.settings; }
 int render_passes_done(const RenderState& state) { return state.passes_done; }
 double render_seconds(const RenderState& state) { return state.seconds; }

@@ -53,7 +53,9 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   return u;
 }
 
-int first_multiple_at_or_after(int x, int step) { return (x + step - 1) / step; }
+int first_multiple_at_or_after(int x, int step) {
+  return (x + step - 1) / step;
+}
 
 }  // namespace
 
@@ -67,8 +69,9 @@ TileUpdate copy_preview_tile(const renderer::Framebuffer& preview, int step, int
                              const TileRect& rect) {
   // The tile's samples are at the multiples of step inside it: preview pixels
   // ceil(x0 / step) .. ceil(x1 / step) - 1.
-  const TileRect samples{first_multiple_at_or_after(rect.x0, step), first_multiple_at_or_after(rect.y0, step),
-                         first_multiple_at_or_after(rect.x1, step), first_multiple_at_or_after(rect.y1, step)};
+  const TileRect samples{
+      first_multiple_at_or_after(rect.x0, step), first_multiple_at_or_after(rect.y0, step),
+      first_multiple_at_or_after(rect.x1, step), first_multiple_at_or_after(rect.y1, step)};
   TileUpdate u = copy_rect(preview, generation, tile, 0, samples);
   u.preview_step = step;
   u.image_width = image_width;

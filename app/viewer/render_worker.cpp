@@ -55,14 +55,16 @@ struct ViewKey {
 constexpr int kFinestPreviewStep = 2;
 constexpr int kCoarsePreviewStep = 8;
 constexpr int kMaxPreviewStep = 128;
-constexpr long long kCoarsestPreviewSamples = (320 / kCoarsePreviewStep) * (240 / kCoarsePreviewStep);
+constexpr long long kCoarsestPreviewSamples =
+    (320 / kCoarsePreviewStep) * (240 / kCoarsePreviewStep);
 
 std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
   const auto samples_at = [&](int step) {
     return static_cast<long long>((width + step - 1) / step) * ((height + step - 1) / step);
   };
   int coarsest = kCoarsePreviewStep;
-  while (coarsest < kMaxPreviewStep && samples_at(coarsest) > kCoarsestPreviewSamples) coarsest *= 2;
+  while (coarsest < kMaxPreviewStep && samples_at(coarsest) > kCoarsestPreviewSamples)
+    coarsest *= 2;
   std::vector<int> steps;
   for (int step = coarsest; step >= kFinestPreviewStep; step /= 2) {
     if (step > pixel_stride) steps.push_back(step);
@@ -295,11 +297,13 @@ struct Worker {
     const auto on_tile_done = [&](int tile) {
       TileRect r;
       renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
-      shared.preview_tiles.post(copy_preview_tile(preview, step, main_settings.width, main_settings.height, gen, tile, r));
+      shared.preview_tiles.post(copy_preview_tile(preview, step, main_settings.width,
+                                                  main_settings.height, gen, tile, r));
     };
     if (!renderer::render_pass(state, &shared.cancel, on_tile_done, step)) return;
     preview_levels_done += 1;
-    update_status([&](WorkerStatus& st) { st.preview_levels_done = static_cast<int>(preview_levels_done); });
+    update_status(
+        [&](WorkerStatus& st) { st.preview_levels_done = static_cast<int>(preview_levels_done); });
   }
 
   void render_one_pass() {

@@ -69,7 +69,7 @@ struct WorkerStatus {
   double first_pass_seconds = -1.0;  // pass 0's time once it is complete
   int preview_levels = 0;            // preview passes this render starts with
   int preview_levels_done = 0;
-  int preview_step = 0;  // pixel step of the preview level rendering now
+  int preview_step = 0;              // pixel step of the preview level rendering now
   bool first_pass_shared = false;    // the reference rendered while pass 0 did
 
   // The rt reference of the same view.

@@ -1,7 +1,7 @@
 #include "app/viewer/scripted_changes.h"
 
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 
 #include "app/scene_loading.h"
@@ -23,7 +23,8 @@ std::uint64_t parse_count(const std::string& text, const std::string& change) {
 }
 
 // "A<separator>B" with A in [min_a, 16384] and B in [min_b, 16384].
-bool parse_int_pair(const std::string& text, char separator, long min_a, long min_b, int& a, int& b) {
+bool parse_int_pair(const std::string& text, char separator, long min_a, long min_b, int& a,
+                    int& b) {
   const std::size_t at = text.find(separator);
   if (at == std::string::npos) return false;
   const std::string as = text.substr(0, at), bs = text.substr(at + 1);
@@ -40,7 +41,9 @@ bool parse_int_pair(const std::string& text, char separator, long min_a, long mi
   return true;
 }
 
-bool parse_pixel(const std::string& text, int& x, int& y) { return parse_int_pair(text, ',', 0, 0, x, y); }
+bool parse_pixel(const std::string& text, int& x, int& y) {
+  return parse_int_pair(text, ',', 0, 0, x, y);
+}
 
 }  // namespace
 
@@ -84,7 +87,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     if (!parse_pixel(c.value, x, y)) reject(text, "hover needs a pixel X,Y");
   } else if (c.key == "window") {
     int w = 0, h = 0;
-    if (!parse_window_size(c.value, w, h)) reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
+    if (!parse_window_size(c.value, w, h))
+      reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
   } else if (c.key == "snapshot" || c.key == "screenshot") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
@@ -92,9 +96,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
-    reject(text,
-           "key must be one of " + keys +
-               "lights|view|reference|hover|window|snapshot|screenshot|await");
+    reject(text, "key must be one of " + keys +
+                     "lights|view|reference|hover|window|snapshot|screenshot|await");
   }
   return c;
 }
@@ -112,8 +115,9 @@ void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settin
   // outside a fitted image show nothing.
   std::vector<std::size_t> order(changes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return changes[a].frame < changes[b].frame; });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return changes[a].frame < changes[b].frame;
+  });
   Settings at_hover = initial;
   for (const std::size_t h : order) {
     const ScriptedChange& c = changes[h];

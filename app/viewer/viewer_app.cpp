@@ -299,8 +299,8 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
     fit.fitted_once = true;
     return;
   }
-  const bool settled = seconds_between(fit.since, now) >= kResizeSettleSeconds &&
-                       !ImGui::IsAnyMouseDown();
+  const bool settled =
+      seconds_between(fit.since, now) >= kResizeSettleSeconds && !ImGui::IsAnyMouseDown();
   if (!fit.fitted_once || state.image.generation == 0 || scale_changed || settled) {
     set_fit_size(state, width, height);
     fit.fitted_once = true;

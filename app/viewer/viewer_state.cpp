@@ -33,8 +33,7 @@ void set_fit_size(ViewerState& state, int width, int height) {
   // The window, not the user, changed the view: a reference asked for is computed again at the
   // new size (the worker drops the old one).
   const bool want_reference = state.want_reference;
-  settings_changed(state, before,
-                   "fit " + std::to_string(width) + "x" + std::to_string(height));
+  settings_changed(state, before, "fit " + std::to_string(width) + "x" + std::to_string(height));
   state.want_reference = want_reference;
 }
 

@@ -130,8 +130,10 @@ TEST(Render, PreviewPassesSampleEveryStepthPixelCentreAndLeaveTheRenderAlone) {
   EXPECT_TRUE(renderer::render_pass(*state));
   EXPECT_TRUE(renderer::render_pass(*state));
   EXPECT_TRUE(renderer::render_pass(*plain));
-  EXPECT_TRUE(bitwise_equal(renderer::render_framebuffer(*state), renderer::render_framebuffer(*plain)));
-  EXPECT_EQ(renderer::render_framebuffer(*state).lights_tested, renderer::render_framebuffer(*plain).lights_tested);
+  EXPECT_TRUE(
+      bitwise_equal(renderer::render_framebuffer(*state), renderer::render_framebuffer(*plain)));
+  EXPECT_EQ(renderer::render_framebuffer(*state).lights_tested,
+            renderer::render_framebuffer(*plain).lights_tested);
 }
 
 TEST(Render, CancelledPreviewAddsNothing) {

@@ -154,8 +154,9 @@ TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
 TEST(ScriptedChanges, HoversAreCheckedOnlyAgainstTypedSizesAndWindowSizesParse) {
   app::Settings initial;  // fit: the size follows the window
   EXPECT_NO_THROW(check_hover_pixels(parse_scripted_changes({"hover=900,700@3"}), initial));
-  EXPECT_THROW(check_hover_pixels(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial),
-               app::UsageError);
+  EXPECT_THROW(
+      check_hover_pixels(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial),
+      app::UsageError);
   EXPECT_NO_THROW(check_hover_pixels(
       parse_scripted_changes({"width=100@1", "resolution=fit@2", "hover=900,70@3"}), initial));
   ViewerState s;

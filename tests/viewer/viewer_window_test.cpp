@@ -1,9 +1,9 @@
 // The real viewer window under Xvfb, in scripted mode: open, render, switch method, move the
 // tolerance mid-render, switch every view (the error view computes the rt reference), save a
 // snapshot, and write the window to a PNG; the coarse preview covers the frame, never reaches a
-// snapshot, and the fit resolution follows the window. Skipped only when xvfb-run is missing. Labelled
-// "threads": under the tsan preset the UI thread, the tile workers and the reference thread
-// share the display buffers and the cancel flag.
+// snapshot, and the fit resolution follows the window. Skipped only when xvfb-run is missing.
+// Labelled "threads": under the tsan preset the UI thread, the tile workers and the reference
+// thread share the display buffers and the cancel flag.
 #include <unistd.h>
 
 #include <algorithm>
@@ -236,8 +236,8 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
     GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
   // ast carries per-light statistics from pass to pass: a preview that fed them would change
   // pass 1. Two passes, a typed size, the same settings as the headless render below.
-  const std::vector<std::string> settings = {"--lights", "256", "--method", "ast", "--width",
-                                             "96",       "--height", "64", "--spp", "2"};
+  const std::vector<std::string> settings = {"--lights", "256",      "--method", "ast",   "--width",
+                                             "96",       "--height", "64",       "--spp", "2"};
   std::vector<std::string> view_args = settings;
   for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
     view_args.emplace_back(a);
@@ -261,9 +261,9 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   const nlohmann::json a = read_json(dir_ / "snap" / "view_building_256_ast_0.01_stats.json");
   const nlohmann::json b = read_json(path("headless_stats.json"));
   ASSERT_FALSE(a.is_discarded() || b.is_discarded());
-  for (const char* key : {"lights", "method", "tolerance", "width", "height", "spp",
-                          "shading_points", "shadow_rays", "lights_tested_avg",
-                          "lights_tested_max", "nodes_visited_avg", "hierarchy_bytes"}) {
+  for (const char* key :
+       {"lights", "method", "tolerance", "width", "height", "spp", "shading_points", "shadow_rays",
+        "lights_tested_avg", "lights_tested_max", "nodes_visited_avg", "hierarchy_bytes"}) {
     ASSERT_TRUE(a.contains(key) && b.contains(key)) << key;
     EXPECT_EQ(a[key], b[key]) << key;
   }
