@@ -95,7 +95,7 @@ TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
   }
 }
 
-TEST(Render, PreviewPassesSampleEveryStepthPixelCentreAndLeaveTheRenderAlone) {
+TEST(Render, PreviewPassesSamplePixelCentresEveryStepAndLeaveTheRenderAlone) {
   TestScene t(2);
   renderer::RenderSettings rs;
   rs.width = 37;  // not a multiple of any step or of the tile size
@@ -105,6 +105,11 @@ TEST(Render, PreviewPassesSampleEveryStepthPixelCentreAndLeaveTheRenderAlone) {
   auto state = renderer::make_render_state(t.scene, *t.rays, rs);
   const auto plain = renderer::make_render_state(t.scene, *t.rays, rs);
   EXPECT_TRUE(renderer::render_pass(*plain));
+  // A cancelled preview adds nothing; a step below 1 is refused.
+  std::atomic<bool> cancel{true};
+  EXPECT_FALSE(renderer::render_pass(*state, &cancel, nullptr, 4));
+  for (std::uint32_t s : renderer::render_preview(*state).samples) EXPECT_EQ(s, 0u);
+  EXPECT_THROW(renderer::render_pass(*state, nullptr, nullptr, 0), std::invalid_argument);
   for (int step : {8, 4, 2}) {
     ASSERT_TRUE(renderer::render_pass(*state, nullptr, nullptr, step));
     const renderer::Framebuffer& preview = renderer::render_preview(*state);
@@ -134,19 +139,6 @@ TEST(Render, PreviewPassesSampleEveryStepthPixelCentreAndLeaveTheRenderAlone) {
       bitwise_equal(renderer::render_framebuffer(*state), renderer::render_framebuffer(*plain)));
   EXPECT_EQ(renderer::render_framebuffer(*state).lights_tested,
             renderer::render_framebuffer(*plain).lights_tested);
-}
-
-TEST(Render, CancelledPreviewAddsNothing) {
-  TestScene t(2);
-  renderer::RenderSettings rs;
-  rs.width = 32;
-  rs.height = 24;
-  rs.tile_size = 8;
-  auto state = renderer::make_render_state(t.scene, *t.rays, rs);
-  std::atomic<bool> cancel{true};
-  EXPECT_FALSE(renderer::render_pass(*state, &cancel, nullptr, 4));
-  for (std::uint32_t s : renderer::render_preview(*state).samples) EXPECT_EQ(s, 0u);
-  EXPECT_THROW(renderer::render_pass(*state, nullptr, nullptr, 0), std::invalid_argument);
 }
 
 TEST(Render, HugeToleranceLeavesOnlyAmbient) {
