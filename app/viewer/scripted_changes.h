@@ -1,12 +1,14 @@
 // Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
 // the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
 // scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y in image pixels,
-// inside the image: show that pixel's tooltip; scripted mode ignores the real mouse), and four
-// actions: `snapshot` (save into a folder), `screenshot` (write the window to a PNG),
-// `await=idle` (hold the frame count until the render, and the reference if requested, are
-// complete) and `memory=report` (print the process's current resident memory, for the soak test
-// that watches it grow over thousands of changes). `--script FILE` reads the same changes, one per
-// line, for scripts too long for a command line.
+// inside a typed-size image: show that pixel's tooltip; scripted mode ignores the real mouse),
+// and the actions `window` (resize the window to WIDTHxHEIGHT, as a user dragging its border;
+// the frame count holds until the window has that size), `snapshot` (save into a folder),
+// `screenshot` (write the window to a PNG), `await=idle` (hold the frame count until the render,
+// and the reference if requested, are complete), `await=preview` (hold it until the coarse
+// preview of the latest change is on screen) and `memory=report` (print the process's current
+// resident memory, for the soak test that watches it grow over thousands of changes).
+// `--script FILE` reads the same changes, one per line, for scripts too long for a command line.
 #pragma once
 
 #include <cstdint>
@@ -17,13 +19,16 @@
 
 namespace app::viewer {
 
-enum class ScriptAction { none, snapshot, screenshot, await_idle };
+enum class ScriptAction { none, resize_window, snapshot, screenshot, await_idle, await_preview };
 
 struct ScriptedChange {
   std::string key;
   std::string value;
   int frame = 0;
 };
+
+// WIDTHxHEIGHT, at least 320x240 (--window and the scripted `window` key); false when malformed.
+bool parse_window_size(const std::string& text, int& width, int& height);
 
 // Throws UsageError ("--set: ...") for a malformed change or a value its key rejects.
 ScriptedChange parse_scripted_change(const std::string& text);
