@@ -12,6 +12,7 @@
 #include "lev/important_lights.h"
 #include "lev/light_hierarchy.h"
 #include "scenes/scene_instantiation.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -233,13 +234,8 @@ TEST(SceneFile, SyntaxErrorsNameTheLineAndPath) {
 
 class SceneFileOnDisk : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "levrt_scene_file_test";
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
+  levrt_test::TempDir temp_{"levrt_scene_file_test_"};
+  const std::filesystem::path& dir_ = temp_.path();
 };
 
 TEST_F(SceneFileOnDisk, HugeFileIsRefusedBeforeReading) {
