@@ -43,7 +43,9 @@ struct RenderState {
       : scene(s), rays(r), settings(settings_in) {}
 };
 
-void RenderStateDeleter::operator()(RenderState* state) const { delete state; }
+void RenderStateDeleter::operator()(RenderState* state) const {
+  delete state;
+}
 
 namespace {
 
@@ -122,7 +124,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
 
 }  // namespace
 
-RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays, const RenderSettings& settings) {
+RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
+                                 const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
       settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0) {
     throw std::invalid_argument("render settings out of range");
@@ -148,7 +151,8 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
   const bool preview = preview_step > 1;
   if (preview) {
     if (!state.preview_selector)
-      state.preview_selector = lev::make_selector(state.settings.method, state.scene.lights);
+      state.preview_selector =
+          lev::make_selector(state.settings.method, state.scene.lights, state.settings.tolerance);
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
                                      (state.settings.height + preview_step - 1) / preview_step);
   }
@@ -201,15 +205,27 @@ void record_rays(RenderState& state, RayLog* log) {
   if (log) log->tiles.resize(static_cast<std::size_t>(render_tile_count(state)));
 }
 
-const Framebuffer& render_framebuffer(const RenderState& state) { return state.framebuffer; }
+const Framebuffer& render_framebuffer(const RenderState& state) {
+  return state.framebuffer;
+}
 const Framebuffer& render_preview(const RenderState& state) {
   return state.preview;
 }
-const RenderSettings& render_settings(const RenderState& state) { return state.settings; }
-int render_passes_done(const RenderState& state) { return state.passes_done; }
-double render_seconds(const RenderState& state) { return state.seconds; }
-const lev::LightSelector& render_selector(const RenderState& state) { return *state.selector; }
-int render_tile_count(const RenderState& state) { return state.tiles_x * state.tiles_y; }
+const RenderSettings& render_settings(const RenderState& state) {
+  return state.settings;
+}
+int render_passes_done(const RenderState& state) {
+  return state.passes_done;
+}
+double render_seconds(const RenderState& state) {
+  return state.seconds;
+}
+const lev::LightSelector& render_selector(const RenderState& state) {
+  return *state.selector;
+}
+int render_tile_count(const RenderState& state) {
+  return state.tiles_x * state.tiles_y;
+}
 TileStatus render_tile_status(const RenderState& state, int tile) {
   return state.tiles[tile].load(std::memory_order_acquire);
 }

@@ -31,17 +31,21 @@ std::string error_of(const std::string& text) {
 }
 
 // A floor, a box and a light; `camera` and `box` are JSON fragments.
-std::string scene_text(const std::string& camera, const std::string& material, const std::string& box) {
-  return R"({"levrt_scene": 1, "camera": )" + camera + R"(, "materials": [{"name": "m", "kd": 0.5}, )" + material +
+std::string scene_text(const std::string& camera, const std::string& material,
+                       const std::string& box) {
+  return R"({"levrt_scene": 1, "camera": )" + camera +
+         R"(, "materials": [{"name": "m", "kd": 0.5}, )" + material +
          R"(], "root": {"type": "union", "children": [
            {"type": "quad", "material": "m", "corner": [-5, -5, 0], "edge_u": [10, 0, 0], "edge_v": [0, 10, 0]},
-           )" + box + R"(,
+           )" +
+         box + R"(,
            {"type": "affine", "translate": [1, -2, 4], "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
 }
 
 const std::string kCamera = R"({"position": [0, -10, 5], "target": [0, 0, 0]})";
 const std::string kMirror = R"({"name": "mirror", "kd": 0.2, "kr": 0.8})";
-const std::string kBox = R"({"type": "box", "material": "mirror", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
+const std::string kBox =
+    R"({"type": "box", "material": "mirror", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
 
 struct Rendered {
   bool finite = true;
@@ -70,9 +74,9 @@ Rendered render_text(const std::string& text, int depth = 5) {
 
 TEST(Robustness, TinyCameraUpRendersFinitePixels) {
   for (const char* up : {"1e-19", "1e-30", "1e-37"}) {
-    const Rendered r = render_text(
-        scene_text(R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, )" + std::string(up) + "]}",
-                   kMirror, kBox));
+    const Rendered r = render_text(scene_text(
+        R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, )" + std::string(up) + "]}",
+        kMirror, kBox));
     EXPECT_TRUE(r.finite) << up;
     EXPECT_EQ(r.samples, 2u * 48u * 36u) << up;
     EXPECT_GT(r.shading_points, 0u) << up;
@@ -80,15 +84,16 @@ TEST(Robustness, TinyCameraUpRendersFinitePixels) {
 }
 
 TEST(Robustness, CameraTinyDistanceFromItsTargetRendersFinitePixels) {
-  const Rendered r = render_text(scene_text(R"({"position": [0, -1e-20, 1e-20], "target": [0, 0, 0]})", kMirror, kBox));
+  const Rendered r = render_text(
+      scene_text(R"({"position": [0, -1e-20, 1e-20], "target": [0, 0, 0]})", kMirror, kBox));
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.shading_points, 0u);
 }
 
 // What flushes to zero in the render mode is refused with one line naming the field.
 TEST(Robustness, CameraDegenerateInTheRenderFloatModeIsRefused) {
-  const std::string up = error_of(scene_text(R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, 1e-40]})",
-                                             kMirror, kBox));
+  const std::string up = error_of(scene_text(
+      R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, 1e-40]})", kMirror, kBox));
   EXPECT_EQ(up.rfind("test.json: /camera/up: ", 0), 0u) << up;
   const std::string target =
       error_of(scene_text(R"({"position": [0, 0, 3], "target": [1e-40, 0, 3]})", kMirror, kBox));
@@ -108,13 +113,15 @@ TEST(Robustness, TinyReflectiveBoxRendersFinitePixels) {
 
 TEST(Robustness, ExtremeRefractionIndexIsRefusedAndTheLimitRendersFinitePixels) {
   const std::string glass = R"({"name": "glass", "kd": 0.1, "kt": 0.9, "ior": IOR})";
-  const std::string box = R"({"type": "box", "material": "glass", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
+  const std::string box =
+      R"({"type": "box", "material": "glass", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
   const std::string head_on = R"({"position": [0, -10, 1], "target": [0, 0, 1]})";
   for (const char* ior : {"1e-30", "0.0099", "100.5"}) {
     std::string material = glass;
     material.replace(material.find("IOR"), 3, ior);
     const std::string message = error_of(scene_text(head_on, material, box));
-    EXPECT_EQ(message.rfind("test.json: /materials/1/ior: must be in [0.01, 100]", 0), 0u) << message;
+    EXPECT_EQ(message.rfind("test.json: /materials/1/ior: must be in [0.01, 100]", 0), 0u)
+        << message;
   }
   for (const char* ior : {"0.01", "100"}) {
     std::string material = glass;
@@ -154,7 +161,8 @@ bool pass_cancelled_mid_way(renderer::RenderState& state) {
 TEST(Robustness, DepthBombCancelsPromptlyAndLeavesNoPartialTile) {
   const std::string glass = R"({"name": "bomb", "kd": 0.1, "kr": 1, "kt": 1, "ior": 1.5})";
   renderer::Scene scene = scenes::instantiate_scene(scenes::parse_scene_json(
-      scene_text(kCamera, glass, R"({"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]})"),
+      scene_text(kCamera, glass,
+                 R"({"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]})"),
       "test.json"));
   const renderer::RayScene rays(scene.geometry);
   renderer::RenderSettings rs;
@@ -214,7 +222,7 @@ TEST(Robustness, AstOverAMillionLightsStopsWithinItsFirstLightsOnceCancelled) {
   const scenes::SceneModel* building = scenes::find_scene_model("building");
   ASSERT_NE(building, nullptr);
   const renderer::Scene scene = scenes::instantiate_scene(building->describe(building->max_level));
-  const lev::AstSelector ast(scene.lights);
+  const lev::AstSelector ast(scene.lights, renderer::RenderSettings{}.tolerance);
   const std::atomic<bool> cancel{true};
   lev::SelectorScratch scratch;
   scratch.cancel = &cancel;
