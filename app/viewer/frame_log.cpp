@@ -6,6 +6,7 @@
 namespace app::viewer {
 
 void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_busy) {
+  if (!log.enabled) return;
   log.frame_ms.push_back(frame_ms);
   log.work_ms.push_back(work_ms);
   if (tracer_busy) log.busy_frame_ms.push_back(frame_ms);
@@ -13,6 +14,7 @@ void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_bu
 
 void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
                  std::chrono::steady_clock::time_point when) {
+  if (!log.enabled) return;
   for (LatencyRecord& r : log.latencies) r.superseded = true;
   log.latencies.push_back({label, serial, when, -1.0, -1.0, -1.0, false});
 }

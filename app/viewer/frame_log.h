@@ -32,6 +32,9 @@ struct LatencyRecord {
 };
 
 struct FrameLog {
+  // Only --report-fps reads the log; when it is off nothing is recorded, so an interactive session
+  // of hours does not grow it frame by frame.
+  bool enabled = true;
   std::vector<double> frame_ms;  // from one frame's start to the next's
   std::vector<double>
       busy_frame_ms;            // the same, while the worker was loading, refitting or rendering

@@ -446,6 +446,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   state.record_controls = !flags.controls.empty();
   std::string controls_written;
   FrameLog log;
+  log.enabled = flags.report_fps;
   Picture picture;
   ErrorClock error_clock;
   SnapshotWriter snapshots;

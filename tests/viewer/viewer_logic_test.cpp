@@ -381,6 +381,20 @@ TEST(FrameLog, ReportsFrameTimesAndFirstTileLatency) {
             std::string::npos);
 }
 
+TEST(FrameLog, ADisabledLogRecordsNothing) {
+  FrameLog log;
+  log.enabled = false;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < 100; ++i) record_frame(log, 16.0, 5.0, true);
+  record_post(log, "tolerance=0.1", 1, t0);
+  record_first_tile(log, 1, t0);
+  record_preview(log, 1, true, t0);
+  EXPECT_TRUE(log.frame_ms.empty());
+  EXPECT_TRUE(log.busy_frame_ms.empty());
+  EXPECT_TRUE(log.work_ms.empty());
+  EXPECT_TRUE(log.latencies.empty());
+}
+
 TEST(FrameLog, ReportsTheWholeFramePreviewAndEveryLevel) {
   FrameLog log;
   const auto t0 = std::chrono::steady_clock::now();
