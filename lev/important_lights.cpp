@@ -3,6 +3,7 @@
 #include <cassert>
 
 #include "lev/bounds.h"
+#include "lev/light_bounds.h"
 
 namespace lev {
 namespace {
@@ -51,19 +52,29 @@ struct FittedNodes {
   const Bounds& volume(std::uint32_t i) const { return nodes[i].volume; }
 };
 
+// The exact test of one world-space light (is_important, one falloff for both uses); with kBound
+// a light that fails it adds its irradiance to `culled`.
+template <bool kBound>
+inline bool passes(const Light& world, const glm::vec3& point, float tolerance, glm::dvec3& culled) {
+  const float falloff = irradiance_falloff(world, point);
+  if (is_important_from_falloff(world, falloff, tolerance)) return true;
+  if constexpr (kBound) culled += glm::dvec3(irradiance_from_falloff(world, falloff));
+  return false;
+}
+
 // One light node: with kCull its exact test (one volume checked), else just its world copy. A
 // translation moves a point light and changes nothing else, so such a light is tested before it
 // is copied (the same floats as push_world_light's); any other is transformed, then tested.
-template <bool kCull>
+template <bool kCull, bool kBound>
 inline void visit_light(const Light& local, const glm::vec3& point, float tolerance, const WalkLinear& linear,
                         bool identity, const glm::vec3& translation, std::vector<Light>& out,
-                        std::uint64_t& visited) {
+                        std::uint64_t& visited, glm::dvec3& culled) {
   if (identity && local.kind == LightKind::point) {
     Light world = local;
     world.position = local.position + translation;
     if constexpr (kCull) {
       ++visited;
-      if (!is_important(world, point, tolerance)) return;
+      if (!passes<kBound>(world, point, tolerance, culled)) return;
     }
     out.emplace_back(local).position = world.position;
     return;
@@ -71,8 +82,16 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
   const Light& world = push_world_light(out, local, linear, identity, translation);
   if constexpr (kCull) {
     ++visited;
-    if (!is_important(world, point, tolerance)) out.pop_back();
+    if (!passes<kBound>(world, point, tolerance, culled)) out.pop_back();
   }
+}
+
+// The aggregate bound of a subtree whose volume missed the point, the walk's point in the frame
+// (linear, translation) it is entered with; point_magnitude is max_abs(world point).
+inline glm::dvec3 culled_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
+                                 float point_magnitude, const glm::vec3& translation, const WalkLinear& linear) {
+  return glm::dvec3(
+      irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
 }
 
 // The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
@@ -91,12 +110,17 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std:
 // frame and no transform composition (thesis fig. 3.5 tests the volumes the same way, one level
 // earlier). The box a child passed at the union is, up to padding, the box of the first node
 // with a volume inside it (moved by a translation), so that node does not test it again.
-template <bool kCull, typename Nodes>
+// With kBound every cull also adds what it dropped to the culled irradiance bound.
+template <bool kCull, bool kBound, typename Nodes>
 void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, const glm::vec3& point,
-          WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters) {
+          WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters,
+          glm::vec3* culled_irradiance_bound) {
   std::vector<WalkFrame>& stack = scratch.stack;
   std::vector<WalkLinear>& linear = scratch.linear;
   std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
+  // In double: a million culled terms summed in float would drift by up to 1%.
+  glm::dvec3 culled(0.0);
+  const float point_magnitude = max_abs(point);
   stack.clear();
   linear.clear();
   linear.emplace_back();
@@ -117,8 +141,8 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light:
-          visit_light<kCull>(h.lights[node.payload], point, tolerance, linear[linear_index], linear_index == 0,
-                             translation, out, visited);
+          visit_light<kCull, kBound>(h.lights[node.payload], point, tolerance, linear[linear_index],
+                                     linear_index == 0, translation, out, visited, culled);
           break;
         case NodeKind::affine: {
           const Similarity& xf = h.transforms[node.payload];
@@ -148,7 +172,12 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               volume_tested = false;
             } else {
               ++visited;
-              if (!contains(nodes.volume(index), local_point)) break;
+              if (!contains(nodes.volume(index), local_point)) {
+                if constexpr (kBound) {
+                  culled += culled_subtree(h, index, local_point, point_magnitude, translation, linear[linear_index]);
+                }
+                break;
+              }
             }
           }
           index += 1;
@@ -167,8 +196,8 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
           for (; first_pending <= count; ++first_pending) {
             const HierarchyNode& c = nodes.node(children[first_pending]);
             if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
-            visit_light<kCull>(h.lights[c.payload], point, tolerance, linear[linear_index], linear_index == 0,
-                               translation, out, visited);
+            visit_light<kCull, kBound>(h.lights[c.payload], point, tolerance, linear[linear_index],
+                                       linear_index == 0, translation, out, visited, culled);
           }
           // The first child that passes is walked right away; the later ones are pushed
           // last-first so that they come off the stack in order (depth-first, left to right).
@@ -187,7 +216,12 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light &&
                   c.kind != NodeKind::set_union) {
                 ++visited;
-                if (!contains(nodes.volume(child), local_point)) continue;
+                if (!contains(nodes.volume(child), local_point)) {
+                  if constexpr (kBound) {
+                    culled += culled_subtree(h, child, local_point, point_magnitude, translation, linear[linear_index]);
+                  }
+                  continue;
+                }
                 tested = true;
               }
               // The instancing pattern, translation -> instance -> master, is entered here in one
@@ -224,16 +258,22 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
+  if constexpr (kBound) *culled_irradiance_bound = round_up_sum(culled);
 }
 
 }  // namespace
 
 void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
-                           WalkCounters& counters) {
+                           WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
   assert(volumes.nodes.size() == hierarchy.nodes.size());
   assert(volumes.tolerance <= tolerance);
-  walk<true>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, important_lights, counters);
+  const FittedNodes nodes{volumes.nodes.data()};
+  if (culled_irradiance_bound) {
+    walk<true, true>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, culled_irradiance_bound);
+  } else {
+    walk<true, false>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
+  }
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
@@ -241,7 +281,8 @@ std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
   lights.reserve(hierarchy.light_count);
   WalkScratch scratch;
   WalkCounters counters;
-  walk<false>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights, counters);
+  walk<false, false>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights,
+                     counters, nullptr);
   return lights;
 }
 

@@ -46,9 +46,13 @@ struct WalkScratch {
 
 // Appends to important_lights every light with irradiance >= tolerance at point. `volumes` are
 // the hierarchy's, fitted for `tolerance` (or a smaller one, which culls less).
+// When culled_irradiance_bound is given, it receives an upper bound of the summed irradiance (RGB,
+// light.h's irradiance()) at point of every light not returned: the exact irradiance of each
+// light tested and culled plus the aggregate bound (light_bounds.h) of each subtree whose volume
+// missed the point, summed where the walk culls them. Without it the walk skips that work.
 void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
-                           WalkCounters& counters);
+                           WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
 
 // Every light of the scene in world space, instances expanded, in the same depth-first order as
 // the walk and through the same arithmetic, so a light here is bit-identical to the one the walk

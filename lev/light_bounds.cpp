@@ -13,8 +13,6 @@ constexpr float kPositionPadding = 1e-5f;
 // The float arithmetic of irradiance_bound and of the exact test (cos(gamma) in is_important)
 // each round by a few 1e-7 in a cosine; cones are compared with this much room.
 constexpr float kCosSlack = 1e-5f;
-// Relative room for the rounding of intensities, distances and 1/d^2 on both sides.
-constexpr float kRelativeMargin = 1.0f + 1e-4f;
 
 double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
   // atan2 of |a x b| and a.b is accurate at every angle (acos of the dot is not near 0 and pi).
@@ -42,44 +40,6 @@ glm::vec3 sum_rounded_up(const glm::vec3& a, const glm::vec3& b) {
   for (int i = 0; i < 3; ++i)
     r[i] = round_outwards(static_cast<double>(a[i]) + static_cast<double>(b[i]), +1);
   return r;
-}
-
-bool shines_everywhere(const LightAggregate& a) {
-  return a.cos_emission <= -1.0f;
-}
-
-// The largest cos(gamma)^P (Warn's factor, 1 for a point light) any light of the aggregate can
-// have towards x, with x outside the box; 0 when x is outside every cone. gamma, the angle from a
-// light's axis to x - p, is at least theta_w - theta_o - theta_b: the angle from the cone's axis
-// to x - c (box centre), less the spread of the axes, less the angle the box subtends from x.
-// Cosines and sines are combined without acos (as pbrt-v4's LightBounds::Importance), the sines
-// from cross products so they stay accurate near 0 and pi.
-float spot_factor(const LightAggregate& a, const FramePoint& x) {
-  const glm::vec3 centre = 0.5f * (a.positions.lo + a.positions.hi);
-  const float radius = 0.5f * glm::length(a.positions.hi - a.positions.lo) + x.rounding;
-  const glm::vec3 to_x = x.point - centre;
-  const float distance = glm::length(to_x);
-  if (!(distance > radius)) return 1.0f;
-  const float sin_b = radius / distance;
-  const float cos_b = std::sqrt((1.0f - sin_b) * (1.0f + sin_b));
-  const float cos_w = glm::dot(a.axis, to_x) / distance;
-  const float sin_w = glm::length(glm::cross(a.axis, to_x)) / distance;
-  const float cos_o = a.cos_axis_spread;
-  const float sin_o = std::sqrt(std::max(0.0f, (1.0f - cos_o) * (1.0f + cos_o)));
-  // theta_x = max(0, theta_w - theta_o), then theta_y = max(0, theta_x - theta_b).
-  float cos_x = 1.0f, sin_x = 0.0f;
-  if (cos_w < cos_o) {
-    cos_x = cos_w * cos_o + sin_w * sin_o;
-    sin_x = std::max(0.0f, sin_w * cos_o - cos_w * sin_o);
-  }
-  const float cos_y = cos_x < cos_b ? cos_x * cos_b + sin_x * sin_b : 1.0f;
-  if (cos_y + kCosSlack < a.cos_emission) return 0.0f;
-  if (a.min_dropoff > 0.0f) {
-    // Every spot has a dropoff: dark from 90 degrees on; with P >= 1, cos^P <= cos.
-    if (cos_y + kCosSlack <= 0.0f) return 0.0f;
-    if (a.min_dropoff >= 1.0f) return std::min(1.0f, cos_y + kCosSlack);
-  }
-  return 1.0f;
 }
 
 }  // namespace
@@ -151,25 +111,32 @@ glm::vec3 round_up_sum(const glm::dvec3& sum) {
   return {round_outwards(total.x, +1), round_outwards(total.y, +1), round_outwards(total.z, +1)};
 }
 
-glm::vec3 irradiance_bound(const LightAggregate& a, const FramePoint& x) {
-  const glm::vec3 zero(0.0f);
-  if (is_empty(a) || a.intensity == zero) return zero;
-  const glm::vec3 gap =
-      glm::max(glm::max(a.positions.lo - x.point, x.point - a.positions.hi), zero);
-  const float distance = glm::length(gap) - x.rounding;
-  float falloff = std::numeric_limits<float>::infinity();
-  if (distance > 0.0f) falloff = kRelativeMargin / (distance * distance);
-  if (!shines_everywhere(a)) {
-    const float factor = spot_factor(a, x);
-    if (factor == 0.0f) return zero;
-    falloff *= factor;
+float spot_cone_factor(const LightAggregate& a, const FramePoint& x) {
+  const glm::vec3 centre = 0.5f * (a.positions.lo + a.positions.hi);
+  const float radius = 0.5f * glm::length(a.positions.hi - a.positions.lo) + x.rounding;
+  const glm::vec3 to_x = x.point - centre;
+  const float distance = glm::length(to_x);
+  if (!(distance > radius)) return 1.0f;
+  const float sin_b = radius / distance;
+  const float cos_b = std::sqrt((1.0f - sin_b) * (1.0f + sin_b));
+  const float cos_w = glm::dot(a.axis, to_x) / distance;
+  const float sin_w = glm::length(glm::cross(a.axis, to_x)) / distance;
+  const float cos_o = a.cos_axis_spread;
+  const float sin_o = std::sqrt(std::max(0.0f, (1.0f - cos_o) * (1.0f + cos_o)));
+  // theta_x = max(0, theta_w - theta_o), then theta_y = max(0, theta_x - theta_b).
+  float cos_x = 1.0f, sin_x = 0.0f;
+  if (cos_w < cos_o) {
+    cos_x = cos_w * cos_o + sin_w * sin_o;
+    sin_x = std::max(0.0f, sin_w * cos_o - cos_w * sin_o);
   }
-  if (std::isinf(falloff)) {
-    const float inf = std::numeric_limits<float>::infinity();
-    return {a.intensity.x > 0.0f ? inf : 0.0f, a.intensity.y > 0.0f ? inf : 0.0f,
-            a.intensity.z > 0.0f ? inf : 0.0f};
+  const float cos_y = cos_x < cos_b ? cos_x * cos_b + sin_x * sin_b : 1.0f;
+  if (cos_y + kCosSlack < a.cos_emission) return 0.0f;
+  if (a.min_dropoff > 0.0f) {
+    // Every spot has a dropoff: dark from 90 degrees on; with P >= 1, cos^P <= cos.
+    if (cos_y + kCosSlack <= 0.0f) return 0.0f;
+    if (a.min_dropoff >= 1.0f) return std::min(1.0f, cos_y + kCosSlack);
   }
-  return a.intensity * falloff;
+  return 1.0f;
 }
 
 }  // namespace lev

@@ -223,35 +223,4 @@ std::size_t hierarchy_bytes(const LightHierarchy& h) {
          h.master_light_counts.size() * sizeof(std::uint64_t);
 }
 
-const LightAggregate* stored_aggregate(const LightHierarchy& h, std::uint32_t node) {
-  const HierarchyNode& n = h.nodes[node];
-  switch (n.kind) {
-    case NodeKind::extent_volume:
-    case NodeKind::master:
-      return &h.aggregates[n.payload];
-    case NodeKind::instance:
-      return &h.aggregates[h.nodes[n.payload].payload];
-    case NodeKind::set_union:
-      return &h.aggregates[h.union_children[n.payload + 1 + h.union_children[n.payload]]];
-    case NodeKind::point_light:
-    case NodeKind::spot_light:
-    case NodeKind::affine:
-      break;
-  }
-  return nullptr;
-}
-
-glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node, const FramePoint& x) {
-  FramePoint local = x;
-  while (h.nodes[node].kind == NodeKind::affine) {
-    local = to_node_frame(local, h.transforms[h.nodes[node].payload]);
-    node += 1;
-  }
-  const HierarchyNode& n = h.nodes[node];
-  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
-    return irradiance_bound(light_aggregate(h.lights[n.payload]), local);
-  }
-  return irradiance_bound(*stored_aggregate(h, node), local);
-}
-
 }  // namespace lev

@@ -91,12 +91,40 @@ ExtentVolumes fit_extent_volumes(const LightHierarchy& hierarchy, float toleranc
 // the thesis' per-node box), union child lists, transforms, lights, aggregates, master table.
 std::size_t hierarchy_bytes(const LightHierarchy& hierarchy);
 
-// The aggregate of a node's subtree, in the frame the node is entered with (null for an affine
-// node, whose subtree is seen through its transform, and for a light, which has none stored).
-const LightAggregate* stored_aggregate(const LightHierarchy& hierarchy, std::uint32_t node);
+// The aggregate an extent volume, master, instance or union node keeps (light_bounds.h), in the
+// frame the node is entered with. Inline, like irradiance_bound below: the walk asks for them at
+// every subtree it culls.
+inline const LightAggregate& kept_aggregate(const LightHierarchy& h, std::uint32_t node) {
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind == NodeKind::set_union) {
+    return h.aggregates[h.union_children[n.payload + 1 + h.union_children[n.payload]]];
+  }
+  if (n.kind == NodeKind::instance) return h.aggregates[h.nodes[n.payload].payload];
+  return h.aggregates[n.payload];
+}
+// The same for any node: null for an affine node, whose subtree is seen through its transform,
+// and for a light, which has none stored.
+inline const LightAggregate* stored_aggregate(const LightHierarchy& h, std::uint32_t node) {
+  const NodeKind kind = h.nodes[node].kind;
+  if (kind == NodeKind::affine || kind == NodeKind::point_light || kind == NodeKind::spot_light) return nullptr;
+  return &kept_aggregate(h, node);
+}
 
 // Upper bound of the summed unshadowed irradiance (RGB) of the node's lights at x, given in the
 // frame the node is entered with (light_bounds.h). Affine nodes move x into their child's frame.
-glm::vec3 irradiance_bound(const LightHierarchy& hierarchy, std::uint32_t node, const FramePoint& x);
+inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node, const FramePoint& x) {
+  FramePoint local = x;
+  while (h.nodes[node].kind == NodeKind::affine) {
+    const Similarity& xf = h.transforms[h.nodes[node].payload];
+    local = (h.nodes[node].flags & kTranslationOnly) != 0 ? to_translated_frame(local, xf.translation)
+                                                           : to_node_frame(local, xf);
+    node += 1;
+  }
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
+    return irradiance_bound(light_aggregate(h.lights[n.payload]), local);
+  }
+  return irradiance_bound(kept_aggregate(h, node), local);
+}
 
 }  // namespace lev

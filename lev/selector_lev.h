@@ -13,8 +13,8 @@ class LevSelector final : public LightSelector {
   // Fits the hierarchy's extent volumes for `tolerance` (the hierarchy itself is not changed).
   LevSelector(const LightHierarchy& hierarchy, float tolerance)
       : hierarchy_(hierarchy), volumes_(fit_extent_volumes(hierarchy, tolerance)), tolerance_(tolerance) {}
-  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
-                            SelectionCounters& counters) const override;
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+                            glm::vec3* culled_irradiance_bound = nullptr) const override;
 
  private:
   const LightHierarchy& hierarchy_;
