@@ -1,5 +1,6 @@
 #include "lev/important_lights.h"
 
+#include <algorithm>
 #include <cassert>
 
 #include "lev/bounds.h"
@@ -52,20 +53,37 @@ struct FittedNodes {
   const Bounds& volume(std::uint32_t i) const { return nodes[i].volume; }
 };
 
-// The exact test of one world-space light (is_important, one falloff for both uses); with kBound
-// a light that fails it adds its irradiance to `culled`.
-template <bool kBound>
+// What the walk does with what it culls: drop it, also sum its irradiance bound, or cull only
+// while that sum stays within the tolerance (find_lights_within_budget).
+enum class Culled { dropped, summed, budgeted };
+
+// The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
+// of the per-light test, the brightest channel (DESIGN.md), with the tolerance, less room for
+// round_up_sum's final rounding so that the float bound returned is within it too.
+inline bool fits_budget(const glm::dvec3& culled, const glm::dvec3& more, float budget) {
+  const glm::dvec3 sum = culled + more;
+  return std::max(std::max(sum.x, sum.y), sum.z) <= static_cast<double>(budget) * (1.0 - 1e-6);
+}
+
+// The exact test of one world-space light (is_important, one falloff for both uses); a light
+// that fails it adds its irradiance to `culled`, and under a budget it is kept (it passes) when
+// the budget cannot take it.
+template <Culled kCulled>
 inline bool passes(const Light& world, const glm::vec3& point, float tolerance, glm::dvec3& culled) {
   const float falloff = irradiance_falloff(world, point);
   if (is_important_from_falloff(world, falloff, tolerance)) return true;
-  if constexpr (kBound) culled += glm::dvec3(irradiance_from_falloff(world, falloff));
+  if constexpr (kCulled != Culled::dropped) {
+    const glm::dvec3 e(irradiance_from_falloff(world, falloff));
+    if (kCulled == Culled::budgeted && !fits_budget(culled, e, tolerance)) return true;
+    culled += e;
+  }
   return false;
 }
 
 // One light node: with kCull its exact test (one volume checked), else just its world copy. A
 // translation moves a point light and changes nothing else, so such a light is tested before it
 // is copied (the same floats as push_world_light's); any other is transformed, then tested.
-template <bool kCull, bool kBound>
+template <bool kCull, Culled kCulled>
 inline void visit_light(const Light& local, const glm::vec3& point, float tolerance, const WalkLinear& linear,
                         bool identity, const glm::vec3& translation, std::vector<Light>& out,
                         std::uint64_t& visited, glm::dvec3& culled) {
@@ -74,7 +92,7 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
     world.position = local.position + translation;
     if constexpr (kCull) {
       ++visited;
-      if (!passes<kBound>(world, point, tolerance, culled)) return;
+      if (!passes<kCulled>(world, point, tolerance, culled)) return;
     }
     out.emplace_back(local).position = world.position;
     return;
@@ -82,16 +100,24 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
   const Light& world = push_world_light(out, local, linear, identity, translation);
   if constexpr (kCull) {
     ++visited;
-    if (!passes<kBound>(world, point, tolerance, culled)) out.pop_back();
+    if (!passes<kCulled>(world, point, tolerance, culled)) out.pop_back();
   }
 }
 
-// The aggregate bound of a subtree whose volume missed the point, the walk's point in the frame
-// (linear, translation) it is entered with; point_magnitude is max_abs(world point).
-inline glm::dvec3 culled_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
-                                 float point_magnitude, const glm::vec3& translation, const WalkLinear& linear) {
-  return glm::dvec3(
+// A subtree whose volume missed the point, the walk's point in the frame (linear, translation) it
+// is entered with (point_magnitude is max_abs(world point)): its aggregate bound is summed into
+// `culled` unless the walk drops what it culls.
+// True when the subtree is culled: always unless under a budget its bound does not fit.
+template <Culled kCulled>
+inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
+                         float point_magnitude, const glm::vec3& translation, const WalkLinear& linear,
+                         float tolerance, glm::dvec3& culled) {
+  if constexpr (kCulled == Culled::dropped) return true;
+  const glm::dvec3 b(
       irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
+  if (kCulled == Culled::budgeted && !fits_budget(culled, b, tolerance)) return false;
+  culled += b;
+  return true;
 }
 
 // The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
@@ -110,8 +136,9 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std:
 // frame and no transform composition (thesis fig. 3.5 tests the volumes the same way, one level
 // earlier). The box a child passed at the union is, up to padding, the box of the first node
 // with a volume inside it (moved by a translation), so that node does not test it again.
-// With kBound every cull also adds what it dropped to the culled irradiance bound.
-template <bool kCull, bool kBound, typename Nodes>
+// Unless kCulled is `dropped` every cull also adds what it dropped to the culled irradiance bound;
+// under a budget a subtree that does not fit is walked as if its volume held the point.
+template <bool kCull, Culled kCulled, typename Nodes>
 void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, const glm::vec3& point,
           WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters,
           glm::vec3* culled_irradiance_bound) {
@@ -141,7 +168,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light:
-          visit_light<kCull, kBound>(h.lights[node.payload], point, tolerance, linear[linear_index],
+          visit_light<kCull, kCulled>(h.lights[node.payload], point, tolerance, linear[linear_index],
                                      linear_index == 0, translation, out, visited, culled);
           break;
         case NodeKind::affine: {
@@ -172,10 +199,9 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               volume_tested = false;
             } else {
               ++visited;
-              if (!contains(nodes.volume(index), local_point)) {
-                if constexpr (kBound) {
-                  culled += culled_subtree(h, index, local_point, point_magnitude, translation, linear[linear_index]);
-                }
+              if (!contains(nodes.volume(index), local_point) &&
+                  cull_subtree<kCulled>(h, index, local_point, point_magnitude, translation, linear[linear_index],
+                                        tolerance, culled)) {
                 break;
               }
             }
@@ -196,7 +222,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
           for (; first_pending <= count; ++first_pending) {
             const HierarchyNode& c = nodes.node(children[first_pending]);
             if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
-            visit_light<kCull, kBound>(h.lights[c.payload], point, tolerance, linear[linear_index],
+            visit_light<kCull, kCulled>(h.lights[c.payload], point, tolerance, linear[linear_index],
                                        linear_index == 0, translation, out, visited, culled);
           }
           // The first child that passes is walked right away; the later ones are pushed
@@ -216,12 +242,12 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light &&
                   c.kind != NodeKind::set_union) {
                 ++visited;
-                if (!contains(nodes.volume(child), local_point)) {
-                  if constexpr (kBound) {
-                    culled += culled_subtree(h, child, local_point, point_magnitude, translation, linear[linear_index]);
-                  }
+                if (!contains(nodes.volume(child), local_point) &&
+                    cull_subtree<kCulled>(h, child, local_point, point_magnitude, translation, linear[linear_index],
+                                          tolerance, culled)) {
                   continue;
                 }
+                // Passed, or walked anyway under the budget: the child need not test its box again.
                 tested = true;
               }
               // The instancing pattern, translation -> instance -> master, is entered here in one
@@ -258,7 +284,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
-  if constexpr (kBound) *culled_irradiance_bound = round_up_sum(culled);
+  if constexpr (kCulled != Culled::dropped) *culled_irradiance_bound = round_up_sum(culled);
 }
 
 }  // namespace
@@ -270,10 +296,21 @@ void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes&
   assert(volumes.tolerance <= tolerance);
   const FittedNodes nodes{volumes.nodes.data()};
   if (culled_irradiance_bound) {
-    walk<true, true>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, culled_irradiance_bound);
+    walk<true, Culled::summed>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters,
+                               culled_irradiance_bound);
   } else {
-    walk<true, false>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
+    walk<true, Culled::dropped>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
   }
+}
+
+void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
+                               WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  glm::vec3 culled;  // the budget needs the sum either way
+  walk<true, Culled::budgeted>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, lights,
+                               counters, culled_irradiance_bound ? culled_irradiance_bound : &culled);
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
@@ -281,7 +318,7 @@ std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
   lights.reserve(hierarchy.light_count);
   WalkScratch scratch;
   WalkCounters counters;
-  walk<false, false>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights,
+  walk<false, Culled::dropped>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights,
                      counters, nullptr);
   return lights;
 }
