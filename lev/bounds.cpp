@@ -31,6 +31,13 @@ Bounds transform_bounds(const Bounds& b, const Similarity& xf) {
   return r;
 }
 
+float round_outwards(double x, int direction) {
+  auto f = static_cast<float>(x);
+  if (direction > 0 && static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  if (direction < 0 && static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+
 Bounds pad_bounds(const Bounds& b, float relative) {
   if (is_empty(b) || !is_finite(b)) return b;
   const glm::vec3 extent = b.hi - b.lo;

@@ -29,6 +29,9 @@ Bounds infinite_bounds();
 bool is_finite(const Bounds& b);
 // The box around the transformed box (its 8 corners). An infinite box stays infinite.
 Bounds transform_bounds(const Bounds& b, const Similarity& xf);
+// The float at or beyond x in the given direction (+1: up, -1: down), so that a bound computed
+// in double never moves inwards when stored.
+float round_outwards(double x, int direction);
 // Grows the box by a relative margin so that float rounding in the walk (which moves the query
 // point through the inverse transforms) can never cull a light whose world irradiance passes.
 Bounds pad_bounds(const Bounds& b, float relative);

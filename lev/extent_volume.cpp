@@ -5,20 +5,6 @@
 #include <limits>
 
 namespace lev {
-namespace {
-
-// The float at or beyond x in the given direction (+1: up, -1: down), so that a box face
-// computed in double never moves inwards when stored.
-float round_outwards(double x, int direction) {
-  auto f = static_cast<float>(x);
-  if (direction > 0 && static_cast<double>(f) < x)
-    f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  if (direction < 0 && static_cast<double>(f) > x)
-    f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-  return f;
-}
-
-}  // namespace
 
 float extent_radius(float light_strength, float tolerance) {
   if (!(light_strength > 0.0f)) return 0.0f;

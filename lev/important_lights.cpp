@@ -1,8 +1,10 @@
 #include "lev/important_lights.h"
 
+#include <algorithm>
 #include <cassert>
 
 #include "lev/bounds.h"
+#include "lev/light_bounds.h"
 
 namespace lev {
 namespace {
@@ -51,19 +53,46 @@ struct FittedNodes {
   const Bounds& volume(std::uint32_t i) const { return nodes[i].volume; }
 };
 
+// What the walk does with what it culls: drop it, also sum its irradiance bound, or cull only
+// while that sum stays within the tolerance (find_lights_within_budget).
+enum class Culled { dropped, summed, budgeted };
+
+// The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
+// of the per-light test, the brightest channel (DESIGN.md), with the tolerance, less room for
+// round_up_sum's final rounding so that the float bound returned is within it too.
+inline bool fits_budget(const glm::dvec3& culled, const glm::dvec3& more, float budget) {
+  const glm::dvec3 sum = culled + more;
+  return std::max(std::max(sum.x, sum.y), sum.z) <= static_cast<double>(budget) * (1.0 - 1e-6);
+}
+
+// The exact test of one world-space light (is_important, one falloff for both uses); a light
+// that fails it adds its irradiance to `culled`, and under a budget it is kept (it passes) when
+// the budget cannot take it.
+template <Culled kCulled>
+inline bool passes(const Light& world, const glm::vec3& point, float tolerance, glm::dvec3& culled) {
+  const float falloff = irradiance_falloff(world, point);
+  if (is_important_from_falloff(world, falloff, tolerance)) return true;
+  if constexpr (kCulled != Culled::dropped) {
+    const glm::dvec3 e(irradiance_from_falloff(world, falloff));
+    if (kCulled == Culled::budgeted && !fits_budget(culled, e, tolerance)) return true;
+    culled += e;
+  }
+  return false;
+}
+
 // One light node: with kCull its exact test (one volume checked), else just its world copy. A
 // translation moves a point light and changes nothing else, so such a light is tested before it
 // is copied (the same floats as push_world_light's); any other is transformed, then tested.
-template <bool kCull>
+template <bool kCull, Culled kCulled>
 inline void visit_light(const Light& local, const glm::vec3& point, float tolerance, const WalkLinear& linear,
                         bool identity, const glm::vec3& translation, std::vector<Light>& out,
-                        std::uint64_t& visited) {
+                        std::uint64_t& visited, glm::dvec3& culled) {
   if (identity && local.kind == LightKind::point) {
     Light world = local;
     world.position = local.position + translation;
     if constexpr (kCull) {
       ++visited;
-      if (!is_important(world, point, tolerance)) return;
+      if (!passes<kCulled>(world, point, tolerance, culled)) return;
     }
     out.emplace_back(local).position = world.position;
     return;
@@ -71,8 +100,24 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
   const Light& world = push_world_light(out, local, linear, identity, translation);
   if constexpr (kCull) {
     ++visited;
-    if (!is_important(world, point, tolerance)) out.pop_back();
+    if (!passes<kCulled>(world, point, tolerance, culled)) out.pop_back();
   }
+}
+
+// A subtree whose volume missed the point, the walk's point in the frame (linear, translation) it
+// is entered with (point_magnitude is max_abs(world point)): its aggregate bound is summed into
+// `culled` unless the walk drops what it culls.
+// True when the subtree is culled: always unless under a budget its bound does not fit.
+template <Culled kCulled>
+inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
+                         float point_magnitude, const glm::vec3& translation, const WalkLinear& linear,
+                         float tolerance, glm::dvec3& culled) {
+  if constexpr (kCulled == Culled::dropped) return true;
+  const glm::dvec3 b(
+      irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
+  if (kCulled == Culled::budgeted && !fits_budget(culled, b, tolerance)) return false;
+  culled += b;
+  return true;
 }
 
 // The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
@@ -91,12 +136,18 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std:
 // frame and no transform composition (thesis fig. 3.5 tests the volumes the same way, one level
 // earlier). The box a child passed at the union is, up to padding, the box of the first node
 // with a volume inside it (moved by a translation), so that node does not test it again.
-template <bool kCull, typename Nodes>
+// Unless kCulled is `dropped` every cull also adds what it dropped to the culled irradiance bound;
+// under a budget a subtree that does not fit is walked as if its volume held the point.
+template <bool kCull, Culled kCulled, typename Nodes>
 void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, const glm::vec3& point,
-          WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters) {
+          WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters,
+          glm::vec3* culled_irradiance_bound) {
   std::vector<WalkFrame>& stack = scratch.stack;
   std::vector<WalkLinear>& linear = scratch.linear;
   std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
+  // In double: a million culled terms summed in float would drift by up to 1%.
+  glm::dvec3 culled(0.0);
+  const float point_magnitude = max_abs(point);
   stack.clear();
   linear.clear();
   linear.emplace_back();
@@ -117,8 +168,8 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light:
-          visit_light<kCull>(h.lights[node.payload], point, tolerance, linear[linear_index], linear_index == 0,
-                             translation, out, visited);
+          visit_light<kCull, kCulled>(h.lights[node.payload], point, tolerance, linear[linear_index],
+                                     linear_index == 0, translation, out, visited, culled);
           break;
         case NodeKind::affine: {
           const Similarity& xf = h.transforms[node.payload];
@@ -148,7 +199,11 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               volume_tested = false;
             } else {
               ++visited;
-              if (!contains(nodes.volume(index), local_point)) break;
+              if (!contains(nodes.volume(index), local_point) &&
+                  cull_subtree<kCulled>(h, index, local_point, point_magnitude, translation, linear[linear_index],
+                                        tolerance, culled)) {
+                break;
+              }
             }
           }
           index += 1;
@@ -167,8 +222,8 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
           for (; first_pending <= count; ++first_pending) {
             const HierarchyNode& c = nodes.node(children[first_pending]);
             if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
-            visit_light<kCull>(h.lights[c.payload], point, tolerance, linear[linear_index], linear_index == 0,
-                               translation, out, visited);
+            visit_light<kCull, kCulled>(h.lights[c.payload], point, tolerance, linear[linear_index],
+                                       linear_index == 0, translation, out, visited, culled);
           }
           // The first child that passes is walked right away; the later ones are pushed
           // last-first so that they come off the stack in order (depth-first, left to right).
@@ -187,7 +242,12 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light &&
                   c.kind != NodeKind::set_union) {
                 ++visited;
-                if (!contains(nodes.volume(child), local_point)) continue;
+                if (!contains(nodes.volume(child), local_point) &&
+                    cull_subtree<kCulled>(h, child, local_point, point_magnitude, translation, linear[linear_index],
+                                          tolerance, culled)) {
+                  continue;
+                }
+                // Passed, or walked anyway under the budget: the child need not test its box again.
                 tested = true;
               }
               // The instancing pattern, translation -> instance -> master, is entered here in one
@@ -224,16 +284,33 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
+  if constexpr (kCulled != Culled::dropped) *culled_irradiance_bound = round_up_sum(culled);
 }
 
 }  // namespace
 
 void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
-                           WalkCounters& counters) {
+                           WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
   assert(volumes.nodes.size() == hierarchy.nodes.size());
   assert(volumes.tolerance <= tolerance);
-  walk<true>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, important_lights, counters);
+  const FittedNodes nodes{volumes.nodes.data()};
+  if (culled_irradiance_bound) {
+    walk<true, Culled::summed>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters,
+                               culled_irradiance_bound);
+  } else {
+    walk<true, Culled::dropped>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
+  }
+}
+
+void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
+                               WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  glm::vec3 culled;  // the budget needs the sum either way
+  walk<true, Culled::budgeted>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, lights,
+                               counters, culled_irradiance_bound ? culled_irradiance_bound : &culled);
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
@@ -241,7 +318,8 @@ std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
   lights.reserve(hierarchy.light_count);
   WalkScratch scratch;
   WalkCounters counters;
-  walk<false>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights, counters);
+  walk<false, Culled::dropped>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights,
+                     counters, nullptr);
   return lights;
 }
 

@@ -46,9 +46,23 @@ struct WalkScratch {
 
 // Appends to important_lights every light with irradiance >= tolerance at point. `volumes` are
 // the hierarchy's, fitted for `tolerance` (or a smaller one, which culls less).
+// When culled_irradiance_bound is given, it receives an upper bound of the summed irradiance (RGB,
+// light.h's irradiance()) at point of every light not returned: the exact irradiance of each
+// light tested and culled plus the aggregate bound (light_bounds.h) of each subtree whose volume
+// missed the point, summed where the walk culls them. Without it the walk skips that work.
 void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
-                           WalkCounters& counters);
+                           WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+
+// The walk of `lev_bounded`: like find_important_lights, but a subtree or light is culled only
+// while the running sum of what was culled at this point (the culled_irradiance_bound above) stays
+// within the tolerance, compared on the scale of the per-light test (its brightest channel); a
+// subtree that does not fit is walked as if its volume held the point, a light that does not fit
+// is returned. So max(culled_irradiance_bound) <= tolerance (computed whether asked for or not).
+// What is culled depends on the depth-first order only: deterministic.
+void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
+                               WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
 
 // Every light of the scene in world space, instances expanded, in the same depth-first order as
 // the walk and through the same arithmetic, so a light here is bit-identical to the one the walk

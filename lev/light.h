@@ -76,22 +76,28 @@ inline float irradiance_falloff(const Light& light, const glm::vec3& x) {
 }
 
 // RGB irradiance, finite for every finite or infinite intensity: zero where the falloff is zero
-// (no 0 * inf), and at most the largest float where 1/d^2 meets a huge intensity.
-inline glm::vec3 irradiance(const Light& light, const glm::vec3& x) {
-  const float falloff = irradiance_falloff(light, x);
+// (no 0 * inf), and at most the largest float where 1/d^2 meets a huge intensity. The walk computes
+// the falloff once for both this and the importance test below.
+inline glm::vec3 irradiance_from_falloff(const Light& light, float falloff) {
   if (falloff == 0.0f) return glm::vec3(0.0f);
   constexpr float kLargest = std::numeric_limits<float>::max();
   const glm::vec3 e = light.intensity * falloff;
   return {e.x < kLargest ? e.x : kLargest, e.y < kLargest ? e.y : kLargest, e.z < kLargest ? e.z : kLargest};
 }
+inline glm::vec3 irradiance(const Light& light, const glm::vec3& x) {
+  return irradiance_from_falloff(light, irradiance_falloff(light, x));
+}
 
 // True when the light's unshadowed irradiance at x is non-zero and at least tolerance: the
 // exact extent volume of one light (thesis 3.3). With tolerance 0 it selects every light that
 // can contribute at all, which is what `rt` shadow-tests.
-inline bool is_important(const Light& light, const glm::vec3& x, float tolerance) {
+inline bool is_important_from_falloff(const Light& light, float falloff, float tolerance) {
   // Clamped like irradiance(), so an infinite tolerance culls every light.
-  const float e = std::min(strength(light) * irradiance_falloff(light, x), std::numeric_limits<float>::max());
+  const float e = std::min(strength(light) * falloff, std::numeric_limits<float>::max());
   return e > 0.0f && e >= tolerance;
+}
+inline bool is_important(const Light& light, const glm::vec3& x, float tolerance) {
+  return is_important_from_falloff(light, irradiance_falloff(light, x), tolerance);
 }
 
 }  // namespace lev

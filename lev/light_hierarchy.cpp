@@ -65,7 +65,8 @@ class Flattener {
         const auto offset = static_cast<std::uint32_t>(h_.union_children.size());
         h_.nodes[index].payload = offset;
         h_.union_children.push_back(static_cast<std::uint32_t>(src.children.size()));
-        h_.union_children.resize(h_.union_children.size() + src.children.size());
+        // The children, then a slot for the union's aggregate (attach_aggregates).
+        h_.union_children.resize(h_.union_children.size() + src.children.size() + 1);
         for (std::size_t k = 0; k < src.children.size(); ++k) {
           const std::uint32_t child = add(src.children[k], depth + 1, current_master);
           h_.union_children[offset + 1 + k] = child;
@@ -98,6 +99,55 @@ class Flattener {
   std::uint64_t light_count_ = 0;
 };
 
+constexpr std::uint32_t kNoAggregate = ~0u;
+
+// One backwards sweep per master, like fit_extent_volumes: every node's aggregate in the frame it
+// is entered with, of which unions, masters and extent volumes keep theirs (a master or extent
+// volume shares its child's when that child keeps one, an instance its master's).
+void attach_aggregates(LightHierarchy& h) {
+  std::vector<LightAggregate> of_node(h.nodes.size());
+  std::vector<std::uint32_t> kept(h.nodes.size(), kNoAggregate);
+  const auto keep = [&h](const LightAggregate& a) {
+    h.aggregates.push_back(a);
+    return static_cast<std::uint32_t>(h.aggregates.size() - 1);
+  };
+  for (const NodeRange& range : h.master_ranges) {
+    for (std::uint32_t i = range.end; i-- > range.begin;) {
+      HierarchyNode& node = h.nodes[i];
+      switch (node.kind) {
+        case NodeKind::point_light:
+        case NodeKind::spot_light:
+          of_node[i] = light_aggregate(h.lights[node.payload]);
+          break;
+        case NodeKind::affine:
+          of_node[i] = transform_aggregate(of_node[i + 1], h.transforms[node.payload]);
+          break;
+        case NodeKind::extent_volume:
+        case NodeKind::master:
+          of_node[i] = of_node[i + 1];
+          kept[i] = kept[i + 1] != kNoAggregate ? kept[i + 1] : keep(of_node[i]);
+          node.payload = kept[i];
+          break;
+        case NodeKind::set_union: {
+          const std::uint32_t count = h.union_children[node.payload];
+          LightAggregate a;
+          for (std::uint32_t k = 0; k < count; ++k) {
+            a = merge_aggregates(a, of_node[h.union_children[node.payload + 1 + k]]);
+          }
+          of_node[i] = a;
+          kept[i] = keep(a);
+          h.union_children[node.payload + 1 + count] = kept[i];
+          break;
+        }
+        case NodeKind::instance:
+          of_node[i] = of_node[node.payload];
+          kept[i] = kept[node.payload];
+          break;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 LightHierarchy build_hierarchy(const LightTree& tree) {
@@ -120,6 +170,7 @@ LightHierarchy build_hierarchy(const LightTree& tree) {
   h.master_ranges.push_back(root_range);
   h.root = root_range.begin;
   h.light_count = flattener.take_light_count();
+  attach_aggregates(h);
   return h;
 }
 
@@ -167,6 +218,7 @@ std::size_t hierarchy_bytes(const LightHierarchy& h) {
   return h.nodes.size() * (sizeof(HierarchyNode) + sizeof(Bounds)) +
          h.union_children.size() * sizeof(std::uint32_t) +
          h.transforms.size() * sizeof(Similarity) + h.lights.size() * sizeof(Light) +
+         h.aggregates.size() * sizeof(LightAggregate) +
          h.master_ranges.size() * sizeof(NodeRange) +
          h.master_light_counts.size() * sizeof(std::uint64_t);
 }

@@ -8,6 +8,11 @@
 // The extent volumes depend on the tolerance, so they live apart from the structure, in an
 // ExtentVolumes a render (its `lev` selector) fits for its own tolerance: one backwards sweep per
 // master, each master's volume computed once however many instances it has.
+//
+// The light aggregates (light_bounds.h) do not depend on the tolerance and are part of the
+// structure: one per union, one per master and extent volume whose child is neither, shared by a
+// master and its instances. A light's is computed from the light; an affine node's is its child's
+// seen through the transform, which irradiance_bound applies to the query point instead.
 #pragma once
 
 #include <cstddef>
@@ -16,6 +21,7 @@
 
 #include "lev/bounds.h"
 #include "lev/light.h"
+#include "lev/light_bounds.h"
 #include "lev/light_tree.h"
 #include "lev/transform.h"
 
@@ -27,7 +33,9 @@ namespace lev {
 inline constexpr std::uint8_t kTranslationOnly = 1;
 
 struct HierarchyNode {
-  std::uint32_t payload = 0;   // light | transform | master node | offset into union_children
+  // light | transform | master node (instance) | offset into union_children | aggregate (extent
+  // volume, master)
+  std::uint32_t payload = 0;
   NodeKind kind = NodeKind::set_union;
   std::uint8_t flags = 0;      // kTranslationOnly
   std::uint8_t unused[2] = {0, 0};
@@ -41,10 +49,12 @@ struct NodeRange {
 
 struct LightHierarchy {
   std::vector<HierarchyNode> nodes;
-  // For a union at offset k: union_children[k] = child count, then the child node indices.
+  // For a union at offset k: union_children[k] = child count n, then the n child node indices,
+  // then the union's aggregate.
   std::vector<std::uint32_t> union_children;
   std::vector<Similarity> transforms;
   std::vector<Light> lights;  // in their own frames
+  std::vector<LightAggregate> aggregates;  // each in the frame of the nodes that refer to it
   std::vector<NodeRange> master_ranges;  // definition order; the root's range comes last
   std::vector<std::uint64_t> master_light_counts;
   std::uint32_t root = 0;
@@ -78,7 +88,43 @@ LightHierarchy build_hierarchy(const LightTree& tree);
 ExtentVolumes fit_extent_volumes(const LightHierarchy& hierarchy, float tolerance);
 
 // What the hierarchy needs for a query, in bytes: nodes with one extent volume each (24 bytes,
-// the thesis' per-node box), union child lists, transforms, lights, master table.
+// the thesis' per-node box), union child lists, transforms, lights, aggregates, master table.
 std::size_t hierarchy_bytes(const LightHierarchy& hierarchy);
+
+// The aggregate an extent volume, master, instance or union node keeps (light_bounds.h), in the
+// frame the node is entered with. Inline, like irradiance_bound below: the walk asks for them at
+// every subtree it culls.
+inline const LightAggregate& kept_aggregate(const LightHierarchy& h, std::uint32_t node) {
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind == NodeKind::set_union) {
+    return h.aggregates[h.union_children[n.payload + 1 + h.union_children[n.payload]]];
+  }
+  if (n.kind == NodeKind::instance) return h.aggregates[h.nodes[n.payload].payload];
+  return h.aggregates[n.payload];
+}
+// The same for any node: null for an affine node, whose subtree is seen through its transform,
+// and for a light, which has none stored.
+inline const LightAggregate* stored_aggregate(const LightHierarchy& h, std::uint32_t node) {
+  const NodeKind kind = h.nodes[node].kind;
+  if (kind == NodeKind::affine || kind == NodeKind::point_light || kind == NodeKind::spot_light) return nullptr;
+  return &kept_aggregate(h, node);
+}
+
+// Upper bound of the summed unshadowed irradiance (RGB) of the node's lights at x, given in the
+// frame the node is entered with (light_bounds.h). Affine nodes move x into their child's frame.
+inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node, const FramePoint& x) {
+  FramePoint local = x;
+  while (h.nodes[node].kind == NodeKind::affine) {
+    const Similarity& xf = h.transforms[h.nodes[node].payload];
+    local = (h.nodes[node].flags & kTranslationOnly) != 0 ? to_translated_frame(local, xf.translation)
+                                                           : to_node_frame(local, xf);
+    node += 1;
+  }
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
+    return irradiance_bound(light_aggregate(h.lights[n.payload]), local);
+  }
+  return irradiance_bound(kept_aggregate(h, node), local);
+}
 
 }  // namespace lev

@@ -68,8 +68,13 @@ struct SelectorScratch {
 class LightSelector {
  public:
   virtual ~LightSelector() = default;
-  virtual glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
-                                    SelectionCounters& counters) const = 0;
+  // The direct radiance at the point. When culled_irradiance_bound is given it also receives an
+  // upper bound of the summed unshadowed irradiance (RGB, light.h's irradiance()) of the lights the
+  // method neither shadow-tested nor accounted for exactly: the error the method may make, before
+  // the material. The default argument lets callers that do not want it (and skip its cost) keep
+  // three arguments; every override repeats the same default, nullptr.
+  virtual glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+                                    glm::vec3* culled_irradiance_bound = nullptr) const = 0;
   // Called by the renderer after every complete pass (never concurrently with direct_radiance).
   virtual void end_pass() {}
   // Memory the method keeps besides the light hierarchy (AST's per-light statistics).

@@ -4,6 +4,7 @@
 
 #include "lev/selector_ast.h"
 #include "lev/selector_lev.h"
+#include "lev/selector_lev_bounded.h"
 #include "lev/selector_rt.h"
 
 namespace lev {
@@ -18,6 +19,10 @@ const std::vector<MethodInfo>& method_table() {
        true},
       {Method::lev, "lev", "LEV (extent volumes)",
        "walk the light extent volume hierarchy; shadow rays only to the lights returned", true},
+      {Method::lev_bounded, "lev_bounded", "LEV bounded (culled sum <= tolerance)",
+       "LEV that culls only while the summed irradiance bound of what it culled at the point stays "
+       "within the tolerance",
+       true},
   };
   return table;
 }
@@ -50,6 +55,7 @@ std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy
     case Method::rt: return std::make_unique<RtSelector>(hierarchy);
     case Method::ast: return std::make_unique<AstSelector>(hierarchy, tolerance);
     case Method::lev: return std::make_unique<LevSelector>(hierarchy, tolerance);
+    case Method::lev_bounded: return std::make_unique<LevBoundedSelector>(hierarchy, tolerance);
   }
   throw std::logic_error("unknown method");
 }

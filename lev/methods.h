@@ -13,7 +13,7 @@
 
 namespace lev {
 
-enum class Method { rt, ast, lev };
+enum class Method { rt, ast, lev, lev_bounded };
 
 struct MethodInfo {
   Method id;

@@ -1,8 +1,10 @@
 #include "lev/selector_ast.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "lev/important_lights.h"
+#include "lev/light_bounds.h"
 
 namespace lev {
 
@@ -20,8 +22,11 @@ AstSelector::AstSelector(const LightHierarchy& hierarchy, float tolerance)
 }
 
 glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
-                                       SelectionCounters& counters) const {
+                                       SelectionCounters& counters,
+                                       glm::vec3* culled_irradiance_bound) const {
   const glm::vec3 x = point.position();
+  // Unknown until the end (a cancelled call returns early, with a result the caller discards).
+  if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(std::numeric_limits<float>::infinity());
   // Both loops run over every light (a million shadow rays per point at tolerance 0): like
   // sum_visible_lights they read the cancel flag every kCancelCheckLights lights and return early,
   // a result the caller discards.
@@ -78,6 +83,12 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
                             ? static_cast<float>(hits_[c.light]) / static_cast<float>(tests_[c.light])
                             : point_ratio;
     sum += c.radiance * ratio;
+  }
+  // The estimated rest is off by at most its unshadowed value: its irradiance bounds the error.
+  if (culled_irradiance_bound) {
+    glm::dvec3 rest(0.0);
+    for (std::size_t k = 0; k < remaining; ++k) rest += glm::dvec3(irradiance(world_lights_[heap[k].light], x));
+    *culled_irradiance_bound = round_up_sum(rest);
   }
   return sum;
 }

@@ -23,8 +23,8 @@ namespace lev {
 class AstSelector final : public LightSelector {
  public:
   AstSelector(const LightHierarchy& hierarchy, float tolerance);
-  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
-                            SelectionCounters& counters) const override;
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+                            glm::vec3* culled_irradiance_bound = nullptr) const override;
   void end_pass() override;
   std::size_t bookkeeping_bytes() const override;
 

@@ -5,10 +5,12 @@
 namespace lev {
 
 glm::vec3 LevSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
-                                       SelectionCounters& counters) const {
+                                       SelectionCounters& counters,
+                                       glm::vec3* culled_irradiance_bound) const {
   scratch.lights.clear();
   WalkCounters walk_counters;
-  find_important_lights(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk, scratch.lights, walk_counters);
+  walk_(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk, scratch.lights, walk_counters,
+        culled_irradiance_bound);
   counters.nodes_visited += walk_counters.nodes_visited;
   return sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);

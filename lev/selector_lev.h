@@ -3,23 +3,36 @@
 // selects, in the same order, so the images are identical bit for bit.
 #pragma once
 
+#include <vector>
+
+#include "lev/important_lights.h"
 #include "lev/light_hierarchy.h"
 #include "lev/light_selector.h"
 
 namespace lev {
 
-class LevSelector final : public LightSelector {
+// The walk that picks the lights to shadow-test (important_lights.h): find_important_lights for
+// `lev`; variants of LEV (lev_bounded) derive from LevSelector with their own.
+using LightWalk = void (*)(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                           const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
+                           WalkCounters& counters, glm::vec3* culled_irradiance_bound);
+
+class LevSelector : public LightSelector {
  public:
   // Fits the hierarchy's extent volumes for `tolerance` (the hierarchy itself is not changed).
-  LevSelector(const LightHierarchy& hierarchy, float tolerance)
-      : hierarchy_(hierarchy), volumes_(fit_extent_volumes(hierarchy, tolerance)), tolerance_(tolerance) {}
-  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
-                            SelectionCounters& counters) const override;
+  LevSelector(const LightHierarchy& hierarchy, float tolerance, LightWalk walk = find_important_lights)
+      : hierarchy_(hierarchy),
+        volumes_(fit_extent_volumes(hierarchy, tolerance)),
+        tolerance_(tolerance),
+        walk_(walk) {}
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+                            glm::vec3* culled_irradiance_bound = nullptr) const final;
 
  private:
   const LightHierarchy& hierarchy_;
   const ExtentVolumes volumes_;
   const float tolerance_;
+  const LightWalk walk_;
 };
 
 }  // namespace lev

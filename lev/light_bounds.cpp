@@ -1,0 +1,142 @@
+#include "lev/light_bounds.h"
+
+#include <cmath>
+
+namespace lev {
+namespace {
+
+// Every stored cone is widened by this angle (and its cosine rounded down): the walk turns the
+// spot axes with float matrices, a few 1e-7 radians from the double arithmetic here.
+constexpr double kAngleSlack = 1e-6;
+// Boxes grow by this relative margin per step, like the extent volumes (light_hierarchy.cpp).
+constexpr float kPositionPadding = 1e-5f;
+// The float arithmetic of irradiance_bound and of the exact test (cos(gamma) in is_important)
+// each round by a few 1e-7 in a cosine; cones are compared with this much room.
+constexpr float kCosSlack = 1e-5f;
+
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+  // atan2 of |a x b| and a.b is accurate at every angle (acos of the dot is not near 0 and pi).
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+// The cone's cosine as stored: the angle widened by kAngleSlack, the cosine rounded down.
+float stored_cos(double angle) {
+  if (angle + kAngleSlack >= M_PI) return -1.0f;
+  return std::max(-1.0f, round_outwards(std::cos(angle + kAngleSlack), -1));
+}
+
+double stored_angle(float cos_angle) {
+  return std::acos(std::clamp(static_cast<double>(cos_angle), -1.0, 1.0));
+}
+
+// Rotation of v about the unit axis k by angle (Rodrigues).
+glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& k, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+}
+
+glm::vec3 sum_rounded_up(const glm::vec3& a, const glm::vec3& b) {
+  glm::vec3 r;
+  for (int i = 0; i < 3; ++i)
+    r[i] = round_outwards(static_cast<double>(a[i]) + static_cast<double>(b[i]), +1);
+  return r;
+}
+
+}  // namespace
+
+LightAggregate light_aggregate(const Light& light) {
+  LightAggregate a;
+  a.intensity = light.intensity;
+  a.positions = pad_bounds({light.position, light.position}, kPositionPadding);
+  if (light.kind == LightKind::point) return a;
+  a.axis = glm::vec3(glm::normalize(glm::dvec3(light.direction)));
+  a.cos_axis_spread = stored_cos(0.0);
+  a.min_dropoff = light.dropoff;
+  // With a dropoff, cos(gamma)^P is zero from 90 degrees on (light.h).
+  a.cos_emission =
+      light.dropoff > 0.0f ? std::max(light.cos_cone_half_angle, 0.0f) : light.cos_cone_half_angle;
+  return a;
+}
+
+LightAggregate merge_aggregates(const LightAggregate& a, const LightAggregate& b) {
+  if (is_empty(a)) return b;
+  if (is_empty(b)) return a;
+  LightAggregate m;
+  m.intensity = sum_rounded_up(a.intensity, b.intensity);
+  m.positions = merge(a.positions, b.positions);
+  m.min_dropoff = std::min(a.min_dropoff, b.min_dropoff);
+  m.cos_emission = std::min(a.cos_emission, b.cos_emission);
+  if (shines_everywhere(m)) return m;
+  // The smallest cone holding both axis cones (pbrt-v4 DirectionCone Union).
+  const glm::dvec3 wa(a.axis), wb(b.axis);
+  const double theta_a = stored_angle(a.cos_axis_spread), theta_b = stored_angle(b.cos_axis_spread);
+  const double theta_d = angle_between(wa, wb);
+  if (std::min(theta_d + theta_b, M_PI) <= theta_a) {
+    m.axis = a.axis;
+    m.cos_axis_spread = a.cos_axis_spread;
+    return m;
+  }
+  if (std::min(theta_d + theta_a, M_PI) <= theta_b) {
+    m.axis = b.axis;
+    m.cos_axis_spread = b.cos_axis_spread;
+    return m;
+  }
+  const double theta_o = 0.5 * (theta_a + theta_d + theta_b);
+  const glm::dvec3 turn_axis = glm::cross(wa, wb);
+  if (theta_o >= M_PI || glm::dot(turn_axis, turn_axis) == 0.0) {
+    m.cos_axis_spread = -1.0f;  // every direction
+    return m;
+  }
+  m.axis = glm::vec3(glm::normalize(rotate(wa, glm::normalize(turn_axis), theta_o - theta_a)));
+  m.cos_axis_spread = stored_cos(theta_o);
+  return m;
+}
+
+LightAggregate transform_aggregate(const LightAggregate& a, const Similarity& xf) {
+  if (is_empty(a)) return a;
+  LightAggregate t = a;
+  const double scale2 = static_cast<double>(xf.scale) * static_cast<double>(xf.scale);
+  for (int i = 0; i < 3; ++i)
+    t.intensity[i] = round_outwards(static_cast<double>(a.intensity[i]) * scale2, +1);
+  t.positions = pad_bounds(transform_bounds(a.positions, xf), kPositionPadding);
+  if (!shines_everywhere(a) && a.cos_axis_spread > -1.0f) {
+    t.axis = glm::vec3(glm::normalize(glm::dmat3(xf.rotation) * glm::dvec3(a.axis)));
+    t.cos_axis_spread = stored_cos(stored_angle(a.cos_axis_spread));
+  }
+  return t;
+}
+
+glm::vec3 round_up_sum(const glm::dvec3& sum) {
+  const glm::dvec3 total = sum * (1.0 + 1e-9);
+  return {round_outwards(total.x, +1), round_outwards(total.y, +1), round_outwards(total.z, +1)};
+}
+
+float spot_cone_factor(const LightAggregate& a, const FramePoint& x) {
+  const glm::vec3 centre = 0.5f * (a.positions.lo + a.positions.hi);
+  const float radius = 0.5f * glm::length(a.positions.hi - a.positions.lo) + x.rounding;
+  const glm::vec3 to_x = x.point - centre;
+  const float distance = glm::length(to_x);
+  if (!(distance > radius)) return 1.0f;
+  const float sin_b = radius / distance;
+  const float cos_b = std::sqrt((1.0f - sin_b) * (1.0f + sin_b));
+  const float cos_w = glm::dot(a.axis, to_x) / distance;
+  const float sin_w = glm::length(glm::cross(a.axis, to_x)) / distance;
+  const float cos_o = a.cos_axis_spread;
+  const float sin_o = std::sqrt(std::max(0.0f, (1.0f - cos_o) * (1.0f + cos_o)));
+  // theta_x = max(0, theta_w - theta_o), then theta_y = max(0, theta_x - theta_b).
+  float cos_x = 1.0f, sin_x = 0.0f;
+  if (cos_w < cos_o) {
+    cos_x = cos_w * cos_o + sin_w * sin_o;
+    sin_x = std::max(0.0f, sin_w * cos_o - cos_w * sin_o);
+  }
+  const float cos_y = cos_x < cos_b ? cos_x * cos_b + sin_x * sin_b : 1.0f;
+  if (cos_y + kCosSlack < a.cos_emission) return 0.0f;
+  if (a.min_dropoff > 0.0f) {
+    // Every spot has a dropoff: dark from 90 degrees on; with P >= 1, cos^P <= cos.
+    if (cos_y + kCosSlack <= 0.0f) return 0.0f;
+    if (a.min_dropoff >= 1.0f) return std::min(1.0f, cos_y + kCosSlack);
+  }
+  return 1.0f;
+}
+
+}  // namespace lev

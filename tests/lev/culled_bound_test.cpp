@@ -1,0 +1,151 @@
+// The walk's culled irradiance bound (find_important_lights with a bound requested) against brute
+// force: at random points and at the lights of random instanced scenes, for tolerances from 0 to
+// huge, it is never below the summed irradiance of the lights the walk did not return; it is 0 at
+// tolerance 0; asking for it changes nothing else. The selectors pass it on: rt 0, lev the walk's,
+// ast the irradiance of the lights it estimated instead of testing.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lev/important_lights.h"
+#include "lev/light_hierarchy.h"
+#include "lev/selector_ast.h"
+#include "lev/selector_lev.h"
+#include "lev/selector_rt.h"
+#include "tests/lev/random_light_scenes.h"
+
+namespace {
+
+using lev_test::Random;
+
+const float kTolerances[] = {0.0f, 1e-3f, 1e-2f, 0.1f, 1e30f};
+
+// The summed irradiance of the world lights that are not important at x.
+glm::dvec3 brute_force_culled(const std::vector<lev::Light>& world_lights, const glm::vec3& x,
+                              float tolerance) {
+  glm::dvec3 sum(0.0);
+  for (const lev::Light& l : world_lights) {
+    if (!lev::is_important(l, x, tolerance)) sum += glm::dvec3(lev::irradiance(l, x));
+  }
+  return sum;
+}
+
+std::vector<glm::vec3> query_points(Random& r, const std::vector<lev::Light>& world_lights) {
+  std::vector<glm::vec3> points;
+  for (int k = 0; k < 40; ++k)
+    points.push_back({r.uniform(-50, 50), r.uniform(-50, 50), r.uniform(-15, 15)});
+  points.push_back(1e4f * r.direction());
+  for (std::size_t i = 0; i < world_lights.size(); i += 3) {
+    points.push_back(world_lights[i].position);
+    points.push_back(world_lights[i].position + 0.01f * r.direction());
+  }
+  return points;
+}
+
+TEST(CulledBound, NeverBelowTheIrradianceOfTheLightsNotReturned) {
+  std::uint64_t culled_points = 0, finite_points = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    Random r(seed);
+    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    const std::vector<glm::vec3> points = query_points(r, world_lights);
+    lev::WalkScratch scratch;
+    for (const float tau : kTolerances) {
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+      for (const glm::vec3& x : points) {
+        std::vector<lev::Light> found, found_without;
+        lev::WalkCounters counters, counters_without;
+        glm::vec3 bound(-1.0f);
+        lev::find_important_lights(h, volumes, tau, x, scratch, found, counters, &bound);
+        lev::find_important_lights(h, volumes, tau, x, scratch, found_without, counters_without);
+        const std::string context = "seed " + std::to_string(seed) + " tau " + std::to_string(tau) +
+                                    " x (" + std::to_string(x.x) + ", " + std::to_string(x.y) +
+                                    ", " + std::to_string(x.z) + ")";
+        // The bound is a by-product: the same lights, the same counters.
+        lev_test::expect_same_lights(found, found_without, context);
+        ASSERT_EQ(counters.nodes_visited, counters_without.nodes_visited) << context;
+        const glm::dvec3 exact = brute_force_culled(world_lights, x, tau);
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_FALSE(std::isnan(bound[c])) << context;
+          ASSERT_GE(static_cast<double>(bound[c]), exact[c]) << context << ", channel " << c;
+        }
+        if (tau == 0.0f) {
+          ASSERT_EQ(bound, glm::vec3(0.0f)) << context;
+        }
+        if (found.size() < world_lights.size()) ++culled_points;
+        if (std::isfinite(bound.x) && exact.x > 0.0) ++finite_points;
+      }
+    }
+  }
+  // The property was exercised where lights were culled and the bound said something.
+  EXPECT_GT(culled_points, 4000u);
+  EXPECT_GT(finite_points, 3000u);
+}
+
+// A surface that faces every light, reflects irradiance unchanged and is never shadowed: the
+// direct radiance is the sum of the irradiance of the lights a method accounts for.
+class OpenPoint final : public lev::ShadingPoint {
+ public:
+  explicit OpenPoint(const glm::vec3& x) : x_(x) {}
+  glm::vec3 position() const override { return x_; }
+  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
+    return lev::irradiance(light, x_);
+  }
+  bool visible(const lev::Light&) override { return true; }
+
+ private:
+  glm::vec3 x_;
+};
+
+TEST(CulledBound, SelectorsReportWhatTheyLeftOut) {
+  Random r(11);
+  const lev::LightTree tree = lev_test::random_instanced_tree(r);
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+  const lev::RtSelector rt(h);
+  for (const float tau : kTolerances) {
+    const lev::LevSelector lev_selector(h, tau);
+    const lev::AstSelector ast(h, tau);
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+    for (int k = 0; k < 50; ++k) {
+      const glm::vec3 x(r.uniform(-30, 30), r.uniform(-30, 30), r.uniform(-10, 10));
+      OpenPoint point(x);
+      lev::SelectorScratch scratch;
+      lev::SelectionCounters counters;
+      glm::vec3 bound(-1.0f);
+      rt.direct_radiance(point, scratch, counters, &bound);
+      EXPECT_EQ(bound, glm::vec3(0.0f));
+      // lev: the walk's bound, and the radiance is the same with or without asking for it.
+      const glm::vec3 radiance = lev_selector.direct_radiance(point, scratch, counters, &bound);
+      EXPECT_EQ(radiance, lev_selector.direct_radiance(point, scratch, counters));
+      std::vector<lev::Light> found;
+      lev::WalkCounters walk_counters;
+      glm::vec3 walk_bound;
+      lev::find_important_lights(h, volumes, tau, x, scratch.walk, found, walk_counters,
+                                 &walk_bound);
+      EXPECT_EQ(bound, walk_bound);
+      // ast: what it estimated instead of testing; everything at tolerance 0, nothing at a huge
+      // one.
+      ast.direct_radiance(point, scratch, counters, &bound);
+      const glm::dvec3 all =
+          brute_force_culled(world_lights, x, std::numeric_limits<float>::infinity());
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(bound[c], 0.0f);
+        EXPECT_LE(static_cast<double>(bound[c]), all[c] * (1.0 + 1e-6) + 1e-30);
+      }
+      if (tau == 0.0f) {
+        EXPECT_EQ(bound, glm::vec3(0.0f));
+      }
+      if (tau == 1e30f) {
+        for (int c = 0; c < 3; ++c) EXPECT_GE(static_cast<double>(bound[c]), all[c]);
+      }
+    }
+  }
+}
+
+}  // namespace

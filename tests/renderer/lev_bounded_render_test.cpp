@@ -1,0 +1,50 @@
+// `lev_bounded` in the renderer: at tolerance 0 its image equals rt's bit for bit; at a positive
+// tolerance the image is the same for one and two threads and it tests more lights than lev.
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "renderer/ray_scene.h"
+#include "renderer/render.h"
+#include "scenes/building.h"
+
+namespace {
+
+renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
+                             lev::Method method, float tolerance, int threads) {
+  renderer::RenderSettings rs;
+  rs.width = 64;
+  rs.height = 48;
+  rs.method = method;
+  rs.tolerance = tolerance;
+  rs.threads = threads;
+  rs.tile_size = 8;
+  auto state = renderer::make_render_state(scene, rays, rs);
+  for (int i = 0; i < 2; ++i) EXPECT_TRUE(renderer::render_pass(*state));
+  return renderer::render_framebuffer(*state);
+}
+
+bool bitwise_equal(const renderer::Framebuffer& a, const renderer::Framebuffer& b) {
+  return a.radiance_sum.size() == b.radiance_sum.size() &&
+         std::memcmp(a.radiance_sum.data(), b.radiance_sum.data(),
+                     a.radiance_sum.size() * sizeof(glm::vec3)) == 0 &&
+         a.samples == b.samples;
+}
+
+TEST(LevBoundedRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
+  const renderer::Scene scene = scenes::build_building(3);
+  const renderer::RayScene rays(scene.geometry);
+  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 0);
+  const renderer::Framebuffer exact = render(scene, rays, lev::Method::lev_bounded, 0.0f, 0);
+  EXPECT_TRUE(bitwise_equal(rt, exact));
+  EXPECT_EQ(rt.lights_tested, exact.lights_tested);
+  const renderer::Framebuffer one = render(scene, rays, lev::Method::lev_bounded, 0.01f, 1);
+  const renderer::Framebuffer two = render(scene, rays, lev::Method::lev_bounded, 0.01f, 2);
+  EXPECT_TRUE(bitwise_equal(one, two));
+  EXPECT_EQ(one.lights_tested, two.lights_tested);
+  const renderer::Framebuffer plain = render(scene, rays, lev::Method::lev, 0.01f, 2);
+  EXPECT_GT(one.lights_tested, plain.lights_tested);
+  EXPECT_LT(one.lights_tested, rt.lights_tested);
+}
+
+}  // namespace
