@@ -20,6 +20,7 @@ namespace scenes {
 // levrt's units; one factor maps the physical scale of the sample assets to the display range.
 inline constexpr float kDefaultGltfLightScale = 1.0f;
 inline constexpr std::size_t kMaxGltfNodes = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxGltfAccessorElements = std::size_t{1} << 25;
 
 // True for names ending in ".gltf" or ".glb".
 bool is_gltf_file_name(std::string_view name);

@@ -498,6 +498,8 @@ class Writer {
       j["intensity"] = vec3_json(sp->intensity);
       j["cone_degrees"] = exact_number(sp->cone_degrees);
       j["dropoff"] = exact_number(sp->dropoff);
+    } else if (std::holds_alternative<MeshShape>(n.data)) {
+      throw std::invalid_argument(std::string(kMeshNotWritable));
     }
     return j;
   }

@@ -45,7 +45,10 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
 // becomes the file's stem.
 SceneDescription load_scene_file(const std::string& path);
 
-// The description as scene-file text (validated first; throws like validate_description).
+// The description as scene-file text (validated first; throws like validate_description). Scene
+// files hold no triangle meshes: a description with mesh nodes (a glTF import) throws this.
+inline constexpr std::string_view kMeshNotWritable =
+    "/root: triangle meshes (from glTF) cannot be written to a scene file";
 std::string scene_file_json(const SceneDescription& scene);
 
 }  // namespace scenes

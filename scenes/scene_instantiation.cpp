@@ -112,6 +112,7 @@ class Analysis {
                              std::to_string(scene.materials.size()) + ")");
     }
     check_header();
+    check_meshes();
     edges_.resize(scene.masters.size());
     for (std::size_t m = 0; m < scene.masters.size(); ++m) {
       const std::string path = "/masters/" + std::to_string(m);
@@ -195,6 +196,37 @@ class Analysis {
     }
   }
 
+  // Each mesh once, however many nodes draw it.
+  void check_meshes() {
+    for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+      const std::string path = "/meshes/" + std::to_string(m);
+      std::uint64_t triangles = 0;
+      for (std::size_t k = 0; k < scene_.meshes[m].parts.size(); ++k) {
+        const std::string part_path = path + "/parts/" + std::to_string(k);
+        const renderer::TriangleMesh& part = scene_.meshes[m].parts[k];
+        check_material(part_path, part.material);
+        if (part.normals.size() != part.positions.size()) {
+          fail(part_path + "/normals", std::to_string(part.normals.size()) + " normals for " +
+                                           std::to_string(part.positions.size()) + " positions");
+        }
+        if (!part.uvs.empty() && part.uvs.size() != part.positions.size()) {
+          fail(part_path + "/uvs", std::to_string(part.uvs.size()) + " uvs for " +
+                                       std::to_string(part.positions.size()) + " positions");
+        }
+        for (const glm::vec3& p : part.positions) check_point(part_path + "/positions", p);
+        for (const glm::vec3& n : part.normals) check_point(part_path + "/normals", n);
+        for (const glm::uvec3& t : part.triangles) {
+          if (t.x >= part.positions.size() || t.y >= part.positions.size() || t.z >= part.positions.size()) {
+            fail(part_path + "/triangles", "vertex index beyond the " + std::to_string(part.positions.size()) +
+                                               " positions");
+          }
+        }
+        triangles = add_saturating(triangles, part.triangles.size());
+      }
+      mesh_triangles_.push_back(triangles);
+    }
+  }
+
   void check_material(const std::string& path, std::uint32_t material) const {
     if (material >= scene_.materials.size()) {
       fail(path + "/material", "no such material (" + std::to_string(material) + ")");
@@ -263,6 +295,13 @@ class Analysis {
       }
     } else if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
       check_colour(path + "/intensity", p->intensity, kMaxIntensity);
+    } else if (const auto* mesh = std::get_if<MeshShape>(&node.data)) {
+      if (mesh->mesh >= scene_.meshes.size()) fail(path + "/mesh", "no such mesh (" + std::to_string(mesh->mesh) + ")");
+      for (int column = 0; column < 3; ++column) check_point(path + "/linear", mesh->linear[column]);
+      const float det = glm::determinant(mesh->linear);
+      if (!std::isfinite(det) || !(std::abs(det) > 1e-18f)) {
+        fail(path + "/linear", "must be invertible (determinant " + number_text(det) + ")");
+      }
     } else if (const auto* sp = std::get_if<SpotLightSource>(&node.data)) {
       check_colour(path + "/intensity", sp->intensity, kMaxIntensity);
       if (!std::isfinite(sp->cone_degrees) || !(sp->cone_degrees > 0.0f) || sp->cone_degrees > 180.0f) {
@@ -340,7 +379,9 @@ class Analysis {
       t.max_log_scale = m.max_log_scale;
     } else {
       t.lights = is_light(node.data) ? 1 : 0;
-      t.triangles = t.direct_triangles = static_cast<std::uint64_t>(triangles_of(node.data));
+      const auto* mesh = std::get_if<MeshShape>(&node.data);
+      t.triangles = t.direct_triangles =
+          mesh ? mesh_triangles_[mesh->mesh] : static_cast<std::uint64_t>(triangles_of(node.data));
       t.min_log_scale = t.max_log_scale = 0.0;
     }
     return t;
@@ -395,6 +436,7 @@ class Analysis {
   std::vector<std::vector<Edge>> edges_;
   std::vector<std::uint32_t> order_;
   std::vector<Totals> totals_;
+  std::vector<std::uint64_t> mesh_triangles_;  // per scene mesh
   Totals root_;
 };
 
@@ -494,9 +536,13 @@ class LightTreeBuilder {
 // One prototype being filled: one mesh per material (fewer Embree geometries), spheres apart.
 class PrototypeBuilder {
  public:
-  explicit PrototypeBuilder(std::size_t materials) : mesh_of_material_(materials, -1) {}
+  explicit PrototypeBuilder(const SceneDescription& scene) : scene_(scene), mesh_of_material_(scene.materials.size(), -1) {}
 
   void add(const NodeData& data, const lev::Similarity& xf) {
+    if (const auto* m = std::get_if<MeshShape>(&data)) {
+      for (const renderer::TriangleMesh& part : scene_.meshes[m->mesh].parts) add_mesh_part(part, m->linear, xf);
+      return;
+    }
     renderer::TriangleMesh local;
     std::uint32_t material = 0;
     if (const auto* s = std::get_if<SphereShape>(&data)) {
@@ -527,9 +573,34 @@ class PrototypeBuilder {
       mesh.normals.push_back(identity ? local.normals[i] : lev::apply_direction(xf, local.normals[i]));
     }
     for (const glm::uvec3& t : local.triangles) mesh.triangles.push_back(t + glm::uvec3(base));
+    if (!mesh.uvs.empty()) mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
   }
 
   bool empty() const { return prototype_.meshes.empty() && prototype_.spheres.empty(); }
+
+  // Positions through linear then xf, normals through linear's inverse transpose; a mirroring
+  // linear reverses the winding too, so the winding-derived geometric normal still agrees.
+  void add_mesh_part(const renderer::TriangleMesh& part, const glm::mat3& linear, const lev::Similarity& xf) {
+    renderer::TriangleMesh& mesh = mesh_for(part.material);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    const glm::mat3 normal_map = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0f;
+    for (std::size_t i = 0; i < part.positions.size(); ++i) {
+      mesh.positions.push_back(lev::apply_point(xf, linear * part.positions[i]));
+      const glm::vec3 n = renderer::robust_normalize(normal_map * part.normals[i]);
+      mesh.normals.push_back(lev::apply_direction(xf, n));
+    }
+    // A mesh has uvs for every vertex or none: vertices from parts without get (0, 0).
+    if (!part.uvs.empty()) {
+      mesh.uvs.resize(base, glm::vec2(0.0f));
+      mesh.uvs.insert(mesh.uvs.end(), part.uvs.begin(), part.uvs.end());
+    } else if (!mesh.uvs.empty()) {
+      mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
+    }
+    for (const glm::uvec3& t : part.triangles) {
+      mesh.triangles.push_back(mirrored ? glm::uvec3(t.x, t.z, t.y) + glm::uvec3(base) : t + glm::uvec3(base));
+    }
+  }
   renderer::Prototype take() { return std::move(prototype_); }
 
  private:
@@ -543,6 +614,7 @@ class PrototypeBuilder {
     return prototype_.meshes[static_cast<std::size_t>(index)];
   }
 
+  const SceneDescription& scene_;
   renderer::Prototype prototype_;
   std::vector<std::int64_t> mesh_of_material_;
 };
@@ -597,7 +669,7 @@ class GeometryBuilder {
 
   Flattened flatten(const SceneNode& node) {
     Flattened f;
-    PrototypeBuilder own(scene_.materials.size());
+    PrototypeBuilder own(scene_);
     collect(node, lev::Similarity{}, own, &f.sites);
     if (!own.empty()) f.prototype = add_prototype(own);
     return f;
@@ -605,7 +677,7 @@ class GeometryBuilder {
 
   std::uint32_t baked_prototype(std::uint32_t m) {
     if (baked_[m] == kNone) {
-      PrototypeBuilder all(scene_.materials.size());
+      PrototypeBuilder all(scene_);
       collect(scene_.masters[m].node, lev::Similarity{}, all, nullptr);
       baked_[m] = add_prototype(all);
     }
