@@ -73,6 +73,10 @@ Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_opti
   for (const SettingSpec& spec : setting_table()) {
     if (flags.options.at(spec.name)->count() > 0) set_setting(settings, spec, flags.text.at(spec.name));
   }
+  // A typed size is what the user wants to see, in the viewer too.
+  const bool size_typed =
+      flags.options.at("width")->count() > 0 || flags.options.at("height")->count() > 0;
+  if (size_typed && flags.options.at("resolution")->count() == 0) settings.resolution = "typed";
   if (flags.options.at("level")->count() > 0 && is_scene_file(settings)) {
     throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
   }

@@ -18,6 +18,15 @@ std::vector<std::string> method_options() {
   return names;
 }
 
+std::vector<std::string> resolution_options() { return {"fit", "fit/2", "fit/4", "typed"}; }
+
+int fit_divisor(const std::string& resolution) {
+  if (resolution == "fit") return 1;
+  if (resolution == "fit/2") return 2;
+  if (resolution == "fit/4") return 4;
+  return 0;
+}
+
 namespace {
 
 bool is_scene_file_setting(const std::string& text) { return scenes::is_scene_file_name(text); }
@@ -38,6 +47,10 @@ const std::vector<SettingSpec>& setting_table() {
       {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
        RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0}},
+      {"resolution", "Resolution",
+       "viewer image size: the image area's pixels (fit), 1/2 or 1/4 of them, or the typed width "
+       "and height (typed; giving either selects it); headless renders always use width and height",
+       Choice{&Settings::resolution, resolution_options}},
       {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, 16384}},
       {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, 16384}},
       {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},

@@ -16,6 +16,9 @@ struct Settings {
   int level = 3;                // model level; --lights picks it by light count instead
   std::string method = "lev";
   double tolerance = 0.01;      // colour units, 1.0 = 255
+  // The viewer's image size: the image area's pixels (fit), half or a quarter of them, or
+  // width x height (typed). Headless renders always use width x height.
+  std::string resolution = "fit";
   int width = 320;
   int height = 240;
   int spp = 1;                  // passes (one sample per pixel each)
@@ -65,6 +68,9 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
 std::string setting_text(const Settings& settings, const SettingSpec& spec);
 
 std::vector<std::string> method_options();
+std::vector<std::string> resolution_options();
+// The divisor of the image area's size a fit resolution names (1, 2, 4), or 0 for typed.
+int fit_divisor(const std::string& resolution);
 std::vector<std::string> scene_options();
 
 }  // namespace app

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #ifdef LEVRT_HAS_VIEWER
+#include "app/viewer/scripted_changes.h"
 #include "app/viewer/viewer_app.h"
 #endif
 
@@ -16,7 +17,9 @@ void add_view_flags(CLI::App& command, ViewFlags& flags) {
   command.add_option(
       "--set", flags.changes,
       "scripted: change a control at a frame, key=value@frame (a setting, lights, view, "
-      "reference, snapshot, screenshot, await)");
+      "reference, snapshot, screenshot, await, memory)");
+  command.add_option("--script", flags.script,
+                     "scripted: a file of --set changes, one key=value@frame per line");
   command.add_flag("--report-fps", flags.report_fps,
                    "print UI frame times and first-tile latencies at exit");
   command.add_option("--window", flags.window, "window size, WIDTHxHEIGHT");
@@ -38,7 +41,11 @@ bool viewer_display_available() {
 
 int run_view(const Settings& settings, const ViewFlags& flags) {
 #ifdef LEVRT_HAS_VIEWER
-  return viewer::run_viewer(settings, flags);
+  if (flags.script.empty()) return viewer::run_viewer(settings, flags);
+  ViewFlags with_script = flags;
+  with_script.changes = viewer::read_script_file(flags.script);
+  with_script.changes.insert(with_script.changes.end(), flags.changes.begin(), flags.changes.end());
+  return viewer::run_viewer(settings, with_script);
 #else
   (void)settings;
   (void)flags;

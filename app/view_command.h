@@ -19,6 +19,7 @@ struct ViewFlags {
   int frames = 0;                    // scripted: UI frames to run, 0 = until the window closes
   std::string screenshot;            // scripted: PNG of the whole window after the last frame
   std::vector<std::string> changes;  // scripted: "key=value@frame"
+  std::string script;                // scripted: a file of changes, one "key=value@frame" per line
   bool report_fps = false;           // print frame times and first-tile latencies at exit
   std::string window = "1280x800";   // window size, WIDTHxHEIGHT
   bool real_input = false;           // scripted: the real mouse drives the picture too

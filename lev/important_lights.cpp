@@ -1,5 +1,7 @@
 #include "lev/important_lights.h"
 
+#include <cassert>
+
 #include "lev/bounds.h"
 
 namespace lev {
@@ -36,6 +38,18 @@ Light& push_world_light(std::vector<Light>& out, const Light& light, const WalkL
 }
 
 constexpr std::uint32_t kNoNode = ~0u;
+
+// The walk reads nodes through one of these: the structure alone (flattening, which culls
+// nothing) or the nodes fitted with their volumes (the query).
+struct StructureNodes {
+  const HierarchyNode* nodes;
+  const HierarchyNode& node(std::uint32_t i) const { return nodes[i]; }
+};
+struct FittedNodes {
+  const FittedNode* nodes;
+  const HierarchyNode& node(std::uint32_t i) const { return nodes[i].node; }
+  const Bounds& volume(std::uint32_t i) const { return nodes[i].volume; }
+};
 
 // One light node: with kCull its exact test (one volume checked), else just its world copy. A
 // translation moves a point light and changes nothing else, so such a light is tested before it
@@ -77,14 +91,12 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std:
 // frame and no transform composition (thesis fig. 3.5 tests the volumes the same way, one level
 // earlier). The box a child passed at the union is, up to padding, the box of the first node
 // with a volume inside it (moved by a translation), so that node does not test it again.
-template <bool kCull>
-void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
-          std::vector<Light>& out, WalkCounters& counters) {
+template <bool kCull, typename Nodes>
+void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, const glm::vec3& point,
+          WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters) {
   std::vector<WalkFrame>& stack = scratch.stack;
   std::vector<WalkLinear>& linear = scratch.linear;
   std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
-  // Locals too, rather than reloaded after every write to the output.
-  const float tolerance = h.tolerance;
   stack.clear();
   linear.clear();
   linear.emplace_back();
@@ -100,7 +112,7 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
     // Linear indices never decrease up the stack, so nothing below this frame needs a later one.
     linear.resize(linear_index + 1);
     for (;;) {
-      const HierarchyNode& node = h.nodes[index];
+      const HierarchyNode& node = nodes.node(index);
       bool descend = false;
       switch (node.kind) {
         case NodeKind::point_light:
@@ -136,7 +148,7 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
               volume_tested = false;
             } else {
               ++visited;
-              if (!contains(node.volume, local_point)) break;
+              if (!contains(nodes.volume(index), local_point)) break;
             }
           }
           index += 1;
@@ -153,7 +165,7 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
           // else of this subtree comes before them, so the order is the same.
           std::uint32_t first_pending = 1;
           for (; first_pending <= count; ++first_pending) {
-            const HierarchyNode& c = h.nodes[children[first_pending]];
+            const HierarchyNode& c = nodes.node(children[first_pending]);
             if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
             visit_light<kCull>(h.lights[c.payload], point, tolerance, linear[linear_index], linear_index == 0,
                                translation, out, visited);
@@ -170,23 +182,23 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
             std::uint32_t child = children[k];
             bool tested = false;
             if constexpr (kCull) {
-              const HierarchyNode& c = h.nodes[child];
+              const HierarchyNode& c = nodes.node(child);
               // Lights get their exact test instead; a union's box is only its children's.
               if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light &&
                   c.kind != NodeKind::set_union) {
                 ++visited;
-                if (!contains(c.volume, local_point)) continue;
+                if (!contains(nodes.volume(child), local_point)) continue;
                 tested = true;
               }
               // The instancing pattern, translation -> instance -> master, is entered here in one
               // step rather than node by node: the same arithmetic as the affine case, and the
               // master's test is the one just made (up to padding).
               if (c.kind == NodeKind::affine && (c.flags & kTranslationOnly) != 0 &&
-                  h.nodes[child + 1].kind == NodeKind::instance) {
+                  nodes.node(child + 1).kind == NodeKind::instance) {
                 const glm::vec3& t = h.transforms[c.payload].translation;
                 child_translation = compose_translation(linear, linear_index, t, translation);
                 child_point = local_point - t;
-                child = h.nodes[child + 1].payload + 1;  // below the master
+                child = nodes.node(child + 1).payload + 1;  // below the master
                 tested = false;
               }
             }
@@ -216,10 +228,12 @@ void walk(const LightHierarchy& h, const glm::vec3& point, WalkScratch& scratch,
 
 }  // namespace
 
-void find_important_lights(const LightHierarchy& hierarchy, const glm::vec3& point,
-                           WalkScratch& scratch, std::vector<Light>& important_lights,
+void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                           const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
                            WalkCounters& counters) {
-  walk<true>(hierarchy, point, scratch, important_lights, counters);
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  walk<true>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, important_lights, counters);
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
@@ -227,7 +241,38 @@ std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
   lights.reserve(hierarchy.light_count);
   WalkScratch scratch;
   WalkCounters counters;
-  walk<false>(hierarchy, glm::vec3(0.0f), scratch, lights, counters);
+  walk<false>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights, counters);
+  return lights;
+}
+
+namespace {
+
+void flatten_tree_node(const LightTree& tree, const LightTreeNode& node, const Similarity& world_from_local,
+                       std::vector<Light>& out) {
+  switch (node.kind) {
+    case NodeKind::point_light:
+    case NodeKind::spot_light:
+      out.push_back(transform_light(node.light, world_from_local));
+      break;
+    case NodeKind::affine:
+      flatten_tree_node(tree, node.children.at(0), compose(world_from_local, node.transform), out);
+      break;
+    case NodeKind::extent_volume:
+    case NodeKind::set_union:
+    case NodeKind::master:
+      for (const LightTreeNode& child : node.children) flatten_tree_node(tree, child, world_from_local, out);
+      break;
+    case NodeKind::instance:
+      flatten_tree_node(tree, tree.masters.at(node.master), world_from_local, out);
+      break;
+  }
+}
+
+}  // namespace
+
+std::vector<Light> flatten_light_tree(const LightTree& tree) {
+  std::vector<Light> lights;
+  flatten_tree_node(tree, tree.root, Similarity{}, lights);
   return lights;
 }
 

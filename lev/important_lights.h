@@ -1,7 +1,8 @@
 // The query of thesis fig. 3.5: walk the hierarchy from the root with a world-space point, skip
 // every subtree whose extent volume does not contain the point, and return the lights whose
 // irradiance at the point reaches the tolerance, in world space, in the hierarchy's depth-first
-// order. Next to it, the brute-force reference the tests compare it with.
+// order. Next to it, the references the tests compare it with: a brute force over every light,
+// and a flattening of the description that shares no code with the walk.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 
 #include "lev/light.h"
 #include "lev/light_hierarchy.h"
+#include "lev/light_tree.h"
 
 namespace lev {
 
@@ -42,15 +44,22 @@ struct WalkScratch {
   std::vector<WalkLinear> linear;
 };
 
-// Appends to important_lights every light with irradiance >= hierarchy.tolerance at point.
-void find_important_lights(const LightHierarchy& hierarchy, const glm::vec3& point,
-                           WalkScratch& scratch, std::vector<Light>& important_lights,
+// Appends to important_lights every light with irradiance >= tolerance at point. `volumes` are
+// the hierarchy's, fitted for `tolerance` (or a smaller one, which culls less).
+void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                           const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
                            WalkCounters& counters);
 
 // Every light of the scene in world space, instances expanded, in the same depth-first order as
 // the walk and through the same arithmetic, so a light here is bit-identical to the one the walk
 // returns.
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy);
+
+// Reference: every light of the description in world space, by plain recursion over the
+// LightTree (instances expanded, transforms composed from the root down, each light moved by
+// transform_light). Independent of build_hierarchy and of the walk, it yields the same lights in
+// the same order, and with the same floats (the walk's arithmetic is this composition's, split).
+std::vector<Light> flatten_light_tree(const LightTree& tree);
 
 // Reference: the lights of a flattened list that pass is_important (for tests).
 std::vector<Light> important_lights_brute_force(const std::vector<Light>& world_lights,

@@ -100,7 +100,7 @@ class Flattener {
 
 }  // namespace
 
-LightHierarchy build_hierarchy(const LightTree& tree, float tolerance) {
+LightHierarchy build_hierarchy(const LightTree& tree) {
   LightHierarchy h;
   Flattener flattener(h);
   for (std::uint32_t m = 0; m < tree.masters.size(); ++m) {
@@ -120,47 +120,52 @@ LightHierarchy build_hierarchy(const LightTree& tree, float tolerance) {
   h.master_ranges.push_back(root_range);
   h.root = root_range.begin;
   h.light_count = flattener.take_light_count();
-  refit_hierarchy(h, tolerance);
   return h;
 }
 
-void refit_hierarchy(LightHierarchy& h, float tolerance) {
+ExtentVolumes fit_extent_volumes(const LightHierarchy& h, float tolerance) {
+  ExtentVolumes fitted;
+  fitted.tolerance = tolerance;
+  fitted.nodes.resize(h.nodes.size());
+  std::vector<FittedNode>& out = fitted.nodes;
   for (const NodeRange& range : h.master_ranges) {
     for (std::uint32_t i = range.end; i-- > range.begin;) {
-      HierarchyNode& node = h.nodes[i];
+      const HierarchyNode& node = h.nodes[i];
+      out[i].node = node;
+      Bounds& volume = out[i].volume;
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light:
-          node.volume = pad_bounds(light_extent_bounds(h.lights[node.payload], tolerance), kVolumePadding);
+          volume = pad_bounds(light_extent_bounds(h.lights[node.payload], tolerance), kVolumePadding);
           break;
         case NodeKind::affine:
-          node.volume = pad_bounds(transform_bounds(h.nodes[i + 1].volume, h.transforms[node.payload]),
-                                   kVolumePadding);
+          volume = pad_bounds(transform_bounds(out[i + 1].volume, h.transforms[node.payload]), kVolumePadding);
           break;
         case NodeKind::extent_volume:
         case NodeKind::master:
-          node.volume = h.nodes[i + 1].volume;
+          volume = out[i + 1].volume;
           break;
         case NodeKind::set_union: {
           Bounds b;
           const std::uint32_t count = h.union_children[node.payload];
           for (std::uint32_t k = 0; k < count; ++k) {
-            b = merge(b, h.nodes[h.union_children[node.payload + 1 + k]].volume);
+            b = merge(b, out[h.union_children[node.payload + 1 + k]].volume);
           }
-          node.volume = b;
+          volume = b;
           break;
         }
         case NodeKind::instance:
-          node.volume = h.nodes[node.payload].volume;
+          volume = out[node.payload].volume;
           break;
       }
     }
   }
-  h.tolerance = tolerance;
+  return fitted;
 }
 
 std::size_t hierarchy_bytes(const LightHierarchy& h) {
-  return h.nodes.size() * sizeof(HierarchyNode) + h.union_children.size() * sizeof(std::uint32_t) +
+  return h.nodes.size() * (sizeof(HierarchyNode) + sizeof(Bounds)) +
+         h.union_children.size() * sizeof(std::uint32_t) +
          h.transforms.size() * sizeof(Similarity) + h.lights.size() * sizeof(Light) +
          h.master_ranges.size() * sizeof(NodeRange) +
          h.master_light_counts.size() * sizeof(std::uint64_t);

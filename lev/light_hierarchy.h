@@ -1,9 +1,13 @@
-// The light hierarchy as queries use it: a flat array of 32-byte nodes addressed by index, built
-// once from a LightTree. A node's only child (affine, extent volume, master) sits right after it;
-// a union lists its children in `union_children`; an instance names its master's node. Every
-// node's children have larger indices than the node, and every master precedes (in
-// `master_ranges`) the masters that instance it, so refitting for a new tolerance is one
-// backwards sweep per master: each master's volume is computed once, however many instances.
+// The light hierarchy as queries use it: a flat array of 8-byte nodes addressed by index, built
+// once from a LightTree and never changed after (many renders read one scene's hierarchy at
+// once, each at its own tolerance). A node's only child (affine, extent volume, master) sits
+// right after it; a union lists its children in `union_children`; an instance names its master's
+// node. Every node's children have larger indices than the node, and every master precedes (in
+// `master_ranges`) the masters that instance it.
+//
+// The extent volumes depend on the tolerance, so they live apart from the structure, in an
+// ExtentVolumes a render (its `lev` selector) fits for its own tolerance: one backwards sweep per
+// master, each master's volume computed once however many instances it has.
 #pragma once
 
 #include <cstddef>
@@ -23,13 +27,12 @@ namespace lev {
 inline constexpr std::uint8_t kTranslationOnly = 1;
 
 struct HierarchyNode {
-  Bounds volume;               // extent volume of this subtree in this node's frame (refit)
   std::uint32_t payload = 0;   // light | transform | master node | offset into union_children
   NodeKind kind = NodeKind::set_union;
   std::uint8_t flags = 0;      // kTranslationOnly
   std::uint8_t unused[2] = {0, 0};
 };
-static_assert(sizeof(HierarchyNode) == 32, "hierarchy nodes are 32 bytes");
+static_assert(sizeof(HierarchyNode) == 8, "hierarchy nodes are 8 bytes");
 
 struct NodeRange {
   std::uint32_t begin = 0;  // the master node (or the root)
@@ -46,7 +49,21 @@ struct LightHierarchy {
   std::vector<std::uint64_t> master_light_counts;
   std::uint32_t root = 0;
   std::uint64_t light_count = 0;  // lights in the scene, instances expanded
-  float tolerance = 0.0f;         // the tolerance the volumes were last refit for
+};
+
+// A node with its extent volume, as the culling walk reads it: the volume and the node share one
+// 32-byte slot (half a cache line), so testing a child's box and reading its kind is one load.
+struct FittedNode {
+  Bounds volume;  // extent volume of this subtree in this node's frame
+  HierarchyNode node;
+};
+static_assert(sizeof(FittedNode) == 32, "fitted nodes are 32 bytes");
+
+// The extent volumes of one hierarchy for one tolerance, parallel to LightHierarchy::nodes.
+// Valid for a walk at any tolerance >= `tolerance` (a smaller tolerance only grows volumes).
+struct ExtentVolumes {
+  std::vector<FittedNode> nodes;
+  float tolerance = 0.0f;
 };
 
 // Deepest LightTree nesting accepted (a guard for scene files, not a limit scenes reach).
@@ -54,13 +71,14 @@ inline constexpr int kMaxTreeDepth = 1000;
 
 // Flattens a description. Throws std::invalid_argument for malformed trees (wrong child counts,
 // an instance of an undefined or later master, nesting deeper than kMaxTreeDepth, a non-positive
-// or non-finite scale). The volumes are computed for `tolerance`.
-LightHierarchy build_hierarchy(const LightTree& tree, float tolerance);
+// or non-finite scale).
+LightHierarchy build_hierarchy(const LightTree& tree);
 
-// Recomputes every extent volume for a new tolerance without changing the structure.
-void refit_hierarchy(LightHierarchy& hierarchy, float tolerance);
+// Every node's extent volume for `tolerance` (>= 0), the structure unchanged.
+ExtentVolumes fit_extent_volumes(const LightHierarchy& hierarchy, float tolerance);
 
-// What the structure holds, in bytes: nodes, union child lists, transforms, lights, master table.
+// What the hierarchy needs for a query, in bytes: nodes with one extent volume each (24 bytes,
+// the thesis' per-node box), union child lists, transforms, lights, master table.
 std::size_t hierarchy_bytes(const LightHierarchy& hierarchy);
 
 }  // namespace lev

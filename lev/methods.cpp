@@ -45,11 +45,11 @@ std::string method_names(const char* separator) {
   return s;
 }
 
-std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy) {
+std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy, float tolerance) {
   switch (method) {
     case Method::rt: return std::make_unique<RtSelector>(hierarchy);
-    case Method::ast: return std::make_unique<AstSelector>(hierarchy);
-    case Method::lev: return std::make_unique<LevSelector>(hierarchy);
+    case Method::ast: return std::make_unique<AstSelector>(hierarchy, tolerance);
+    case Method::lev: return std::make_unique<LevSelector>(hierarchy, tolerance);
   }
   throw std::logic_error("unknown method");
 }

@@ -28,8 +28,8 @@ const MethodInfo& method_info(Method method);
 std::optional<Method> parse_method(std::string_view name);
 std::string method_names(const char* separator);  // "rt|ast|lev"
 
-// The selector reads the hierarchy (which the caller refits when the tolerance changes) and
-// must not outlive it.
-std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy);
+// The selector for one render at one tolerance. It reads the hierarchy (which it never changes,
+// so any number of selectors may share it) and must not outlive it.
+std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy, float tolerance);
 
 }  // namespace lev

@@ -6,8 +6,8 @@
 
 namespace lev {
 
-AstSelector::AstSelector(const LightHierarchy& hierarchy)
-    : hierarchy_(hierarchy),
+AstSelector::AstSelector(const LightHierarchy& hierarchy, float tolerance)
+    : tolerance_(tolerance),
       world_lights_(flatten_lights(hierarchy)),
       hits_(world_lights_.size(), 0),
       tests_(world_lights_.size(), 0),
@@ -22,11 +22,19 @@ AstSelector::AstSelector(const LightHierarchy& hierarchy)
 glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                        SelectionCounters& counters) const {
   const glm::vec3 x = point.position();
+  // Both loops run over every light (a million shadow rays per point at tolerance 0): like
+  // sum_visible_lights they read the cancel flag every kCancelCheckLights lights and return early,
+  // a result the caller discards.
+  const std::atomic<bool>* cancel = scratch.cancel;
+  const auto cancelled = [cancel](std::size_t count) {
+    return cancel && count % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed);
+  };
   // Step 1: potential contributions of every light in front of the point.
   std::vector<AstCandidate>& heap = scratch.candidates;
   heap.clear();
   double untested = 0.0;
   for (std::uint32_t i = 0; i < world_lights_.size(); ++i) {
+    if (cancelled(i + 1)) return glm::vec3(0.0f);
     const Light& light = world_lights_[i];
     if (!is_important(light, x, 0.0f)) continue;
     const glm::vec3 radiance = point.unshadowed_radiance(light);
@@ -46,13 +54,13 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   // Step 4: test the largest until the untested rest is below the tolerance.
   glm::vec3 sum(0.0f);
   std::uint32_t point_hits = 0, point_tests = 0;
-  const double tolerance = hierarchy_.tolerance;
-  while (remaining > 0 && untested >= tolerance) {
+  while (remaining > 0 && untested >= tolerance_) {
     std::pop_heap(heap.begin(), heap.begin() + static_cast<std::ptrdiff_t>(remaining), smaller);
     --remaining;
     const AstCandidate& c = heap[remaining];
     untested -= c.potential;
     ++point_tests;
+    if (cancelled(point_tests)) return sum;
     ++counters.lights_tested;
     ++counters.shadow_rays;
     pass_tests_[c.light].fetch_add(1, std::memory_order_relaxed);

@@ -22,14 +22,14 @@ namespace lev {
 
 class AstSelector final : public LightSelector {
  public:
-  explicit AstSelector(const LightHierarchy& hierarchy);
+  AstSelector(const LightHierarchy& hierarchy, float tolerance);
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters) const override;
   void end_pass() override;
   std::size_t bookkeeping_bytes() const override;
 
  private:
-  const LightHierarchy& hierarchy_;
+  const double tolerance_;
   std::vector<Light> world_lights_;
   std::vector<std::uint32_t> hits_, tests_;  // snapshot: previous passes
   std::unique_ptr<std::atomic<std::uint32_t>[]> pass_hits_, pass_tests_;  // this pass

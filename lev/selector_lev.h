@@ -10,12 +10,16 @@ namespace lev {
 
 class LevSelector final : public LightSelector {
  public:
-  explicit LevSelector(const LightHierarchy& hierarchy) : hierarchy_(hierarchy) {}
+  // Fits the hierarchy's extent volumes for `tolerance` (the hierarchy itself is not changed).
+  LevSelector(const LightHierarchy& hierarchy, float tolerance)
+      : hierarchy_(hierarchy), volumes_(fit_extent_volumes(hierarchy, tolerance)), tolerance_(tolerance) {}
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters) const override;
 
  private:
   const LightHierarchy& hierarchy_;
+  const ExtentVolumes volumes_;
+  const float tolerance_;
 };
 
 }  // namespace lev

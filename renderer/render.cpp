@@ -17,11 +17,15 @@
 namespace renderer {
 
 struct RenderState {
-  Scene& scene;
+  const Scene& scene;
   const RayScene& rays;
   RenderSettings settings;
   std::unique_ptr<lev::LightSelector> selector;
   Framebuffer framebuffer;
+  // Preview passes: their own selector (made at the first preview), so that a method's
+  // between-pass state (AST's statistics) never learns from preview samples.
+  std::unique_ptr<lev::LightSelector> preview_selector;
+  Framebuffer preview;
   int passes_done = 0;
   double seconds = 0.0;
   int tiles_x = 0, tiles_y = 0;
@@ -35,11 +39,13 @@ struct RenderState {
   // Addresses that only name the two edges of a pass for ThreadSanitizer (thread_annotations.h).
   char pass_start_edge = 0, pass_end_edge = 0;
 
-  RenderState(Scene& s, const RayScene& r, const RenderSettings& settings_in)
+  RenderState(const Scene& s, const RayScene& r, const RenderSettings& settings_in)
       : scene(s), rays(r), settings(settings_in) {}
 };
 
-void RenderStateDeleter::operator()(RenderState* state) const { delete state; }
+void RenderStateDeleter::operator()(RenderState* state) const {
+  delete state;
+}
 
 namespace {
 
@@ -51,16 +57,22 @@ std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
 // One sample for each pixel of the tile, or nothing: the samples are made in a local buffer and
 // added to the framebuffer only when the whole tile is done, so a tile cancelled mid-way (the
 // flag is read per row and in the recursion) leaves no pixel with a sample a resumed pass would
-// add again. Returns false when cancelled.
-bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, const std::atomic<bool>* cancel) {
+// add again. Returns false when cancelled. A preview (preview_step > 1) samples every step-th
+// pixel into state.preview instead and records no rays.
+bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
+                 const std::atomic<bool>* cancel, int preview_step) {
   DenormalModeGuard denormals;
   const RenderSettings& rs = state.settings;
+  const bool preview = preview_step > 1;
+  const int step = preview ? preview_step : rs.pixel_stride;
   int x0, y0, x1, y1;
   render_tile_rect(state, tile, x0, y0, x1, y1);
-  std::vector<LoggedRay>* ray_log = state.ray_log ? &state.ray_log->tiles[static_cast<std::size_t>(tile)] : nullptr;
+  std::vector<LoggedRay>* ray_log =
+      state.ray_log && !preview ? &state.ray_log->tiles[static_cast<std::size_t>(tile)] : nullptr;
   const std::size_t logged_before = ray_log ? ray_log->size() : 0;
   scratch.cancel = cancel;
-  TraceContext context{state.scene, state.rays, *state.selector, scratch, rs.max_depth, ray_log, cancel};
+  const lev::LightSelector& selector = preview ? *state.preview_selector : *state.selector;
+  TraceContext context{state.scene, state.rays, selector, scratch, rs.max_depth, ray_log, cancel};
   struct PixelSample {
     std::size_t pixel;
     glm::vec3 radiance;
@@ -68,12 +80,13 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, co
   };
   std::vector<PixelSample> samples;
   samples.reserve(static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0));
-  const auto pass = static_cast<std::uint64_t>(state.passes_done);
+  // A preview samples pixel centres, as pass 0 does.
+  const auto pass = preview ? 0 : static_cast<std::uint64_t>(state.passes_done);
   for (int y = y0; y < y1; ++y) {
-    if (y % rs.pixel_stride != 0) continue;
+    if (y % step != 0) continue;
     if (cancel && cancel->load(std::memory_order_relaxed)) break;
     for (int x = x0; x < x1; ++x) {
-      if (x % rs.pixel_stride != 0) continue;
+      if (x % step != 0) continue;
       const auto pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(rs.width) +
                          static_cast<std::size_t>(x);
       lev::RandomStream random{mix(mix(rs.seed, pixel), pass)};
@@ -86,7 +99,10 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, co
       const Ray ray = primary_ray(state.scene.camera, rs.width, rs.height,
                                   static_cast<float>(x) + jx, static_cast<float>(y) + jy);
       PixelSample& sample = samples.emplace_back();
-      sample.pixel = pixel;
+      sample.pixel = preview ? static_cast<std::size_t>(y / step) *
+                                       static_cast<std::size_t>(state.preview.width) +
+                                   static_cast<std::size_t>(x / step)
+                             : pixel;
       sample.radiance = trace_radiance(context, ray, 0, sample.counters);
     }
   }
@@ -94,7 +110,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, co
     if (ray_log) ray_log->resize(logged_before);
     return false;
   }
-  Framebuffer& fb = state.framebuffer;
+  Framebuffer& fb = preview ? state.preview : state.framebuffer;
   for (const PixelSample& sample : samples) {
     fb.radiance_sum[sample.pixel] += sample.radiance;
     fb.samples[sample.pixel] += 1;
@@ -108,14 +124,14 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch, co
 
 }  // namespace
 
-RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings) {
+RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
+                                 const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
       settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0) {
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
-  if (scene.lights.tolerance != settings.tolerance) lev::refit_hierarchy(scene.lights, settings.tolerance);
-  state->selector = lev::make_selector(settings.method, scene.lights);
+  state->selector = lev::make_selector(settings.method, scene.lights, settings.tolerance);
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
@@ -128,10 +144,22 @@ RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const Rende
   return state;
 }
 
-bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const TileDoneCallback& on_tile_done) {
+bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
+                 const TileDoneCallback& on_tile_done, int preview_step) {
+  if (preview_step < 1)
+    throw std::invalid_argument("render_pass: the preview step must be at least 1");
+  const bool preview = preview_step > 1;
+  if (preview) {
+    if (!state.preview_selector)
+      state.preview_selector =
+          lev::make_selector(state.settings.method, state.scene.lights, state.settings.tolerance);
+    state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
+                                     (state.settings.height + preview_step - 1) / preview_step);
+  }
   const int tile_count = render_tile_count(state);
   for (int i = 0; i < tile_count; ++i) {
-    const bool finished = state.tile_passes[static_cast<std::size_t>(i)] > state.passes_done;
+    const bool finished =
+        !preview && state.tile_passes[static_cast<std::size_t>(i)] > state.passes_done;
     state.tiles[i].store(finished ? TileStatus::done : TileStatus::waiting);
   }
   const auto start = std::chrono::steady_clock::now();
@@ -148,14 +176,14 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const Tile
               break;
             }
             int& passes = state.tile_passes[static_cast<std::size_t>(tile)];
-            if (passes > state.passes_done) continue;
+            if (!preview && passes > state.passes_done) continue;
             state.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
-            if (!render_tile(state, tile, state.scratch.local(), cancel)) {
+            if (!render_tile(state, tile, state.scratch.local(), cancel, preview_step)) {
               state.tiles[tile].store(TileStatus::waiting, std::memory_order_release);
               cancelled.store(true, std::memory_order_relaxed);
               break;
             }
-            passes += 1;
+            if (!preview) passes += 1;
             if (on_tile_done) on_tile_done(tile);
             state.tiles[tile].store(TileStatus::done, std::memory_order_release);
           }
@@ -164,6 +192,7 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel, const Tile
         tbb::simple_partitioner());
   });
   annotate_acquire(&state.pass_end_edge);
+  if (preview) return !cancelled.load();
   state.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled.load()) return false;
   state.selector->end_pass();
@@ -176,12 +205,27 @@ void record_rays(RenderState& state, RayLog* log) {
   if (log) log->tiles.resize(static_cast<std::size_t>(render_tile_count(state)));
 }
 
-const Framebuffer& render_framebuffer(const RenderState& state) { return state.framebuffer; }
-const RenderSettings& render_settings(const RenderState& state) { return state.settings; }
-int render_passes_done(const RenderState& state) { return state.passes_done; }
-double render_seconds(const RenderState& state) { return state.seconds; }
-const lev::LightSelector& render_selector(const RenderState& state) { return *state.selector; }
-int render_tile_count(const RenderState& state) { return state.tiles_x * state.tiles_y; }
+const Framebuffer& render_framebuffer(const RenderState& state) {
+  return state.framebuffer;
+}
+const Framebuffer& render_preview(const RenderState& state) {
+  return state.preview;
+}
+const RenderSettings& render_settings(const RenderState& state) {
+  return state.settings;
+}
+int render_passes_done(const RenderState& state) {
+  return state.passes_done;
+}
+double render_seconds(const RenderState& state) {
+  return state.seconds;
+}
+const lev::LightSelector& render_selector(const RenderState& state) {
+  return *state.selector;
+}
+int render_tile_count(const RenderState& state) {
+  return state.tiles_x * state.tiles_y;
+}
 TileStatus render_tile_status(const RenderState& state, int tile) {
   return state.tiles[tile].load(std::memory_order_acquire);
 }

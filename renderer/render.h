@@ -4,6 +4,9 @@
 // (pixel, pass) random stream, so images never depend on thread count or tile order. A pass can
 // be cancelled at any time (the flag is read between tiles, per row, in the recursion and every
 // few thousand lights); finished tiles keep their sample, an interrupted tile adds none.
+// The same pass with a pixel step > 1 is a preview: one pixel-centre sample every step pixels in
+// x and y, kept apart from the framebuffer (see render_pass), for a viewer that shows the whole
+// frame coarsely before the full-resolution passes arrive.
 #pragma once
 
 #include <atomic>
@@ -40,9 +43,10 @@ struct RenderStateDeleter {
 };
 using RenderStatePtr = std::unique_ptr<RenderState, RenderStateDeleter>;
 
-// Refits scene.lights for settings.tolerance (the structure is not rebuilt) and makes the
-// method's selector. The state refers to scene and rays; they must outlive it.
-RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const RenderSettings& settings);
+// Makes the method's selector for settings.tolerance (a `lev` state fits its own extent volumes;
+// the scene is only read, so states with different tolerances and methods may render one scene
+// at the same time). The state refers to scene and rays; they must outlive it.
+RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays, const RenderSettings& settings);
 
 // Called on the worker thread right after a tile's pixels are final for this pass; it may read
 // that tile's framebuffer pixels (nothing else writes them until the next pass). The viewer
@@ -50,14 +54,22 @@ RenderStatePtr make_render_state(Scene& scene, const RayScene& rays, const Rende
 using TileDoneCallback = std::function<void(int tile)>;
 
 // One more pass. Returns false when *cancel became true before every tile was done.
+// preview_step > 1 makes it a preview pass: each tile samples the pixel centres (x, y) with
+// x and y multiples of preview_step into render_preview (cleared first), whose pixel
+// (x / step, y / step) holds that sample. A preview never touches render_framebuffer, the pass
+// count, the render time or the method's state between passes (it has a selector of its own), so
+// nothing made from the framebuffer (image, heatmaps, stats) can contain a preview sample, and the
+// passes after it equal those of a state that never previewed.
 bool render_pass(RenderState& state, const std::atomic<bool>* cancel = nullptr,
-                 const TileDoneCallback& on_tile_done = nullptr);
+                 const TileDoneCallback& on_tile_done = nullptr, int preview_step = 1);
 
 // From the next pass on, every ray the passes cast is appended to *log, per tile (null stops
 // recording). The log must outlive the passes that write it.
 void record_rays(RenderState& state, RayLog* log);
 
 const Framebuffer& render_framebuffer(const RenderState& state);
+// The last preview pass's samples, ceil(width / step) x ceil(height / step); empty before one.
+const Framebuffer& render_preview(const RenderState& state);
 const RenderSettings& render_settings(const RenderState& state);
 int render_passes_done(const RenderState& state);
 double render_seconds(const RenderState& state);  // wall time spent in render_pass

@@ -774,7 +774,7 @@ renderer::Scene instantiate_scene(const SceneDescription& description) {
   const SceneNode& root = moved_root ? *moved_root : description.root;
   scene.light_tree = LightTreeBuilder(description, root, analysis).take();
   scene.geometry = GeometryBuilder(description, root, analysis).take();
-  scene.lights = lev::build_hierarchy(scene.light_tree, 0.01f);
+  scene.lights = lev::build_hierarchy(scene.light_tree);
   return scene;
 }
 

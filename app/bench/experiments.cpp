@@ -261,15 +261,15 @@ Section run_memory(BenchRun& run, const std::string& out_dir) {
             // file without structure gets (DESIGN.md).
             lev::LightTree flat_tree;
             flat_tree.root = lev::build_light_bvh(lev::flatten_lights(s.lights));
-            flat = lev::hierarchy_bytes(
-                lev::build_hierarchy(flat_tree, static_cast<float>(c.tolerance)));
-            ast = lev::make_selector(lev::Method::ast, s.lights)->bookkeeping_bytes();
+            flat = lev::hierarchy_bytes(lev::build_hierarchy(flat_tree));
+            ast = lev::make_selector(lev::Method::ast, s.lights, static_cast<float>(c.tolerance))
+                      ->bookkeeping_bytes();
           });
       if (!ran) continue;
       const double n = static_cast<double>(lights);
       // The thesis counts the nodes above the lights only (Test 1.2: "excludes light nodes");
       // each light's own node and record are what any method stores for a light.
-      const double per_light_storage = sizeof(lev::Light) + sizeof(lev::HierarchyNode);
+      const double per_light_storage = sizeof(lev::Light) + sizeof(lev::FittedNode);
       const double index_per_light = (static_cast<double>(flat) - per_light_storage * n) / n;
       double thesis_ast = kNaN, thesis_flat = kNaN, thesis_instanced = kNaN;
       if (scene == "building") {

@@ -18,7 +18,9 @@ void mean_rgb8(const renderer::Framebuffer& f, std::size_t pixel, std::uint8_t* 
   }
 }
 
-TileUpdate copy_tile(const renderer::Framebuffer& f, std::uint64_t generation, int tile, int pass,
+namespace {
+
+TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, int tile, int pass,
                      const TileRect& rect) {
   TileUpdate u;
   u.generation = generation;
@@ -48,6 +50,33 @@ TileUpdate copy_tile(const renderer::Framebuffer& f, std::uint64_t generation, i
       renderer::add_pixel_totals(f, i, u.totals);
     }
   }
+  return u;
+}
+
+int first_multiple_at_or_after(int x, int step) {
+  return (x + step - 1) / step;
+}
+
+}  // namespace
+
+TileUpdate copy_tile(const renderer::Framebuffer& framebuffer, std::uint64_t generation, int tile,
+                     int pass, const TileRect& rect) {
+  return copy_rect(framebuffer, generation, tile, pass, rect);
+}
+
+TileUpdate copy_preview_tile(const renderer::Framebuffer& preview, int step, int image_width,
+                             int image_height, std::uint64_t generation, int tile,
+                             const TileRect& rect) {
+  // The tile's samples are at the multiples of step inside it: preview pixels
+  // ceil(x0 / step) .. ceil(x1 / step) - 1.
+  const TileRect samples{
+      first_multiple_at_or_after(rect.x0, step), first_multiple_at_or_after(rect.y0, step),
+      first_multiple_at_or_after(rect.x1, step), first_multiple_at_or_after(rect.y1, step)};
+  TileUpdate u = copy_rect(preview, generation, tile, 0, samples);
+  u.preview_step = step;
+  u.image_width = image_width;
+  u.image_height = image_height;
+  u.totals = {};  // preview work is no part of the render's statistics
   return u;
 }
 

@@ -27,6 +27,10 @@ struct TileUpdate {
   int image_height = 0;
   int tile = 0;
   int pass = 0;  // the pass that just finished this tile
+  // 1: a tile of the render, rect in image pixels. > 1: a preview tile, whose samples sit every
+  // preview_step pixels; rect is in preview pixels (image pixels / preview_step) and each sample
+  // stands for the preview_step x preview_step block of image pixels it is the corner of.
+  int preview_step = 1;
   TileRect rect;
   std::vector<std::uint8_t> rgb;  // mean colour, 8-bit RGB, rows of the tile
   std::vector<std::uint32_t> samples;
@@ -42,6 +46,13 @@ void mean_rgb8(const renderer::Framebuffer& framebuffer, std::size_t pixel, std:
 // Copies one tile out of the framebuffer; call only while that tile's pixels are final.
 TileUpdate copy_tile(const renderer::Framebuffer& framebuffer, std::uint64_t generation, int tile,
                      int pass, const TileRect& rect);
+
+// Copies the samples one preview tile (image-pixel rect `rect`) put into the render's preview
+// framebuffer (renderer::render_preview) at pixel step `step`, for an image of image_width x
+// image_height pixels.
+TileUpdate copy_preview_tile(const renderer::Framebuffer& preview, int step, int image_width,
+                             int image_height, std::uint64_t generation, int tile,
+                             const TileRect& rect);
 
 struct TakenTiles {
   std::uint64_t floor = 0;  // renders older than this are gone: their pixels are stale

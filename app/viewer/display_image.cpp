@@ -7,9 +7,10 @@
 #include "renderer/pixel_error.h"
 
 namespace app::viewer {
-namespace {
 
-constexpr std::uint8_t kNotRendered[3] = {38, 38, 42};
+const std::uint8_t kNotRenderedRgb[3] = {38, 38, 42};
+
+namespace {
 
 std::size_t pixel_count(const DisplayImage& image) {
   return static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
@@ -67,6 +68,55 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
   }
 }
 
+void start_preview(PreviewImage& preview, std::uint64_t generation, int width, int height) {
+  preview.width = width;
+  preview.height = height;
+  preview.generation = generation;
+  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  preview.step.assign(n, 0);
+  preview.rgb.assign(3 * n, 0);
+  preview.lights_tested.assign(n, 0.0f);
+  preview.nodes_visited.assign(n, 0.0f);
+}
+
+// Fills the block of each sample, where no finer level has been received.
+void apply_preview_update(PreviewImage& preview, const TileUpdate& u) {
+  const int step = u.preview_step;
+  std::size_t k = 0;
+  for (int py = u.rect.y0; py < u.rect.y1; ++py) {
+    for (int px = u.rect.x0; px < u.rect.x1; ++px, ++k) {
+      if (u.samples[k] == 0) continue;
+      const int x1 = std::min(px * step + step, preview.width);
+      const int y1 = std::min(py * step + step, preview.height);
+      for (int y = py * step; y < y1; ++y) {
+        for (int x = px * step; x < x1; ++x) {
+          const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(preview.width) +
+                         static_cast<std::size_t>(x);
+          if (preview.step[i] != 0 && preview.step[i] < step) continue;
+          preview.step[i] = static_cast<std::uint8_t>(step);
+          for (int c = 0; c < 3; ++c) preview.rgb[3 * i + c] = u.rgb[3 * k + c];
+          preview.lights_tested[i] = u.lights_tested[k];
+          preview.nodes_visited[i] = u.nodes_visited[k];
+        }
+      }
+    }
+  }
+}
+
+// The pixel shows the preview: the render has not reached it and the preview, of the same
+// render, has.
+bool shows_preview(const DisplayImage& image, const PreviewImage* preview, std::size_t i) {
+  return preview != nullptr && image.samples[i] == 0 && preview->step[i] != 0;
+}
+
+// A tile of a newer render (or another size) starts that render's generation.
+void follow_generation(DisplayImage& image, const TileUpdate& u) {
+  if (u.generation > image.generation || image.width != u.image_width ||
+      image.height != u.image_height) {
+    start_generation(image, u.generation, u.image_width, u.image_height);
+  }
+}
+
 }  // namespace
 
 void clear_display_image(DisplayImage& image) {
@@ -79,11 +129,25 @@ bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& upda
   bool changed = false;
   for (const TileUpdate& u : updates) {
     if (u.generation < image.generation) continue;
-    if (u.generation > image.generation || image.width != u.image_width ||
-        image.height != u.image_height) {
-      start_generation(image, u.generation, u.image_width, u.image_height);
-    }
+    follow_generation(image, u);
     apply_tile_update(image, u);
+    changed = true;
+  }
+  if (changed) image.version += 1;
+  return changed;
+}
+
+bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
+                           const std::vector<TileUpdate>& updates) {
+  bool changed = false;
+  for (const TileUpdate& u : updates) {
+    if (u.generation < image.generation || u.generation < preview.generation) continue;
+    follow_generation(image, u);
+    if (u.generation > preview.generation || preview.width != u.image_width ||
+        preview.height != u.image_height) {
+      start_preview(preview, u.generation, u.image_width, u.image_height);
+    }
+    apply_preview_update(preview, u);
     changed = true;
   }
   if (changed) image.version += 1;
@@ -128,15 +192,26 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
   return e;
 }
 
-std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
-                                    ViewMode mode, renderer::HeatmapRange& range) {
+namespace {
+
+std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewImage* preview,
+                                       const ErrorImage& error, ViewMode mode,
+                                       renderer::HeatmapRange& range) {
   const std::size_t n = pixel_count(image);
+  if (preview != nullptr && (preview->generation != image.generation ||
+                             preview->width != image.width || preview->height != image.height)) {
+    preview = nullptr;
+  }
   std::vector<std::uint8_t> rgb(3 * n);
   range = {};
   if (mode == ViewMode::image) {
     for (std::size_t i = 0; i < n; ++i) {
       // Colours of the previous render (same size) stay visible, dimmed, until redrawn.
       const bool fresh = image.samples[i] > 0;
+      if (shows_preview(image, preview, i)) {
+        for (int c = 0; c < 3; ++c) rgb[3 * i + c] = preview->rgb[3 * i + c];
+        continue;
+      }
       for (int c = 0; c < 3; ++c) {
         const int v = image.rgb[3 * i + c];
         rgb[3 * i + c] = static_cast<std::uint8_t>(fresh ? v : v * 2 / 5);
@@ -150,6 +225,9 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
     if (mode == ViewMode::error) {
       known[i] = i < error.pct.size() && error.pct[i] >= 0.0f;
       if (known[i]) values[i] = error.pct[i];
+    } else if (shows_preview(image, preview, i)) {
+      known[i] = 1;
+      values[i] = mode == ViewMode::lights ? preview->lights_tested[i] : preview->nodes_visited[i];
     } else {
       known[i] = image.samples[i] > 0;
       if (known[i])
@@ -168,14 +246,22 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
   for (std::size_t i = 0; i < n; ++i) {
     const glm::u8vec3 heat =
         renderer::viridis(static_cast<float>(heatmap_position(values[i], range)));
-    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[c] : kNotRendered[c];
+    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[c] : kNotRenderedRgb[c];
   }
   return rgb;
 }
 
-void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
-                       std::vector<std::uint8_t>& rgba, renderer::HeatmapRange& range) {
-  const std::vector<std::uint8_t> rgb = view_rgb8(image, error, mode, range);
+}  // namespace
+
+std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
+                                    ViewMode mode, renderer::HeatmapRange& range) {
+  return compose_rgb8(image, nullptr, error, mode, range);
+}
+
+void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
+                       const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
+                       renderer::HeatmapRange& range) {
+  const std::vector<std::uint8_t> rgb = compose_rgb8(image, &preview, error, mode, range);
   const std::size_t n = rgb.size() / 3;
   rgba.resize(4 * n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -2,6 +2,9 @@
 // into these per-pixel arrays, and everything the panel shows (texture, hover values, totals,
 // pixel errors) is computed from them on the UI thread. When a new render starts at the same
 // size, the previous colours stay as a dimmed backdrop until their tiles arrive again.
+// Preview samples live in a PreviewImage of their own, which only the texture composition reads:
+// snapshots, statistics, pixel errors and the trade plot are made from the DisplayImage, which
+// never holds a preview sample.
 #pragma once
 
 #include <cstdint>
@@ -31,12 +34,30 @@ struct DisplayImage {
   std::uint64_t version = 0;   // bumped whenever anything above changes
 };
 
+// The coarse preview of the render in `generation`: per image pixel, the value of the preview
+// sample whose block covers it (the finest level received so far).
+struct PreviewImage {
+  int width = 0;
+  int height = 0;
+  std::uint64_t generation = 0;
+  std::vector<std::uint8_t> step;  // 0: no preview sample covers the pixel yet
+  std::vector<std::uint8_t> rgb;
+  std::vector<float> lights_tested;  // per sample
+  std::vector<float> nodes_visited;
+};
+
 // Forgets everything (no render to show).
 void clear_display_image(DisplayImage& image);
 
 // Applies updates of this generation, starts a newer one when an update belongs to it, and drops
 // updates of older generations. Returns true when the image changed.
 bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& updates);
+
+// Applies preview tiles (TileUpdate::preview_step > 1). A preview of a newer render (or another
+// size) starts that render's generation in `image` too, with no samples: the frame shows the
+// preview at once, and the render's own tiles then replace it. Returns true when either changed.
+bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
+                           const std::vector<TileUpdate>& updates);
 
 TileTotals sum_tile_totals(const DisplayImage& image);
 
@@ -52,13 +73,18 @@ struct ErrorImage {
 };
 ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference);
 
-// RGBA texels of one view. Heatmaps are viridis over the rendered pixels' range, min to max
-// (returned in `range`; heatmap_scale.h); pixels not rendered yet are dark grey, stale colours
-// dimmed.
-void compose_view_rgba(const DisplayImage& image, const ErrorImage& error, ViewMode mode,
-                       std::vector<std::uint8_t>& rgba, renderer::HeatmapRange& range);
+// The colour of a heatmap pixel that no sample covers yet.
+extern const std::uint8_t kNotRenderedRgb[3];
 
-// 8-bit RGB of one view for a snapshot file (the texture without alpha).
+// RGBA texels of one view. Heatmaps are viridis over the shown pixels' range, min to max
+// (returned in `range`; heatmap_scale.h); pixels the render has not reached show the preview of
+// the same generation where it has a sample, else dark grey (heatmaps) or the dimmed colour of
+// the previous render (image).
+void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
+                       const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
+                       renderer::HeatmapRange& range);
+
+// 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview.
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
                                     ViewMode mode, renderer::HeatmapRange& range);
 

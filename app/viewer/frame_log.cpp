@@ -13,14 +13,24 @@ void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_bu
 
 void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
                  std::chrono::steady_clock::time_point when) {
-  log.latencies.push_back({label, serial, when, -1.0});
+  for (LatencyRecord& r : log.latencies) r.superseded = true;
+  log.latencies.push_back({label, serial, when, -1.0, -1.0, -1.0, false});
 }
 
 void record_first_tile(FrameLog& log, std::uint64_t generation,
                        std::chrono::steady_clock::time_point when) {
   for (LatencyRecord& r : log.latencies) {
-    if (r.first_tile_ms >= 0.0 || r.serial > generation) continue;
+    if (r.first_tile_ms >= 0.0 || r.serial > generation || r.superseded) continue;
     r.first_tile_ms = std::chrono::duration<double, std::milli>(when - r.posted).count();
+  }
+}
+
+void record_preview(FrameLog& log, std::uint64_t generation, bool every_level,
+                    std::chrono::steady_clock::time_point when) {
+  for (LatencyRecord& r : log.latencies) {
+    double& ms = every_level ? r.preview_ms : r.whole_frame_ms;
+    if (ms >= 0.0 || r.serial > generation || r.superseded) continue;
+    ms = std::chrono::duration<double, std::milli>(when - r.posted).count();
   }
 }
 
@@ -62,7 +72,16 @@ std::string frame_report(const FrameLog& log) {
   report += work_line;
   for (const LatencyRecord& r : log.latencies) {
     char line[256];
-    if (r.first_tile_ms >= 0.0) {
+    if (r.first_tile_ms >= 0.0 && r.whole_frame_ms >= 0.0) {
+      char all_levels[64] = "";
+      if (r.preview_ms >= 0.0)
+        std::snprintf(all_levels, sizeof all_levels, ", every preview level after %.1f ms",
+                      r.preview_ms);
+      std::snprintf(line, sizeof line,
+                    "levrt view: %s: first tile on screen after %.1f ms, whole-frame preview "
+                    "after %.1f ms%s\n",
+                    r.label.c_str(), r.first_tile_ms, r.whole_frame_ms, all_levels);
+    } else if (r.first_tile_ms >= 0.0) {
       std::snprintf(line, sizeof line, "levrt view: %s: first tile on screen after %.1f ms\n",
                     r.label.c_str(), r.first_tile_ms);
     } else {

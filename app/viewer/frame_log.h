@@ -1,5 +1,6 @@
 // What --report-fps prints: the UI's frame times (all frames, and the frames during which the
-// tracer was busy) and, for each change, how long until its first tile reached the screen.
+// tracer was busy) and, for each change, how long until its first tile (preview or full), its
+// whole frame at the coarsest preview step and its last preview level reached the screen.
 #pragma once
 
 #include <chrono>
@@ -21,6 +22,13 @@ struct LatencyRecord {
   std::uint64_t serial = 0;
   std::chrono::steady_clock::time_point posted;
   double first_tile_ms = -1.0;  // negative until a tile of this or a later render arrives
+  // Negative until the coarsest preview level (the whole frame, coarsely) and then every level of
+  // this or a later render is on screen.
+  double whole_frame_ms = -1.0;
+  double preview_ms = -1.0;
+  // A later change was posted: what arrives from then on belongs to it (a change that started no
+  // render, like the tolerance under rt, must not claim the next change's tiles).
+  bool superseded = false;
 };
 
 struct FrameLog {
@@ -37,6 +45,11 @@ void record_post(FrameLog& log, const std::string& label, std::uint64_t serial,
 // A tile of render `generation` reached the screen at `when`.
 void record_first_tile(FrameLog& log, std::uint64_t generation,
                        std::chrono::steady_clock::time_point when);
+
+// The coarsest preview level (whole_frame) or every level of render `generation` was on screen at
+// `when`.
+void record_preview(FrameLog& log, std::uint64_t generation, bool every_level,
+                    std::chrono::steady_clock::time_point when);
 
 FrameTimeSummary summarize_frames(const std::vector<double>& frame_ms);
 // The report, one line per item.

@@ -75,6 +75,12 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
+  record_item(state.record_controls ? &state.control_rects : nullptr, "image_area");
+  const ImVec2 pixels_per_point = ImGui::GetIO().DisplayFramebufferScale;
+  state.image_area_width =
+      static_cast<int>(std::floor(std::max(avail.x, 1.0f) * pixels_per_point.x));
+  state.image_area_height =
+      static_cast<int>(std::floor(std::max(avail.y, 1.0f) * pixels_per_point.y));
   const int w = state.image.width, h = state.image.height;
   float scale = 1.0f;
   ImVec2 image_min = origin, image_max = origin;

@@ -1,8 +1,9 @@
 // The `rt` reference of the current view, rendered on a thread of its own so that the user can
 // keep trying tolerances while it runs. It renders one pass (pixel centres), which is what the
-// error view compares the pass-0 image with. The render worker owns it: it hands over a state
-// made at the scene's current tolerance (so making it refits nothing), and stops (joins) it before
-// anything changes the scene; stopping keeps the finished tiles, and resuming renders the rest.
+// error view compares the pass-0 image with. The render worker owns it: it hands over a state and
+// drops it before the camera moves; the main render may change method or tolerance meanwhile
+// (render states share the scene read-only). Stopping keeps the finished tiles, and resuming
+// renders the rest.
 #pragma once
 
 #include <atomic>

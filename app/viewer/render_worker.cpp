@@ -31,6 +31,7 @@ struct WorkerShared {
   std::atomic<bool> cancel{false};  // the main render's pass in flight
 
   DisplayBuffer tiles;
+  DisplayBuffer preview_tiles;
   DisplayBuffer reference_tiles;
 
   // The main render state, for the UI's in-flight markers. The worker swaps the pointer under
@@ -46,6 +47,30 @@ struct ViewKey {
   renderer::Camera camera;
   int width = 0, height = 0, depth = 0, stride = 0;
 };
+
+// Preview pixel steps, coarsest first: 8, 4, 2, and coarser levels in front while the coarsest
+// would have more samples than the 320x240 default frame has at step 8, so that the first whole
+// frame costs about the same at any window size. Steps at or below the subsample stride add
+// nothing and are left out.
+constexpr int kFinestPreviewStep = 2;
+constexpr int kCoarsePreviewStep = 8;
+constexpr int kMaxPreviewStep = 128;
+constexpr long long kCoarsestPreviewSamples =
+    (320 / kCoarsePreviewStep) * (240 / kCoarsePreviewStep);
+
+std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
+  const auto samples_at = [&](int step) {
+    return static_cast<long long>((width + step - 1) / step) * ((height + step - 1) / step);
+  };
+  int coarsest = kCoarsePreviewStep;
+  while (coarsest < kMaxPreviewStep && samples_at(coarsest) > kCoarsestPreviewSamples)
+    coarsest *= 2;
+  std::vector<int> steps;
+  for (int step = coarsest; step >= kFinestPreviewStep; step /= 2) {
+    if (step > pixel_stride) steps.push_back(step);
+  }
+  return steps;
+}
 
 bool same_camera(const renderer::Camera& a, const renderer::Camera& b) {
   return a.position == b.position && a.target == b.target && a.up == b.up &&
@@ -71,6 +96,8 @@ struct Worker {
   std::uint64_t generation = 0;
   std::uint64_t last_serial = 0;  // the latest request applied; every generation is <= it
   int passes_target = 1;
+  std::vector<int> preview_steps;  // of the main state
+  std::size_t preview_levels_done = 0;
   double seconds_at_last_pass = 0.0;
   ReferenceRender reference;
 
@@ -113,6 +140,7 @@ struct Worker {
     }
     main.reset();
     shared.tiles.raise_floor(floor);
+    shared.preview_tiles.raise_floor(floor);
   }
 
   void drop_reference(std::uint64_t floor) {
@@ -133,10 +161,12 @@ struct Worker {
   }
 
   int passes_done() const { return main ? renderer::render_passes_done(*main) : 0; }
+  bool wants_preview() const { return main && preview_levels_done < preview_steps.size(); }
 
   // Refinement passes wait while the reference renders: they would share its cores, and the
   // user asked for the reference.
   bool wants_pass() const {
+    if (wants_preview()) return true;
     if (!main || passes_done() >= passes_target) return false;
     return passes_done() == 0 || !reference.running();
   }
@@ -185,15 +215,11 @@ struct Worker {
         rs.tolerance != main_settings.tolerance && lev::method_info(rs.method).uses_tolerance;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
                               tolerance_matters || rs.threads != main_settings.threads;
-    const bool refits = main_changed && rs.tolerance != sc.lights.tolerance;
 
-    // Nothing may render on the scene while it changes: the reference is joined (or dropped
-    // when its view is gone) and the main state destroyed before the camera or the refit.
-    if (view_changed || !request.want_reference) {
-      if (reference.has_state()) drop_reference(serial);
-    } else if (refits) {
-      reference.stop();
-    }
+    // Nothing may render on the scene while its camera moves: the reference is dropped when its
+    // view is gone and the main state destroyed first. A new method or tolerance changes nothing
+    // in the scene (each render state fits its own extent volumes), so the reference keeps going.
+    if ((view_changed || !request.want_reference) && reference.has_state()) drop_reference(serial);
     if (main_changed) drop_main(serial);
     if (!same_camera(key.camera, sc.camera)) sc.camera = key.camera;
     view = key;
@@ -209,6 +235,8 @@ struct Worker {
       publish_main(std::move(state));
       main_settings = rs;
       generation = serial;
+      preview_steps = preview_steps_for(rs.width, rs.height, rs.pixel_stride);
+      preview_levels_done = 0;
       seconds_at_last_pass = 0.0;
       update_status([&](WorkerStatus& st) {
         st.generation = serial;
@@ -226,16 +254,16 @@ struct Worker {
         st.last_pass_seconds = 0.0;
         st.first_pass_seconds = -1.0;
         st.first_pass_shared = false;
+        st.preview_levels = static_cast<int>(preview_steps.size());
+        st.preview_levels_done = 0;
       });
     }
     update_status([&](WorkerStatus& st) { st.passes_target = s.spp; });
 
     if (request.want_reference && !reference.complete()) {
       if (!reference.has_state()) {
-        // rt ignores the tolerance; giving it the scene's current one means no refit.
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;
-        ref.tolerance = sc.lights.tolerance;
         shared.reference_tiles.raise_floor(serial);
         reference.begin(renderer::make_render_state(sc, *loaded->rays, ref), serial);
         update_status([&](WorkerStatus& st) {
@@ -250,7 +278,33 @@ struct Worker {
     }
   }
 
+  // One preview level over the whole frame; a cancelled level is rendered again from the start.
+  void render_preview_level() {
+    renderer::RenderState& state = *main;
+    const int step = preview_steps[preview_levels_done];
+    update_status([&](WorkerStatus& st) {
+      st.phase = WorkerPhase::rendering;
+      st.preview_step = step;
+    });
+    const renderer::Framebuffer& preview = renderer::render_preview(state);
+    const std::uint64_t gen = generation;
+    const auto on_tile_done = [&](int tile) {
+      TileRect r;
+      renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
+      shared.preview_tiles.post(copy_preview_tile(preview, step, main_settings.width,
+                                                  main_settings.height, gen, tile, r));
+    };
+    if (!renderer::render_pass(state, &shared.cancel, on_tile_done, step)) return;
+    preview_levels_done += 1;
+    update_status(
+        [&](WorkerStatus& st) { st.preview_levels_done = static_cast<int>(preview_levels_done); });
+  }
+
   void render_one_pass() {
+    if (wants_preview()) {
+      render_preview_level();
+      return;
+    }
     renderer::RenderState& state = *main;
     const int pass = renderer::render_passes_done(state);
     const bool shared_cpu = pass == 0 && reference.running();
@@ -407,6 +461,10 @@ WorkerStatus RenderWorker::status() const {
 
 TakenTiles RenderWorker::take_tiles() {
   return shared_->tiles.take_all();
+}
+
+TakenTiles RenderWorker::take_preview_tiles() {
+  return shared_->preview_tiles.take_all();
 }
 
 TakenTiles RenderWorker::take_reference_tiles() {

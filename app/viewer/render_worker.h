@@ -6,7 +6,9 @@
 // tiles and the worker picks the request up at once. A render state whose settings did not change
 // is kept, and its interrupted pass resumes. The `rt` reference of the same view renders on a
 // second thread (ReferenceRender), which the worker stops and joins before anything changes the
-// scene and resumes afterwards when the view is the same.
+// scene and resumes afterwards when the view is the same. Every new render state starts with
+// preview passes (pixel steps 8, 4, 2: renderer::render_pass's preview_step) posted to a display
+// buffer of their own, so preview samples never mix with the render's tiles.
 #pragma once
 
 #include <chrono>
@@ -65,6 +67,9 @@ struct WorkerStatus {
   std::chrono::steady_clock::time_point pass_started;
   double last_pass_seconds = 0.0;
   double first_pass_seconds = -1.0;  // pass 0's time once it is complete
+  int preview_levels = 0;            // preview passes this render starts with
+  int preview_levels_done = 0;
+  int preview_step = 0;              // pixel step of the preview level rendering now
   bool first_pass_shared = false;    // the reference rendered while pass 0 did
 
   // The rt reference of the same view.
@@ -93,6 +98,7 @@ class RenderWorker {
   std::uint64_t post(const ViewRequest& request);
   WorkerStatus status() const;
   TakenTiles take_tiles();
+  TakenTiles take_preview_tiles();
   TakenTiles take_reference_tiles();
   // Tiles of the current render that a worker is tracing right now.
   std::vector<TileRect> tiles_in_flight() const;

@@ -1,7 +1,12 @@
 #include "app/viewer/scripted_changes.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 
 #include "app/scene_loading.h"
 
@@ -21,24 +26,34 @@ std::uint64_t parse_count(const std::string& text, const std::string& change) {
   return n;
 }
 
-bool parse_pixel(const std::string& text, int& x, int& y) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) return false;
-  const std::string xs = text.substr(0, comma), ys = text.substr(comma + 1);
-  char* end_x = nullptr;
-  char* end_y = nullptr;
-  const long lx = std::strtol(xs.c_str(), &end_x, 10);
-  const long ly = std::strtol(ys.c_str(), &end_y, 10);
-  if (xs.empty() || ys.empty() || *end_x != '\0' || *end_y != '\0' || lx < 0 || ly < 0 ||
-      lx > 16384 || ly > 16384) {
+// "A<separator>B" with A in [min_a, 16384] and B in [min_b, 16384].
+bool parse_int_pair(const std::string& text, char separator, long min_a, long min_b, int& a,
+                    int& b) {
+  const std::size_t at = text.find(separator);
+  if (at == std::string::npos) return false;
+  const std::string as = text.substr(0, at), bs = text.substr(at + 1);
+  char* end_a = nullptr;
+  char* end_b = nullptr;
+  const long la = std::strtol(as.c_str(), &end_a, 10);
+  const long lb = std::strtol(bs.c_str(), &end_b, 10);
+  if (as.empty() || bs.empty() || *end_a != '\0' || *end_b != '\0' || la < min_a || lb < min_b ||
+      la > 16384 || lb > 16384) {
     return false;
   }
-  x = static_cast<int>(lx);
-  y = static_cast<int>(ly);
+  a = static_cast<int>(la);
+  b = static_cast<int>(lb);
   return true;
 }
 
+bool parse_pixel(const std::string& text, int& x, int& y) {
+  return parse_int_pair(text, ',', 0, 0, x, y);
+}
+
 }  // namespace
+
+bool parse_window_size(const std::string& text, int& width, int& height) {
+  return parse_int_pair(text, 'x', 320, 240, width, height);
+}
 
 ScriptedChange parse_scripted_change(const std::string& text) {
   const std::size_t eq = text.find('=');
@@ -74,15 +89,21 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "hover") {
     int x = 0, y = 0;
     if (!parse_pixel(c.value, x, y)) reject(text, "hover needs a pixel X,Y");
+  } else if (c.key == "window") {
+    int w = 0, h = 0;
+    if (!parse_window_size(c.value, w, h))
+      reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
   } else if (c.key == "snapshot" || c.key == "screenshot") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
-    if (c.value != "idle") reject(text, "await must be idle");
+    if (c.value != "idle" && c.value != "preview") reject(text, "await must be idle or preview");
+  } else if (c.key == "memory") {
+    if (c.value != "report") reject(text, "memory must be report");
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
-    reject(text,
-           "key must be one of " + keys + "lights|view|reference|hover|snapshot|screenshot|await");
+    reject(text, "key must be one of " + keys +
+                     "lights|view|reference|hover|window|snapshot|screenshot|await|memory");
   }
   return c;
 }
@@ -93,27 +114,49 @@ std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string
   return changes;
 }
 
+std::vector<std::string> read_script_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError("--script: cannot read '" + path + "'");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) lines.push_back(line);
+  }
+  if (in.bad()) throw UsageError("--script: cannot read '" + path + "'");
+  return lines;
+}
+
+std::uint64_t current_resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t size_pages = 0, resident_pages = 0;
+  if (!(statm >> size_pages >> resident_pages)) return 0;
+  return resident_pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+}
+
 void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial) {
   // The frame loop applies the changes frame by frame, each frame's in command-line order: the
-  // size at a hover is the last width and height change before it in that order.
-  const auto before = [&](std::size_t a, std::size_t b) {
-    return changes[a].frame < changes[b].frame || (changes[a].frame == changes[b].frame && a < b);
-  };
-  for (std::size_t h = 0; h < changes.size(); ++h) {
-    if (changes[h].key != "hover") continue;
-    Settings at_hover = initial;
-    for (const char* key : {"width", "height"}) {
-      std::size_t last = changes.size();
-      for (std::size_t i = 0; i < changes.size(); ++i) {
-        if (changes[i].key == key && before(i, h) && (last == changes.size() || before(last, i)))
-          last = i;
-      }
-      if (last != changes.size()) set_setting(at_hover, *find_setting(key), changes[last].value);
+  // size at a hover is the initial one with the size changes before it applied in that order. A
+  // fit resolution follows the window, so its size is only known while the viewer runs; hovers
+  // outside a fitted image show nothing.
+  std::vector<std::size_t> order(changes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return changes[a].frame < changes[b].frame;
+  });
+  Settings at_hover = initial;
+  for (const std::size_t h : order) {
+    const ScriptedChange& c = changes[h];
+    if (c.key == "width" || c.key == "height" || c.key == "resolution") {
+      const Settings before = at_hover;
+      set_setting(at_hover, *find_setting(c.key), c.value);
+      const bool new_size = at_hover.width != before.width || at_hover.height != before.height;
+      if (new_size && at_hover.resolution == before.resolution) at_hover.resolution = "typed";
+      continue;
     }
+    if (c.key != "hover" || fit_divisor(at_hover.resolution) != 0) continue;
     int x = 0, y = 0;
-    parse_pixel(changes[h].value, x, y);
+    parse_pixel(c.value, x, y);
     if (x >= at_hover.width || y >= at_hover.height) {
-      reject("hover=" + changes[h].value + "@" + std::to_string(changes[h].frame),
+      reject("hover=" + c.value + "@" + std::to_string(c.frame),
              "hover is in image pixels and must be inside the " + std::to_string(at_hover.width) +
                  "x" + std::to_string(at_hover.height) + " image");
     }
@@ -150,9 +193,15 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     state.scripted_hover = pixel;
     return ScriptAction::none;
   }
+  if (c.key == "memory") {
+    std::printf("levrt view: resident memory at frame %d: %llu bytes\n", c.frame,
+                static_cast<unsigned long long>(current_resident_bytes()));
+    return ScriptAction::none;
+  }
+  if (c.key == "window") return ScriptAction::resize_window;
   if (c.key == "snapshot") return ScriptAction::snapshot;
   if (c.key == "screenshot") return ScriptAction::screenshot;
-  return ScriptAction::await_idle;
+  return c.value == "preview" ? ScriptAction::await_preview : ScriptAction::await_idle;
 }
 
 }  // namespace app::viewer

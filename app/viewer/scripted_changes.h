@@ -1,12 +1,17 @@
 // Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
 // the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
 // scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y in image pixels,
-// inside the image: show that pixel's tooltip; scripted mode ignores the real mouse), and three
-// actions: `snapshot` (save into a folder), `screenshot` (write the window to a PNG) and
-// `await=idle` (hold the frame count until the render, and the reference if requested, are
-// complete).
+// inside a typed-size image: show that pixel's tooltip; scripted mode ignores the real mouse),
+// and the actions `window` (resize the window to WIDTHxHEIGHT, as a user dragging its border;
+// the frame count holds until the window has that size), `snapshot` (save into a folder),
+// `screenshot` (write the window to a PNG), `await=idle` (hold the frame count until the render,
+// and the reference if requested, are complete), `await=preview` (hold it until the coarse
+// preview of the latest change is on screen) and `memory=report` (print the process's current
+// resident memory, for the soak test that watches it grow over thousands of changes).
+// `--script FILE` reads the same changes, one per line, for scripts too long for a command line.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,7 +19,7 @@
 
 namespace app::viewer {
 
-enum class ScriptAction { none, snapshot, screenshot, await_idle };
+enum class ScriptAction { none, resize_window, snapshot, screenshot, await_idle, await_preview };
 
 struct ScriptedChange {
   std::string key;
@@ -22,9 +27,18 @@ struct ScriptedChange {
   int frame = 0;
 };
 
+// WIDTHxHEIGHT, at least 320x240 (--window and the scripted `window` key); false when malformed.
+bool parse_window_size(const std::string& text, int& width, int& height);
+
 // Throws UsageError ("--set: ...") for a malformed change or a value its key rejects.
 ScriptedChange parse_scripted_change(const std::string& text);
 std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string>& texts);
+
+// The lines of a --script file, empty lines skipped; throws UsageError when it cannot be read.
+std::vector<std::string> read_script_file(const std::string& path);
+
+// Resident memory now (not the peak: /proc/self/statm), 0 where /proc is not mounted.
+std::uint64_t current_resident_bytes();
 
 // Refuses (UsageError) a hover pixel outside the image: the image size at the hover's frame is
 // the initial settings' with the script's width and height changes up to that frame applied.

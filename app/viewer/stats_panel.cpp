@@ -60,6 +60,12 @@ void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_
   if (st.passes_done >= st.passes_target) {
     std::snprintf(text, sizeof text, "done: %d passes", st.passes_done);
     ImGui::ProgressBar(1.0f, ImVec2(-1.0f, 0.0f), text);
+  } else if (st.preview_levels_done < st.preview_levels) {
+    std::snprintf(text, sizeof text, "preview %d of %d: one sample per %dx%d pixels",
+                  st.preview_levels_done + 1, st.preview_levels, st.preview_step, st.preview_step);
+    ImGui::ProgressBar(
+        static_cast<float>(st.preview_levels_done) / static_cast<float>(st.preview_levels),
+        ImVec2(-1.0f, 0.0f), text);
   } else {
     const float fraction =
         st.tile_count > 0 ? static_cast<float>(done) / static_cast<float>(st.tile_count) : 0.0f;

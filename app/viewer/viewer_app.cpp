@@ -43,6 +43,9 @@ constexpr double kErrorSeconds = 0.25;          // and the error image at most t
 constexpr float kPanelWidth = 430.0f;
 constexpr float kSideBySideWidth = 720.0f;  // narrower results show statistics and plot as tabs
 constexpr float kRoomyHeight = 720.0f;      // lower windows pack the panel's rows closer
+// A fit resolution follows a new window size once it has held this long, so dragging the border
+// does not restart the render every frame.
+constexpr double kResizeSettleSeconds = 0.3;
 
 double seconds_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -53,23 +56,11 @@ struct WindowSize {
   int height = 0;
 };
 
-WindowSize parse_window_size(const std::string& text) {
-  const std::size_t x = text.find('x');
+WindowSize parse_window_flag(const std::string& text) {
   WindowSize size;
-  if (x != std::string::npos) {
-    const std::string w = text.substr(0, x), h = text.substr(x + 1);
-    char* end_w = nullptr;
-    char* end_h = nullptr;
-    const long lw = std::strtol(w.c_str(), &end_w, 10);
-    const long lh = std::strtol(h.c_str(), &end_h, 10);
-    if (!w.empty() && !h.empty() && *end_w == '\0' && *end_h == '\0' && lw >= 320 && lw <= 16384 &&
-        lh >= 240 && lh <= 16384) {
-      size.width = static_cast<int>(lw);
-      size.height = static_cast<int>(lh);
-      return size;
-    }
-  }
-  throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
+  if (!parse_window_size(text, size.width, size.height))
+    throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
+  return size;
 }
 
 void check_output_path(const char* flag, const std::string& path) {
@@ -174,6 +165,21 @@ struct ErrorClock {
   Clock::time_point at;
 };
 
+enum class Await { nothing, idle, preview, resize };
+
+// At least `levels` preview levels of the render the worker shows have reached the screen (all
+// of them when it has fewer).
+bool preview_shown(const ViewerState& state, int levels) {
+  const WorkerStatus& st = state.status;
+  const int wanted = std::min(levels, st.preview_levels);
+  return st.generation != 0 && st.preview_levels_done >= wanted &&
+         (wanted == 0 || state.preview.generation == st.generation);
+}
+
+bool preview_complete(const ViewerState& state) {
+  return preview_shown(state, state.status.preview_levels);
+}
+
 void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log,
                          Clock::time_point now) {
   // Status first: every tile a status refers to was posted before it, so it is in the buffer.
@@ -183,6 +189,11 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
   if (apply_tile_updates(state.image, worker.take_tiles().updates)) {
     record_first_tile(log, state.image.generation, now);
   }
+  if (apply_preview_updates(state.preview, state.image, worker.take_preview_tiles().updates)) {
+    record_first_tile(log, state.preview.generation, now);
+  }
+  if (preview_shown(state, 1)) record_preview(log, state.status.generation, false, now);
+  if (preview_complete(state)) record_preview(log, state.status.generation, true, now);
 
   const TakenTiles reference = worker.take_reference_tiles();
   if (state.reference.generation != 0 && state.reference.generation < reference.floor) {
@@ -239,7 +250,8 @@ void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clo
     return;
   }
   if (!force && seconds_between(picture.composed, now) < kComposeSeconds) return;
-  compose_view_rgba(state.image, state.error, state.view, picture.rgba, state.heatmap_range);
+  compose_view_rgba(state.image, state.preview, state.error, state.view, picture.rgba,
+                    state.heatmap_range);
   upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
   picture.image_version = state.image.version;
   picture.error_version = error_version;
@@ -251,11 +263,58 @@ void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clo
 // (the reference included, when asked for) and the UI holds every tile.
 bool render_settled(const ViewerState& state, std::uint64_t last_posted) {
   const WorkerStatus& st = state.status;
-  if (state.request_dirty || st.request_serial < last_posted) return false;
+  if (state.fit_pending || state.request_dirty || st.request_serial < last_posted) return false;
   if (st.phase == WorkerPhase::failed) return true;
   if (st.phase != WorkerPhase::idle) return false;
   if (state.want_reference && st.reference == ReferencePhase::rendering) return false;
   return st.generation == 0 || state.image.generation == st.generation;
+}
+
+// The fit resolution's size for the image area, and when the area last changed.
+struct FitTracker {
+  int width = 0, height = 0;  // the size the area asked for most recently
+  Clock::time_point since;
+  bool fitted_once = false;
+  std::string resolution;  // of the last frame
+};
+
+// Follows the image area with the render size while the resolution is fit: at once while
+// nothing has been shown yet (the first frames' layout settles while the scene builds) and for a
+// change of the fit scale, after the area held still for kResizeSettleSeconds otherwise (and not
+// while a mouse button is down, a drag in progress).
+void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point now) {
+  const int divisor = fit_divisor(state.settings.resolution);
+  const bool scale_changed = state.settings.resolution != fit.resolution;
+  fit.resolution = state.settings.resolution;
+  state.fit_pending = false;
+  if (divisor == 0 || state.image_area_width <= 0 || state.image_area_height <= 0) return;
+  const int width = std::clamp(state.image_area_width / divisor, 1, 16384);
+  const int height = std::clamp(state.image_area_height / divisor, 1, 16384);
+  if (width != fit.width || height != fit.height) {
+    fit.width = width;
+    fit.height = height;
+    fit.since = now;
+  }
+  if (width == state.settings.width && height == state.settings.height) {
+    fit.fitted_once = true;
+    return;
+  }
+  const bool settled =
+      seconds_between(fit.since, now) >= kResizeSettleSeconds && !ImGui::IsAnyMouseDown();
+  if (!fit.fitted_once || state.image.generation == 0 || scale_changed || settled) {
+    set_fit_size(state, width, height);
+    fit.fitted_once = true;
+  } else {
+    state.fit_pending = true;
+  }
+}
+
+// The latest request's preview levels are all on screen (or its render is past them).
+bool preview_settled(const ViewerState& state, std::uint64_t last_posted) {
+  const WorkerStatus& st = state.status;
+  if (state.fit_pending || state.request_dirty || st.request_serial < last_posted) return false;
+  if (st.phase == WorkerPhase::failed || st.generation == 0) return true;
+  return preview_complete(state);
 }
 
 void write_screenshot(GLFWwindow* window, const std::string& path) {
@@ -364,7 +423,7 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 }  // namespace
 
 int run_viewer(const Settings& settings, const ViewFlags& flags) {
-  const WindowSize window_size = parse_window_size(flags.window);
+  const WindowSize window_size = parse_window_flag(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
   check_hover_pixels(script, settings);
   if (!flags.screenshot.empty()) check_output_path("--screenshot", flags.screenshot);
@@ -395,11 +454,14 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     RenderWorker worker;
     std::uint64_t last_posted = 0;
     int script_frame = 0;
-    bool awaiting = false;
+    Await awaiting = Await::nothing;
+    int resize_width = 0, resize_height = 0;  // a scripted resize waits for the window to follow
     Clock::time_point previous_start = Clock::now();
     Clock::time_point next_frame = previous_start;
     bool first = true;
     float results_content_height = 0.0f;
+    FitTracker fit;
+    ImVec2 layout_display(0.0f, 0.0f);
 
     while (!glfwWindowShouldClose(window.get()) && !InterruptScope::flag().load()) {
       for (Clock::time_point t = Clock::now(); t < next_frame; t = Clock::now()) {
@@ -414,11 +476,16 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
 
       std::vector<std::string> screenshots;
       bool snapshot_now = false;
-      if (!awaiting) {
+      if (awaiting == Await::nothing) {
         for (const ScriptedChange& c : script) {
           if (c.frame != script_frame) continue;
           switch (apply_scripted_change(state, c)) {
             case ScriptAction::none:
+              break;
+            case ScriptAction::resize_window:
+              parse_window_size(c.value, resize_width, resize_height);
+              glfwSetWindowSize(window.get(), resize_width, resize_height);
+              awaiting = Await::resize;
               break;
             case ScriptAction::snapshot:
               state.snapshot_folder = c.value;
@@ -428,7 +495,10 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
               screenshots.push_back(c.value);
               break;
             case ScriptAction::await_idle:
-              awaiting = true;
+              awaiting = Await::idle;
+              break;
+            case ScriptAction::await_preview:
+              awaiting = Await::preview;
               break;
           }
         }
@@ -438,8 +508,16 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       update_error(state, error_clock, now, false);
       add_trade_point_when_ready(state, error_clock, now);
       if (snapshot_now) snapshots.start(make_snapshot_job(state, now));
-      if (awaiting && render_settled(state, last_posted)) awaiting = false;
-      const bool last_frame = flags.frames > 0 && !awaiting && script_frame + 1 >= flags.frames;
+      int window_width = 0, window_height = 0;
+      glfwGetWindowSize(window.get(), &window_width, &window_height);
+      if ((awaiting == Await::idle && render_settled(state, last_posted)) ||
+          (awaiting == Await::preview && preview_settled(state, last_posted)) ||
+          (awaiting == Await::resize && window_width == resize_width &&
+           window_height == resize_height)) {
+        awaiting = Await::nothing;
+      }
+      const bool last_frame =
+          flags.frames > 0 && awaiting == Await::nothing && script_frame + 1 >= flags.frames;
       const bool screenshot_now = !screenshots.empty() || (last_frame && !flags.screenshot.empty());
 
       ImGui_ImplOpenGL3_NewFrame();
@@ -448,9 +526,19 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       const Layout layout = window_layout(ImGui::GetIO().DisplaySize, results_content_height);
       state.control_rects.clear();
       draw_panel(state, snapshots, now, layout);
-      results_content_height = draw_results(state, now, layout);
+      // The results never shrink back (a row that comes and goes would move the picture's border
+      // and, at a fit resolution, restart the render); a new window size starts afresh.
+      const float content_height = draw_results(state, now, layout);
+      if (ImGui::GetIO().DisplaySize.x != layout_display.x ||
+          ImGui::GetIO().DisplaySize.y != layout_display.y) {
+        results_content_height = content_height;
+        layout_display = ImGui::GetIO().DisplaySize;
+      } else {
+        results_content_height = std::max(results_content_height, content_height);
+      }
       compose_picture(state, picture, error_clock, now, screenshot_now);
       draw_picture_window(state, picture, layout);
+      follow_image_area(state, fit, now);
       ImGui::Render();
       if (state.record_controls) {
         const std::string controls =
@@ -488,7 +576,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
                                            : 0.95 * state.ui_fps + 0.05 * 1000.0 / frame_ms;
       }
       first = false;
-      if (!awaiting) script_frame += 1;
+      if (awaiting == Await::nothing) script_frame += 1;
       if (last_frame) break;
     }
     if (state.status.phase == WorkerPhase::failed && flags.frames > 0) {

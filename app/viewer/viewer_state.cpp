@@ -16,11 +16,25 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
       s.level = model->default_level;
   }
   const bool new_scene = s.scene != before.scene || s.level != before.level;
-  const bool new_view = new_scene || s.width != before.width || s.height != before.height ||
+  const bool new_size = s.width != before.width || s.height != before.height;
+  if (new_size && s.resolution == before.resolution) s.resolution = "typed";
+  const bool new_view = new_scene || new_size || s.resolution != before.resolution ||
                         s.depth != before.depth || s.subsample != before.subsample;
   if (new_scene) state.camera.reset();
   if (new_view && state.view != ViewMode::error) state.want_reference = false;
   mark_changed(state, label);
+}
+
+void set_fit_size(ViewerState& state, int width, int height) {
+  Settings before = state.settings;
+  state.settings.width = width;
+  state.settings.height = height;
+  before.resolution = "typed";  // so that settings_changed keeps the fit resolution
+  // The window, not the user, changed the view: a reference asked for is computed again at the
+  // new size (the worker drops the old one).
+  const bool want_reference = state.want_reference;
+  settings_changed(state, before, "fit " + std::to_string(width) + "x" + std::to_string(height));
+  state.want_reference = want_reference;
 }
 
 void select_view(ViewerState& state, ViewMode mode) {

@@ -30,12 +30,18 @@ struct ViewerState {
 
   WorkerStatus status;
   DisplayImage image;
+  PreviewImage preview;  // shown where the render has not arrived yet; never saved
   DisplayImage reference;
   ErrorImage error;
   std::vector<TileRect> in_flight;
   TradePlot trade;
   renderer::HeatmapRange heatmap_range;  // of the view on screen
   double ui_fps = 0.0;
+  // The picture's area in framebuffer pixels, as the last frame laid it out (the fit resolution
+  // renders at this size), and whether a fit resize waits for the window to settle.
+  int image_area_width = 0;
+  int image_area_height = 0;
+  bool fit_pending = false;
   std::string snapshot_folder = "out";
 
   // Scripted mode ignores the real mouse over the picture (tests must not depend on where the
@@ -51,8 +57,13 @@ struct ViewerState {
 void mark_changed(ViewerState& state, const std::string& label);
 
 // Call after editing state.settings: a new scene gets its default level, a new scene or level
-// its preset camera, and a new view drops the reference unless the error view needs it.
+// its preset camera, a typed width or height selects the typed resolution, and a new view drops
+// the reference unless the error view needs it.
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label);
+
+// The image area asks for a new render size (fit resolution): like a typed size, but the
+// resolution stays fit and a reference asked for is kept asking for (at the new size).
+void set_fit_size(ViewerState& state, int width, int height);
 
 void select_view(ViewerState& state, ViewMode mode);
 void set_camera(ViewerState& state, const renderer::Camera& camera);

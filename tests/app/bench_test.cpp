@@ -6,12 +6,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -37,13 +39,12 @@ std::string first_line(const fs::path& path) {
 class Bench : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_bench_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    temp_ = std::make_unique<levrt_test::TempDir>(
+        "levrt_bench_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
+    dir_ = temp_->path();
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override { temp_.reset(); }
+  std::unique_ptr<levrt_test::TempDir> temp_;
   fs::path dir_;
 };
 

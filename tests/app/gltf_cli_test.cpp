@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -19,14 +21,13 @@ using levrt_test::run_levrt;
 class GltfCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_gltf_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    temp_ = std::make_unique<levrt_test::TempDir>(
+        "levrt_gltf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
+    dir_ = temp_->path();
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override { temp_.reset(); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::unique_ptr<levrt_test::TempDir> temp_;
   fs::path dir_;
 };
 

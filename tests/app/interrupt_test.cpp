@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/temp_dir.h"
+
 namespace {
 namespace fs = std::filesystem;
 
@@ -76,13 +78,11 @@ int interrupt_render_after(int signal_number, std::chrono::milliseconds delay, c
 TEST(Interrupt, SignalDuringRenderLeavesNoOutput) {
   for (int sig : {SIGINT, SIGTERM}) {
     for (int delay_ms : {0, 600}) {  // as the scene build starts, during the render
-      const fs::path dir = fs::temp_directory_path() / ("levrt_interrupt_" + std::to_string(sig) + "_" + std::to_string(delay_ms));
-      fs::remove_all(dir);
-      fs::create_directories(dir);
+      const levrt_test::TempDir temp("levrt_interrupt_" + std::to_string(sig) + "_" + std::to_string(delay_ms) + "_");
+      const fs::path& dir = temp.path();
       EXPECT_EQ(interrupt_render_after(sig, std::chrono::milliseconds(delay_ms), dir), 130)
           << "signal " << sig << " after " << delay_ms << " ms";
       EXPECT_TRUE(fs::is_empty(dir)) << "signal " << sig << " after " << delay_ms << " ms";
-      fs::remove_all(dir);
     }
   }
 }
@@ -91,8 +91,8 @@ TEST(Interrupt, SignalDuringRenderLeavesNoOutput) {
 // tree of 2^64 rays per pixel. Before the cancel was read inside tiles and the recursion, such a
 // render ignored SIGINT and SIGTERM for minutes.
 TEST(Interrupt, SignalDuringADepthBombExitsPromptly) {
-  const fs::path dir = fs::temp_directory_path() / "levrt_interrupt_depth_bomb";
-  fs::remove_all(dir);
+  const levrt_test::TempDir temp("levrt_interrupt_depth_bomb_");
+  const fs::path& dir = temp.path();
   fs::create_directories(dir / "out");
   const fs::path scene = dir / "bomb.json";
   std::ofstream(scene) << R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0]},
@@ -108,12 +108,28 @@ TEST(Interrupt, SignalDuringADepthBombExitsPromptly) {
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir / "out")) << "signal " << sig;
   }
-  fs::remove_all(dir);
+}
+
+// A million lights (building level 10) at tolerance 0: lev's walk returns every light and AST ranks
+// and shadow-tests every light, so one shading point takes up to a second. The cancel is read
+// inside those light loops (every kCancelCheckLights lights), so the run stops promptly.
+TEST(Interrupt, SignalDuringAMillionLightRenderExitsPromptly) {
+  const levrt_test::TempDir temp("levrt_interrupt_million_lights_");
+  const fs::path& dir = temp.path();
+  for (const char* method : {"lev", "ast"}) {
+    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", "building", "--lights", "1048576", "--method",
+                               method, "--tolerance", "0", "--width", "320", "--height", "240", "--out",
+                               (dir / "i.png").string()},
+                              SIGINT, std::chrono::seconds(1), std::chrono::seconds(2)),
+              130)
+        << method;
+    EXPECT_TRUE(fs::is_empty(dir)) << method;
+  }
 }
 
 TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
-  const fs::path dir = fs::temp_directory_path() / "levrt_interrupt_bench";
-  fs::remove_all(dir);
+  const levrt_test::TempDir temp("levrt_interrupt_bench_");
+  const fs::path& dir = temp.path();
   fs::create_directories(dir / "kept");
   { std::ofstream(dir / "kept" / "results.md") << "an earlier run"; }
   for (int delay_ms : {0, 1500}) {  // while the scenes are planned, and during the renders
@@ -133,7 +149,6 @@ TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
     std::getline(in, text);
     EXPECT_EQ(text, "an earlier run");
   }
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -46,17 +46,17 @@ std::vector<glm::vec3> probe_points() {
 
 TEST(LightHierarchy, InstancedWalkMatchesFlattenedBruteForce) {
   const lev::LightTree tree = instanced_tree(3);
-  lev::LightHierarchy h = lev::build_hierarchy(tree, 0.01f);
+  lev::LightHierarchy h = lev::build_hierarchy(tree);
   EXPECT_EQ(h.light_count, 2u * 64u);
   const std::vector<lev::Light> flat = lev::flatten_lights(h);
   ASSERT_EQ(flat.size(), h.light_count);
   lev::WalkScratch scratch;
   for (float tau : {0.0f, 0.001f, 0.01f, 0.1f, 1.0f}) {
-    lev::refit_hierarchy(h, tau);
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
     for (const glm::vec3& p : probe_points()) {
       std::vector<lev::Light> found;
       lev::WalkCounters counters;
-      lev::find_important_lights(h, p, scratch, found, counters);
+      lev::find_important_lights(h, volumes, tau, p, scratch, found, counters);
       const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
       ASSERT_EQ(found.size(), expected.size()) << "tau " << tau;
       for (std::size_t i = 0; i < found.size(); ++i) {
@@ -70,14 +70,15 @@ TEST(LightHierarchy, InstancedWalkMatchesFlattenedBruteForce) {
 }
 
 TEST(LightHierarchy, ToleranceZeroReturnsEveryLight) {
-  lev::LightHierarchy h = lev::build_hierarchy(instanced_tree(2), 0.0f);
+  lev::LightHierarchy h = lev::build_hierarchy(instanced_tree(2));
   const std::vector<lev::Light> flat = lev::flatten_lights(h);
   lev::WalkScratch scratch;
   std::vector<lev::Light> found;
   lev::WalkCounters counters;
   // Point lights light every point; spots only inside their cones. At tolerance 0 the walk must
   // return every light with non-zero irradiance, so all the point lights at least.
-  lev::find_important_lights(h, {5.0f, 5.0f, 1.0f}, scratch, found, counters);
+  lev::find_important_lights(h, lev::fit_extent_volumes(h, 0.0f), 0.0f, {5.0f, 5.0f, 1.0f}, scratch, found,
+                             counters);
   std::size_t point_lights = 0;
   for (const lev::Light& l : flat) point_lights += l.kind == lev::LightKind::point;
   std::size_t found_points = 0;
@@ -91,7 +92,7 @@ TEST(LightHierarchy, ScaledInstanceShinesWithScaleSquared) {
   tree.masters.push_back(lev::light_node(lev::make_point_light({1, 0, 0}, {2, 2, 2})));
   tree.root = lev::affine_node(lev::compose(lev::make_translation({5, 0, 0}), lev::make_scale(3.0f)),
                                lev::instance_node(0));
-  const lev::LightHierarchy h = lev::build_hierarchy(tree, 0.1f);
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
   const std::vector<lev::Light> flat = lev::flatten_lights(h);
   ASSERT_EQ(flat.size(), 1u);
   EXPECT_EQ(flat[0].position, glm::vec3(8, 0, 0));
@@ -99,16 +100,16 @@ TEST(LightHierarchy, ScaledInstanceShinesWithScaleSquared) {
 }
 
 TEST(LightHierarchy, RefitKeepsStructureAndComputesMastersOnce) {
-  lev::LightHierarchy h = lev::build_hierarchy(instanced_tree(4), 0.01f);
+  const lev::LightHierarchy h = lev::build_hierarchy(instanced_tree(4));
   const std::size_t nodes = h.nodes.size(), bytes = lev::hierarchy_bytes(h);
-  const lev::Bounds before = h.nodes[h.master_ranges[0].begin].volume;
-  lev::refit_hierarchy(h, 0.001f);
-  EXPECT_EQ(h.nodes.size(), nodes);
+  const lev::Bounds before = lev::fit_extent_volumes(h, 0.01f).nodes[h.master_ranges[0].begin].volume;
+  const lev::ExtentVolumes refit = lev::fit_extent_volumes(h, 0.001f);
+  EXPECT_EQ(refit.nodes.size(), nodes);
   EXPECT_EQ(lev::hierarchy_bytes(h), bytes);
-  const lev::Bounds after = h.nodes[h.master_ranges[0].begin].volume;
+  const lev::Bounds after = refit.nodes[h.master_ranges[0].begin].volume;
   EXPECT_LT(after.lo.x, before.lo.x);  // larger tolerance volume for a smaller tolerance
   // One master per level: the node count is independent of the 4^levels instances.
-  const lev::LightHierarchy bigger = lev::build_hierarchy(instanced_tree(8), 0.01f);
+  const lev::LightHierarchy bigger = lev::build_hierarchy(instanced_tree(8));
   EXPECT_EQ(bigger.light_count, 2u * 65536u);
   EXPECT_LT(bigger.nodes.size(), 100u);
 }
@@ -116,17 +117,17 @@ TEST(LightHierarchy, RefitKeepsStructureAndComputesMastersOnce) {
 TEST(LightHierarchy, RejectsMalformedTrees) {
   lev::LightTree forward;
   forward.masters.push_back(lev::instance_node(0));  // instances itself
-  EXPECT_THROW(lev::build_hierarchy(forward, 0.01f), std::invalid_argument);
+  EXPECT_THROW(lev::build_hierarchy(forward), std::invalid_argument);
   lev::LightTree bad_scale;
   lev::Similarity xf;
   xf.scale = 0.0f;
   bad_scale.root = lev::affine_node(xf, lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1})));
-  EXPECT_THROW(lev::build_hierarchy(bad_scale, 0.01f), std::invalid_argument);
+  EXPECT_THROW(lev::build_hierarchy(bad_scale), std::invalid_argument);
   lev::LightTree deep;
   lev::LightTreeNode n = lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1}));
   for (int i = 0; i < lev::kMaxTreeDepth + 5; ++i) n = lev::extent_volume_node(std::move(n));
   deep.root = std::move(n);
-  EXPECT_THROW(lev::build_hierarchy(deep, 0.01f), std::invalid_argument);
+  EXPECT_THROW(lev::build_hierarchy(deep), std::invalid_argument);
 }
 
 TEST(LightBvh, FlatListGetsAHierarchyThatCullsExactly) {
@@ -147,18 +148,18 @@ TEST(LightBvh, FlatListGetsAHierarchyThatCullsExactly) {
   }
   lev::LightTree tree;
   tree.root = lev::build_light_bvh(lights);
-  lev::LightHierarchy h = lev::build_hierarchy(tree, 0.01f);
+  lev::LightHierarchy h = lev::build_hierarchy(tree);
   EXPECT_EQ(h.light_count, lights.size());
   const std::vector<lev::Light> flat = lev::flatten_lights(h);
   lev::WalkScratch scratch;
   for (float tau : {0.001f, 0.01f, 0.1f}) {
-    lev::refit_hierarchy(h, tau);
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
     std::uint64_t visited = 0;
     for (int k = 0; k < 200; ++k) {
       const glm::vec3 p(200.0f * uniform(), 200.0f * uniform(), 3.0f * uniform());
       std::vector<lev::Light> found;
       lev::WalkCounters counters;
-      lev::find_important_lights(h, p, scratch, found, counters);
+      lev::find_important_lights(h, volumes, tau, p, scratch, found, counters);
       const auto expected = lev::important_lights_brute_force(flat, p, tau);
       ASSERT_EQ(found.size(), expected.size());
       for (std::size_t i = 0; i < found.size(); ++i) ASSERT_TRUE(same_light(found[i], expected[i]));

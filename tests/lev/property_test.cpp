@@ -19,26 +19,29 @@ namespace {
 using lev_test::Random;
 using lev_test::random_instanced_tree;
 
+// The brute force runs over the tree's own flattening (flatten_light_tree), which shares no code
+// with build_hierarchy or the walk: the walk is checked against a second implementation.
 TEST(Property, WalkNeverMissesAndNeverAddsALight) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     Random r(seed);
-    lev::LightHierarchy h = lev::build_hierarchy(random_instanced_tree(r), 0.01f);
-    const std::vector<lev::Light> flat = lev::flatten_lights(h);
+    const lev::LightTree tree = random_instanced_tree(r);
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
     ASSERT_EQ(flat.size(), h.light_count);
     lev::LightTree twin;
     twin.root = lev::build_light_bvh(flat);
-    lev::LightHierarchy flattened = lev::build_hierarchy(twin, 0.01f);
+    const lev::LightHierarchy flattened = lev::build_hierarchy(twin);
     lev::WalkScratch scratch;
     for (int t = 0; t < 6; ++t) {
       const float tau = t == 0 ? 0.0f : std::pow(10.0f, r.uniform(-5.0f, 1.0f));
-      lev::refit_hierarchy(h, tau);
-      lev::refit_hierarchy(flattened, tau);
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+      const lev::ExtentVolumes flattened_volumes = lev::fit_extent_volumes(flattened, tau);
       for (int k = 0; k < 40; ++k) {
         const glm::vec3 p(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
         std::vector<lev::Light> found, found_flat;
         lev::WalkCounters c1, c2;
-        lev::find_important_lights(h, p, scratch, found, c1);
-        lev::find_important_lights(flattened, p, scratch, found_flat, c2);
+        lev::find_important_lights(h, volumes, tau, p, scratch, found, c1);
+        lev::find_important_lights(flattened, flattened_volumes, tau, p, scratch, found_flat, c2);
         const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
         lev_test::expect_same_lights(found, expected, "seed " + std::to_string(seed) + " tau " + std::to_string(tau));
         if (HasFatalFailure()) return;
@@ -48,16 +51,30 @@ TEST(Property, WalkNeverMissesAndNeverAddsALight) {
   }
 }
 
+// rt and ast shade the hierarchy's flattening (flatten_lights, the walk without culling): it is the
+// tree's plain recursion, light for light and float for float.
+TEST(Property, FlattenedHierarchyEqualsThePlainRecursion) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    Random r(seed);
+    const lev::LightTree tree = random_instanced_tree(r);
+    const std::vector<lev::Light> plain = lev::flatten_light_tree(tree);
+    ASSERT_FALSE(plain.empty());
+    lev_test::expect_same_lights(lev::flatten_lights(lev::build_hierarchy(tree)), plain, "seed " + std::to_string(seed));
+    if (HasFatalFailure()) return;
+  }
+}
+
 TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
   Random r(99);
-  lev::LightHierarchy h = lev::build_hierarchy(random_instanced_tree(r), 0.01f);
-  const std::vector<lev::Light> flat = lev::flatten_lights(h);
+  const lev::LightTree tree = random_instanced_tree(r);
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
   lev::WalkScratch scratch;
   const float tiny = std::numeric_limits<float>::denorm_min();
   for (float tau : {tiny, std::numeric_limits<float>::min(), 1e-30f, 1e30f, std::numeric_limits<float>::max(),
                     std::numeric_limits<float>::infinity()}) {
-    lev::refit_hierarchy(h, tau);
-    for (const lev::HierarchyNode& node : h.nodes) {
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+    for (const lev::FittedNode& node : volumes.nodes) {
       for (int a = 0; a < 3; ++a) {
         ASSERT_FALSE(std::isnan(node.volume.lo[a]) || std::isnan(node.volume.hi[a])) << "tau " << tau;
       }
@@ -66,7 +83,7 @@ TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
       const glm::vec3 p(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
       std::vector<lev::Light> found;
       lev::WalkCounters c;
-      lev::find_important_lights(h, p, scratch, found, c);
+      lev::find_important_lights(h, volumes, tau, p, scratch, found, c);
       EXPECT_EQ(found.size(), lev::important_lights_brute_force(flat, p, tau).size()) << "tau " << tau;
       if (tau >= 1e30f) {
         EXPECT_TRUE(found.empty());

@@ -2,7 +2,7 @@
 // irradiance is within a hair of the tolerance, or within a hair of a spot's cone, seen through
 // random nested rotations, scales of 2^-2 to 2^2 and translations, and lights that sit directly
 // in a union (tested inline, not as frames). The walk must select exactly what the brute-force
-// test selects over the flattened lights, in the same order and with the same floats.
+// test selects over the lights of flatten_light_tree, in the same order and with the same floats.
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -57,30 +57,32 @@ std::vector<glm::vec3> points_near_the_edge(Random& r, const lev::Light& light, 
   return points;
 }
 
-void expect_walk_equals_brute_force(const lev::LightHierarchy& h, const std::vector<lev::Light>& flat,
-                                    const glm::vec3& p, float tolerance, lev::WalkScratch& scratch,
-                                    std::uint64_t seed, std::size_t& kept) {
+void expect_walk_equals_brute_force(const lev::LightHierarchy& h, const lev::ExtentVolumes& volumes,
+                                    const std::vector<lev::Light>& flat, const glm::vec3& p, float tolerance,
+                                    lev::WalkScratch& scratch, std::uint64_t seed, std::size_t& kept) {
   std::vector<lev::Light> found;
   lev::WalkCounters counters;
-  lev::find_important_lights(h, p, scratch, found, counters);
+  lev::find_important_lights(h, volumes, tolerance, p, scratch, found, counters);
   const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tolerance);
   lev_test::expect_same_lights(found, expected,
                                "seed " + std::to_string(seed) + " tolerance " + std::to_string(tolerance));
   kept += found.size();
 }
 
-// Refits h for each tolerance and compares the walk with the brute force at points straddling
-// the edge of every light's extent volume; counts the points and the lights kept.
-void check_every_edge(lev::LightHierarchy& h, std::initializer_list<float> tolerances, Random& r,
+// Builds the tree's hierarchy, fits its volumes for each tolerance and compares the walk with the
+// brute force (over the tree's plain flattening) at points straddling the edge of every light's
+// extent volume; counts the points and the lights kept.
+void check_every_edge(const lev::LightTree& tree, std::initializer_list<float> tolerances, Random& r,
                       std::uint64_t seed, std::size_t& points, std::size_t& kept) {
-  const std::vector<lev::Light> flat = lev::flatten_lights(h);
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
   lev::WalkScratch scratch;
   for (float tolerance : tolerances) {
-    lev::refit_hierarchy(h, tolerance);
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
     for (const lev::Light& light : flat) {
       for (const glm::vec3& p : points_near_the_edge(r, light, tolerance)) {
         ++points;
-        expect_walk_equals_brute_force(h, flat, p, tolerance, scratch, seed, kept);
+        expect_walk_equals_brute_force(h, volumes, flat, p, tolerance, scratch, seed, kept);
         if (::testing::Test::HasFatalFailure()) return;
       }
     }
@@ -91,8 +93,8 @@ TEST(WalkEdges, MatchesTheBruteForceAtTheVolumeEdges) {
   std::size_t points = 0, kept = 0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     Random r(seed);
-    lev::LightHierarchy h = lev::build_hierarchy(lev_test::random_instanced_tree(r), 0.01f);
-    check_every_edge(h, {1e-3f, 0.01f, 1.0f, 100.0f}, r, seed, points, kept);
+    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    check_every_edge(tree, {1e-3f, 0.01f, 1.0f, 100.0f}, r, seed, points, kept);
     if (HasFatalFailure()) return;
   }
   // The points straddle the edges: many lights pass there and many do not.
@@ -118,8 +120,7 @@ TEST(WalkEdges, MatchesTheBruteForceThroughDeepNesting) {
     }
     lev::LightTree tree;
     tree.root = lev::union_node(std::move(children));
-    lev::LightHierarchy h = lev::build_hierarchy(tree, 0.01f);
-    check_every_edge(h, {1e-2f, 3.0f}, r, seed, points, kept);
+    check_every_edge(tree, {1e-2f, 3.0f}, r, seed, points, kept);
     if (HasFatalFailure()) return;
   }
   EXPECT_GT(points, 500u);

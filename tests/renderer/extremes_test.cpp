@@ -57,7 +57,7 @@ renderer::Scene extreme_scene() {
     }
   }
   scene.light_tree.root = lev::union_node(std::move(lights));
-  scene.lights = lev::build_hierarchy(scene.light_tree, 0.01f);
+  scene.lights = lev::build_hierarchy(scene.light_tree);
   scene.camera.position = {0, -18, 9};
   scene.camera.target = {0, 0, 0};
   return scene;

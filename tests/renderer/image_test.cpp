@@ -6,6 +6,7 @@
 #include "renderer/heatmap.h"
 #include "renderer/image_io.h"
 #include "renderer/pixel_error.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -35,9 +36,8 @@ TEST(Heatmap, LogScaleAndViridisEnds) {
 }
 
 TEST(ImageIo, WritesCompleteFileAndLeavesNoTemporary) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "levrt_image_io_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const levrt_test::TempDir temp("levrt_image_io_test_");
+  const std::filesystem::path& dir = temp.path();
   const std::string path = (dir / "a.png").string();
   renderer::write_png_rgb8(path, 2, 1, {255, 0, 0, 0, 255, 0});
   EXPECT_GT(std::filesystem::file_size(path), 8u);
@@ -47,7 +47,6 @@ TEST(ImageIo, WritesCompleteFileAndLeavesNoTemporary) {
   EXPECT_THROW(renderer::write_png_rgb8((dir / "missing" / "b.png").string(), 2, 1, {0, 0, 0, 0, 0, 0}),
                std::runtime_error);
   EXPECT_THROW(renderer::write_png_rgb8(path, 3, 1, {0, 0, 0}), std::invalid_argument);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <cstring>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -74,6 +76,51 @@ TEST(Render, SameImageWhateverTheThreadCount) {
   }
 }
 
+// The scene is read-only to a render: states with different methods and tolerances render it
+// at the same time (the viewer's main render and its rt reference do), each getting the image it
+// gets alone. Were a state to refit the shared hierarchy, the others would render with its
+// volumes (and ThreadSanitizer, which runs this test, would see the writes).
+TEST(Render, StatesWithDifferentTolerancesAndMethodsRenderOneSceneConcurrently) {
+  const TestScene t(3);
+  struct Job {
+    lev::Method method;
+    float tolerance;
+  };
+  const std::vector<Job> jobs = {
+      {lev::Method::lev, 0.002f}, {lev::Method::lev, 0.2f}, {lev::Method::ast, 0.05f}, {lev::Method::rt, 0.0f}};
+  auto settings_for = [](const Job& job) {
+    renderer::RenderSettings rs;
+    rs.width = 48;
+    rs.height = 36;
+    rs.tile_size = 8;
+    rs.threads = 2;
+    rs.method = job.method;
+    rs.tolerance = job.tolerance;
+    return rs;
+  };
+  std::vector<renderer::Framebuffer> alone;
+  for (const Job& job : jobs) {
+    auto state = renderer::make_render_state(t.scene, *t.rays, settings_for(job));
+    ASSERT_TRUE(renderer::render_pass(*state));
+    alone.push_back(renderer::render_framebuffer(*state));
+  }
+  std::vector<renderer::RenderStatePtr> states;
+  for (const Job& job : jobs) states.push_back(renderer::make_render_state(t.scene, *t.rays, settings_for(job)));
+  std::vector<std::thread> threads;
+  std::vector<int> complete(jobs.size(), 0);
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    threads.emplace_back([&, i] { complete[i] = renderer::render_pass(*states[i]) ? 1 : 0; });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    EXPECT_EQ(complete[i], 1);
+    EXPECT_TRUE(bitwise_equal(renderer::render_framebuffer(*states[i]), alone[i]))
+        << lev::method_info(jobs[i].method).name << " at " << jobs[i].tolerance;
+  }
+  // The two lev states really differ: each walked its own volumes.
+  EXPECT_GT(renderer::sum_framebuffer(alone[0]).nodes_visited, renderer::sum_framebuffer(alone[1]).nodes_visited);
+}
+
 TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
   TestScene t(2);
   renderer::RenderSettings rs;
@@ -93,6 +140,52 @@ TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
   for (int tile = 0; tile < renderer::render_tile_count(*state); ++tile) {
     EXPECT_EQ(renderer::render_tile_status(*state, tile), renderer::TileStatus::done);
   }
+}
+
+TEST(Render, PreviewPassesSamplePixelCentresEveryStepAndLeaveTheRenderAlone) {
+  TestScene t(2);
+  renderer::RenderSettings rs;
+  rs.width = 37;  // not a multiple of any step or of the tile size
+  rs.height = 29;
+  rs.tile_size = 8;
+  rs.method = lev::Method::ast;  // carries statistics from pass to pass
+  auto state = renderer::make_render_state(t.scene, *t.rays, rs);
+  const auto plain = renderer::make_render_state(t.scene, *t.rays, rs);
+  EXPECT_TRUE(renderer::render_pass(*plain));
+  // A cancelled preview adds nothing; a step below 1 is refused.
+  std::atomic<bool> cancel{true};
+  EXPECT_FALSE(renderer::render_pass(*state, &cancel, nullptr, 4));
+  for (std::uint32_t s : renderer::render_preview(*state).samples) EXPECT_EQ(s, 0u);
+  EXPECT_THROW(renderer::render_pass(*state, nullptr, nullptr, 0), std::invalid_argument);
+  for (int step : {8, 4, 2}) {
+    ASSERT_TRUE(renderer::render_pass(*state, nullptr, nullptr, step));
+    const renderer::Framebuffer& preview = renderer::render_preview(*state);
+    ASSERT_EQ(preview.width, (rs.width + step - 1) / step);
+    ASSERT_EQ(preview.height, (rs.height + step - 1) / step);
+    const renderer::Framebuffer& pass0 = renderer::render_framebuffer(*plain);
+    for (int py = 0; py < preview.height; ++py) {
+      for (int px = 0; px < preview.width; ++px) {
+        const std::size_t p = static_cast<std::size_t>(py * preview.width + px);
+        const std::size_t i = static_cast<std::size_t>(py * step * rs.width + px * step);
+        // The preview sample is pass 0's sample of the block's corner pixel.
+        ASSERT_EQ(preview.samples[p], 1u);
+        ASSERT_EQ(preview.radiance_sum[p], pass0.radiance_sum[i]) << step << " " << px << "," << py;
+        ASSERT_EQ(preview.lights_tested[p], pass0.lights_tested[i]);
+      }
+    }
+  }
+  // Nothing of the previews is in the render: no sample, no pass, no time, and the passes that
+  // follow equal those of a state that never previewed.
+  EXPECT_EQ(renderer::render_passes_done(*state), 0);
+  EXPECT_EQ(renderer::render_seconds(*state), 0.0);
+  for (std::uint32_t s : renderer::render_framebuffer(*state).samples) ASSERT_EQ(s, 0u);
+  EXPECT_TRUE(renderer::render_pass(*state));
+  EXPECT_TRUE(renderer::render_pass(*state));
+  EXPECT_TRUE(renderer::render_pass(*plain));
+  EXPECT_TRUE(
+      bitwise_equal(renderer::render_framebuffer(*state), renderer::render_framebuffer(*plain)));
+  EXPECT_EQ(renderer::render_framebuffer(*state).lights_tested,
+            renderer::render_framebuffer(*plain).lights_tested);
 }
 
 TEST(Render, HugeToleranceLeavesOnlyAmbient) {

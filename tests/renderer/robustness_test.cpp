@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lev/selector_ast.h"
 #include "renderer/direction.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
@@ -30,17 +31,21 @@ std::string error_of(const std::string& text) {
 }
 
 // A floor, a box and a light; `camera` and `box` are JSON fragments.
-std::string scene_text(const std::string& camera, const std::string& material, const std::string& box) {
-  return R"({"levrt_scene": 1, "camera": )" + camera + R"(, "materials": [{"name": "m", "kd": 0.5}, )" + material +
+std::string scene_text(const std::string& camera, const std::string& material,
+                       const std::string& box) {
+  return R"({"levrt_scene": 1, "camera": )" + camera +
+         R"(, "materials": [{"name": "m", "kd": 0.5}, )" + material +
          R"(], "root": {"type": "union", "children": [
            {"type": "quad", "material": "m", "corner": [-5, -5, 0], "edge_u": [10, 0, 0], "edge_v": [0, 10, 0]},
-           )" + box + R"(,
+           )" +
+         box + R"(,
            {"type": "affine", "translate": [1, -2, 4], "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
 }
 
 const std::string kCamera = R"({"position": [0, -10, 5], "target": [0, 0, 0]})";
 const std::string kMirror = R"({"name": "mirror", "kd": 0.2, "kr": 0.8})";
-const std::string kBox = R"({"type": "box", "material": "mirror", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
+const std::string kBox =
+    R"({"type": "box", "material": "mirror", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
 
 struct Rendered {
   bool finite = true;
@@ -69,9 +74,9 @@ Rendered render_text(const std::string& text, int depth = 5) {
 
 TEST(Robustness, TinyCameraUpRendersFinitePixels) {
   for (const char* up : {"1e-19", "1e-30", "1e-37"}) {
-    const Rendered r = render_text(
-        scene_text(R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, )" + std::string(up) + "]}",
-                   kMirror, kBox));
+    const Rendered r = render_text(scene_text(
+        R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, )" + std::string(up) + "]}",
+        kMirror, kBox));
     EXPECT_TRUE(r.finite) << up;
     EXPECT_EQ(r.samples, 2u * 48u * 36u) << up;
     EXPECT_GT(r.shading_points, 0u) << up;
@@ -79,15 +84,16 @@ TEST(Robustness, TinyCameraUpRendersFinitePixels) {
 }
 
 TEST(Robustness, CameraTinyDistanceFromItsTargetRendersFinitePixels) {
-  const Rendered r = render_text(scene_text(R"({"position": [0, -1e-20, 1e-20], "target": [0, 0, 0]})", kMirror, kBox));
+  const Rendered r = render_text(
+      scene_text(R"({"position": [0, -1e-20, 1e-20], "target": [0, 0, 0]})", kMirror, kBox));
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.shading_points, 0u);
 }
 
 // What flushes to zero in the render mode is refused with one line naming the field.
 TEST(Robustness, CameraDegenerateInTheRenderFloatModeIsRefused) {
-  const std::string up = error_of(scene_text(R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, 1e-40]})",
-                                             kMirror, kBox));
+  const std::string up = error_of(scene_text(
+      R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, 1e-40]})", kMirror, kBox));
   EXPECT_EQ(up.rfind("test.json: /camera/up: ", 0), 0u) << up;
   const std::string target =
       error_of(scene_text(R"({"position": [0, 0, 3], "target": [1e-40, 0, 3]})", kMirror, kBox));
@@ -107,13 +113,15 @@ TEST(Robustness, TinyReflectiveBoxRendersFinitePixels) {
 
 TEST(Robustness, ExtremeRefractionIndexIsRefusedAndTheLimitRendersFinitePixels) {
   const std::string glass = R"({"name": "glass", "kd": 0.1, "kt": 0.9, "ior": IOR})";
-  const std::string box = R"({"type": "box", "material": "glass", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
+  const std::string box =
+      R"({"type": "box", "material": "glass", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
   const std::string head_on = R"({"position": [0, -10, 1], "target": [0, 0, 1]})";
   for (const char* ior : {"1e-30", "0.0099", "100.5"}) {
     std::string material = glass;
     material.replace(material.find("IOR"), 3, ior);
     const std::string message = error_of(scene_text(head_on, material, box));
-    EXPECT_EQ(message.rfind("test.json: /materials/1/ior: must be in [0.01, 100]", 0), 0u) << message;
+    EXPECT_EQ(message.rfind("test.json: /materials/1/ior: must be in [0.01, 100]", 0), 0u)
+        << message;
   }
   for (const char* ior : {"0.01", "100"}) {
     std::string material = glass;
@@ -153,7 +161,8 @@ bool pass_cancelled_mid_way(renderer::RenderState& state) {
 TEST(Robustness, DepthBombCancelsPromptlyAndLeavesNoPartialTile) {
   const std::string glass = R"({"name": "bomb", "kd": 0.1, "kr": 1, "kt": 1, "ior": 1.5})";
   renderer::Scene scene = scenes::instantiate_scene(scenes::parse_scene_json(
-      scene_text(kCamera, glass, R"({"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]})"),
+      scene_text(kCamera, glass,
+                 R"({"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]})"),
       "test.json"));
   const renderer::RayScene rays(scene.geometry);
   renderer::RenderSettings rs;
@@ -183,6 +192,54 @@ TEST(Robustness, RtOverMillionsOfLightsCancelsPromptly) {
   rs.method = lev::Method::rt;
   auto state = renderer::make_render_state(scene, rays, rs);
   EXPECT_TRUE(pass_cancelled_mid_way(*state));
+}
+
+// A shading point every light reaches unoccluded, counting how often the selector asks about one.
+class CountingPoint final : public lev::ShadingPoint {
+ public:
+  explicit CountingPoint(const glm::vec3& position) : position_(position) {}
+  glm::vec3 position() const override { return position_; }
+  glm::vec3 unshadowed_radiance(const lev::Light&) const override {
+    ++questions_;
+    return glm::vec3(1.0f);
+  }
+  bool visible(const lev::Light&) override {
+    ++questions_;
+    return true;
+  }
+  std::uint64_t questions() const { return questions_; }
+
+ private:
+  glm::vec3 position_;
+  mutable std::uint64_t questions_ = 0;
+};
+
+// AST ranks every light in front of a point, then shadow-tests them largest first: over the
+// building's million lights at a low tolerance one point takes over a second. Once the cancel is
+// raised the selector must stop within kCancelCheckLights lights of each loop; before, it went
+// through every light (a SIGINT waited 1.3 s at tolerance 0).
+TEST(Robustness, AstOverAMillionLightsStopsWithinItsFirstLightsOnceCancelled) {
+  const scenes::SceneModel* building = scenes::find_scene_model("building");
+  ASSERT_NE(building, nullptr);
+  const renderer::Scene scene = scenes::instantiate_scene(building->describe(building->max_level));
+  const lev::AstSelector ast(scene.lights, renderer::RenderSettings{}.tolerance);
+  const std::atomic<bool> cancel{true};
+  lev::SelectorScratch scratch;
+  scratch.cancel = &cancel;
+  CountingPoint point(scene.camera.target);
+  lev::SelectionCounters counters;
+  ast.direct_radiance(point, scratch, counters);
+  EXPECT_LT(point.questions(), lev::kCancelCheckLights);
+  EXPECT_LT(counters.lights_tested, lev::kCancelCheckLights);
+
+  // Not cancelled, the same point is asked about (nearly) every light: the bound above is the
+  // cancel's doing.
+  const std::atomic<bool> running{false};
+  scratch.cancel = &running;
+  CountingPoint uncancelled(scene.camera.target);
+  lev::SelectionCounters all;
+  ast.direct_radiance(uncancelled, scratch, all);
+  EXPECT_GT(uncancelled.questions(), 100 * lev::kCancelCheckLights);
 }
 
 }  // namespace

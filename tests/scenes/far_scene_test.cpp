@@ -123,6 +123,11 @@ TEST(FarScene, ScaledToOneMillionthMatchesTheOrigin) { expect_same_picture(scale
 
 TEST(FarScene, ScaledByTenThousandMatchesTheOrigin) { expect_same_picture(scaled(1e4f), "scaled by 1e4"); }
 
+// The largest whole-scene scale the reader lets this scene have: its camera (18 by 9 units from
+// the target at the origin) then stands 9e5 away, inside the 1e6 coordinate limit; scaled by 1e6
+// it would stand beyond it and be refused. The scene spans 1e6.
+TEST(FarScene, ScaledByFiftyThousandMatchesTheOrigin) { expect_same_picture(scaled(5e4f), "scaled by 5e4"); }
+
 // A floor quad lit from above and seen at 45 degrees; the quad's edges are `edge` units under an
 // affine scale of `scale` (the camera and light are where the unscaled floor has them).
 scenes::SceneDescription floor_scene(float edge, float scale) {

@@ -34,7 +34,7 @@ TEST(HallWalk, ReturnsExactlyTheImportantLightsAroundTheRig) {
     renderer::Scene scene = scenes::build_hall(level);
     const std::vector<lev::Light> all = lev::flatten_lights(scene.lights);
     for (float tolerance : {0.001f, 0.01f, 0.1f}) {
-      lev::refit_hierarchy(scene.lights, tolerance);
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(scene.lights, tolerance);
       lev::WalkScratch scratch;
       for (int k = 0; k < 400; ++k) {
         // Most points in the slab of the rig, where the spots' volumes crowd, the rest anywhere.
@@ -43,7 +43,7 @@ TEST(HallWalk, ReturnsExactlyTheImportantLightsAroundTheRig) {
         const glm::vec3 p(32.0f * uniform() - 16.0f, 39.0f * uniform() - 22.0f, z);
         std::vector<lev::Light> walked;
         lev::WalkCounters counters;
-        lev::find_important_lights(scene.lights, p, scratch, walked, counters);
+        lev::find_important_lights(scene.lights, volumes, tolerance, p, scratch, walked, counters);
         ASSERT_TRUE(same_lights(walked, lev::important_lights_brute_force(all, p, tolerance)))
             << "level " << level << " tolerance " << tolerance << " point " << p.x << " " << p.y
             << " " << p.z;
@@ -54,13 +54,13 @@ TEST(HallWalk, ReturnsExactlyTheImportantLightsAroundTheRig) {
 
 TEST(HallWalk, StageBelowTheReachOfWeakLightsCostsAFewBoxTests) {
   renderer::Scene scene = scenes::build_hall(7);
-  lev::refit_hierarchy(scene.lights, 0.01f);
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(scene.lights, 0.01f);
   lev::WalkScratch scratch;
   for (const glm::vec3 p :
        {glm::vec3(0.0f, 5.0f, 0.8f), glm::vec3(-4.0f, 3.0f, 0.8f), glm::vec3(3.0f, 8.0f, 0.8f)}) {
     std::vector<lev::Light> walked;
     lev::WalkCounters counters;
-    lev::find_important_lights(scene.lights, p, scratch, walked, counters);
+    lev::find_important_lights(scene.lights, volumes, 0.01f, p, scratch, walked, counters);
     EXPECT_TRUE(walked.empty());
     EXPECT_LE(counters.nodes_visited, 4u) << "the four quadrants of the rig";
   }

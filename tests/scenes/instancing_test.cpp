@@ -30,14 +30,14 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
     const std::vector<lev::Light> flat = lev::flatten_lights(scene.lights);
     lev::LightTree flat_tree;
     flat_tree.root = lev::build_light_bvh(flat);
-    lev::LightHierarchy bvh = lev::build_hierarchy(flat_tree, 0.01f);
+    lev::LightHierarchy bvh = lev::build_hierarchy(flat_tree);
     EXPECT_EQ(bvh.light_count, scene.lights.light_count) << model.name;
     EXPECT_GT(lev::hierarchy_bytes(bvh), lev::hierarchy_bytes(scene.lights)) << model.name;
 
     lev::WalkScratch scratch;
     for (float tau : {0.001f, 0.01f, 0.1f}) {
-      lev::refit_hierarchy(scene.lights, tau);
-      lev::refit_hierarchy(bvh, tau);
+      const lev::ExtentVolumes scene_volumes = lev::fit_extent_volumes(scene.lights, tau);
+      const lev::ExtentVolumes bvh_volumes = lev::fit_extent_volumes(bvh, tau);
       for (int k = 0; k < 60; ++k) {
         // Points spread over the lights' footprint, from the floor to above the lights.
         glm::vec3 lo(0.0f), hi(1.0f);
@@ -49,8 +49,8 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
         const glm::vec3 p(lo.x + u * (hi.x - lo.x), lo.y + v * (hi.y - lo.y), 0.1f + 0.05f * static_cast<float>(k % 40));
         std::vector<lev::Light> a, b;
         lev::WalkCounters ca, cb;
-        lev::find_important_lights(scene.lights, p, scratch, a, ca);
-        lev::find_important_lights(bvh, p, scratch, b, cb);
+        lev::find_important_lights(scene.lights, scene_volumes, tau, p, scratch, a, ca);
+        lev::find_important_lights(bvh, bvh_volumes, tau, p, scratch, b, cb);
         ASSERT_EQ(sorted_keys(a), sorted_keys(b)) << model.name << " tau " << tau << " point " << k;
       }
     }

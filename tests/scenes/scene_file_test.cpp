@@ -12,6 +12,7 @@
 #include "lev/important_lights.h"
 #include "lev/light_hierarchy.h"
 #include "scenes/scene_instantiation.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -233,13 +234,8 @@ TEST(SceneFile, SyntaxErrorsNameTheLineAndPath) {
 
 class SceneFileOnDisk : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "levrt_scene_file_test";
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
+  levrt_test::TempDir temp_{"levrt_scene_file_test_"};
+  const std::filesystem::path& dir_ = temp_.path();
 };
 
 TEST_F(SceneFileOnDisk, HugeFileIsRefusedBeforeReading) {
@@ -276,12 +272,12 @@ TEST(SceneFile, FlatListOfLightsGetsTheAutomaticHierarchy) {
   std::size_t volumes = 0;
   for (const lev::HierarchyNode& n : scene.lights.nodes) volumes += n.kind == lev::NodeKind::extent_volume ? 1 : 0;
   EXPECT_GT(volumes, 1000u);  // a 4-wide BVH over 4000 lights
-  lev::refit_hierarchy(scene.lights, 0.01f);
+  const lev::ExtentVolumes extent_volumes = lev::fit_extent_volumes(scene.lights, 0.01f);
   lev::WalkScratch scratch;
   std::vector<lev::Light> found;
   lev::WalkCounters counters;
   const glm::vec3 p(100.0f, 60.0f, 0.0f);
-  lev::find_important_lights(scene.lights, p, scratch, found, counters);
+  lev::find_important_lights(scene.lights, extent_volumes, 0.01f, p, scratch, found, counters);
   EXPECT_EQ(found.size(), lev::important_lights_brute_force(lev::flatten_lights(scene.lights), p, 0.01f).size());
   EXPECT_LT(counters.nodes_visited, 400u);
 }

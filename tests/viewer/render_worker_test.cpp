@@ -6,6 +6,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <set>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -23,6 +24,8 @@ struct Ui {
   RenderWorker worker;
   WorkerStatus status;
   DisplayImage image;
+  PreviewImage preview;
+  std::set<int> preview_steps;  // of every preview tile taken
   DisplayImage reference;
 
   // One UI frame: status first, then the tiles (as the viewer does).
@@ -30,6 +33,9 @@ struct Ui {
     status = worker.status();
     const TakenTiles main = worker.take_tiles();
     apply_tile_updates(image, main.updates);
+    const TakenTiles previews = worker.take_preview_tiles();
+    for (const TileUpdate& u : previews.updates) preview_steps.insert(u.preview_step);
+    apply_preview_updates(preview, image, previews.updates);
     const TakenTiles ref = worker.take_reference_tiles();
     if (reference.generation != 0 && reference.generation < ref.floor)
       clear_display_image(reference);
@@ -90,6 +96,27 @@ TEST(RenderWorker, TheUiImageEqualsADirectRenderOfTheSameSettings) {
   EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s));
   EXPECT_GT(sum_tile_totals(ui.image).shading_points, 0u);
   EXPECT_TRUE(ui.worker.tiles_in_flight().empty());
+}
+
+TEST(RenderWorker, EveryNewRenderStartsWithPreviewLevelsOverTheWholeFrame) {
+  Ui ui;
+  app::Settings s = small_settings();
+  std::uint64_t serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.status.preview_levels, 3);
+  EXPECT_EQ(ui.status.preview_levels_done, 3);
+  EXPECT_EQ(ui.preview_steps, (std::set<int>{8, 4, 2}));
+  EXPECT_EQ(ui.preview.generation, serial);
+  for (std::uint8_t step : ui.preview.step) ASSERT_EQ(step, 2);  // the finest level everywhere
+  // The render itself is untouched by them.
+  EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s));
+  // A subsample stride of 4 keeps only the coarser step.
+  ui.preview_steps.clear();
+  s.subsample = 4;
+  serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.status.preview_levels, 1);
+  EXPECT_EQ(ui.preview_steps, (std::set<int>{8}));
 }
 
 TEST(RenderWorker, ALaterRequestCancelsTheRenderInFlightAndWins) {

@@ -1,6 +1,10 @@
 // The viewer's pure parts: camera moves, scripted changes, the UI-side image and its pixel
 // errors, the trade plot's points and the frame report.
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
@@ -11,6 +15,7 @@
 #include "app/viewer/scripted_changes.h"
 #include "app/viewer/trade_plot.h"
 #include "renderer/framebuffer.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 using namespace app::viewer;
@@ -71,7 +76,8 @@ TEST(ScriptedChanges, ParseValidChanges) {
   EXPECT_EQ(a.frame, 12);
   EXPECT_EQ(parse_scripted_change("screenshot=/tmp/a@b.png@3").value, "/tmp/a@b.png");
   for (const char* ok : {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1",
-                         "await=idle@2", "snapshot=out@9", "hover=10,20@4", "width=64@1"}) {
+                         "await=idle@2", "snapshot=out@9", "hover=10,20@4", "width=64@1",
+                         "memory=report@6", "scene=maze@3"}) {
     EXPECT_NO_THROW(parse_scripted_change(ok)) << ok;
   }
 }
@@ -80,13 +86,30 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   for (const char* bad :
        {"tolerance=0.1", "tolerance@3", "=1@2", "tolerance=-1@3", "method=foo@1", "view=x@1",
         "colour=red@1", "lights=-4@1", "lights=abc@1", "reference=maybe@1", "await=soon@1",
-        "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1"}) {
+        "width=0@1", "tolerance=0.1@-1", "tolerance=0.1@x", "hover=1@2", "snapshot=@1",
+        "memory=peak@1", "scene=nowhere@1"}) {
     EXPECT_THROW(parse_scripted_change(bad), app::UsageError) << bad;
   }
 }
 
+TEST(ScriptedChanges, AScriptFileGivesItsLinesAndAMissingOneIsAUsageError) {
+  const levrt_test::TempDir temp("levrt_script_file_");
+  const std::string path = (temp.path() / "changes.txt").string();
+  std::ofstream(path) << "method=ast@1\n\nmemory=report@2\n";
+  EXPECT_EQ(read_script_file(path), (std::vector<std::string>{"method=ast@1", "memory=report@2"}));
+  EXPECT_THROW(read_script_file((temp.path() / "missing.txt").string()), app::UsageError);
+}
+
+TEST(ScriptedChanges, ResidentMemoryGrowsWithTouchedMemory) {
+  const std::uint64_t before = current_resident_bytes();
+  ASSERT_GT(before, 0u);
+  const std::vector<char> block(std::size_t{64} << 20, 1);  // 64 MiB written, so resident
+  EXPECT_GE(current_resident_bytes(), before + (std::uint64_t{60} << 20)) << int{block.back()};
+}
+
 TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
   app::Settings initial;
+  initial.resolution = "typed";
   initial.width = 64;
   initial.height = 48;
   const auto check = [&](const std::vector<std::string>& texts) {
@@ -126,6 +149,49 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
             ScriptAction::await_idle);
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("screenshot=a.png@0")),
             ScriptAction::screenshot);
+}
+
+TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
+  ViewerState s;
+  EXPECT_EQ(s.settings.resolution, "fit");
+  s.want_reference = true;
+  set_fit_size(s, 500, 300);
+  EXPECT_EQ(s.settings.resolution, "fit");
+  EXPECT_TRUE(s.want_reference);
+  EXPECT_EQ(s.settings.width, 500);
+  EXPECT_TRUE(s.request_dirty);
+  const app::Settings before = s.settings;
+  s.settings.width = 200;
+  settings_changed(s, before, "width");
+  EXPECT_EQ(s.settings.resolution, "typed");
+  // Choosing a fit scale with the size unchanged keeps it.
+  const app::Settings typed = s.settings;
+  s.settings.resolution = "fit/2";
+  settings_changed(s, typed, "resolution");
+  EXPECT_EQ(s.settings.resolution, "fit/2");
+  EXPECT_EQ(app::fit_divisor("fit/4"), 4);
+  EXPECT_EQ(app::fit_divisor("typed"), 0);
+}
+
+TEST(ScriptedChanges, HoversAreCheckedOnlyAgainstTypedSizesAndWindowSizesParse) {
+  app::Settings initial;  // fit: the size follows the window
+  EXPECT_NO_THROW(check_hover_pixels(parse_scripted_changes({"hover=900,700@3"}), initial));
+  EXPECT_THROW(
+      check_hover_pixels(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial),
+      app::UsageError);
+  EXPECT_NO_THROW(check_hover_pixels(
+      parse_scripted_changes({"width=100@1", "resolution=fit@2", "hover=900,70@3"}), initial));
+  ViewerState s;
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("window=900x700@1")),
+            ScriptAction::resize_window);
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("await=preview@1")),
+            ScriptAction::await_preview);
+  EXPECT_THROW(parse_scripted_change("window=100x100@1"), app::UsageError);
+  EXPECT_THROW(parse_scripted_change("window=big@1"), app::UsageError);
+  int w = 0, h = 0;
+  EXPECT_TRUE(parse_window_size("1024x640", w, h));
+  EXPECT_EQ(w, 1024);
+  EXPECT_EQ(h, 640);
 }
 
 TEST(ViewerState, NewSceneResetsTheCameraAndAViewChangeDropsTheReference) {
@@ -232,6 +298,58 @@ TEST(DisplayImage, ErrorAgainstTheReferenceUsesPassZero) {
   EXPECT_TRUE(pixel_info(other, e, 3, 3).error_pct.has_value());
 }
 
+// Preview tiles of a framebuffer sampled every `step` pixels (ceil(w/step) x ceil(h/step)).
+std::vector<TileUpdate> preview_tiles(const renderer::Framebuffer& preview, int step, int width,
+                                      int height, std::uint64_t generation, int tile_size) {
+  std::vector<TileUpdate> updates;
+  int tile = 0;
+  for (int y = 0; y < height; y += tile_size) {
+    for (int x = 0; x < width; x += tile_size, ++tile) {
+      updates.push_back(copy_preview_tile(
+          preview, step, width, height, generation, tile,
+          {x, y, std::min(x + tile_size, width), std::min(y + tile_size, height)}));
+    }
+  }
+  return updates;
+}
+
+TEST(DisplayImage, APreviewCoversTheFrameOnScreenButNeverTheSavedViews) {
+  const int w = 21, h = 13;  // not multiples of the step
+  DisplayImage image;
+  PreviewImage preview;
+  apply_tile_updates(image, all_tiles(test_framebuffer(w, h, 0.8f, 1), 3, 0, 8));
+  // The next render's coarse preview starts its generation: no samples, no totals.
+  const renderer::Framebuffer coarse = test_framebuffer((w + 3) / 4, (h + 3) / 4, 0.3f, 1);
+  EXPECT_TRUE(apply_preview_updates(preview, image, preview_tiles(coarse, 4, w, h, 4, 8)));
+  EXPECT_EQ(image.generation, 4u);
+  EXPECT_EQ(sum_tile_totals(image).samples, 0u);
+  for (std::uint32_t s : image.samples) ASSERT_EQ(s, 0u);
+  // On screen every pixel shows its block's sample; the saved view shows none of them.
+  std::vector<std::uint8_t> rgba;
+  renderer::HeatmapRange range;
+  compose_view_rgba(image, preview, ErrorImage{}, ViewMode::lights, rgba, range);
+  for (std::size_t i = 0; i < rgba.size() / 4; ++i) {
+    ASSERT_FALSE(rgba[4 * i] == kNotRenderedRgb[0] && rgba[4 * i + 1] == kNotRenderedRgb[1] &&
+                 rgba[4 * i + 2] == kNotRenderedRgb[2])
+        << i;
+  }
+  const std::vector<std::uint8_t> saved = view_rgb8(image, ErrorImage{}, ViewMode::lights, range);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(saved[c], kNotRenderedRgb[c]);
+  // Pixel (7, 5) is in the block of preview pixel (1, 1).
+  EXPECT_FLOAT_EQ(preview.lights_tested[5 * w + 7], static_cast<float>((1 * coarse.width + 1) % 5));
+  // A finer level replaces the coarse one, and never the other way round.
+  const renderer::Framebuffer fine = test_framebuffer((w + 1) / 2, (h + 1) / 2, 0.6f, 1);
+  apply_preview_updates(preview, image, preview_tiles(fine, 2, w, h, 4, 8));
+  apply_preview_updates(preview, image, preview_tiles(coarse, 4, w, h, 4, 8));
+  EXPECT_EQ(preview.step[5 * w + 7], 2);
+  EXPECT_FLOAT_EQ(preview.lights_tested[5 * w + 7], static_cast<float>((2 * fine.width + 3) % 5));
+  // The render's own tiles take over where they arrive; a stale preview is ignored.
+  const renderer::Framebuffer full = test_framebuffer(w, h, 0.5f, 1);
+  apply_tile_updates(image, all_tiles(full, 4, 0, 8));
+  EXPECT_EQ(image.rgb, renderer::framebuffer_rgb8(full));
+  EXPECT_FALSE(apply_preview_updates(preview, image, preview_tiles(coarse, 4, w, h, 3, 8)));
+}
+
 TEST(TradePlot, PointsBelongToOneReferenceAndReplaceTheSameSetting) {
   TradePlot plot;
   follow_reference(plot, 4);
@@ -261,6 +379,29 @@ TEST(FrameLog, ReportsFrameTimesAndFirstTileLatency) {
   EXPECT_DOUBLE_EQ(s.max_ms, 25.0);
   EXPECT_NE(frame_report(log).find("tolerance=0.1: first tile on screen after 40.0 ms"),
             std::string::npos);
+}
+
+TEST(FrameLog, ReportsTheWholeFramePreviewAndEveryLevel) {
+  FrameLog log;
+  const auto t0 = std::chrono::steady_clock::now();
+  record_post(log, "method=rt", 3, t0);
+  record_first_tile(log, 3, t0 + std::chrono::milliseconds(20));
+  record_preview(log, 2, false, t0 + std::chrono::milliseconds(30));  // an older render
+  EXPECT_LT(log.latencies[0].whole_frame_ms, 0.0);
+  record_preview(log, 3, false, t0 + std::chrono::milliseconds(70));
+  record_preview(log, 3, false, t0 + std::chrono::milliseconds(90));  // the first one counts
+  record_preview(log, 3, true, t0 + std::chrono::milliseconds(400));
+  EXPECT_NE(frame_report(log).find("method=rt: first tile on screen after 20.0 ms, whole-frame "
+                                   "preview after 70.0 ms, every preview level after 400.0 ms"),
+            std::string::npos)
+      << frame_report(log);
+  // A change that started no render (the tolerance under rt) never claims a later change's tiles.
+  record_post(log, "tolerance=0.1", 4, t0 + std::chrono::seconds(1));
+  record_post(log, "method=lev", 5, t0 + std::chrono::seconds(2));
+  record_first_tile(log, 5, t0 + std::chrono::milliseconds(2050));
+  EXPECT_LT(log.latencies[1].first_tile_ms, 0.0);
+  EXPECT_NEAR(log.latencies[2].first_tile_ms, 50.0, 1e-6);
+  EXPECT_NE(frame_report(log).find("tolerance=0.1: no new tile"), std::string::npos);
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // The real viewer window under Xvfb, in scripted mode: open, render, switch method, move the
 // tolerance mid-render, switch every view (the error view computes the rt reference), save a
-// snapshot, and write the window to a PNG. Skipped only when xvfb-run is missing. Labelled
-// "threads": under the tsan preset the UI thread, the tile workers and the reference thread
-// share the display buffers and the cancel flag.
+// snapshot, and write the window to a PNG; the coarse preview covers the frame, never reaches a
+// snapshot, and the fit resolution follows the window. Skipped only when xvfb-run is missing.
+// Labelled "threads": under the tsan preset the UI thread, the tile workers and the reference
+// thread share the display buffers and the cancel flag.
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,7 +13,11 @@
 #include <string>
 #include <vector>
 
+#include <fstream>
+#include <sstream>
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.h"
 #include <stb/stb_image.h>
@@ -81,6 +86,29 @@ int picture_differences(const Png& a, const Png& b) {
     }
   }
   return differences;
+}
+
+std::string read_file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json read_json(const fs::path& path) {
+  return nlohmann::json::parse(read_file_bytes(path), nullptr, false);
+}
+
+// The viewer's "not rendered yet" grey (app/viewer/display_image.h, kNotRenderedRgb).
+int not_rendered_pixels(const Png& png) {
+  int count = 0;
+  for (int y = 0; y < png.height; ++y) {
+    for (int x = 0; x < png.width; ++x) {
+      const unsigned char* p = png.at(x, y);
+      if (p[0] == 38 && p[1] == 38 && p[2] == 42) ++count;
+    }
+  }
+  return count;
 }
 
 class ViewerWindow : public ::testing::Test {
@@ -177,6 +205,112 @@ TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
                         "view_building_64_lev_1_stats.json"}) {
     EXPECT_TRUE(fs::exists(dir_ / "snap" / f)) << f << "\n" << r.output;
   }
+}
+
+TEST_F(ViewerWindow, OnceThePreviewIsDoneNoPixelIsGreyAfterAChangeToRt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  const std::string shot = path("preview.png");
+  // The lights view shows unrendered pixels in the grey; rt at 4,096 lights takes seconds for
+  // its first pass, so right after the preview most tiles are still being traced.
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--lights", "4096", "--method", "lev", "--width", "128", "--height", "96", "--spp", "1",
+      "--window", "1024x640", "--frames", "4",
+      "--set", "view=lights@0",
+      "--set", "await=idle@0",
+      "--set", "method=rt@1",
+      "--set", "await=preview@2",
+      "--set", "screenshot=" + shot + "@3",
+  });
+  // clang-format on
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Png png = read_png(shot);
+  ASSERT_TRUE(png.ok()) << r.output;
+  EXPECT_EQ(not_rendered_pixels(png), 0);
+  EXPECT_FALSE(uniform(png));
+}
+
+TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  // ast carries per-light statistics from pass to pass: a preview that fed them would change
+  // pass 1. Two passes, a typed size, the same settings as the headless render below.
+  const std::vector<std::string> settings = {"--lights", "256",      "--method", "ast",   "--width",
+                                             "96",       "--height", "64",       "--spp", "2"};
+  std::vector<std::string> view_args = settings;
+  for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
+    view_args.emplace_back(a);
+  view_args.push_back("snapshot=" + path("snap") + "@1");
+  const CommandRun view = run_viewer(view_args);
+  ASSERT_EQ(view.exit_code, 0) << view.output;
+
+  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
+  for (const std::string& a : settings) render += " " + shell_quote(a);
+  render += " --out " + shell_quote(path("headless.png")) + " --stats " +
+            shell_quote(path("headless_stats.json"));
+  const CommandRun headless = run_shell(render);
+  ASSERT_EQ(headless.exit_code, 0) << headless.output;
+
+  const fs::path snap = dir_ / "snap" / "view_building_256_ast_0.01.png";
+  ASSERT_TRUE(fs::exists(snap)) << view.output;
+  const std::string snapshot_png = read_file_bytes(snap);
+  EXPECT_FALSE(snapshot_png.empty());
+  EXPECT_TRUE(snapshot_png == read_file_bytes(path("headless.png")));
+
+  const nlohmann::json a = read_json(dir_ / "snap" / "view_building_256_ast_0.01_stats.json");
+  const nlohmann::json b = read_json(path("headless_stats.json"));
+  ASSERT_FALSE(a.is_discarded() || b.is_discarded());
+  for (const char* key :
+       {"lights", "method", "tolerance", "width", "height", "spp", "shading_points", "shadow_rays",
+        "lights_tested_avg", "lights_tested_max", "nodes_visited_avg", "hierarchy_bytes"}) {
+    ASSERT_TRUE(a.contains(key) && b.contains(key)) << key;
+    EXPECT_EQ(a[key], b[key]) << key;
+  }
+}
+
+TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  const std::string controls = path("controls.json");
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--lights", "64", "--spp", "1", "--window", "800x600", "--frames", "9",
+      "--controls", controls,
+      "--set", "await=idle@0",
+      "--set", "snapshot=" + path("small") + "@1",
+      "--set", "window=1100x760@2",          // as a user dragging the border
+      "--set", "await=idle@3",
+      "--set", "snapshot=" + path("large") + "@4",
+      "--set", "resolution=fit/2@5",
+      "--set", "await=idle@6",
+      "--set", "snapshot=" + path("half") + "@7",
+  });
+  // clang-format on
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto stats = [&](const char* folder) {
+    for (const auto& entry : fs::directory_iterator(dir_ / folder)) {
+      const std::string name = entry.path().filename().string();
+      if (name.size() > 11 && name.compare(name.size() - 11, 11, "_stats.json") == 0)
+        return read_json(entry.path());
+    }
+    return nlohmann::json();
+  };
+  const nlohmann::json small = stats("small"), large = stats("large"), half = stats("half");
+  ASSERT_TRUE(small.is_object() && large.is_object() && half.is_object()) << r.output;
+  const nlohmann::json c = read_json(controls);
+  ASSERT_TRUE(c.is_object() && c["controls"].contains("image_area")) << r.output;
+  // The last controls file is of the resized window: the render is the image area's size.
+  const nlohmann::json area = c["controls"]["image_area"];
+  const int area_width = static_cast<int>(area[2].get<double>() - area[0].get<double>());
+  const int area_height = static_cast<int>(area[3].get<double>() - area[1].get<double>());
+  EXPECT_EQ(large["width"].get<int>(), area_width);
+  EXPECT_EQ(large["height"].get<int>(), area_height);
+  EXPECT_LT(small["width"].get<int>(), large["width"].get<int>());
+  EXPECT_LT(small["height"].get<int>(), large["height"].get<int>());
+  EXPECT_EQ(half["width"].get<int>(), area_width / 2);
+  EXPECT_EQ(half["height"].get<int>(), area_height / 2);
+  EXPECT_EQ(c["settings"]["resolution"], "fit/2");
 }
 
 }  // namespace
