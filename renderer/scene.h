@@ -10,6 +10,7 @@
 #include "lev/light_hierarchy.h"
 #include "lev/light_tree.h"
 #include "renderer/camera.h"
+#include "renderer/directional_light.h"
 #include "renderer/geometry.h"
 #include "renderer/material.h"
 
@@ -21,6 +22,7 @@ struct Scene {
   Camera camera;
   lev::LightTree light_tree;
   lev::LightHierarchy lights;
+  std::vector<DirectionalLight> directional_lights;
   Geometry geometry;
   std::vector<Material> materials;
   glm::vec3 ambient{1.0f};     // I_a of eq. 3

@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <initializer_list>
-#include <map>
-#include <utility>
 #include <filesystem>
+#include <initializer_list>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <tiny_gltf.h>
@@ -51,8 +51,8 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const std::string& path, float light_scale)
-      : model_(model), path_(path), light_scale_(light_scale) {}
+  Importer(const tinygltf::Model& model, const std::string& path, float light_scale, int camera)
+      : model_(model), path_(path), light_scale_(light_scale), wanted_camera_(camera) {}
 
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -74,6 +74,11 @@ class Importer {
     std::vector<SceneNode> children = std::move(lights_);
     for (SceneNode& mesh : mesh_nodes_) children.push_back(std::move(mesh));
     scene_.root = union_node(std::move(children));
+    if (!has_camera_ && wanted_camera_ > 0) {
+      fail(path_, "camera",
+           std::to_string(wanted_camera_) + " (the file has " + std::to_string(cameras_seen_) +
+               " perspective cameras in its scene)");
+    }
     scene_.camera = has_camera_ ? camera_ : framing_camera();
     return std::move(scene_);
   }
@@ -116,11 +121,13 @@ class Importer {
       const tinygltf::BufferView& view =
           model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
       if (view.byteStride != 0 && view.byteStride < element_bytes) {
-        fail(path_, where, "byteStride " + std::to_string(view.byteStride) + " below the element's " +
-                               std::to_string(element_bytes) + " bytes");
+        fail(path_, where,
+             "byteStride " + std::to_string(view.byteStride) + " below the element's " +
+                 std::to_string(element_bytes) + " bytes");
       }
       const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_bytes;
-      check_span(where, accessor.byteOffset, stride, accessor.count, element_bytes, view.byteLength);
+      check_span(where, accessor.byteOffset, stride, accessor.count, element_bytes,
+                 view.byteLength);
     }
   }
 
@@ -128,11 +135,13 @@ class Importer {
   void check_span(const std::string& where, double byte_offset, std::size_t stride,
                   std::size_t count, std::size_t element_bytes, std::size_t view_bytes) const {
     if (count == 0) return;
-    const double end_bytes = byte_offset + static_cast<double>(stride) * static_cast<double>(count - 1) +
+    const double end_bytes = byte_offset +
+                             static_cast<double>(stride) * static_cast<double>(count - 1) +
                              static_cast<double>(element_bytes);
     if (byte_offset < 0.0 || end_bytes > static_cast<double>(view_bytes)) {
       fail(path_, where,
-           std::to_string(count) + " elements beyond the view's " + std::to_string(view_bytes) + " bytes");
+           std::to_string(count) + " elements beyond the view's " + std::to_string(view_bytes) +
+               " bytes");
     }
   }
 
@@ -155,13 +164,15 @@ class Importer {
         index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
       fail(path_, where + "/sparse/indices/componentType", std::to_string(index_type));
     const auto sparse_count = static_cast<std::size_t>(count);
-    const tinygltf::BufferView& indices = view_at(accessor.sparse.indices.bufferView, where + "/sparse/indices");
+    const tinygltf::BufferView& indices =
+        view_at(accessor.sparse.indices.bufferView, where + "/sparse/indices");
     check_span(where + "/sparse/indices", accessor.sparse.indices.byteOffset,
-               static_cast<std::size_t>(index_bytes), sparse_count, static_cast<std::size_t>(index_bytes),
-               indices.byteLength);
-    const tinygltf::BufferView& values = view_at(accessor.sparse.values.bufferView, where + "/sparse/values");
-    check_span(where + "/sparse/values", accessor.sparse.values.byteOffset, element_bytes, sparse_count,
-               element_bytes, values.byteLength);
+               static_cast<std::size_t>(index_bytes), sparse_count,
+               static_cast<std::size_t>(index_bytes), indices.byteLength);
+    const tinygltf::BufferView& values =
+        view_at(accessor.sparse.values.bufferView, where + "/sparse/values");
+    check_span(where + "/sparse/values", accessor.sparse.values.byteOffset, element_bytes,
+               sparse_count, element_bytes, values.byteLength);
   }
 
   void check_lights() const {
@@ -254,38 +265,54 @@ class Importer {
   // One component as stored, integers exactly (a double holds every u32).
   static double raw_component(const unsigned char* at, int component_type) {
     switch (component_type) {
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return static_cast<double>(load<std::int8_t>(at));
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return static_cast<double>(load<std::uint8_t>(at));
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return static_cast<double>(load<std::int16_t>(at));
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return static_cast<double>(load<std::uint16_t>(at));
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return static_cast<double>(load<std::uint32_t>(at));
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: return static_cast<double>(load<float>(at));
-      default: return static_cast<double>(load<double>(at));
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return static_cast<double>(load<std::int8_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return static_cast<double>(load<std::uint8_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return static_cast<double>(load<std::int16_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return static_cast<double>(load<std::uint16_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return static_cast<double>(load<std::uint32_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return static_cast<double>(load<float>(at));
+      default:
+        return static_cast<double>(load<double>(at));
     }
   }
 
   // The spec's decoding of normalized integers: c / max, signed ones clamped at -1.
   static double normalized_component(double raw, int component_type) {
     switch (component_type) {
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(raw / 127.0, -1.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return raw / 255.0;
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(raw / 32767.0, -1.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return raw / 65535.0;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return raw / 4294967295.0;
-      default: return raw;
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return std::max(raw / 127.0, -1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return raw / 255.0;
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return std::max(raw / 32767.0, -1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return raw / 65535.0;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return raw / 4294967295.0;
+      default:
+        return raw;
     }
   }
 
   // Every element's components, row after row: the view's stride applied, normalized integers
   // decoded, then the sparse substitutions. `types` lists the accessor types the caller takes.
-  std::vector<double> read_accessor(int index, std::initializer_list<int> types, const std::string& where) const {
+  std::vector<double> read_accessor(int index, std::initializer_list<int> types,
+                                    const std::string& where) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
       fail(path_, where, "accessor " + std::to_string(index));
     const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(index)];
     const std::string accessor_where = "accessors[" + std::to_string(index) + "]";
     if (std::find(types.begin(), types.end(), accessor.type) == types.end())
-      fail(path_, accessor_where + "/type", "type " + std::to_string(accessor.type) + " where " + where + " needs another");
-    const auto components = static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
+      fail(path_, accessor_where + "/type",
+           "type " + std::to_string(accessor.type) + " where " + where + " needs another");
+    const auto components = static_cast<std::size_t>(
+        tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
     const auto component_bytes = static_cast<std::size_t>(
         tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType)));
     const int type = accessor.componentType;
@@ -295,28 +322,36 @@ class Importer {
     };
     std::vector<double> values(accessor.count * components, 0.0);
     if (accessor.bufferView >= 0) {
-      const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
-      const std::size_t stride = view.byteStride != 0 ? view.byteStride : components * component_bytes;
+      const tinygltf::BufferView& view =
+          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+      const std::size_t stride =
+          view.byteStride != 0 ? view.byteStride : components * component_bytes;
       const unsigned char* base = view_bytes(view) + accessor.byteOffset;
       for (std::size_t e = 0; e < accessor.count; ++e) {
-        for (std::size_t c = 0; c < components; ++c) values[e * components + c] = decode(base + e * stride + c * component_bytes);
+        for (std::size_t c = 0; c < components; ++c)
+          values[e * components + c] = decode(base + e * stride + c * component_bytes);
       }
     }
     if (accessor.sparse.isSparse) {
       const auto& sparse = accessor.sparse;
-      const tinygltf::BufferView& index_view = model_.bufferViews[static_cast<std::size_t>(sparse.indices.bufferView)];
-      const tinygltf::BufferView& value_view = model_.bufferViews[static_cast<std::size_t>(sparse.values.bufferView)];
-      const auto index_bytes = static_cast<std::size_t>(
-          tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(sparse.indices.componentType)));
+      const tinygltf::BufferView& index_view =
+          model_.bufferViews[static_cast<std::size_t>(sparse.indices.bufferView)];
+      const tinygltf::BufferView& value_view =
+          model_.bufferViews[static_cast<std::size_t>(sparse.values.bufferView)];
+      const auto index_bytes = static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(
+          static_cast<std::uint32_t>(sparse.indices.componentType)));
       const unsigned char* indices = view_bytes(index_view) + sparse.indices.byteOffset;
       const unsigned char* replacements = view_bytes(value_view) + sparse.values.byteOffset;
       for (std::size_t k = 0; k < static_cast<std::size_t>(sparse.count); ++k) {
-        const double target = raw_component(indices + k * index_bytes, sparse.indices.componentType);
+        const double target =
+            raw_component(indices + k * index_bytes, sparse.indices.componentType);
         if (target >= static_cast<double>(accessor.count))
-          fail(path_, accessor_where + "/sparse/indices", number_text(target) + " beyond the count " + std::to_string(accessor.count));
+          fail(path_, accessor_where + "/sparse/indices",
+               number_text(target) + " beyond the count " + std::to_string(accessor.count));
         const auto e = static_cast<std::size_t>(target);
         for (std::size_t c = 0; c < components; ++c) {
-          values[e * components + c] = decode(replacements + (k * components + c) * component_bytes);
+          values[e * components + c] =
+              decode(replacements + (k * components + c) * component_bytes);
         }
       }
     }
@@ -333,31 +368,44 @@ class Importer {
   // --- meshes -----------------------------------------------------------------------------------
 
   std::uint32_t scene_material(int index, const std::string& where) {
-    if (index >= static_cast<int>(model_.materials.size())) fail(path_, where + "/material", std::to_string(index));
+    if (index >= static_cast<int>(model_.materials.size()))
+      fail(path_, where + "/material", std::to_string(index));
     const std::size_t slot = static_cast<std::size_t>(index + 1);  // 0: the default material
     if (material_of_.empty()) material_of_.assign(model_.materials.size() + 1, kNoIndex);
     if (material_of_[slot] != kNoIndex) return material_of_[slot];
     tinygltf::Material fallback;  // the spec's default: white, metallic 1, roughness 1
-    const tinygltf::Material& source = index >= 0 ? model_.materials[static_cast<std::size_t>(index)] : fallback;
-    const std::string name = index >= 0 ? "gltf material " + std::to_string(index) : "gltf default material";
-    material_of_[slot] = add_material(scene_, name, phong_from_gltf(source, index >= 0 ? "materials[" + std::to_string(index) + "]" : "default material"));
+    const tinygltf::Material& source =
+        index >= 0 ? model_.materials[static_cast<std::size_t>(index)] : fallback;
+    const std::string name =
+        index >= 0 ? "gltf material " + std::to_string(index) : "gltf default material";
+    material_of_[slot] =
+        add_material(scene_, name,
+                     phong_from_gltf(source, index >= 0 ? "materials[" + std::to_string(index) + "]"
+                                                        : "default material"));
     return material_of_[slot];
   }
 
   // The mapping scenes/README.md tabulates.
-  renderer::Material phong_from_gltf(const tinygltf::Material& source, const std::string& where) const {
+  renderer::Material phong_from_gltf(const tinygltf::Material& source,
+                                     const std::string& where) const {
     const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() != 4) fail(path_, where + "/baseColorFactor", std::to_string(pbr.baseColorFactor.size()) + " values");
+    if (pbr.baseColorFactor.size() != 4)
+      fail(path_, where + "/baseColorFactor",
+           std::to_string(pbr.baseColorFactor.size()) + " values");
     for (const double c : pbr.baseColorFactor) {
-      if (!std::isfinite(c) || c < 0.0 || c > 1.0) fail(path_, where + "/baseColorFactor", number_text(c));
+      if (!std::isfinite(c) || c < 0.0 || c > 1.0)
+        fail(path_, where + "/baseColorFactor", number_text(c));
     }
     const double metallic = pbr.metallicFactor;
     const double roughness = pbr.roughnessFactor;
-    if (!std::isfinite(metallic) || metallic < 0.0 || metallic > 1.0) fail(path_, where + "/metallicFactor", number_text(metallic));
-    if (!std::isfinite(roughness) || roughness < 0.0 || roughness > 1.0) fail(path_, where + "/roughnessFactor", number_text(roughness));
+    if (!std::isfinite(metallic) || metallic < 0.0 || metallic > 1.0)
+      fail(path_, where + "/metallicFactor", number_text(metallic));
+    if (!std::isfinite(roughness) || roughness < 0.0 || roughness > 1.0)
+      fail(path_, where + "/roughnessFactor", number_text(roughness));
     const double gloss = 1.0 - roughness;
     renderer::Material m;
-    m.colour = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
+    m.colour = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]),
+                         static_cast<float>(pbr.baseColorFactor[1]),
                          static_cast<float>(pbr.baseColorFactor[2]));
     m.kd = static_cast<float>(1.0 - metallic * gloss);
     m.ks = static_cast<float>(gloss * (0.04 + 0.96 * metallic));
@@ -368,7 +416,8 @@ class Importer {
     if (transmission != source.extensions.end()) {
       const tinygltf::Value& factor = transmission->second.Get("transmissionFactor");
       const double kt = factor.IsNumber() ? factor.GetNumberAsDouble() : 0.0;
-      if (!std::isfinite(kt) || kt < 0.0 || kt > 1.0) fail(path_, where + "/KHR_materials_transmission/transmissionFactor", number_text(kt));
+      if (!std::isfinite(kt) || kt < 0.0 || kt > 1.0)
+        fail(path_, where + "/KHR_materials_transmission/transmissionFactor", number_text(kt));
       m.kt = static_cast<float>(kt);
       m.kd *= static_cast<float>(1.0 - kt);
     }
@@ -377,7 +426,8 @@ class Importer {
       const tinygltf::Value& value = ior->second.Get("ior");
       if (value.IsNumber()) {
         const double v = value.GetNumberAsDouble();
-        if (!std::isfinite(v) || v < 1.0 || v > 100.0) fail(path_, where + "/KHR_materials_ior/ior", number_text(v));
+        if (!std::isfinite(v) || v < 1.0 || v > 100.0)
+          fail(path_, where + "/KHR_materials_ior/ior", number_text(v));
         m.ior = static_cast<float>(v);
       }
     }
@@ -397,10 +447,12 @@ class Importer {
   static std::vector<glm::uvec3> triangles_of_mode(const std::vector<std::uint32_t>& v, int mode) {
     std::vector<glm::uvec3> triangles;
     if (mode == TINYGLTF_MODE_TRIANGLES || mode < 0) {
-      for (std::size_t i = 0; i + 2 < v.size(); i += 3) triangles.push_back({v[i], v[i + 1], v[i + 2]});
+      for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+        triangles.push_back({v[i], v[i + 1], v[i + 2]});
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
       for (std::size_t i = 0; i + 2 < v.size(); ++i) {
-        triangles.push_back(i % 2 == 0 ? glm::uvec3(v[i], v[i + 1], v[i + 2]) : glm::uvec3(v[i], v[i + 2], v[i + 1]));
+        triangles.push_back(i % 2 == 0 ? glm::uvec3(v[i], v[i + 1], v[i + 2])
+                                       : glm::uvec3(v[i], v[i + 2], v[i + 1]));
       }
     } else {
       for (std::size_t i = 1; i + 1 < v.size(); ++i) triangles.push_back({v[0], v[i], v[i + 1]});
@@ -408,46 +460,65 @@ class Importer {
     return triangles;
   }
 
-  renderer::TriangleMesh read_primitive(const tinygltf::Primitive& primitive, const std::string& where) {
+  renderer::TriangleMesh read_primitive(const tinygltf::Primitive& primitive,
+                                        const std::string& where) {
     const auto position = primitive.attributes.find("POSITION");
-    if (position == primitive.attributes.end()) fail(path_, where + "/attributes/POSITION", "missing");
+    if (position == primitive.attributes.end())
+      fail(path_, where + "/attributes/POSITION", "missing");
     renderer::TriangleMesh part;
-    part.positions = as_vec3(read_accessor(position->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/POSITION"));
+    part.positions = as_vec3(
+        read_accessor(position->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/POSITION"));
     const auto vertex_count = part.positions.size();
     std::vector<std::uint32_t> vertices;
     if (primitive.indices >= 0) {
       const std::string indices_where = where + "/indices";
       if (static_cast<std::size_t>(primitive.indices) < model_.accessors.size()) {
-        const int type = model_.accessors[static_cast<std::size_t>(primitive.indices)].componentType;
-        if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        const int type =
+            model_.accessors[static_cast<std::size_t>(primitive.indices)].componentType;
+        if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
           fail(path_, indices_where, "component type " + std::to_string(type));
       }
-      for (const double index : read_accessor(primitive.indices, {TINYGLTF_TYPE_SCALAR}, indices_where)) {
+      for (const double index :
+           read_accessor(primitive.indices, {TINYGLTF_TYPE_SCALAR}, indices_where)) {
         if (index >= static_cast<double>(vertex_count))
-          fail(path_, indices_where, "vertex " + number_text(index) + " of " + std::to_string(vertex_count));
+          fail(path_, indices_where,
+               "vertex " + number_text(index) + " of " + std::to_string(vertex_count));
         vertices.push_back(static_cast<std::uint32_t>(index));
       }
     } else {
-      for (std::size_t i = 0; i < vertex_count; ++i) vertices.push_back(static_cast<std::uint32_t>(i));
+      for (std::size_t i = 0; i < vertex_count; ++i)
+        vertices.push_back(static_cast<std::uint32_t>(i));
     }
     part.triangles = triangles_of_mode(vertices, primitive.mode);
     const auto normal = primitive.attributes.find("NORMAL");
     const auto uv = primitive.attributes.find("TEXCOORD_0");
     if (uv != primitive.attributes.end()) {
-      const std::vector<double> values = read_accessor(uv->second, {TINYGLTF_TYPE_VEC2}, where + "/attributes/TEXCOORD_0");
-      if (values.size() != 2 * vertex_count) fail(path_, where + "/attributes/TEXCOORD_0", std::to_string(values.size() / 2) + " for " + std::to_string(vertex_count) + " vertices");
-      for (std::size_t i = 0; i < vertex_count; ++i) part.uvs.emplace_back(static_cast<float>(values[2 * i]), static_cast<float>(values[2 * i + 1]));
+      const std::vector<double> values =
+          read_accessor(uv->second, {TINYGLTF_TYPE_VEC2}, where + "/attributes/TEXCOORD_0");
+      if (values.size() != 2 * vertex_count)
+        fail(path_, where + "/attributes/TEXCOORD_0",
+             std::to_string(values.size() / 2) + " for " + std::to_string(vertex_count) +
+                 " vertices");
+      for (std::size_t i = 0; i < vertex_count; ++i)
+        part.uvs.emplace_back(static_cast<float>(values[2 * i]),
+                              static_cast<float>(values[2 * i + 1]));
     }
     if (normal != primitive.attributes.end()) {
-      part.normals = as_vec3(read_accessor(normal->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/NORMAL"));
-      if (part.normals.size() != vertex_count) fail(path_, where + "/attributes/NORMAL", std::to_string(part.normals.size()) + " for " + std::to_string(vertex_count) + " vertices");
+      part.normals = as_vec3(
+          read_accessor(normal->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/NORMAL"));
+      if (part.normals.size() != vertex_count)
+        fail(path_, where + "/attributes/NORMAL",
+             std::to_string(part.normals.size()) + " for " + std::to_string(vertex_count) +
+                 " vertices");
       return part;
     }
     // No normals: flat ones (the spec), so every triangle gets its own three vertices.
     renderer::TriangleMesh flat;
     for (const glm::uvec3& t : part.triangles) {
-      const glm::vec3 n = renderer::robust_normalize(glm::cross(part.positions[t.y] - part.positions[t.x], part.positions[t.z] - part.positions[t.x]));
+      const glm::vec3 n = renderer::robust_normalize(glm::cross(
+          part.positions[t.y] - part.positions[t.x], part.positions[t.z] - part.positions[t.x]));
       const auto base = static_cast<std::uint32_t>(flat.positions.size());
       for (int c = 0; c < 3; ++c) {
         flat.positions.push_back(part.positions[t[c]]);
@@ -461,7 +532,8 @@ class Importer {
 
   // The scene mesh of glTF mesh `index` (converted once), or kNoIndex when it has no triangles.
   std::uint32_t scene_mesh(int index, const std::string& where) {
-    if (index >= static_cast<int>(model_.meshes.size())) fail(path_, where + "/mesh", std::to_string(index));
+    if (index >= static_cast<int>(model_.meshes.size()))
+      fail(path_, where + "/mesh", std::to_string(index));
     if (mesh_of_.empty()) mesh_of_.assign(model_.meshes.size(), kUnconverted);
     std::uint32_t& slot = mesh_of_[static_cast<std::size_t>(index)];
     if (slot != kUnconverted) return slot;
@@ -471,8 +543,10 @@ class Importer {
     std::vector<int> skipped_modes;
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = mesh.primitives[p];
-      const std::string primitive_where = "meshes[" + std::to_string(index) + "]/primitives[" + std::to_string(p) + "]";
-      if (primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN) fail(path_, primitive_where + "/mode", std::to_string(primitive.mode));
+      const std::string primitive_where =
+          "meshes[" + std::to_string(index) + "]/primitives[" + std::to_string(p) + "]";
+      if (primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        fail(path_, primitive_where + "/mode", std::to_string(primitive.mode));
       if (primitive.mode >= 0 && primitive.mode < TINYGLTF_MODE_TRIANGLES) {
         skipped_modes.push_back(primitive.mode);
         continue;
@@ -482,14 +556,17 @@ class Importer {
       if (!part.triangles.empty()) data.parts.push_back(std::move(part));
     }
     if (!skipped_modes.empty()) {
-      warnings_.push_back("mesh " + std::to_string(index) + " '" + mesh.name + "': " + std::to_string(skipped_modes.size()) +
-                          " primitive(s) of points or lines skipped (mode " + std::to_string(skipped_modes.front()) + ")");
+      warnings_.push_back("mesh " + std::to_string(index) + " '" + mesh.name +
+                          "': " + std::to_string(skipped_modes.size()) +
+                          " primitive(s) of points or lines skipped (mode " +
+                          std::to_string(skipped_modes.front()) + ")");
     }
     if (data.parts.empty()) {
       slot = kNoIndex;
       return slot;
     }
-    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    glm::vec3 lo(std::numeric_limits<float>::infinity()),
+        hi(-std::numeric_limits<float>::infinity());
     for (const renderer::TriangleMesh& part : data.parts) {
       for (const glm::vec3& p : part.positions) {
         lo = glm::min(lo, p);
@@ -511,13 +588,15 @@ class Importer {
     const glm::dmat3 linear(world);
     const glm::dvec3 translation(world[3]);
     const double det = glm::determinant(linear);
-    if (!std::isfinite(det) || !(std::abs(det) > 1e-18)) fail(path_, where, "singular transform of a mesh (determinant " + number_text(det) + ")");
+    if (!std::isfinite(det) || !(std::abs(det) > 1e-18))
+      fail(path_, where, "singular transform of a mesh (determinant " + number_text(det) + ")");
     const double scale = std::cbrt(std::abs(det));
     const glm::dmat3 unit = linear / scale;
     const glm::dmat3 gram = glm::transpose(unit) * unit;
     double off_orthonormal = 0.0;
     for (int c = 0; c < 3; ++c) {
-      for (int r = 0; r < 3; ++r) off_orthonormal = std::max(off_orthonormal, std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)));
+      for (int r = 0; r < 3; ++r)
+        off_orthonormal = std::max(off_orthonormal, std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)));
     }
     Affine place;
     place.translate = glm::vec3(translation);
@@ -537,7 +616,8 @@ class Importer {
     mesh_nodes_.push_back(affine_node(place, instance_node(master)));
     const auto& [lo, hi] = mesh_bounds_[mesh];
     for (int corner = 0; corner < 8; ++corner) {
-      const glm::dvec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
+      const glm::dvec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                             corner & 4 ? hi.z : lo.z);
       const glm::dvec3 p = glm::dvec3(world * glm::dvec4(local, 1.0));
       lo_ = glm::min(lo_, p);
       hi_ = glm::max(hi_, p);
@@ -552,8 +632,10 @@ class Importer {
     const auto key = std::make_pair(mesh, key_linear);
     const auto found = master_of_.find(key);
     if (found != master_of_.end()) return found->second;
-    const std::string name = "mesh " + std::to_string(mesh) + " '" + scene_.meshes[mesh].name + "'" +
-                             (linear == glm::mat3(1.0f) ? std::string() : " deformed " + std::to_string(master_of_.size()));
+    const std::string name =
+        "mesh " + std::to_string(mesh) + " '" + scene_.meshes[mesh].name + "'" +
+        (linear == glm::mat3(1.0f) ? std::string()
+                                   : " deformed " + std::to_string(master_of_.size()));
     const std::uint32_t master = add_master(scene_, name, mesh_node(mesh, linear));
     master_of_.emplace(key, master);
     return master;
@@ -583,17 +665,19 @@ class Importer {
 
   void add_light(const tinygltf::Light& light, const glm::dvec3& position,
                  const glm::dvec3& forward, const std::string& where) {
-    if (light.type == "directional") {
-      warnings_.push_back("directional light '" + light.name + "' is not imported");
-      return;
-    }
     const double length = glm::length(forward);
     if (!(length > 0.0) || !std::isfinite(length))
       fail(path_, where, "degenerate transform of a light");
     glm::dvec3 colour(1.0);
     if (light.color.size() == 3) colour = {light.color[0], light.color[1], light.color[2]};
+    // glTF: candela for point and spot lights, lux for directional ones; both become levrt's
+    // irradiance (at distance 1, or everywhere) through the one light scale.
     const glm::vec3 intensity(colour * light.intensity * static_cast<double>(light_scale_));
     const glm::dvec3 direction = forward / length;
+    if (light.type == "directional") {
+      scene_.directional_lights.push_back({glm::vec3(direction), intensity});
+      return;
+    }
     Affine place;
     place.translate = glm::vec3(position);
     // The rotation carrying levrt's spot axis -Z onto the light's world direction.
@@ -606,22 +690,20 @@ class Importer {
       place.rotate_axis = {1.0f, 0.0f, 0.0f};
       place.rotate_degrees = 180.0f;
     }
-    if (light.range > 0.0 && !warned_range_) {
-      warned_range_ = true;
-      warnings_.push_back("range of light '" + light.name + "' and any other is not applied (" +
-                          number_text(light.range) + ")");
-    }
+    // The extension: range 0 or absent is infinite.
+    const float range = light.range > 0.0 ? static_cast<float>(light.range)
+                                          : std::numeric_limits<float>::infinity();
     if (light.type == "point") {
-      lights_.push_back(affine_node(place, point_light_node(intensity)));
+      SceneNode node = point_light_node(intensity);
+      std::get<PointLightSource>(node.data).range = range;
+      lights_.push_back(affine_node(place, std::move(node)));
     } else {
-      if (!warned_falloff_) {
-        warned_falloff_ = true;
-        warnings_.push_back(
-            "spot light '" + light.name +
-            "' and any other: a hard cone at outerConeAngle, no falloff from innerConeAngle");
-      }
-      const auto cone_degrees = static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi);
-      lights_.push_back(affine_node(place, spot_light_node(intensity, cone_degrees, 0.0f)));
+      SceneNode node = spot_light_node(
+          intensity, static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi), 0.0f);
+      auto& spot = std::get<SpotLightSource>(node.data);
+      spot.range = range;
+      spot.inner_cone_degrees = static_cast<float>(light.spot.innerConeAngle * 180.0 / kPi);
+      lights_.push_back(affine_node(place, std::move(node)));
     }
     lo_ = glm::min(lo_, position);
     hi_ = glm::max(hi_, position);
@@ -636,6 +718,8 @@ class Importer {
     const double yfov = camera.perspective.yfov;
     if (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)
       fail(path_, where + "/camera/yfov", number_text(yfov));
+    // --camera N: the N-th perspective camera met in the node tree, depth first.
+    if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
     const glm::dvec3 forward = -glm::dvec3(world[2]);
     const glm::dvec3 up(world[1]);
@@ -666,6 +750,8 @@ class Importer {
   const tinygltf::Model& model_;
   const std::string& path_;
   float light_scale_;
+  int wanted_camera_;
+  int cameras_seen_ = 0;
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::vector<SceneNode> lights_;
@@ -679,8 +765,6 @@ class Importer {
   std::vector<std::pair<glm::vec3, glm::vec3>> mesh_bounds_;  // per scene mesh, in its frame
   std::map<std::pair<std::uint32_t, std::array<float, 9>>, std::uint32_t> master_of_;
   std::vector<SceneNode> mesh_nodes_;
-  bool warned_range_ = false;
-  bool warned_falloff_ = false;
   renderer::Camera camera_;
   glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
@@ -697,7 +781,7 @@ bool is_gltf_file_name(std::string_view name) {
 }
 
 SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
-                                  float light_scale) {
+                                  float light_scale, int camera) {
   if (!std::isfinite(light_scale) || light_scale < 0.0f)
     fail(path, "light scale", number_text(light_scale));
   tinygltf::TinyGLTF loader;
@@ -714,7 +798,8 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
                                        static_cast<unsigned int>(bytes.size()), base_dir);
   if (!ok)
     fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
-  Importer importer(model, path, light_scale);
+  if (camera < 0) fail(path, "camera", std::to_string(camera));
+  Importer importer(model, path, light_scale, camera);
   SceneDescription scene = importer.run();
   // The limits every scene obeys (light count, intensities), with the file's name in front.
   try {

@@ -112,8 +112,9 @@ lev::Similarity affine_similarity(const Affine& affine) {
 }
 
 const char* node_type_name(const NodeData& data) {
-  static constexpr const char* kNames[] = {"affine", "union",    "instance",    "sphere",    "box",
-                                           "cylinder", "quad", "point_light", "spot_light", "mesh"};
+  static constexpr const char* kNames[] = {"affine",     "union",    "instance", "sphere",
+                                           "box",        "cylinder", "quad",     "point_light",
+                                           "spot_light", "mesh"};
   static_assert(std::variant_size_v<NodeData> == sizeof(kNames) / sizeof(kNames[0]));
   return kNames[data.index()];
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <variant>
 #include <vector>
@@ -14,6 +15,7 @@
 
 #include "lev/transform.h"
 #include "renderer/camera.h"
+#include "renderer/directional_light.h"
 #include "renderer/geometry.h"
 #include "renderer/material.h"
 
@@ -70,18 +72,24 @@ struct MeshShape {
 };
 
 // Lights sit at the origin of their frame (thesis 4.2.2); transforms place, turn and scale them.
+// A range (glTF) darkens a light beyond that distance in its frame; infinite means none.
 struct PointLightSource {
   glm::vec3 intensity{1.0f};  // RGB, irradiance at distance 1
+  float range = std::numeric_limits<float>::infinity();
 };
 
 struct SpotLightSource {  // shines along -z of its frame
   glm::vec3 intensity{1.0f};
-  float cone_degrees = 90.0f;  // half-angle of Warn's cone
+  float cone_degrees = 90.0f;  // half-angle of Warn's cone (the outer cone of a smooth spot)
   float dropoff = 0.0f;        // Warn exponent
+  float range = std::numeric_limits<float>::infinity();
+  // Negative: Warn's profile. Otherwise glTF's smooth profile (lev/spot_profile.h), full
+  // intensity within this half-angle, in [0, cone_degrees).
+  float inner_cone_degrees = -1.0f;
 };
 
-using NodeData = std::variant<Affine, Union, Instance, SphereShape, BoxShape, CylinderShape, QuadShape,
-                              PointLightSource, SpotLightSource, MeshShape>;
+using NodeData = std::variant<Affine, Union, Instance, SphereShape, BoxShape, CylinderShape,
+                              QuadShape, PointLightSource, SpotLightSource, MeshShape>;
 
 struct SceneNode {
   NodeData data = Union{};
@@ -113,6 +121,9 @@ struct SceneDescription {
   std::vector<NamedMaterial> materials;
   std::vector<Master> masters;  // any order; instances refer by index, cycles are invalid
   std::vector<MeshData> meshes;  // what mesh nodes draw; scene files have none
+  // Suns (glTF directional lights) in world space: outside the light hierarchy, shadow-tested
+  // at every shading point by every method. Scene files have none.
+  std::vector<renderer::DirectionalLight> directional_lights;
   SceneNode root;
 };
 

@@ -171,6 +171,15 @@ class Analysis {
     check_colour("/ambient", scene_.ambient, 1e6f);
     check_colour("/background", scene_.background, 1e6f);
     if (scene_.level < 0) fail("/level", "must be >= 0 (" + std::to_string(scene_.level) + ")");
+    for (std::size_t i = 0; i < scene_.directional_lights.size(); ++i) {
+      const std::string path = "/directional_lights/" + std::to_string(i);
+      const renderer::DirectionalLight& sun = scene_.directional_lights[i];
+      check_colour(path + "/irradiance", sun.irradiance, kMaxIntensity);
+      check_point(path + "/direction", sun.direction);
+      if (!(std::abs(glm::length(sun.direction) - 1.0f) < 1e-4f)) {
+        fail(path + "/direction", "must be a unit vector " + vec_text(sun.direction));
+      }
+    }
     for (std::size_t i = 0; i < scene_.materials.size(); ++i) {
       const std::string path = "/materials/" + std::to_string(i);
       const NamedMaterial& nm = scene_.materials[i];
@@ -216,9 +225,10 @@ class Analysis {
         for (const glm::vec3& p : part.positions) check_point(part_path + "/positions", p);
         for (const glm::vec3& n : part.normals) check_point(part_path + "/normals", n);
         for (const glm::uvec3& t : part.triangles) {
-          if (t.x >= part.positions.size() || t.y >= part.positions.size() || t.z >= part.positions.size()) {
-            fail(part_path + "/triangles", "vertex index beyond the " + std::to_string(part.positions.size()) +
-                                               " positions");
+          if (t.x >= part.positions.size() || t.y >= part.positions.size() ||
+              t.z >= part.positions.size()) {
+            fail(part_path + "/triangles",
+                 "vertex index beyond the " + std::to_string(part.positions.size()) + " positions");
           }
         }
         triangles = add_saturating(triangles, part.triangles.size());
@@ -295,9 +305,12 @@ class Analysis {
       }
     } else if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
       check_colour(path + "/intensity", p->intensity, kMaxIntensity);
+      check_range(path + "/range", p->range);
     } else if (const auto* mesh = std::get_if<MeshShape>(&node.data)) {
-      if (mesh->mesh >= scene_.meshes.size()) fail(path + "/mesh", "no such mesh (" + std::to_string(mesh->mesh) + ")");
-      for (int column = 0; column < 3; ++column) check_point(path + "/linear", mesh->linear[column]);
+      if (mesh->mesh >= scene_.meshes.size())
+        fail(path + "/mesh", "no such mesh (" + std::to_string(mesh->mesh) + ")");
+      for (int column = 0; column < 3; ++column)
+        check_point(path + "/linear", mesh->linear[column]);
       const float det = glm::determinant(mesh->linear);
       if (!std::isfinite(det) || !(std::abs(det) > 1e-18f)) {
         fail(path + "/linear", "must be invertible (determinant " + number_text(det) + ")");
@@ -308,7 +321,22 @@ class Analysis {
         fail(path + "/cone_degrees", "must be in (0, 180] (" + number_text(sp->cone_degrees) + ")");
       }
       check_non_negative(path + "/dropoff", sp->dropoff, 1e4f);
+      check_range(path + "/range", sp->range);
+      const bool smooth = !(sp->inner_cone_degrees < 0.0f);
+      if (smooth && (!std::isfinite(sp->inner_cone_degrees) ||
+                     !(sp->inner_cone_degrees < sp->cone_degrees))) {
+        fail(path + "/inner_cone_degrees",
+             "must be in [0, cone_degrees) (" + number_text(sp->inner_cone_degrees) + ")");
+      }
+      if (smooth && sp->dropoff != 0.0f)
+        fail(path + "/dropoff", "must be 0 with an inner cone (" + number_text(sp->dropoff) + ")");
     }
+  }
+
+  // Infinite (no range) or positive.
+  static void check_range(const std::string& path, float range) {
+    if (std::isnan(range) || !(range > 0.0f))
+      fail(path, "must be > 0 (" + number_text(range) + ")");
   }
 
   // Depth-first over the instance graph without recursion (a chain of masters may be long);
@@ -497,12 +525,23 @@ class LightTreeBuilder {
       return lev::instance_node(light_master_[in->master]);
     }
     if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
-      return lev::light_node(lev::make_point_light(glm::vec3(0.0f), p->intensity));
+      lev::Light light = lev::make_point_light(glm::vec3(0.0f), p->intensity);
+      light.range = p->range;
+      return lev::light_node(light);
     }
     if (const auto* s = std::get_if<SpotLightSource>(&node.data)) {
-      const auto cone = static_cast<float>(static_cast<double>(s->cone_degrees) * M_PI / 180.0);
-      return lev::light_node(
-          lev::make_spot_light(glm::vec3(0.0f), {0.0f, 0.0f, -1.0f}, s->intensity, cone, s->dropoff));
+      const auto radians = [](float degrees) {
+        return static_cast<float>(static_cast<double>(degrees) * M_PI / 180.0);
+      };
+      const glm::vec3 axis(0.0f, 0.0f, -1.0f);
+      lev::Light light = s->inner_cone_degrees < 0.0f
+                             ? lev::make_spot_light(glm::vec3(0.0f), axis, s->intensity,
+                                                    radians(s->cone_degrees), s->dropoff)
+                             : lev::make_smooth_spot_light(glm::vec3(0.0f), axis, s->intensity,
+                                                           radians(s->inner_cone_degrees),
+                                                           radians(s->cone_degrees));
+      light.range = s->range;
+      return lev::light_node(light);
     }
     return std::nullopt;
   }
@@ -536,11 +575,13 @@ class LightTreeBuilder {
 // One prototype being filled: one mesh per material (fewer Embree geometries), spheres apart.
 class PrototypeBuilder {
  public:
-  explicit PrototypeBuilder(const SceneDescription& scene) : scene_(scene), mesh_of_material_(scene.materials.size(), -1) {}
+  explicit PrototypeBuilder(const SceneDescription& scene)
+      : scene_(scene), mesh_of_material_(scene.materials.size(), -1) {}
 
   void add(const NodeData& data, const lev::Similarity& xf) {
     if (const auto* m = std::get_if<MeshShape>(&data)) {
-      for (const renderer::TriangleMesh& part : scene_.meshes[m->mesh].parts) add_mesh_part(part, m->linear, xf);
+      for (const renderer::TriangleMesh& part : scene_.meshes[m->mesh].parts)
+        add_mesh_part(part, m->linear, xf);
       return;
     }
     renderer::TriangleMesh local;
@@ -580,7 +621,8 @@ class PrototypeBuilder {
 
   // Positions through linear then xf, normals through linear's inverse transpose; a mirroring
   // linear reverses the winding too, so the winding-derived geometric normal still agrees.
-  void add_mesh_part(const renderer::TriangleMesh& part, const glm::mat3& linear, const lev::Similarity& xf) {
+  void add_mesh_part(const renderer::TriangleMesh& part, const glm::mat3& linear,
+                     const lev::Similarity& xf) {
     renderer::TriangleMesh& mesh = mesh_for(part.material);
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     const glm::mat3 normal_map = glm::transpose(glm::inverse(linear));
@@ -598,7 +640,8 @@ class PrototypeBuilder {
       mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
     }
     for (const glm::uvec3& t : part.triangles) {
-      mesh.triangles.push_back(mirrored ? glm::uvec3(t.x, t.z, t.y) + glm::uvec3(base) : t + glm::uvec3(base));
+      mesh.triangles.push_back(mirrored ? glm::uvec3(t.x, t.z, t.y) + glm::uvec3(base)
+                                        : t + glm::uvec3(base));
     }
   }
   renderer::Prototype take() { return std::move(prototype_); }
@@ -764,6 +807,7 @@ renderer::Scene instantiate_scene(const SceneDescription& description) {
   scene.camera.target -= scene.world_origin;
   scene.ambient = description.ambient;
   scene.background = description.background;
+  scene.directional_lights = description.directional_lights;
   for (const NamedMaterial& m : description.materials) scene.materials.push_back(m.material);
   // Only the root is copied and moved; masters are placed by the nodes above their instances.
   std::optional<SceneNode> moved_root;

@@ -74,8 +74,8 @@ template <typename Index>
 void check_index_type(int component_type) {
   GltfBuilder builder;
   const int positions = builder.add_vec3s(kQuad);
-  const int indices = builder.add_accessor(builder.add_view(std::vector<Index>{0, 1, 2, 0, 2, 3}), component_type,
-                                           TINYGLTF_TYPE_SCALAR, 6);
+  const int indices = builder.add_accessor(builder.add_view(std::vector<Index>{0, 1, 2, 0, 2, 3}),
+                                           component_type, TINYGLTF_TYPE_SCALAR, 6);
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, indices)));
   const scenes::SceneDescription scene = parse(builder);
   // No normals: flat, so each triangle has three vertices of its own, in the file's order.
@@ -99,8 +99,10 @@ TEST(GltfGeometry, UnindexedStripsAndFans) {
   GltfBuilder builder;
   const int positions = builder.add_vec3s(kQuad);
   const int strip_positions = builder.add_vec3s({kQuad[0], kQuad[1], kQuad[3], kQuad[2]});
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_TRIANGLE_FAN)));
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", strip_positions}}, -1, TINYGLTF_MODE_TRIANGLE_STRIP)));
+  builder.add_node(
+      mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_TRIANGLE_FAN)));
+  builder.add_node(mesh_node(
+      builder.add_mesh({{"POSITION", strip_positions}}, -1, TINYGLTF_MODE_TRIANGLE_STRIP)));
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
   const scenes::SceneDescription scene = parse(builder);
   ASSERT_EQ(scene.meshes.size(), 3u);
@@ -110,7 +112,8 @@ TEST(GltfGeometry, UnindexedStripsAndFans) {
   // Every triangle winds counter-clockwise about +z, the strip's second one too.
   for (std::size_t m = 0; m < 3; ++m) {
     const renderer::TriangleMesh& part = scene.meshes[m].parts[0];
-    for (const glm::uvec3& t : part.triangles) EXPECT_EQ(part.normals[t.x], glm::vec3(0, 0, 1)) << "mesh " << m;
+    for (const glm::uvec3& t : part.triangles)
+      EXPECT_EQ(part.normals[t.x], glm::vec3(0, 0, 1)) << "mesh " << m;
   }
 }
 
@@ -119,13 +122,18 @@ TEST(GltfGeometry, InterleavedStridesAndGivenNormals) {
   // position xyz, normal xyz, per vertex: one view with a 24-byte stride, two accessors into it.
   std::vector<float> interleaved;
   const glm::vec3 normal = glm::normalize(glm::vec3(0, 1, 1));
-  for (const glm::vec3& p : kQuad) interleaved.insert(interleaved.end(), {p.x, p.y, p.z, normal.x, normal.y, normal.z});
+  for (const glm::vec3& p : kQuad)
+    interleaved.insert(interleaved.end(), {p.x, p.y, p.z, normal.x, normal.y, normal.z});
   const int view = builder.add_view(interleaved, 24);
-  const int positions = builder.add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 4);
-  const int normals = builder.add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 4, false, 12);
-  const int indices = builder.add_accessor(builder.add_view(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}),
-                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6);
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}}, indices)));
+  const int positions =
+      builder.add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 4);
+  const int normals =
+      builder.add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 4, false, 12);
+  const int indices =
+      builder.add_accessor(builder.add_view(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}),
+                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6);
+  builder.add_node(
+      mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}}, indices)));
   const renderer::TriangleMesh part = only_part(parse(builder));
   EXPECT_EQ(part.positions, kQuad);
   EXPECT_EQ(part.triangles, kQuadTriangles);
@@ -152,7 +160,8 @@ TEST(GltfGeometry, SparseAccessorsSubstituteTheirElements) {
   const int zero_positions = static_cast<int>(builder.model.accessors.size() - 1);
   const int normals = builder.add_vec3s(std::vector<glm::vec3>(4, glm::vec3(0, 0, 1)));
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}})));
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", zero_positions}, {"NORMAL", normals}})));
+  builder.add_node(
+      mesh_node(builder.add_mesh({{"POSITION", zero_positions}, {"NORMAL", normals}})));
   const scenes::SceneDescription scene = parse(builder);
   ASSERT_EQ(scene.meshes.size(), 2u);
   const std::vector<glm::vec3> moved = {kQuad[0], kQuad[1], {5, 6, 7}, kQuad[3]};
@@ -167,11 +176,12 @@ TEST(GltfGeometry, NormalizedIntegersDecodeAsTheSpecSays) {
   const int positions = builder.add_accessor(
       builder.add_view(std::vector<std::int16_t>{-32768, 0, 0, 32767, 0, 0, 0, 32767, 0, 0}),
       TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, 3, true);
-  const int uvs = builder.add_accessor(builder.add_view(std::vector<std::uint8_t>{0, 255, 51, 0, 255, 255}),
-                                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC2, 3, true);
+  const int uvs =
+      builder.add_accessor(builder.add_view(std::vector<std::uint8_t>{0, 255, 51, 0, 255, 255}),
+                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC2, 3, true);
   const int normals = builder.add_vec3s(std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)));
-  builder.add_node(
-      mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}})));
+  builder.add_node(mesh_node(
+      builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}})));
   const renderer::TriangleMesh part = only_part(parse(builder));
   const std::vector<glm::vec3> expected = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   EXPECT_EQ(part.positions, expected);
@@ -185,7 +195,8 @@ TEST(GltfGeometry, NormalizedIntegersDecodeAsTheSpecSays) {
 std::vector<WorldTriangle> scaled_triangle(const std::vector<double>& scale) {
   GltfBuilder builder;
   const int positions = builder.add_vec3s({{1, 0, 0}, {0, 1, 0}, {0, 1, 1}});
-  const int normals = builder.add_vec3s(std::vector<glm::vec3>(3, glm::normalize(glm::vec3(1, 1, 0))));
+  const int normals =
+      builder.add_vec3s(std::vector<glm::vec3>(3, glm::normalize(glm::vec3(1, 1, 0))));
   tinygltf::Node node = mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}}));
   node.scale = scale;
   builder.add_node(node);
@@ -204,8 +215,9 @@ TEST(GltfGeometry, NonUniformScaleTransformsNormalsByTheInverseTranspose) {
 }
 
 TEST(GltfGeometry, MirroringKeepsWindingAndNormalsOnTheSameSide) {
-  for (const std::vector<double>& scale : {std::vector<double>{1, 1, 1}, std::vector<double>{-1, 1, 1},
-                                           std::vector<double>{-1, -2, 3}}) {
+  for (const std::vector<double>& scale :
+       {std::vector<double>{1, 1, 1}, std::vector<double>{-1, 1, 1},
+        std::vector<double>{-1, -2, 3}}) {
     const std::vector<WorldTriangle> triangles = scaled_triangle(scale);
     ASSERT_EQ(triangles.size(), 1u);
     const WorldTriangle& t = triangles[0];
@@ -238,7 +250,8 @@ TEST(GltfGeometry, AMeshDrawnByManyNodesIsOnePrototypePlacedManyTimes) {
   const std::vector<WorldTriangle> triangles = world_triangles(scene);
   ASSERT_EQ(triangles.size(), 4u);  // four vertices listed: one triangle per placement
   bool found = false;
-  for (const WorldTriangle& t : triangles) found = found || glm::length(t.p[0] - glm::vec3(0, 0, -15)) < 1e-4f;
+  for (const WorldTriangle& t : triangles)
+    found = found || glm::length(t.p[0] - glm::vec3(0, 0, -15)) < 1e-4f;
   EXPECT_TRUE(found);
 
   // A node that stretches the mesh needs a prototype of its own; a second alike shares it.
@@ -255,8 +268,10 @@ TEST(GltfGeometry, AMeshDrawnByManyNodesIsOnePrototypePlacedManyTimes) {
 TEST(GltfGeometry, PointsAndLinesAreSkippedWithOneWarningNamingTheMesh) {
   GltfBuilder builder;
   const int positions = builder.add_vec3s(kQuad);
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_POINTS, -1, "dots")));
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_LINE, -1, "wires")));
+  builder.add_node(
+      mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_POINTS, -1, "dots")));
+  builder.add_node(
+      mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_LINE, -1, "wires")));
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene = parse(builder);
   const std::string warnings = testing::internal::GetCapturedStderr();
@@ -282,8 +297,9 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
   {
     GltfBuilder builder;
     const int positions = builder.add_vec3s(kQuad);
-    const int indices = builder.add_accessor(builder.add_view(std::vector<std::uint8_t>{0, 1, 4}),
-                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_SCALAR, 3);
+    const int indices =
+        builder.add_accessor(builder.add_view(std::vector<std::uint8_t>{0, 1, 4}),
+                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_SCALAR, 3);
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, indices)));
     expect_refused(builder, "meshes[0]/primitives[0]/indices: vertex 4 of 4");
   }

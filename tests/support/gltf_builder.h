@@ -40,8 +40,8 @@ class GltfBuilder {
     return static_cast<int>(model.bufferViews.size() - 1);
   }
 
-  int add_accessor(int view, int component_type, int type, std::size_t count, bool normalized = false,
-                   std::size_t byte_offset = 0) {
+  int add_accessor(int view, int component_type, int type, std::size_t count,
+                   bool normalized = false, std::size_t byte_offset = 0) {
     tinygltf::Accessor accessor;
     accessor.bufferView = view;
     accessor.componentType = component_type;
@@ -56,7 +56,8 @@ class GltfBuilder {
   int add_vec3s(const std::vector<glm::vec3>& values) {
     std::vector<float> flat;
     for (const glm::vec3& v : values) flat.insert(flat.end(), {v.x, v.y, v.z});
-    return add_accessor(add_view(flat), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, values.size());
+    return add_accessor(add_view(flat), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                        values.size());
   }
 
   // A mesh of one primitive; attributes name accessors ("POSITION", "NORMAL", "TEXCOORD_0").
