@@ -89,7 +89,11 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   if (context.ray_log) context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
   if (!context.rays.intersect(ray, hit)) return context.scene.background;
   ++counters.shading_points;
-  const Material& material = context.scene.materials[hit.material];
+  Material material = context.scene.materials[hit.material];
+  if (material.colour_texture >= 0) {
+    material.colour *= sample_texture(
+        context.scene.textures[static_cast<std::size_t>(material.colour_texture)], hit.uv);
+  }
   const bool entering = glm::dot(hit.geometric_normal, ray.direction) < 0.0f;
   // Surfaces are two-sided: shade with the normal that faces the incoming ray.
   const glm::vec3 facing = entering ? hit.shading_normal : -hit.shading_normal;

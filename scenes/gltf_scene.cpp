@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -43,10 +44,23 @@ std::string first_line(const std::string& text) {
   return end == std::string::npos ? text : text.substr(0, end);
 }
 
-// Images are never decoded: only material factors are used.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Images keep their encoded bytes here; the importer decodes only those a material samples.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->width = image->height = 0;
   return true;
+}
+
+renderer::TextureWrap texture_wrap(int gltf_wrap) {
+  switch (gltf_wrap) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+      return renderer::TextureWrap::clamp_to_edge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+      return renderer::TextureWrap::mirrored_repeat;
+    default:
+      return renderer::TextureWrap::repeat;
+  }
 }
 
 class Importer {
@@ -71,6 +85,10 @@ class Importer {
       visit(node, glm::dmat4(1.0));
     scene_.name = std::filesystem::path(path_).stem().string();
     scene_.ambient = glm::vec3(0.0f);
+    if (lights_.empty() && mesh_nodes_.empty() && scene_.directional_lights.empty()) {
+      warnings_.push_back("nothing to render (no triangle meshes or lights in scene " +
+                          std::to_string(scene_index) + "): the background only");
+    }
     std::vector<SceneNode> children = std::move(lights_);
     for (SceneNode& mesh : mesh_nodes_) children.push_back(std::move(mesh));
     scene_.root = union_node(std::move(children));
@@ -386,8 +404,7 @@ class Importer {
   }
 
   // The mapping scenes/README.md tabulates.
-  renderer::Material phong_from_gltf(const tinygltf::Material& source,
-                                     const std::string& where) const {
+  renderer::Material phong_from_gltf(const tinygltf::Material& source, const std::string& where) {
     const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() != 4)
       fail(path_, where + "/baseColorFactor",
@@ -407,6 +424,8 @@ class Importer {
     m.colour = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]),
                          static_cast<float>(pbr.baseColorFactor[1]),
                          static_cast<float>(pbr.baseColorFactor[2]));
+    if (pbr.baseColorTexture.index >= 0)
+      m.colour_texture = scene_texture(pbr.baseColorTexture, where);
     m.kd = static_cast<float>(1.0 - metallic * gloss);
     m.ks = static_cast<float>(gloss * (0.04 + 0.96 * metallic));
     const double alpha = std::max(roughness * roughness, 0.01);
@@ -432,6 +451,70 @@ class Importer {
       }
     }
     return m;
+  }
+
+  // The scene texture of a material's base colour texture (each glTF texture decoded once).
+  std::int32_t scene_texture(const tinygltf::TextureInfo& info, const std::string& where) {
+    const std::string info_where = where + "/baseColorTexture";
+    if (info.index >= static_cast<int>(model_.textures.size()))
+      fail(path_, info_where + "/index", std::to_string(info.index));
+    if (info.texCoord != 0) {
+      warnings_.push_back(info_where + ": texCoord " + std::to_string(info.texCoord) +
+                          " is not read; untextured");
+      return -1;
+    }
+    if (texture_of_.empty()) texture_of_.assign(model_.textures.size(), kUnconverted);
+    std::uint32_t& slot = texture_of_[static_cast<std::size_t>(info.index)];
+    if (slot != kUnconverted) return static_cast<std::int32_t>(slot);
+    const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(info.index)];
+    const std::string texture_where = "textures[" + std::to_string(info.index) + "]";
+    if (texture.source < 0 || texture.source >= static_cast<int>(model_.images.size()))
+      fail(path_, texture_where + "/source", std::to_string(texture.source));
+    renderer::Texture out = decode_image(texture.source);
+    if (texture.sampler >= 0) {
+      if (texture.sampler >= static_cast<int>(model_.samplers.size()))
+        fail(path_, texture_where + "/sampler", std::to_string(texture.sampler));
+      const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
+      out.wrap_u = texture_wrap(sampler.wrapS);
+      out.wrap_v = texture_wrap(sampler.wrapT);
+    }
+    scene_.textures.push_back(std::move(out));
+    slot = static_cast<std::uint32_t>(scene_.textures.size() - 1);
+    return static_cast<std::int32_t>(slot);
+  }
+
+  // The image's bytes (its buffer view, or the file or data URI tinygltf read) through stb_image.
+  renderer::Texture decode_image(int index) const {
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(index)];
+    const std::string where = "images[" + std::to_string(index) + "]";
+    const unsigned char* bytes = image.image.data();
+    std::size_t size = image.image.size();
+    if (image.bufferView >= 0) {
+      const tinygltf::BufferView& view = view_at(image.bufferView, where);
+      bytes = view_bytes(view);
+      size = view.byteLength;
+    }
+    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      fail(path_, where, "no image data (" + std::to_string(size) + " bytes)");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
+      fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
+    if (static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > kMaxGltfTexels)
+      fail(path_, where,
+           std::to_string(width) + "x" + std::to_string(height) + " texels, more than " +
+               std::to_string(kMaxGltfTexels));
+    unsigned char* pixels =
+        stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, 3);
+    if (!pixels) fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
+    renderer::Texture texture;
+    texture.width = width;
+    texture.height = height;
+    texture.texels.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    for (std::size_t i = 0; i < texture.texels.size(); ++i) {
+      texture.texels[i] = glm::vec3(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2]) / 255.0f;
+    }
+    stbi_image_free(pixels);
+    return texture;
   }
 
   static std::vector<glm::vec3> as_vec3(const std::vector<double>& values) {
@@ -736,14 +819,18 @@ class Importer {
   renderer::Camera framing_camera() const {
     renderer::Camera camera;
     glm::dvec3 centre(0.0);
-    double radius = 1.0;
+    double radius = 1.0;  // a single point (or nothing): a unit sphere around it
     if (lo_.x <= hi_.x) {
       centre = 0.5 * (lo_ + hi_);
-      radius = std::max(1.0, 0.5 * glm::length(hi_ - lo_));
+      const double half_diagonal = 0.5 * glm::length(hi_ - lo_);
+      if (half_diagonal > 0.0) radius = half_diagonal;
     }
+    // The bounding sphere fits the vertical field of view, seen 31 degrees from above.
+    const double half_fov = 0.5 * static_cast<double>(camera.vertical_fov_deg) * kPi / 180.0;
+    const double distance = radius / std::sin(half_fov);
     camera.up = {0.0f, 1.0f, 0.0f};
     camera.target = glm::vec3(centre);
-    camera.position = glm::vec3(centre + radius * glm::dvec3(0.0, 1.5, 2.5));
+    camera.position = glm::vec3(centre + distance * glm::normalize(glm::dvec3(0.0, 0.6, 1.0)));
     return camera;
   }
 
@@ -762,6 +849,7 @@ class Importer {
   SceneDescription scene_;
   std::vector<std::uint32_t> material_of_;  // [0]: the default material, [i + 1]: glTF material i
   std::vector<std::uint32_t> mesh_of_;      // per glTF mesh: its scene mesh
+  std::vector<std::uint32_t> texture_of_;   // per glTF texture: its scene texture
   std::vector<std::pair<glm::vec3, glm::vec3>> mesh_bounds_;  // per scene mesh, in its frame
   std::map<std::pair<std::uint32_t, std::array<float, 9>>, std::uint32_t> master_of_;
   std::vector<SceneNode> mesh_nodes_;
@@ -785,7 +873,7 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   if (!std::isfinite(light_scale) || light_scale < 0.0f)
     fail(path, "light scale", number_text(light_scale));
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skip_image, nullptr);
+  loader.SetImageLoader(keep_encoded_image, nullptr);
   tinygltf::Model model;
   std::string error, loader_warning;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();

@@ -11,6 +11,8 @@
 // becomes one line "FILE: what: value" in a std::invalid_argument.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -21,9 +23,10 @@ namespace scenes {
 // glTF light intensity is in candela (lm/sr), which is irradiance in lux at distance 1; levrt's
 // irradiance is in colour units (1.0 = 255), so one factor maps the one onto the other. The
 // default shows the sample assets (../shared/gltf) without clipping their light pools.
-inline constexpr float kDefaultGltfLightScale = 1.0f;
+inline constexpr float kDefaultGltfLightScale = 0.03f;
 inline constexpr std::size_t kMaxGltfNodes = std::size_t{1} << 20;
 inline constexpr std::size_t kMaxGltfAccessorElements = std::size_t{1} << 25;
+inline constexpr std::uint64_t kMaxGltfTexels = std::uint64_t{1} << 26;  // a base colour texture's
 
 // True for names ending in ".gltf" or ".glb".
 bool is_gltf_file_name(std::string_view name);

@@ -18,6 +18,7 @@
 #include "renderer/directional_light.h"
 #include "renderer/geometry.h"
 #include "renderer/material.h"
+#include "renderer/texture.h"
 
 namespace scenes {
 
@@ -121,6 +122,8 @@ struct SceneDescription {
   std::vector<NamedMaterial> materials;
   std::vector<Master> masters;  // any order; instances refer by index, cycles are invalid
   std::vector<MeshData> meshes;  // what mesh nodes draw; scene files have none
+  std::vector<renderer::Texture>
+      textures;  // what materials' colour_texture indexes; scene files have none
   // Suns (glTF directional lights) in world space: outside the light hierarchy, shadow-tested
   // at every shading point by every method. Scene files have none.
   std::vector<renderer::DirectionalLight> directional_lights;

@@ -202,11 +202,26 @@ class Analysis {
       if (!std::isfinite(m.ior) || m.ior < 0.01f || m.ior > 100.0f) {
         fail(path + "/ior", "must be in [0.01, 100] (" + number_text(m.ior) + ")");
       }
+      if (m.colour_texture < -1 ||
+          m.colour_texture >= static_cast<std::int64_t>(scene_.textures.size())) {
+        fail(path + "/colour_texture",
+             "no such texture (" + std::to_string(m.colour_texture) + ")");
+      }
     }
   }
 
-  // Each mesh once, however many nodes draw it.
+  // Each mesh once, however many nodes draw it; textures too.
   void check_meshes() {
+    for (std::size_t t = 0; t < scene_.textures.size(); ++t) {
+      const renderer::Texture& texture = scene_.textures[t];
+      if (texture.width <= 0 || texture.height <= 0 ||
+          texture.texels.size() !=
+              static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height)) {
+        fail("/textures/" + std::to_string(t), std::to_string(texture.texels.size()) +
+                                                   " texels for " + std::to_string(texture.width) +
+                                                   "x" + std::to_string(texture.height));
+      }
+    }
     for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
       const std::string path = "/meshes/" + std::to_string(m);
       std::uint64_t triangles = 0;
@@ -808,6 +823,7 @@ renderer::Scene instantiate_scene(const SceneDescription& description) {
   scene.ambient = description.ambient;
   scene.background = description.background;
   scene.directional_lights = description.directional_lights;
+  scene.textures = description.textures;
   for (const NamedMaterial& m : description.materials) scene.materials.push_back(m.material);
   // Only the root is copied and moved; masters are placed by the nodes above their instances.
   std::optional<SceneNode> moved_root;

@@ -272,13 +272,23 @@ TEST(GltfGeometry, PointsAndLinesAreSkippedWithOneWarningNamingTheMesh) {
       mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_POINTS, -1, "dots")));
   builder.add_node(
       mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_LINE, -1, "wires")));
+  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, -1, -1, "triangle")));
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene = parse(builder);
   const std::string warnings = testing::internal::GetCapturedStderr();
-  EXPECT_TRUE(scene.meshes.empty());
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].name, "triangle");
   EXPECT_NE(warnings.find("mesh 0 'dots'"), std::string::npos) << warnings;
   EXPECT_NE(warnings.find("mesh 1 'wires'"), std::string::npos) << warnings;
   EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 2) << warnings;
+
+  // With nothing else, one more line says that only the background remains.
+  builder.model.scenes[0].nodes.pop_back();
+  testing::internal::CaptureStderr();
+  EXPECT_TRUE(parse(builder).meshes.empty());
+  const std::string alone = testing::internal::GetCapturedStderr();
+  EXPECT_NE(alone.find("nothing to render"), std::string::npos) << alone;
+  EXPECT_EQ(std::count(alone.begin(), alone.end(), '\n'), 3) << alone;
 }
 
 void expect_refused(GltfBuilder& builder, const std::string& problem) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <stb/stb_image_write.h>
 #include <tiny_gltf.h>
 #include <glm/glm.hpp>
 
@@ -96,6 +97,33 @@ class GltfBuilder {
     index["light"] = tinygltf::Value(light);
     node.extensions["KHR_lights_punctual"] = tinygltf::Value(index);
     return node;
+  }
+
+  // A PNG image of width x height RGB texels (row 0 first) stored in a buffer view, sampled by
+  // a new texture with the given glTF wrap modes; returns the texture's index.
+  int add_png_texture(int width, int height, const std::vector<std::uint8_t>& rgb, int wrap_s,
+                      int wrap_t) {
+    std::vector<std::uint8_t> png;
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+          auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+          out->insert(out->end(), static_cast<std::uint8_t*>(data),
+                      static_cast<std::uint8_t*>(data) + size);
+        },
+        &png, width, height, 3, rgb.data(), width * 3);
+    tinygltf::Image image;
+    image.bufferView = add_view(png);
+    image.mimeType = "image/png";
+    model.images.push_back(image);
+    tinygltf::Sampler sampler;
+    sampler.wrapS = wrap_s;
+    sampler.wrapT = wrap_t;
+    model.samplers.push_back(sampler);
+    tinygltf::Texture texture;
+    texture.source = static_cast<int>(model.images.size() - 1);
+    texture.sampler = static_cast<int>(model.samplers.size() - 1);
+    model.textures.push_back(texture);
+    return static_cast<int>(model.textures.size() - 1);
   }
 
   std::string text() {
