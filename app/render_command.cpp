@@ -173,6 +173,9 @@ nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& s
   j["spp"] = settings.spp;
   j["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   j["subsample"] = settings.subsample;
+  j["light_scale"] = settings.light_scale;
+  j["camera"] = settings.camera;
+  j["directional_lights"] = loaded.scene.directional_lights.size();
   j["time_build_s"] = loaded.build_seconds;
   j["time_render_s"] = result.seconds;
   if (settings.subsample > 1) {

@@ -42,8 +42,10 @@ std::vector<std::string> scene_options() {
 const std::vector<SettingSpec>& setting_table() {
   static const std::vector<SettingSpec> table = {
       {"scene", "Scene", "scene model, or a scene file FILE.json (scenes/README.md), .gltf or .glb",
-       Choice{&Settings::scene, scene_options, is_scene_file_setting, "a .json/.gltf/.glb scene file"}},
-      {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
+       Choice{&Settings::scene, scene_options, is_scene_file_setting,
+              "a .json/.gltf/.glb scene file"}},
+      {"level", "Level", "scene model level (light count grows with it)",
+       IntRange{&Settings::level, 1, 10}},
       {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
        RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0}},
@@ -55,8 +57,20 @@ const std::vector<SettingSpec>& setting_table() {
       {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, 16384}},
       {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
       {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
-      {"threads", "Threads", "worker threads (0 = all cores)", IntRange{&Settings::threads, 0, 1024}},
-      {"subsample", "Subsample", "render every n-th pixel in x and y", IntRange{&Settings::subsample, 1, 64}},
+      {"threads", "Threads", "worker threads (0 = all cores)",
+       IntRange{&Settings::threads, 0, 1024}},
+      {"subsample", "Subsample", "render every n-th pixel in x and y",
+       IntRange{&Settings::subsample, 1, 64}},
+      {"light-scale", "Light scale",
+       "glTF scenes: a light's colour x intensity (candela; lux for directional lights) times this "
+       "is its "
+       "intensity in colour units",
+       RealRange{&Settings::light_scale, 0.0, 1e12, true, 1e-4, 1e2}},
+      {"camera", "Camera",
+       "glTF scenes: the perspective camera to look through, in node order (0: the first, or a "
+       "view "
+       "framing the scene when there is none)",
+       IntRange{&Settings::camera, 0, 1000000}},
   };
   return table;
 }

@@ -9,6 +9,8 @@
 #include <variant>
 #include <vector>
 
+#include "scenes/gltf_scene.h"
+
 namespace app {
 
 struct Settings {
@@ -25,6 +27,9 @@ struct Settings {
   int depth = 5;                // reflection/refraction depth
   int threads = 0;              // 0 = all cores
   int subsample = 1;            // render every n-th pixel in x and y (for slow references)
+  // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
+  double light_scale = scenes::kDefaultGltfLightScale;
+  int camera = 0;  // a glTF file's perspective camera, in node order
 };
 
 // A command-line or input mistake: reported as one line, exit code 2.

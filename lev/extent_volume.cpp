@@ -71,13 +71,21 @@ double spot_extent_reach(double theta, double delta, double dropoff, double cos_
 Bounds light_extent_bounds(const Light& light, float tolerance) {
   const float r = extent_radius(strength(light), tolerance);
   if (r == 0.0f) return Bounds{};
-  if (std::isinf(r)) return infinite_bounds();
+  const bool ranged = std::isfinite(light.range);
+  if (std::isinf(r) && !ranged) return infinite_bounds();
   const glm::vec3 p = light.position;
   // The radius in double, and never below the float one, so that a point at the float radius
-  // (p + r computed in float) is inside too.
+  // (p + r computed in float) is inside too. A range caps it, at every tolerance including 0:
+  // irradiance_falloff is zero where the float d^2 exceeds range^2, and that d^2 is within a few
+  // ulps of the exact one (kRangeSlack covers them).
+  constexpr double kRangeSlack = 1e-6;
+  const double unranged = std::isinf(r) ? std::numeric_limits<double>::infinity()
+                                        : std::max(std::sqrt(static_cast<double>(strength(light)) /
+                                                             static_cast<double>(tolerance)),
+                                                   static_cast<double>(r));
   const double radius =
-      std::max(std::sqrt(static_cast<double>(strength(light)) / static_cast<double>(tolerance)),
-               static_cast<double>(r));
+      ranged ? std::min(unranged, static_cast<double>(light.range) * (1.0 + kRangeSlack))
+             : unranged;
   Bounds b;
   if (light.kind == LightKind::point) {
     for (int i = 0; i < 3; ++i) {
@@ -96,7 +104,10 @@ Bounds light_extent_bounds(const Light& light, float tolerance) {
   constexpr double kRelativeSlack = 1e-6;
   const double delta = std::acos(
       std::clamp<double>(static_cast<double>(light.cos_cone_half_angle) - kCosSlack, -1.0, 1.0));
-  const double dropoff = light.dropoff;
+  // Where the range cuts the sphere, Warn's dropoff shape scaled to the range would be too
+  // small (its edge lies beyond the range); the cone cut by the range's sphere holds it.
+  const bool range_cuts = radius < unranged;
+  const double dropoff = range_cuts ? 0.0 : light.dropoff;
   const double reach_radius = radius * (1.0 + kRelativeSlack);
   for (int i = 0; i < 3; ++i) {
     const double theta = std::acos(std::clamp<double>(light.direction[i], -1.0, 1.0));

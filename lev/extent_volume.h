@@ -2,7 +2,9 @@
 // the tolerance. A point light's is the sphere of radius sqrt(I / tau). A spotlight's lies inside
 // its cone cut by that sphere, and with a dropoff it is smaller still: Warn's falloff
 // I cos(gamma)^P / d^2 >= tau (thesis eq. 5) holds only out to d = sqrt(I / tau) cos(gamma)^(P/2),
-// and its box is what the hierarchy stores. Tolerance 0 makes every volume unbounded.
+// and its box is what the hierarchy stores. Tolerance 0 makes every volume unbounded, except
+// that a light's range (glTF) caps the radius at every tolerance. The smooth spot profile never
+// exceeds 1, so its volume is bounded by the hard cone's (spot_profile.h).
 #pragma once
 
 #include "lev/bounds.h"

@@ -34,6 +34,7 @@ Light& push_world_light(std::vector<Light>& out, const Light& light, const WalkL
   } else {  // transform_light(light, {linear.rotation, linear.scale, translation}), in place
     l.position = linear.rotation * (linear.scale * light.position) + translation;
     l.intensity = light.intensity * (linear.scale * linear.scale);
+    l.range = light.range * linear.scale;
     if (light.kind == LightKind::spot) l.direction = glm::normalize(linear.rotation * light.direction);
   }
   return l;

@@ -24,4 +24,13 @@ Light make_spot_light(const glm::vec3& position, const glm::vec3& direction,
   return l;
 }
 
+Light make_smooth_spot_light(const glm::vec3& position, const glm::vec3& direction,
+                             const glm::vec3& intensity, float inner_cone_rad,
+                             float outer_cone_rad) {
+  Light l = make_spot_light(position, direction, intensity, outer_cone_rad, 0.0f);
+  l.profile = SpotProfile::smooth;
+  l.cos_inner_cone = static_cast<float>(std::cos(std::clamp<double>(inner_cone_rad, 0.0, M_PI)));
+  return l;
+}
+
 }  // namespace lev

@@ -1,6 +1,8 @@
 // Point lights and Warn spotlights (thesis 2.2, eq. 1-6) and their unshadowed irradiance.
 // The same struct describes a light in its own frame (inside the hierarchy) and in world space
-// (what a query returns); transform_light maps one to the other.
+// (what a query returns); transform_light maps one to the other. Imported glTF lights add two
+// things the thesis' lights lack: a range beyond which a light is dark, and the smooth spot
+// profile (spot_profile.h).
 #pragma once
 
 #include <algorithm>
@@ -10,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lev/spot_profile.h"
 #include "lev/transform.h"
 
 namespace lev {
@@ -22,7 +25,10 @@ struct Light {
   glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot axis (unit)
   float cos_cone_half_angle = -1.0f;  // spot: lit where cos(gamma) >= this (Warn's cone, fig. 2.4)
   float dropoff = 0.0f;               // spot: Warn exponent P in cos(gamma)^P (eq. 5)
+  float cos_inner_cone = 1.0f;        // smooth spot: full intensity where cos(gamma) >= this
+  float range = std::numeric_limits<float>::infinity();  // dark where the distance exceeds it
   LightKind kind = LightKind::point;
+  SpotProfile profile = SpotProfile::warn;
 };
 
 // Distances below this are clamped when evaluating 1/d^2: a shading point that sits on the light
@@ -37,6 +43,11 @@ Light make_point_light(const glm::vec3& position, const glm::vec3& intensity);
 // cone_half_angle_rad in [0, pi]; a cone of pi lights every direction. dropoff >= 0.
 Light make_spot_light(const glm::vec3& position, const glm::vec3& direction,
                       const glm::vec3& intensity, float cone_half_angle_rad, float dropoff);
+// A spot with the smooth profile (spot_profile.h): dark beyond outer_cone_rad, full inside
+// inner_cone_rad; 0 <= inner < outer <= pi/2 as glTF requires.
+Light make_smooth_spot_light(const glm::vec3& position, const glm::vec3& direction,
+                             const glm::vec3& intensity, float inner_cone_rad,
+                             float outer_cone_rad);
 
 // The light seen through xf: moved, turned, and with intensity times scale^2 (the 1/d^2 law
 // in the scaled frame), so irradiance(transform_light(l, xf), apply_point(xf, x)) equals
@@ -46,6 +57,7 @@ inline Light transform_light(const Light& light, const Similarity& xf) {
   Light l = light;
   l.position = apply_point(xf, light.position);
   l.intensity = light.intensity * (xf.scale * xf.scale);
+  l.range = light.range * xf.scale;
   if (light.kind == LightKind::spot) l.direction = glm::normalize(apply_direction(xf, light.direction));
   return l;
 }
@@ -56,15 +68,20 @@ inline float strength(const Light& light) {
 }
 
 // The geometric factor of eq. 1/5: cos(gamma)^P / d^2 (spot) or 1 / d^2 (point), zero outside
-// the cone. Multiply by intensity for the RGB irradiance.
+// the cone and beyond the range. Multiply by intensity for the RGB irradiance.
 inline float irradiance_falloff(const Light& light, const glm::vec3& x) {
   const glm::vec3 to_point = x - light.position;
   const float d2_raw = glm::dot(to_point, to_point);
+  // An infinite range squares to infinity, so lights without one never take this branch.
+  if (d2_raw > light.range * light.range) return 0.0f;
   const float d2 = std::max(d2_raw, kMinLightDistance * kMinLightDistance);
   if (light.kind == LightKind::point) return 1.0f / d2;
   // At the apex itself the direction is undefined; the point counts as on the axis.
   const float cos_gamma = d2_raw > 0.0f ? glm::dot(light.direction, to_point) / std::sqrt(d2_raw) : 1.0f;
   if (cos_gamma < light.cos_cone_half_angle) return 0.0f;
+  if (light.profile == SpotProfile::smooth) {
+    return smooth_spot_attenuation(cos_gamma, light.cos_cone_half_angle, light.cos_inner_cone) / d2;
+  }
   if (light.dropoff == 0.0f) return 1.0f / d2;
   // Warn's cos^P is defined for the front hemisphere; behind the light (cone wider than 90
   // degrees) a spot with a dropoff contributes nothing. pow underflows to 0 for huge P, never NaN.

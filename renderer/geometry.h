@@ -17,6 +17,7 @@ struct TriangleMesh {
   std::vector<glm::vec3> normals;  // per vertex, for smooth shading; same size as positions
   std::vector<glm::uvec3> triangles;
   std::uint32_t material = 0;
+  std::vector<glm::vec2> uvs;  // texture coordinates per vertex, or empty (no texture lookups)
 };
 
 struct Sphere {

@@ -1,6 +1,8 @@
 // Phong materials with Whitted's reflection and transmission coefficients (thesis eq. 7).
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 namespace renderer {
@@ -14,6 +16,8 @@ struct Material {
   float kr = 0.0f;         // mirror reflection
   float kt = 0.0f;         // transmission
   float ior = 1.5f;        // index of refraction for transmission
+  // Index into Scene::textures whose colour at the hit's uv multiplies `colour`, or -1.
+  std::int32_t colour_texture = -1;
 };
 
 }  // namespace renderer

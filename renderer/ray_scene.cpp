@@ -194,6 +194,8 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
     const glm::vec3 unit = robust_normalize(n);
     if (unit != glm::vec3(0.0f)) ns = rotation * unit;
     hit.material = mesh.material;
+    if (!mesh.uvs.empty())
+      hit.uv = (1.0f - u - v) * mesh.uvs[tri.x] + u * mesh.uvs[tri.y] + v * mesh.uvs[tri.z];
   } else {
     hit.material = prototype.spheres[rh.hit.primID].material;
   }

@@ -23,6 +23,7 @@ struct SurfaceHit {
   glm::vec3 geometric_normal{0.0f};  // world space, unit, as the surface is oriented
   glm::vec3 shading_normal{0.0f};    // world space, unit, interpolated
   std::uint32_t material = 0;
+  glm::vec2 uv{0.0f};  // interpolated texture coordinates (0 where the mesh has none)
 };
 
 // Origin offset along the normal that keeps a secondary ray off the surface it leaves: a floor

@@ -10,8 +10,10 @@
 #include "lev/light_hierarchy.h"
 #include "lev/light_tree.h"
 #include "renderer/camera.h"
+#include "renderer/directional_light.h"
 #include "renderer/geometry.h"
 #include "renderer/material.h"
+#include "renderer/texture.h"
 
 namespace renderer {
 
@@ -21,8 +23,10 @@ struct Scene {
   Camera camera;
   lev::LightTree light_tree;
   lev::LightHierarchy lights;
+  std::vector<DirectionalLight> directional_lights;
   Geometry geometry;
   std::vector<Material> materials;
+  std::vector<Texture> textures;  // what materials' colour_texture indexes
   glm::vec3 ambient{1.0f};     // I_a of eq. 3
   glm::vec3 background{0.0f};  // radiance of rays that leave the scene
   // Everything above is in render space: world = render space + world_origin. Far-away scenes

@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "renderer/direction.h"
 
@@ -30,14 +31,20 @@ class SurfacePoint final : public lev::ShadingPoint {
     const glm::vec3 l = to_light / std::sqrt(d2);
     const float cos_theta = glm::dot(normal_, l);
     if (cos_theta <= 0.0f) return glm::vec3(0.0f);
-    const glm::vec3 e = lev::irradiance(light, position_);
-    glm::vec3 response = material_.kd * cos_theta * material_.colour;
-    if (material_.ks > 0.0f) {
-      const glm::vec3 mirror = 2.0f * cos_theta * normal_ - l;
-      const float cos_alpha = glm::dot(mirror, to_viewer_);
-      if (cos_alpha > 0.0f) response += glm::vec3(material_.ks * std::pow(cos_alpha, material_.shininess));
-    }
-    return e * response;
+    return lev::irradiance(light, position_) * response(l, cos_theta);
+  }
+
+  // A sun: its irradiance times the response toward it, when the ray to infinity is free.
+  glm::vec3 directional_radiance(const DirectionalLight& sun,
+                                 lev::SelectionCounters& counters) const {
+    const glm::vec3 l = -sun.direction;
+    const float cos_theta = glm::dot(normal_, l);
+    if (cos_theta <= 0.0f || !castable(shadow_origin_, l)) return glm::vec3(0.0f);
+    ++counters.shadow_rays;
+    constexpr float kToInfinity = std::numeric_limits<float>::infinity();
+    if (ray_log_) ray_log_->push_back({shadow_origin_, kToInfinity, l, RayKind::shadow});
+    if (rays_.occluded(shadow_origin_, l, kToInfinity)) return glm::vec3(0.0f);
+    return sun.irradiance * response(l, cos_theta);
   }
 
   bool visible(const lev::Light& light) override {
@@ -53,6 +60,17 @@ class SurfacePoint final : public lev::ShadingPoint {
   }
 
  private:
+  // Phong's diffuse and specular response (thesis eq. 6) to light arriving along unit l.
+  glm::vec3 response(const glm::vec3& l, float cos_theta) const {
+    glm::vec3 r = material_.kd * cos_theta * material_.colour;
+    if (material_.ks > 0.0f) {
+      const glm::vec3 mirror = 2.0f * cos_theta * normal_ - l;
+      const float cos_alpha = glm::dot(mirror, to_viewer_);
+      if (cos_alpha > 0.0f) r += glm::vec3(material_.ks * std::pow(cos_alpha, material_.shininess));
+    }
+    return r;
+  }
+
   const RayScene& rays_;
   const Material& material_;
   glm::vec3 normal_, to_viewer_, position_, shadow_origin_;
@@ -71,7 +89,11 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   if (context.ray_log) context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
   if (!context.rays.intersect(ray, hit)) return context.scene.background;
   ++counters.shading_points;
-  const Material& material = context.scene.materials[hit.material];
+  Material material = context.scene.materials[hit.material];
+  if (material.colour_texture >= 0) {
+    material.colour *= sample_texture(
+        context.scene.textures[static_cast<std::size_t>(material.colour_texture)], hit.uv);
+  }
   const bool entering = glm::dot(hit.geometric_normal, ray.direction) < 0.0f;
   // Surfaces are two-sided: shade with the normal that faces the incoming ray.
   const glm::vec3 facing = entering ? hit.shading_normal : -hit.shading_normal;
@@ -81,6 +103,10 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
   SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
   radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+  // Suns are outside every method's selection: all methods add them alike, after the rest.
+  for (const DirectionalLight& sun : context.scene.directional_lights) {
+    radiance += point.directional_radiance(sun, counters.selection);
+  }
 
   if (depth >= context.max_depth) return radiance;
   const float cos_i = glm::dot(to_viewer, facing);

@@ -1,17 +1,26 @@
 #include "scenes/gltf_scene.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <initializer_list>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "renderer/direction.h"
 #include "scenes/scene_instantiation.h"
 
 namespace scenes {
@@ -35,16 +44,29 @@ std::string first_line(const std::string& text) {
   return end == std::string::npos ? text : text.substr(0, end);
 }
 
-// Images are never decoded: only material factors are used.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                const unsigned char*, int, void*) {
+// Images keep their encoded bytes here; the importer decodes only those a material samples.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->width = image->height = 0;
   return true;
+}
+
+renderer::TextureWrap texture_wrap(int gltf_wrap) {
+  switch (gltf_wrap) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+      return renderer::TextureWrap::clamp_to_edge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+      return renderer::TextureWrap::mirrored_repeat;
+    default:
+      return renderer::TextureWrap::repeat;
+  }
 }
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const std::string& path, float light_scale)
-      : model_(model), path_(path), light_scale_(light_scale) {}
+  Importer(const tinygltf::Model& model, const std::string& path, float light_scale, int camera)
+      : model_(model), path_(path), light_scale_(light_scale), wanted_camera_(camera) {}
 
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -61,12 +83,22 @@ class Importer {
     on_path_.assign(model_.nodes.size(), false);
     for (const int node : model_.scenes[static_cast<std::size_t>(scene_index)].nodes)
       visit(node, glm::dmat4(1.0));
-    SceneDescription scene;
-    scene.name = std::filesystem::path(path_).stem().string();
-    scene.ambient = glm::vec3(0.0f);
-    scene.root = union_node(std::move(lights_));
-    scene.camera = has_camera_ ? camera_ : framing_camera();
-    return scene;
+    scene_.name = std::filesystem::path(path_).stem().string();
+    scene_.ambient = glm::vec3(0.0f);
+    if (lights_.empty() && mesh_nodes_.empty() && scene_.directional_lights.empty()) {
+      warnings_.push_back("nothing to render (no triangle meshes or lights in scene " +
+                          std::to_string(scene_index) + "): the background only");
+    }
+    std::vector<SceneNode> children = std::move(lights_);
+    for (SceneNode& mesh : mesh_nodes_) children.push_back(std::move(mesh));
+    scene_.root = union_node(std::move(children));
+    if (!has_camera_ && wanted_camera_ > 0) {
+      fail(path_, "camera",
+           std::to_string(wanted_camera_) + " (the file has " + std::to_string(cameras_seen_) +
+               " perspective cameras in its scene)");
+    }
+    scene_.camera = has_camera_ ? camera_ : framing_camera();
+    return std::move(scene_);
   }
 
  private:
@@ -89,12 +121,8 @@ class Importer {
     for (std::size_t i = 0; i < model_.accessors.size(); ++i) {
       const tinygltf::Accessor& accessor = model_.accessors[i];
       const std::string where = "accessors[" + std::to_string(i) + "]";
-      if (accessor.bufferView < 0) continue;  // all zeros (or sparse only): no bytes to check
-      if (static_cast<std::size_t>(accessor.bufferView) >= model_.bufferViews.size()) {
-        fail(path_, where + "/bufferView", std::to_string(accessor.bufferView));
-      }
-      const tinygltf::BufferView& view =
-          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+      if (accessor.count > kMaxGltfAccessorElements)
+        fail(path_, where + "/count", std::to_string(accessor.count));
       const int component_bytes =
           tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType));
       const int components =
@@ -103,18 +131,66 @@ class Importer {
         fail(path_, where, "unknown component type or type");
       const auto element_bytes =
           static_cast<std::size_t>(component_bytes) * static_cast<std::size_t>(components);
-      const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_bytes;
-      if (accessor.count == 0) continue;
-      const double end_bytes =
-          static_cast<double>(accessor.byteOffset) +
-          static_cast<double>(stride) * static_cast<double>(accessor.count - 1) +
-          static_cast<double>(element_bytes);
-      if (end_bytes > static_cast<double>(view.byteLength)) {
-        fail(path_, where,
-             number_text(accessor.count) + " elements beyond the view's " +
-                 std::to_string(view.byteLength) + " bytes");
+      if (accessor.sparse.isSparse) check_sparse(accessor, where, element_bytes);
+      if (accessor.bufferView < 0) continue;  // all zeros (or sparse only): no bytes to check
+      if (static_cast<std::size_t>(accessor.bufferView) >= model_.bufferViews.size()) {
+        fail(path_, where + "/bufferView", std::to_string(accessor.bufferView));
       }
+      const tinygltf::BufferView& view =
+          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+      if (view.byteStride != 0 && view.byteStride < element_bytes) {
+        fail(path_, where,
+             "byteStride " + std::to_string(view.byteStride) + " below the element's " +
+                 std::to_string(element_bytes) + " bytes");
+      }
+      const std::size_t stride = view.byteStride != 0 ? view.byteStride : element_bytes;
+      check_span(where, accessor.byteOffset, stride, accessor.count, element_bytes,
+                 view.byteLength);
     }
+  }
+
+  // byte_offset + stride * (count - 1) + element_bytes within view_bytes (none when count is 0).
+  void check_span(const std::string& where, double byte_offset, std::size_t stride,
+                  std::size_t count, std::size_t element_bytes, std::size_t view_bytes) const {
+    if (count == 0) return;
+    const double end_bytes = byte_offset +
+                             static_cast<double>(stride) * static_cast<double>(count - 1) +
+                             static_cast<double>(element_bytes);
+    if (byte_offset < 0.0 || end_bytes > static_cast<double>(view_bytes)) {
+      fail(path_, where,
+           std::to_string(count) + " elements beyond the view's " + std::to_string(view_bytes) +
+               " bytes");
+    }
+  }
+
+  const tinygltf::BufferView& view_at(int index, const std::string& where) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.bufferViews.size())
+      fail(path_, where + "/bufferView", std::to_string(index));
+    return model_.bufferViews[static_cast<std::size_t>(index)];
+  }
+
+  void check_sparse(const tinygltf::Accessor& accessor, const std::string& where,
+                    std::size_t element_bytes) const {
+    const int count = accessor.sparse.count;
+    if (count <= 0 || static_cast<std::size_t>(count) > accessor.count)
+      fail(path_, where + "/sparse/count", std::to_string(count));
+    const int index_bytes = tinygltf::GetComponentSizeInBytes(
+        static_cast<std::uint32_t>(accessor.sparse.indices.componentType));
+    const int index_type = accessor.sparse.indices.componentType;
+    if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+      fail(path_, where + "/sparse/indices/componentType", std::to_string(index_type));
+    const auto sparse_count = static_cast<std::size_t>(count);
+    const tinygltf::BufferView& indices =
+        view_at(accessor.sparse.indices.bufferView, where + "/sparse/indices");
+    check_span(where + "/sparse/indices", accessor.sparse.indices.byteOffset,
+               static_cast<std::size_t>(index_bytes), sparse_count,
+               static_cast<std::size_t>(index_bytes), indices.byteLength);
+    const tinygltf::BufferView& values =
+        view_at(accessor.sparse.values.bufferView, where + "/sparse/values");
+    check_span(where + "/sparse/values", accessor.sparse.values.byteOffset, element_bytes,
+               sparse_count, element_bytes, values.byteLength);
   }
 
   void check_lights() const {
@@ -198,6 +274,456 @@ class Importer {
     return static_cast<int>(value);
   }
 
+  // --- accessors (bounds checked in check_buffers) -------------------------------------------
+
+  const unsigned char* view_bytes(const tinygltf::BufferView& view) const {
+    return model_.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset;
+  }
+
+  // One component as stored, integers exactly (a double holds every u32).
+  static double raw_component(const unsigned char* at, int component_type) {
+    switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return static_cast<double>(load<std::int8_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return static_cast<double>(load<std::uint8_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return static_cast<double>(load<std::int16_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return static_cast<double>(load<std::uint16_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return static_cast<double>(load<std::uint32_t>(at));
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return static_cast<double>(load<float>(at));
+      default:
+        return static_cast<double>(load<double>(at));
+    }
+  }
+
+  // The spec's decoding of normalized integers: c / max, signed ones clamped at -1.
+  static double normalized_component(double raw, int component_type) {
+    switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return std::max(raw / 127.0, -1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return raw / 255.0;
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return std::max(raw / 32767.0, -1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return raw / 65535.0;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return raw / 4294967295.0;
+      default:
+        return raw;
+    }
+  }
+
+  // Every element's components, row after row: the view's stride applied, normalized integers
+  // decoded, then the sparse substitutions. `types` lists the accessor types the caller takes.
+  std::vector<double> read_accessor(int index, std::initializer_list<int> types,
+                                    const std::string& where) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
+      fail(path_, where, "accessor " + std::to_string(index));
+    const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(index)];
+    const std::string accessor_where = "accessors[" + std::to_string(index) + "]";
+    if (std::find(types.begin(), types.end(), accessor.type) == types.end())
+      fail(path_, accessor_where + "/type",
+           "type " + std::to_string(accessor.type) + " where " + where + " needs another");
+    const auto components = static_cast<std::size_t>(
+        tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
+    const auto component_bytes = static_cast<std::size_t>(
+        tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType)));
+    const int type = accessor.componentType;
+    auto decode = [&](const unsigned char* at) {
+      const double raw = raw_component(at, type);
+      return accessor.normalized ? normalized_component(raw, type) : raw;
+    };
+    std::vector<double> values(accessor.count * components, 0.0);
+    if (accessor.bufferView >= 0) {
+      const tinygltf::BufferView& view =
+          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
+      const std::size_t stride =
+          view.byteStride != 0 ? view.byteStride : components * component_bytes;
+      const unsigned char* base = view_bytes(view) + accessor.byteOffset;
+      for (std::size_t e = 0; e < accessor.count; ++e) {
+        for (std::size_t c = 0; c < components; ++c)
+          values[e * components + c] = decode(base + e * stride + c * component_bytes);
+      }
+    }
+    if (accessor.sparse.isSparse) {
+      const auto& sparse = accessor.sparse;
+      const tinygltf::BufferView& index_view =
+          model_.bufferViews[static_cast<std::size_t>(sparse.indices.bufferView)];
+      const tinygltf::BufferView& value_view =
+          model_.bufferViews[static_cast<std::size_t>(sparse.values.bufferView)];
+      const auto index_bytes = static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(
+          static_cast<std::uint32_t>(sparse.indices.componentType)));
+      const unsigned char* indices = view_bytes(index_view) + sparse.indices.byteOffset;
+      const unsigned char* replacements = view_bytes(value_view) + sparse.values.byteOffset;
+      for (std::size_t k = 0; k < static_cast<std::size_t>(sparse.count); ++k) {
+        const double target =
+            raw_component(indices + k * index_bytes, sparse.indices.componentType);
+        if (target >= static_cast<double>(accessor.count))
+          fail(path_, accessor_where + "/sparse/indices",
+               number_text(target) + " beyond the count " + std::to_string(accessor.count));
+        const auto e = static_cast<std::size_t>(target);
+        for (std::size_t c = 0; c < components; ++c) {
+          values[e * components + c] =
+              decode(replacements + (k * components + c) * component_bytes);
+        }
+      }
+    }
+    return values;
+  }
+
+  template <typename T>
+  static T load(const unsigned char* at) {
+    T value;
+    std::memcpy(&value, at, sizeof(T));
+    return value;
+  }
+
+  // --- meshes -----------------------------------------------------------------------------------
+
+  std::uint32_t scene_material(int index, const std::string& where) {
+    if (index >= static_cast<int>(model_.materials.size()))
+      fail(path_, where + "/material", std::to_string(index));
+    const std::size_t slot = static_cast<std::size_t>(index + 1);  // 0: the default material
+    if (material_of_.empty()) material_of_.assign(model_.materials.size() + 1, kNoIndex);
+    if (material_of_[slot] != kNoIndex) return material_of_[slot];
+    tinygltf::Material fallback;  // the spec's default: white, metallic 1, roughness 1
+    const tinygltf::Material& source =
+        index >= 0 ? model_.materials[static_cast<std::size_t>(index)] : fallback;
+    const std::string name =
+        index >= 0 ? "gltf material " + std::to_string(index) : "gltf default material";
+    material_of_[slot] =
+        add_material(scene_, name,
+                     phong_from_gltf(source, index >= 0 ? "materials[" + std::to_string(index) + "]"
+                                                        : "default material"));
+    return material_of_[slot];
+  }
+
+  // The mapping scenes/README.md tabulates.
+  renderer::Material phong_from_gltf(const tinygltf::Material& source, const std::string& where) {
+    const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() != 4)
+      fail(path_, where + "/baseColorFactor",
+           std::to_string(pbr.baseColorFactor.size()) + " values");
+    for (const double c : pbr.baseColorFactor) {
+      if (!std::isfinite(c) || c < 0.0 || c > 1.0)
+        fail(path_, where + "/baseColorFactor", number_text(c));
+    }
+    const double metallic = pbr.metallicFactor;
+    const double roughness = pbr.roughnessFactor;
+    if (!std::isfinite(metallic) || metallic < 0.0 || metallic > 1.0)
+      fail(path_, where + "/metallicFactor", number_text(metallic));
+    if (!std::isfinite(roughness) || roughness < 0.0 || roughness > 1.0)
+      fail(path_, where + "/roughnessFactor", number_text(roughness));
+    const double gloss = 1.0 - roughness;
+    renderer::Material m;
+    m.colour = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]),
+                         static_cast<float>(pbr.baseColorFactor[1]),
+                         static_cast<float>(pbr.baseColorFactor[2]));
+    if (pbr.baseColorTexture.index >= 0)
+      m.colour_texture = scene_texture(pbr.baseColorTexture, where);
+    m.kd = static_cast<float>(1.0 - metallic * gloss);
+    m.ks = static_cast<float>(gloss * (0.04 + 0.96 * metallic));
+    const double alpha = std::max(roughness * roughness, 0.01);
+    m.shininess = static_cast<float>(std::clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 10000.0));
+    m.kr = static_cast<float>(metallic * gloss * gloss);
+    const auto transmission = source.extensions.find("KHR_materials_transmission");
+    if (transmission != source.extensions.end()) {
+      const tinygltf::Value& factor = transmission->second.Get("transmissionFactor");
+      const double kt = factor.IsNumber() ? factor.GetNumberAsDouble() : 0.0;
+      if (!std::isfinite(kt) || kt < 0.0 || kt > 1.0)
+        fail(path_, where + "/KHR_materials_transmission/transmissionFactor", number_text(kt));
+      m.kt = static_cast<float>(kt);
+      m.kd *= static_cast<float>(1.0 - kt);
+    }
+    const auto ior = source.extensions.find("KHR_materials_ior");
+    if (ior != source.extensions.end()) {
+      const tinygltf::Value& value = ior->second.Get("ior");
+      if (value.IsNumber()) {
+        const double v = value.GetNumberAsDouble();
+        if (!std::isfinite(v) || v < 1.0 || v > 100.0)
+          fail(path_, where + "/KHR_materials_ior/ior", number_text(v));
+        m.ior = static_cast<float>(v);
+      }
+    }
+    return m;
+  }
+
+  // The scene texture of a material's base colour texture (each glTF texture decoded once).
+  std::int32_t scene_texture(const tinygltf::TextureInfo& info, const std::string& where) {
+    const std::string info_where = where + "/baseColorTexture";
+    if (info.index >= static_cast<int>(model_.textures.size()))
+      fail(path_, info_where + "/index", std::to_string(info.index));
+    if (info.texCoord != 0) {
+      warnings_.push_back(info_where + ": texCoord " + std::to_string(info.texCoord) +
+                          " is not read; untextured");
+      return -1;
+    }
+    if (texture_of_.empty()) texture_of_.assign(model_.textures.size(), kUnconverted);
+    std::uint32_t& slot = texture_of_[static_cast<std::size_t>(info.index)];
+    if (slot != kUnconverted) return static_cast<std::int32_t>(slot);
+    const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(info.index)];
+    const std::string texture_where = "textures[" + std::to_string(info.index) + "]";
+    if (texture.source < 0 || texture.source >= static_cast<int>(model_.images.size()))
+      fail(path_, texture_where + "/source", std::to_string(texture.source));
+    renderer::Texture out = decode_image(texture.source);
+    if (texture.sampler >= 0) {
+      if (texture.sampler >= static_cast<int>(model_.samplers.size()))
+        fail(path_, texture_where + "/sampler", std::to_string(texture.sampler));
+      const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
+      out.wrap_u = texture_wrap(sampler.wrapS);
+      out.wrap_v = texture_wrap(sampler.wrapT);
+    }
+    scene_.textures.push_back(std::move(out));
+    slot = static_cast<std::uint32_t>(scene_.textures.size() - 1);
+    return static_cast<std::int32_t>(slot);
+  }
+
+  // The image's bytes (its buffer view, or the file or data URI tinygltf read) through stb_image.
+  renderer::Texture decode_image(int index) const {
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(index)];
+    const std::string where = "images[" + std::to_string(index) + "]";
+    const unsigned char* bytes = image.image.data();
+    std::size_t size = image.image.size();
+    if (image.bufferView >= 0) {
+      const tinygltf::BufferView& view = view_at(image.bufferView, where);
+      bytes = view_bytes(view);
+      size = view.byteLength;
+    }
+    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      fail(path_, where, "no image data (" + std::to_string(size) + " bytes)");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
+      fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
+    if (static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > kMaxGltfTexels)
+      fail(path_, where,
+           std::to_string(width) + "x" + std::to_string(height) + " texels, more than " +
+               std::to_string(kMaxGltfTexels));
+    unsigned char* pixels =
+        stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, 3);
+    if (!pixels) fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
+    renderer::Texture texture;
+    texture.width = width;
+    texture.height = height;
+    texture.texels.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    for (std::size_t i = 0; i < texture.texels.size(); ++i) {
+      texture.texels[i] = glm::vec3(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2]) / 255.0f;
+    }
+    stbi_image_free(pixels);
+    return texture;
+  }
+
+  static std::vector<glm::vec3> as_vec3(const std::vector<double>& values) {
+    std::vector<glm::vec3> out(values.size() / 3);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      out[i] = glm::vec3(glm::dvec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]));
+    }
+    return out;
+  }
+
+  // The triangles a primitive's mode makes of its vertex list, as the spec numbers them: strip
+  // triangle i is (i, i+1, i+2) for even i and (i, i+2, i+1) for odd i; fans share vertex 0.
+  static std::vector<glm::uvec3> triangles_of_mode(const std::vector<std::uint32_t>& v, int mode) {
+    std::vector<glm::uvec3> triangles;
+    if (mode == TINYGLTF_MODE_TRIANGLES || mode < 0) {
+      for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+        triangles.push_back({v[i], v[i + 1], v[i + 2]});
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (std::size_t i = 0; i + 2 < v.size(); ++i) {
+        triangles.push_back(i % 2 == 0 ? glm::uvec3(v[i], v[i + 1], v[i + 2])
+                                       : glm::uvec3(v[i], v[i + 2], v[i + 1]));
+      }
+    } else {
+      for (std::size_t i = 1; i + 1 < v.size(); ++i) triangles.push_back({v[0], v[i], v[i + 1]});
+    }
+    return triangles;
+  }
+
+  renderer::TriangleMesh read_primitive(const tinygltf::Primitive& primitive,
+                                        const std::string& where) {
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end())
+      fail(path_, where + "/attributes/POSITION", "missing");
+    renderer::TriangleMesh part;
+    part.positions = as_vec3(
+        read_accessor(position->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/POSITION"));
+    const auto vertex_count = part.positions.size();
+    std::vector<std::uint32_t> vertices;
+    if (primitive.indices >= 0) {
+      const std::string indices_where = where + "/indices";
+      if (static_cast<std::size_t>(primitive.indices) < model_.accessors.size()) {
+        const int type =
+            model_.accessors[static_cast<std::size_t>(primitive.indices)].componentType;
+        if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+          fail(path_, indices_where, "component type " + std::to_string(type));
+      }
+      for (const double index :
+           read_accessor(primitive.indices, {TINYGLTF_TYPE_SCALAR}, indices_where)) {
+        if (index >= static_cast<double>(vertex_count))
+          fail(path_, indices_where,
+               "vertex " + number_text(index) + " of " + std::to_string(vertex_count));
+        vertices.push_back(static_cast<std::uint32_t>(index));
+      }
+    } else {
+      for (std::size_t i = 0; i < vertex_count; ++i)
+        vertices.push_back(static_cast<std::uint32_t>(i));
+    }
+    part.triangles = triangles_of_mode(vertices, primitive.mode);
+    const auto normal = primitive.attributes.find("NORMAL");
+    const auto uv = primitive.attributes.find("TEXCOORD_0");
+    if (uv != primitive.attributes.end()) {
+      const std::vector<double> values =
+          read_accessor(uv->second, {TINYGLTF_TYPE_VEC2}, where + "/attributes/TEXCOORD_0");
+      if (values.size() != 2 * vertex_count)
+        fail(path_, where + "/attributes/TEXCOORD_0",
+             std::to_string(values.size() / 2) + " for " + std::to_string(vertex_count) +
+                 " vertices");
+      for (std::size_t i = 0; i < vertex_count; ++i)
+        part.uvs.emplace_back(static_cast<float>(values[2 * i]),
+                              static_cast<float>(values[2 * i + 1]));
+    }
+    if (normal != primitive.attributes.end()) {
+      part.normals = as_vec3(
+          read_accessor(normal->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/NORMAL"));
+      if (part.normals.size() != vertex_count)
+        fail(path_, where + "/attributes/NORMAL",
+             std::to_string(part.normals.size()) + " for " + std::to_string(vertex_count) +
+                 " vertices");
+      return part;
+    }
+    // No normals: flat ones (the spec), so every triangle gets its own three vertices.
+    renderer::TriangleMesh flat;
+    for (const glm::uvec3& t : part.triangles) {
+      const glm::vec3 n = renderer::robust_normalize(glm::cross(
+          part.positions[t.y] - part.positions[t.x], part.positions[t.z] - part.positions[t.x]));
+      const auto base = static_cast<std::uint32_t>(flat.positions.size());
+      for (int c = 0; c < 3; ++c) {
+        flat.positions.push_back(part.positions[t[c]]);
+        flat.normals.push_back(n);
+        if (!part.uvs.empty()) flat.uvs.push_back(part.uvs[t[c]]);
+      }
+      flat.triangles.emplace_back(base, base + 1, base + 2);
+    }
+    return flat;
+  }
+
+  // The scene mesh of glTF mesh `index` (converted once), or kNoIndex when it has no triangles.
+  std::uint32_t scene_mesh(int index, const std::string& where) {
+    if (index >= static_cast<int>(model_.meshes.size()))
+      fail(path_, where + "/mesh", std::to_string(index));
+    if (mesh_of_.empty()) mesh_of_.assign(model_.meshes.size(), kUnconverted);
+    std::uint32_t& slot = mesh_of_[static_cast<std::size_t>(index)];
+    if (slot != kUnconverted) return slot;
+    const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(index)];
+    MeshData data;
+    data.name = mesh.name;
+    std::vector<int> skipped_modes;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = mesh.primitives[p];
+      const std::string primitive_where =
+          "meshes[" + std::to_string(index) + "]/primitives[" + std::to_string(p) + "]";
+      if (primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        fail(path_, primitive_where + "/mode", std::to_string(primitive.mode));
+      if (primitive.mode >= 0 && primitive.mode < TINYGLTF_MODE_TRIANGLES) {
+        skipped_modes.push_back(primitive.mode);
+        continue;
+      }
+      renderer::TriangleMesh part = read_primitive(primitive, primitive_where);
+      part.material = scene_material(primitive.material, primitive_where);
+      if (!part.triangles.empty()) data.parts.push_back(std::move(part));
+    }
+    if (!skipped_modes.empty()) {
+      warnings_.push_back("mesh " + std::to_string(index) + " '" + mesh.name +
+                          "': " + std::to_string(skipped_modes.size()) +
+                          " primitive(s) of points or lines skipped (mode " +
+                          std::to_string(skipped_modes.front()) + ")");
+    }
+    if (data.parts.empty()) {
+      slot = kNoIndex;
+      return slot;
+    }
+    glm::vec3 lo(std::numeric_limits<float>::infinity()),
+        hi(-std::numeric_limits<float>::infinity());
+    for (const renderer::TriangleMesh& part : data.parts) {
+      for (const glm::vec3& p : part.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+    mesh_bounds_.push_back({lo, hi});
+    scene_.meshes.push_back(std::move(data));
+    slot = static_cast<std::uint32_t>(scene_.meshes.size() - 1);
+    return slot;
+  }
+
+  // A node drawing a mesh: a similarity placement of the mesh's one master when the node's world
+  // matrix is one (the usual case: every such node shares one Embree prototype); otherwise a
+  // master per distinct linear part, with that part baked in, placed by the translation.
+  void place_mesh(int gltf_mesh, const glm::dmat4& world, const std::string& where) {
+    const std::uint32_t mesh = scene_mesh(gltf_mesh, where);
+    if (mesh == kNoIndex) return;
+    const glm::dmat3 linear(world);
+    const glm::dvec3 translation(world[3]);
+    const double det = glm::determinant(linear);
+    if (!std::isfinite(det) || !(std::abs(det) > 1e-18))
+      fail(path_, where, "singular transform of a mesh (determinant " + number_text(det) + ")");
+    const double scale = std::cbrt(std::abs(det));
+    const glm::dmat3 unit = linear / scale;
+    const glm::dmat3 gram = glm::transpose(unit) * unit;
+    double off_orthonormal = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      for (int r = 0; r < 3; ++r)
+        off_orthonormal = std::max(off_orthonormal, std::abs(gram[c][r] - (c == r ? 1.0 : 0.0)));
+    }
+    Affine place;
+    place.translate = glm::vec3(translation);
+    glm::mat3 baked(1.0f);
+    if (det > 0.0 && off_orthonormal < 1e-6) {
+      place.scale = static_cast<float>(scale);
+      const glm::dquat rotation = glm::normalize(glm::quat_cast(unit));
+      const double angle = glm::angle(rotation);
+      if (angle > 0.0) {
+        place.rotate_axis = glm::vec3(glm::axis(rotation));
+        place.rotate_degrees = static_cast<float>(angle * 180.0 / kPi);
+      }
+    } else {
+      baked = glm::mat3(linear);
+    }
+    const std::uint32_t master = mesh_master(mesh, baked);
+    mesh_nodes_.push_back(affine_node(place, instance_node(master)));
+    const auto& [lo, hi] = mesh_bounds_[mesh];
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::dvec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                             corner & 4 ? hi.z : lo.z);
+      const glm::dvec3 p = glm::dvec3(world * glm::dvec4(local, 1.0));
+      lo_ = glm::min(lo_, p);
+      hi_ = glm::max(hi_, p);
+    }
+  }
+
+  std::uint32_t mesh_master(std::uint32_t mesh, const glm::mat3& linear) {
+    std::array<float, 9> key_linear{};
+    for (int c = 0; c < 3; ++c) {
+      for (int r = 0; r < 3; ++r) key_linear[static_cast<std::size_t>(3 * c + r)] = linear[c][r];
+    }
+    const auto key = std::make_pair(mesh, key_linear);
+    const auto found = master_of_.find(key);
+    if (found != master_of_.end()) return found->second;
+    const std::string name =
+        "mesh " + std::to_string(mesh) + " '" + scene_.meshes[mesh].name + "'" +
+        (linear == glm::mat3(1.0f) ? std::string()
+                                   : " deformed " + std::to_string(master_of_.size()));
+    const std::uint32_t master = add_master(scene_, name, mesh_node(mesh, linear));
+    master_of_.emplace(key, master);
+    return master;
+  }
+
   void visit(int index, const glm::dmat4& parent) {
     if (index < 0 || index >= static_cast<int>(model_.nodes.size()))
       fail(path_, "node", std::to_string(index));
@@ -215,31 +741,26 @@ class Importer {
     if (light >= 0)
       add_light(model_.lights[static_cast<std::size_t>(light)], position, forward, where);
     if (node.camera >= 0) add_camera(node, world, where);
-    if (node.mesh >= 0 && !warned_mesh_) {
-      warned_mesh_ = true;
-      const std::string name = node.mesh < static_cast<int>(model_.meshes.size())
-                                   ? model_.meshes[static_cast<std::size_t>(node.mesh)].name
-                                   : std::string();
-      warnings_.push_back("triangle meshes are not imported (first: mesh " +
-                          std::to_string(node.mesh) + " '" + name + "')");
-    }
+    if (node.mesh >= 0) place_mesh(node.mesh, world, where);
     for (const int child : node.children) visit(child, world);
     on_path_[static_cast<std::size_t>(index)] = false;
   }
 
   void add_light(const tinygltf::Light& light, const glm::dvec3& position,
                  const glm::dvec3& forward, const std::string& where) {
-    if (light.type == "directional") {
-      warnings_.push_back("directional light '" + light.name + "' is not imported");
-      return;
-    }
     const double length = glm::length(forward);
     if (!(length > 0.0) || !std::isfinite(length))
       fail(path_, where, "degenerate transform of a light");
     glm::dvec3 colour(1.0);
     if (light.color.size() == 3) colour = {light.color[0], light.color[1], light.color[2]};
+    // glTF: candela for point and spot lights, lux for directional ones; both become levrt's
+    // irradiance (at distance 1, or everywhere) through the one light scale.
     const glm::vec3 intensity(colour * light.intensity * static_cast<double>(light_scale_));
     const glm::dvec3 direction = forward / length;
+    if (light.type == "directional") {
+      scene_.directional_lights.push_back({glm::vec3(direction), intensity});
+      return;
+    }
     Affine place;
     place.translate = glm::vec3(position);
     // The rotation carrying levrt's spot axis -Z onto the light's world direction.
@@ -252,22 +773,20 @@ class Importer {
       place.rotate_axis = {1.0f, 0.0f, 0.0f};
       place.rotate_degrees = 180.0f;
     }
-    if (light.range > 0.0 && !warned_range_) {
-      warned_range_ = true;
-      warnings_.push_back("range of light '" + light.name + "' and any other is not applied (" +
-                          number_text(light.range) + ")");
-    }
+    // The extension: range 0 or absent is infinite.
+    const float range = light.range > 0.0 ? static_cast<float>(light.range)
+                                          : std::numeric_limits<float>::infinity();
     if (light.type == "point") {
-      lights_.push_back(affine_node(place, point_light_node(intensity)));
+      SceneNode node = point_light_node(intensity);
+      std::get<PointLightSource>(node.data).range = range;
+      lights_.push_back(affine_node(place, std::move(node)));
     } else {
-      if (!warned_falloff_) {
-        warned_falloff_ = true;
-        warnings_.push_back(
-            "spot light '" + light.name +
-            "' and any other: a hard cone at outerConeAngle, no falloff from innerConeAngle");
-      }
-      const auto cone_degrees = static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi);
-      lights_.push_back(affine_node(place, spot_light_node(intensity, cone_degrees, 0.0f)));
+      SceneNode node = spot_light_node(
+          intensity, static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi), 0.0f);
+      auto& spot = std::get<SpotLightSource>(node.data);
+      spot.range = range;
+      spot.inner_cone_degrees = static_cast<float>(light.spot.innerConeAngle * 180.0 / kPi);
+      lights_.push_back(affine_node(place, std::move(node)));
     }
     lo_ = glm::min(lo_, position);
     hi_ = glm::max(hi_, position);
@@ -282,6 +801,8 @@ class Importer {
     const double yfov = camera.perspective.yfov;
     if (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)
       fail(path_, where + "/camera/yfov", number_text(yfov));
+    // --camera N: the N-th perspective camera met in the node tree, depth first.
+    if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
     const glm::dvec3 forward = -glm::dvec3(world[2]);
     const glm::dvec3 up(world[1]);
@@ -298,28 +819,40 @@ class Importer {
   renderer::Camera framing_camera() const {
     renderer::Camera camera;
     glm::dvec3 centre(0.0);
-    double radius = 1.0;
+    double radius = 1.0;  // a single point (or nothing): a unit sphere around it
     if (lo_.x <= hi_.x) {
       centre = 0.5 * (lo_ + hi_);
-      radius = std::max(1.0, 0.5 * glm::length(hi_ - lo_));
+      const double half_diagonal = 0.5 * glm::length(hi_ - lo_);
+      if (half_diagonal > 0.0) radius = half_diagonal;
     }
+    // The bounding sphere fits the vertical field of view, seen 31 degrees from above.
+    const double half_fov = 0.5 * static_cast<double>(camera.vertical_fov_deg) * kPi / 180.0;
+    const double distance = radius / std::sin(half_fov);
     camera.up = {0.0f, 1.0f, 0.0f};
     camera.target = glm::vec3(centre);
-    camera.position = glm::vec3(centre + radius * glm::dvec3(0.0, 1.5, 2.5));
+    camera.position = glm::vec3(centre + distance * glm::normalize(glm::dvec3(0.0, 0.6, 1.0)));
     return camera;
   }
 
   const tinygltf::Model& model_;
   const std::string& path_;
   float light_scale_;
+  int wanted_camera_;
+  int cameras_seen_ = 0;
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::vector<SceneNode> lights_;
   std::vector<std::string> warnings_;
   bool has_camera_ = false;
-  bool warned_mesh_ = false;
-  bool warned_range_ = false;
-  bool warned_falloff_ = false;
+  static constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint32_t kUnconverted = kNoIndex - 1;
+  SceneDescription scene_;
+  std::vector<std::uint32_t> material_of_;  // [0]: the default material, [i + 1]: glTF material i
+  std::vector<std::uint32_t> mesh_of_;      // per glTF mesh: its scene mesh
+  std::vector<std::uint32_t> texture_of_;   // per glTF texture: its scene texture
+  std::vector<std::pair<glm::vec3, glm::vec3>> mesh_bounds_;  // per scene mesh, in its frame
+  std::map<std::pair<std::uint32_t, std::array<float, 9>>, std::uint32_t> master_of_;
+  std::vector<SceneNode> mesh_nodes_;
   renderer::Camera camera_;
   glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
@@ -336,11 +869,11 @@ bool is_gltf_file_name(std::string_view name) {
 }
 
 SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
-                                  float light_scale) {
+                                  float light_scale, int camera) {
   if (!std::isfinite(light_scale) || light_scale < 0.0f)
     fail(path, "light scale", number_text(light_scale));
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skip_image, nullptr);
+  loader.SetImageLoader(keep_encoded_image, nullptr);
   tinygltf::Model model;
   std::string error, loader_warning;
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
@@ -353,7 +886,8 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
                                        static_cast<unsigned int>(bytes.size()), base_dir);
   if (!ok)
     fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
-  Importer importer(model, path, light_scale);
+  if (camera < 0) fail(path, "camera", std::to_string(camera));
+  Importer importer(model, path, light_scale, camera);
   SceneDescription scene = importer.run();
   // The limits every scene obeys (light count, intensities), with the file's name in front.
   try {

@@ -1,14 +1,18 @@
 // glTF 2.0 scenes (.gltf, .glb) read through Debian's tinygltf into the same scene description
 // the JSON scene files give (scene_description.h), so everything downstream is unchanged.
-// What is imported: the node tree of the default scene (TRS or matrix), KHR_lights_punctual point
-// and spot lights at their node's world position shining along its world -Z (a glTF light is
-// never scaled by its node, as the extension says), the first perspective camera or else a view
-// framing the lights. Not imported: triangle meshes, directional lights, a spot's falloff from its
-// inner cone (the cone is hard at outerConeAngle) and `range`; the first of each is named in one
-// warning line on stderr, printed only once the file is accepted. Every problem in the file
+// What is imported: the node tree of the default scene (TRS or matrix); triangle meshes (each
+// glTF mesh once, placed by every node that draws it) with their pbrMetallicRoughness base colour
+// mapped onto Phong (scenes/README.md); KHR_lights_punctual point and spot lights at their node's
+// world position shining along its world -Z (a glTF light is never scaled by its node, as the
+// extension says) with their range and the smooth falloff between the inner and outer cone;
+// directional lights as suns outside the hierarchy; the chosen perspective camera, or else a
+// view framing the scene from the front and above. Points and lines are skipped with one warning
+// line naming the mesh, printed only once the file is accepted. Every problem in the file
 // becomes one line "FILE: what: value" in a std::invalid_argument.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -16,16 +20,21 @@
 
 namespace scenes {
 
-// glTF light intensity is in candela (lm/sr), which is already irradiance at distance 1 in
-// levrt's units; one factor maps the physical scale of the sample assets to the display range.
-inline constexpr float kDefaultGltfLightScale = 1.0f;
+// glTF light intensity is in candela (lm/sr), which is irradiance in lux at distance 1; levrt's
+// irradiance is in colour units (1.0 = 255), so one factor maps the one onto the other. The
+// default shows the sample assets (../shared/gltf) without clipping their light pools.
+inline constexpr float kDefaultGltfLightScale = 0.03f;
 inline constexpr std::size_t kMaxGltfNodes = std::size_t{1} << 20;
+inline constexpr std::size_t kMaxGltfAccessorElements = std::size_t{1} << 25;
+inline constexpr std::uint64_t kMaxGltfTexels = std::uint64_t{1} << 26;  // a base colour texture's
 
 // True for names ending in ".gltf" or ".glb".
 bool is_gltf_file_name(std::string_view name);
 
-// `bytes` is the whole file, `path` names it in messages and locates external buffers.
+// `bytes` is the whole file, `path` names it in messages and locates external buffers. camera:
+// the index of the perspective camera to look through among those the scene's nodes carry (depth
+// first); 0 falls back to the framing view when there is none, any other index must exist.
 SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
-                                  float light_scale = kDefaultGltfLightScale);
+                                  float light_scale = kDefaultGltfLightScale, int camera = 0);
 
 }  // namespace scenes

@@ -57,6 +57,12 @@ SceneNode quad_node(std::uint32_t material, const glm::vec3& corner, const glm::
   return n;
 }
 
+SceneNode mesh_node(std::uint32_t mesh, const glm::mat3& linear) {
+  SceneNode n;
+  n.data = MeshShape{mesh, linear};
+  return n;
+}
+
 SceneNode point_light_node(const glm::vec3& intensity) {
   SceneNode n;
   n.data = PointLightSource{intensity};
@@ -106,8 +112,9 @@ lev::Similarity affine_similarity(const Affine& affine) {
 }
 
 const char* node_type_name(const NodeData& data) {
-  static constexpr const char* kNames[] = {"affine", "union",    "instance",    "sphere",    "box",
-                                           "cylinder", "quad", "point_light", "spot_light"};
+  static constexpr const char* kNames[] = {"affine",     "union",    "instance", "sphere",
+                                           "box",        "cylinder", "quad",     "point_light",
+                                           "spot_light", "mesh"};
   static_assert(std::variant_size_v<NodeData> == sizeof(kNames) / sizeof(kNames[0]));
   return kNames[data.index()];
 }

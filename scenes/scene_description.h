@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <variant>
 #include <vector>
@@ -14,7 +15,10 @@
 
 #include "lev/transform.h"
 #include "renderer/camera.h"
+#include "renderer/directional_light.h"
+#include "renderer/geometry.h"
 #include "renderer/material.h"
+#include "renderer/texture.h"
 
 namespace scenes {
 
@@ -60,19 +64,33 @@ struct QuadShape {  // two-sided parallelogram corner + s*edge_u + t*edge_v, s, 
   glm::vec3 edge_v{0.0f, 1.0f, 0.0f};
 };
 
+// A triangle mesh read from a file (glTF), drawn in its frame after `linear`: any invertible
+// 3x3 map, so the non-uniform scale and mirroring that affine nodes cannot express are baked
+// into the vertices (normals by the inverse transpose, winding reversed when it mirrors).
+struct MeshShape {
+  std::uint32_t mesh = 0;  // index into SceneDescription::meshes
+  glm::mat3 linear{1.0f};
+};
+
 // Lights sit at the origin of their frame (thesis 4.2.2); transforms place, turn and scale them.
+// A range (glTF) darkens a light beyond that distance in its frame; infinite means none.
 struct PointLightSource {
   glm::vec3 intensity{1.0f};  // RGB, irradiance at distance 1
+  float range = std::numeric_limits<float>::infinity();
 };
 
 struct SpotLightSource {  // shines along -z of its frame
   glm::vec3 intensity{1.0f};
-  float cone_degrees = 90.0f;  // half-angle of Warn's cone
+  float cone_degrees = 90.0f;  // half-angle of Warn's cone (the outer cone of a smooth spot)
   float dropoff = 0.0f;        // Warn exponent
+  float range = std::numeric_limits<float>::infinity();
+  // Negative: Warn's profile. Otherwise glTF's smooth profile (lev/spot_profile.h), full
+  // intensity within this half-angle, in [0, cone_degrees).
+  float inner_cone_degrees = -1.0f;
 };
 
-using NodeData = std::variant<Affine, Union, Instance, SphereShape, BoxShape, CylinderShape, QuadShape,
-                              PointLightSource, SpotLightSource>;
+using NodeData = std::variant<Affine, Union, Instance, SphereShape, BoxShape, CylinderShape,
+                              QuadShape, PointLightSource, SpotLightSource, MeshShape>;
 
 struct SceneNode {
   NodeData data = Union{};
@@ -89,6 +107,12 @@ struct Master {
   SceneNode node;
 };
 
+// One mesh's triangles, one part per material (each part's `material` indexes the scene's).
+struct MeshData {
+  std::string name;
+  std::vector<renderer::TriangleMesh> parts;
+};
+
 struct SceneDescription {
   std::string name;  // scene model name, or the file's
   int level = 0;     // model level, 0 when the scene has none
@@ -97,6 +121,12 @@ struct SceneDescription {
   glm::vec3 background{0.0f};
   std::vector<NamedMaterial> materials;
   std::vector<Master> masters;  // any order; instances refer by index, cycles are invalid
+  std::vector<MeshData> meshes;  // what mesh nodes draw; scene files have none
+  std::vector<renderer::Texture>
+      textures;  // what materials' colour_texture indexes; scene files have none
+  // Suns (glTF directional lights) in world space: outside the light hierarchy, shadow-tested
+  // at every shading point by every method. Scene files have none.
+  std::vector<renderer::DirectionalLight> directional_lights;
   SceneNode root;
 };
 
@@ -110,6 +140,7 @@ SceneNode cylinder_node(std::uint32_t material, const glm::vec3& a, const glm::v
                         int segments = 24);
 SceneNode quad_node(std::uint32_t material, const glm::vec3& corner, const glm::vec3& edge_u,
                     const glm::vec3& edge_v);
+SceneNode mesh_node(std::uint32_t mesh, const glm::mat3& linear);
 SceneNode point_light_node(const glm::vec3& intensity);
 SceneNode spot_light_node(const glm::vec3& intensity, float cone_degrees, float dropoff);
 

@@ -381,14 +381,26 @@ class Reader {
                             read_vec3(require(v, path, "edge_u"), path + "/edge_u"),
                             read_vec3(require(v, path, "edge_v"), path + "/edge_v")};
     } else if (type == "point_light") {
-      check_keys(v, path, {"type", "intensity"});
-      node.data = PointLightSource{read_vec3(require(v, path, "intensity"), path + "/intensity")};
+      check_keys(v, path, {"type", "intensity", "range"});
+      PointLightSource p;
+      p.intensity = read_vec3(require(v, path, "intensity"), path + "/intensity");
+      if (v.contains("range")) p.range = read_float(v["range"], path + "/range");
+      node.data = p;
     } else if (type == "spot_light") {
-      check_keys(v, path, {"type", "intensity", "cone_degrees", "dropoff"});
+      check_keys(v, path,
+                 {"type", "intensity", "cone_degrees", "dropoff", "range", "inner_cone_degrees"});
       SpotLightSource s;
       s.intensity = read_vec3(require(v, path, "intensity"), path + "/intensity");
       s.cone_degrees = read_float(require(v, path, "cone_degrees"), path + "/cone_degrees");
       if (v.contains("dropoff")) s.dropoff = read_float(v["dropoff"], path + "/dropoff");
+      if (v.contains("range")) s.range = read_float(v["range"], path + "/range");
+      if (v.contains("inner_cone_degrees")) {
+        s.inner_cone_degrees = read_float(v["inner_cone_degrees"], path + "/inner_cone_degrees");
+        if (s.inner_cone_degrees < 0.0f) {
+          fail(source_, path + "/inner_cone_degrees",
+               "must be >= 0 (" + value_text(v["inner_cone_degrees"]) + ")");
+        }
+      }
       node.data = s;
     } else {
       fail(source_, path + "/type",
@@ -494,10 +506,16 @@ class Writer {
       j["edge_v"] = vec3_json(q->edge_v);
     } else if (const auto* p = std::get_if<PointLightSource>(&n.data)) {
       j["intensity"] = vec3_json(p->intensity);
+      if (std::isfinite(p->range)) j["range"] = exact_number(p->range);
     } else if (const auto* sp = std::get_if<SpotLightSource>(&n.data)) {
       j["intensity"] = vec3_json(sp->intensity);
       j["cone_degrees"] = exact_number(sp->cone_degrees);
       j["dropoff"] = exact_number(sp->dropoff);
+      if (std::isfinite(sp->range)) j["range"] = exact_number(sp->range);
+      if (!(sp->inner_cone_degrees < 0.0f))
+        j["inner_cone_degrees"] = exact_number(sp->inner_cone_degrees);
+    } else if (std::holds_alternative<MeshShape>(n.data)) {
+      throw std::invalid_argument(std::string(kMeshNotWritable));
     }
     return j;
   }
@@ -591,7 +609,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
   return scene;
 }
 
-SceneDescription load_scene_file(const std::string& path) {
+SceneDescription load_scene_file(const std::string& path, const SceneFileOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -613,7 +631,12 @@ SceneDescription load_scene_file(const std::string& path) {
   std::fclose(f);
   if (more) throw std::invalid_argument(path + ": the scene file changed while it was read");
   text.resize(got);
-  if (is_gltf_file_name(path)) return parse_gltf_scene(text, path);
+  if (is_gltf_file_name(path))
+    return parse_gltf_scene(text, path, options.gltf_light_scale, options.camera);
+  if (options.camera != 0) {
+    throw std::invalid_argument(path + ": camera: " + std::to_string(options.camera) +
+                                " (a scene file has one camera, 0)");
+  }
   SceneDescription scene = parse_scene_json(text, path);
   if (scene.name.empty()) scene.name = fs::path(path).stem().string();
   return scene;
@@ -621,6 +644,8 @@ SceneDescription load_scene_file(const std::string& path) {
 
 std::string scene_file_json(const SceneDescription& scene) {
   validate_description(scene);
+  if (!scene.directional_lights.empty())
+    throw std::invalid_argument(std::string(kDirectionalNotWritable));
   std::string out;
   print(Writer(scene).write(), 0, out);
   out += "\n";

@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "scenes/gltf_scene.h"
 #include "scenes/scene_description.h"
 
 namespace scenes {
@@ -41,11 +42,24 @@ bool is_scene_file_name(std::string_view name);
 // Parses and validates; `source` names the text in messages (the file name).
 SceneDescription parse_scene_json(const std::string& text, const std::string& source);
 
-// Reads a file of at most kMaxSceneFileBytes, then parse_scene_json. A missing name in the file
-// becomes the file's stem.
-SceneDescription load_scene_file(const std::string& path);
+// What a file's reading may be asked: glTF light units and which camera (gltf_scene.h). A JSON
+// scene file has one camera, 0.
+struct SceneFileOptions {
+  float gltf_light_scale = kDefaultGltfLightScale;
+  int camera = 0;
+};
 
-// The description as scene-file text (validated first; throws like validate_description).
+// Reads a file of at most kMaxSceneFileBytes, then parse_scene_json (or parse_gltf_scene). A
+// missing name in the file becomes the file's stem.
+SceneDescription load_scene_file(const std::string& path, const SceneFileOptions& options = {});
+
+// The description as scene-file text (validated first; throws like validate_description). Scene
+// files hold no triangle meshes: a description with mesh nodes (a glTF import) throws this.
+inline constexpr std::string_view kMeshNotWritable =
+    "/root: triangle meshes (from glTF) cannot be written to a scene file";
+// Nor directional lights (glTF suns).
+inline constexpr std::string_view kDirectionalNotWritable =
+    "/directional_lights: directional lights (from glTF) cannot be written to a scene file";
 std::string scene_file_json(const SceneDescription& scene);
 
 }  // namespace scenes

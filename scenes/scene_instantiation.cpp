@@ -112,6 +112,7 @@ class Analysis {
                              std::to_string(scene.materials.size()) + ")");
     }
     check_header();
+    check_meshes();
     edges_.resize(scene.masters.size());
     for (std::size_t m = 0; m < scene.masters.size(); ++m) {
       const std::string path = "/masters/" + std::to_string(m);
@@ -170,6 +171,15 @@ class Analysis {
     check_colour("/ambient", scene_.ambient, 1e6f);
     check_colour("/background", scene_.background, 1e6f);
     if (scene_.level < 0) fail("/level", "must be >= 0 (" + std::to_string(scene_.level) + ")");
+    for (std::size_t i = 0; i < scene_.directional_lights.size(); ++i) {
+      const std::string path = "/directional_lights/" + std::to_string(i);
+      const renderer::DirectionalLight& sun = scene_.directional_lights[i];
+      check_colour(path + "/irradiance", sun.irradiance, kMaxIntensity);
+      check_point(path + "/direction", sun.direction);
+      if (!(std::abs(glm::length(sun.direction) - 1.0f) < 1e-4f)) {
+        fail(path + "/direction", "must be a unit vector " + vec_text(sun.direction));
+      }
+    }
     for (std::size_t i = 0; i < scene_.materials.size(); ++i) {
       const std::string path = "/materials/" + std::to_string(i);
       const NamedMaterial& nm = scene_.materials[i];
@@ -192,6 +202,53 @@ class Analysis {
       if (!std::isfinite(m.ior) || m.ior < 0.01f || m.ior > 100.0f) {
         fail(path + "/ior", "must be in [0.01, 100] (" + number_text(m.ior) + ")");
       }
+      if (m.colour_texture < -1 ||
+          m.colour_texture >= static_cast<std::int64_t>(scene_.textures.size())) {
+        fail(path + "/colour_texture",
+             "no such texture (" + std::to_string(m.colour_texture) + ")");
+      }
+    }
+  }
+
+  // Each mesh once, however many nodes draw it; textures too.
+  void check_meshes() {
+    for (std::size_t t = 0; t < scene_.textures.size(); ++t) {
+      const renderer::Texture& texture = scene_.textures[t];
+      if (texture.width <= 0 || texture.height <= 0 ||
+          texture.texels.size() !=
+              static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height)) {
+        fail("/textures/" + std::to_string(t), std::to_string(texture.texels.size()) +
+                                                   " texels for " + std::to_string(texture.width) +
+                                                   "x" + std::to_string(texture.height));
+      }
+    }
+    for (std::size_t m = 0; m < scene_.meshes.size(); ++m) {
+      const std::string path = "/meshes/" + std::to_string(m);
+      std::uint64_t triangles = 0;
+      for (std::size_t k = 0; k < scene_.meshes[m].parts.size(); ++k) {
+        const std::string part_path = path + "/parts/" + std::to_string(k);
+        const renderer::TriangleMesh& part = scene_.meshes[m].parts[k];
+        check_material(part_path, part.material);
+        if (part.normals.size() != part.positions.size()) {
+          fail(part_path + "/normals", std::to_string(part.normals.size()) + " normals for " +
+                                           std::to_string(part.positions.size()) + " positions");
+        }
+        if (!part.uvs.empty() && part.uvs.size() != part.positions.size()) {
+          fail(part_path + "/uvs", std::to_string(part.uvs.size()) + " uvs for " +
+                                       std::to_string(part.positions.size()) + " positions");
+        }
+        for (const glm::vec3& p : part.positions) check_point(part_path + "/positions", p);
+        for (const glm::vec3& n : part.normals) check_point(part_path + "/normals", n);
+        for (const glm::uvec3& t : part.triangles) {
+          if (t.x >= part.positions.size() || t.y >= part.positions.size() ||
+              t.z >= part.positions.size()) {
+            fail(part_path + "/triangles",
+                 "vertex index beyond the " + std::to_string(part.positions.size()) + " positions");
+          }
+        }
+        triangles = add_saturating(triangles, part.triangles.size());
+      }
+      mesh_triangles_.push_back(triangles);
     }
   }
 
@@ -263,13 +320,38 @@ class Analysis {
       }
     } else if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
       check_colour(path + "/intensity", p->intensity, kMaxIntensity);
+      check_range(path + "/range", p->range);
+    } else if (const auto* mesh = std::get_if<MeshShape>(&node.data)) {
+      if (mesh->mesh >= scene_.meshes.size())
+        fail(path + "/mesh", "no such mesh (" + std::to_string(mesh->mesh) + ")");
+      for (int column = 0; column < 3; ++column)
+        check_point(path + "/linear", mesh->linear[column]);
+      const float det = glm::determinant(mesh->linear);
+      if (!std::isfinite(det) || !(std::abs(det) > 1e-18f)) {
+        fail(path + "/linear", "must be invertible (determinant " + number_text(det) + ")");
+      }
     } else if (const auto* sp = std::get_if<SpotLightSource>(&node.data)) {
       check_colour(path + "/intensity", sp->intensity, kMaxIntensity);
       if (!std::isfinite(sp->cone_degrees) || !(sp->cone_degrees > 0.0f) || sp->cone_degrees > 180.0f) {
         fail(path + "/cone_degrees", "must be in (0, 180] (" + number_text(sp->cone_degrees) + ")");
       }
       check_non_negative(path + "/dropoff", sp->dropoff, 1e4f);
+      check_range(path + "/range", sp->range);
+      const bool smooth = !(sp->inner_cone_degrees < 0.0f);
+      if (smooth && (!std::isfinite(sp->inner_cone_degrees) ||
+                     !(sp->inner_cone_degrees < sp->cone_degrees))) {
+        fail(path + "/inner_cone_degrees",
+             "must be in [0, cone_degrees) (" + number_text(sp->inner_cone_degrees) + ")");
+      }
+      if (smooth && sp->dropoff != 0.0f)
+        fail(path + "/dropoff", "must be 0 with an inner cone (" + number_text(sp->dropoff) + ")");
     }
+  }
+
+  // Infinite (no range) or positive.
+  static void check_range(const std::string& path, float range) {
+    if (std::isnan(range) || !(range > 0.0f))
+      fail(path, "must be > 0 (" + number_text(range) + ")");
   }
 
   // Depth-first over the instance graph without recursion (a chain of masters may be long);
@@ -340,7 +422,9 @@ class Analysis {
       t.max_log_scale = m.max_log_scale;
     } else {
       t.lights = is_light(node.data) ? 1 : 0;
-      t.triangles = t.direct_triangles = static_cast<std::uint64_t>(triangles_of(node.data));
+      const auto* mesh = std::get_if<MeshShape>(&node.data);
+      t.triangles = t.direct_triangles =
+          mesh ? mesh_triangles_[mesh->mesh] : static_cast<std::uint64_t>(triangles_of(node.data));
       t.min_log_scale = t.max_log_scale = 0.0;
     }
     return t;
@@ -395,6 +479,7 @@ class Analysis {
   std::vector<std::vector<Edge>> edges_;
   std::vector<std::uint32_t> order_;
   std::vector<Totals> totals_;
+  std::vector<std::uint64_t> mesh_triangles_;  // per scene mesh
   Totals root_;
 };
 
@@ -455,12 +540,23 @@ class LightTreeBuilder {
       return lev::instance_node(light_master_[in->master]);
     }
     if (const auto* p = std::get_if<PointLightSource>(&node.data)) {
-      return lev::light_node(lev::make_point_light(glm::vec3(0.0f), p->intensity));
+      lev::Light light = lev::make_point_light(glm::vec3(0.0f), p->intensity);
+      light.range = p->range;
+      return lev::light_node(light);
     }
     if (const auto* s = std::get_if<SpotLightSource>(&node.data)) {
-      const auto cone = static_cast<float>(static_cast<double>(s->cone_degrees) * M_PI / 180.0);
-      return lev::light_node(
-          lev::make_spot_light(glm::vec3(0.0f), {0.0f, 0.0f, -1.0f}, s->intensity, cone, s->dropoff));
+      const auto radians = [](float degrees) {
+        return static_cast<float>(static_cast<double>(degrees) * M_PI / 180.0);
+      };
+      const glm::vec3 axis(0.0f, 0.0f, -1.0f);
+      lev::Light light = s->inner_cone_degrees < 0.0f
+                             ? lev::make_spot_light(glm::vec3(0.0f), axis, s->intensity,
+                                                    radians(s->cone_degrees), s->dropoff)
+                             : lev::make_smooth_spot_light(glm::vec3(0.0f), axis, s->intensity,
+                                                           radians(s->inner_cone_degrees),
+                                                           radians(s->cone_degrees));
+      light.range = s->range;
+      return lev::light_node(light);
     }
     return std::nullopt;
   }
@@ -494,9 +590,15 @@ class LightTreeBuilder {
 // One prototype being filled: one mesh per material (fewer Embree geometries), spheres apart.
 class PrototypeBuilder {
  public:
-  explicit PrototypeBuilder(std::size_t materials) : mesh_of_material_(materials, -1) {}
+  explicit PrototypeBuilder(const SceneDescription& scene)
+      : scene_(scene), mesh_of_material_(scene.materials.size(), -1) {}
 
   void add(const NodeData& data, const lev::Similarity& xf) {
+    if (const auto* m = std::get_if<MeshShape>(&data)) {
+      for (const renderer::TriangleMesh& part : scene_.meshes[m->mesh].parts)
+        add_mesh_part(part, m->linear, xf);
+      return;
+    }
     renderer::TriangleMesh local;
     std::uint32_t material = 0;
     if (const auto* s = std::get_if<SphereShape>(&data)) {
@@ -527,9 +629,36 @@ class PrototypeBuilder {
       mesh.normals.push_back(identity ? local.normals[i] : lev::apply_direction(xf, local.normals[i]));
     }
     for (const glm::uvec3& t : local.triangles) mesh.triangles.push_back(t + glm::uvec3(base));
+    if (!mesh.uvs.empty()) mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
   }
 
   bool empty() const { return prototype_.meshes.empty() && prototype_.spheres.empty(); }
+
+  // Positions through linear then xf, normals through linear's inverse transpose; a mirroring
+  // linear reverses the winding too, so the winding-derived geometric normal still agrees.
+  void add_mesh_part(const renderer::TriangleMesh& part, const glm::mat3& linear,
+                     const lev::Similarity& xf) {
+    renderer::TriangleMesh& mesh = mesh_for(part.material);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    const glm::mat3 normal_map = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0f;
+    for (std::size_t i = 0; i < part.positions.size(); ++i) {
+      mesh.positions.push_back(lev::apply_point(xf, linear * part.positions[i]));
+      const glm::vec3 n = renderer::robust_normalize(normal_map * part.normals[i]);
+      mesh.normals.push_back(lev::apply_direction(xf, n));
+    }
+    // A mesh has uvs for every vertex or none: vertices from parts without get (0, 0).
+    if (!part.uvs.empty()) {
+      mesh.uvs.resize(base, glm::vec2(0.0f));
+      mesh.uvs.insert(mesh.uvs.end(), part.uvs.begin(), part.uvs.end());
+    } else if (!mesh.uvs.empty()) {
+      mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
+    }
+    for (const glm::uvec3& t : part.triangles) {
+      mesh.triangles.push_back(mirrored ? glm::uvec3(t.x, t.z, t.y) + glm::uvec3(base)
+                                        : t + glm::uvec3(base));
+    }
+  }
   renderer::Prototype take() { return std::move(prototype_); }
 
  private:
@@ -543,6 +672,7 @@ class PrototypeBuilder {
     return prototype_.meshes[static_cast<std::size_t>(index)];
   }
 
+  const SceneDescription& scene_;
   renderer::Prototype prototype_;
   std::vector<std::int64_t> mesh_of_material_;
 };
@@ -597,7 +727,7 @@ class GeometryBuilder {
 
   Flattened flatten(const SceneNode& node) {
     Flattened f;
-    PrototypeBuilder own(scene_.materials.size());
+    PrototypeBuilder own(scene_);
     collect(node, lev::Similarity{}, own, &f.sites);
     if (!own.empty()) f.prototype = add_prototype(own);
     return f;
@@ -605,7 +735,7 @@ class GeometryBuilder {
 
   std::uint32_t baked_prototype(std::uint32_t m) {
     if (baked_[m] == kNone) {
-      PrototypeBuilder all(scene_.materials.size());
+      PrototypeBuilder all(scene_);
       collect(scene_.masters[m].node, lev::Similarity{}, all, nullptr);
       baked_[m] = add_prototype(all);
     }
@@ -692,6 +822,8 @@ renderer::Scene instantiate_scene(const SceneDescription& description) {
   scene.camera.target -= scene.world_origin;
   scene.ambient = description.ambient;
   scene.background = description.background;
+  scene.directional_lights = description.directional_lights;
+  scene.textures = description.textures;
   for (const NamedMaterial& m : description.materials) scene.materials.push_back(m.material);
   // Only the root is copied and moved; masters are placed by the nodes above their instances.
   std::optional<SceneNode> moved_root;

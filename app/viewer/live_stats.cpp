@@ -46,6 +46,8 @@ nlohmann::ordered_json live_stats_json(const LiveStats& s, const WorkerStatus& s
   j["threads"] = settings.threads;
   j["depth"] = settings.depth;
   j["subsample"] = settings.subsample;
+  j["light_scale"] = settings.light_scale;
+  j["camera"] = settings.camera;
   j["time_build_s"] = status.build_seconds;
   j["time_refit_s"] = status.refit_seconds;
   j["time_render_s"] = s.render_seconds;

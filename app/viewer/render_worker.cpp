@@ -89,6 +89,8 @@ struct Worker {
   std::unique_ptr<LoadedScene> loaded;
   std::string scene;
   int level = -1;
+  double light_scale = -1.0;
+  int camera_index = -1;
   renderer::Camera preset;
   std::optional<ViewKey> view;
   renderer::RenderStatePtr main;
@@ -181,6 +183,8 @@ struct Worker {
     tear_down(serial);
     scene = s.scene;
     level = s.level;
+    light_scale = s.light_scale;
+    camera_index = s.camera;
     update_status([&](WorkerStatus& st) {
       st.phase = WorkerPhase::loading;
       st.scene = s.scene;
@@ -203,7 +207,9 @@ struct Worker {
     const Settings& s = request.settings;
     last_serial = serial;
     update_status([](WorkerStatus& st) { st.error.clear(); });
-    const bool scene_changed = !loaded || s.scene != scene || s.level != level;
+    // The light scale and camera index are read with a glTF file: they reload it.
+    const bool scene_changed = !loaded || s.scene != scene || s.level != level ||
+                               s.light_scale != light_scale || s.camera != camera_index;
     if (scene_changed) load(s, serial);
     renderer::Scene& sc = loaded->scene;
     const renderer::RenderSettings rs = render_settings_from(s);
