@@ -51,10 +51,13 @@ LightAggregate light_aggregate(const Light& light) {
   if (light.kind == LightKind::point) return a;
   a.axis = glm::vec3(glm::normalize(glm::dvec3(light.direction)));
   a.cos_axis_spread = stored_cos(0.0);
-  a.min_dropoff = light.dropoff;
+  // A smooth (glTF) spot ignores its dropoff: its ramp reaches 1 anywhere inside the inner cone,
+  // so only the hard outer cone bounds it, as a spot without a dropoff.
+  const float dropoff = light.profile == SpotProfile::smooth ? 0.0f : light.dropoff;
+  a.min_dropoff = dropoff;
   // With a dropoff, cos(gamma)^P is zero from 90 degrees on (light.h).
   a.cos_emission =
-      light.dropoff > 0.0f ? std::max(light.cos_cone_half_angle, 0.0f) : light.cos_cone_half_angle;
+      dropoff > 0.0f ? std::max(light.cos_cone_half_angle, 0.0f) : light.cos_cone_half_angle;
   return a;
 }
 

@@ -176,6 +176,64 @@ TEST(LightBounds, SpotConesFromZeroTo180Degrees) {
   }
 }
 
+// glTF's smooth spots (full intensity inside the inner cone, whatever dropoff a file gave them)
+// and ranged lights: the bound holds between the cones, on the inner cone's edge and behind them,
+// for a tight bunch of spots sharing one axis (where a cone bound is tightest) and for spots
+// spread among point lights.
+TEST(LightBounds, SmoothSpotsAndRangesStayBelowTheBound) {
+  const float outer_angles[] = {1e-4f, 0.3f, 1.48f, 2.5f, 3.1415927f};
+  const float forced_dropoffs[] = {0.0f, 1.0f, 7.5f};
+  const float ranges[] = {std::numeric_limits<float>::infinity(), 2.0f};
+  Random r(11);
+  for (const float outer : outer_angles) {
+    for (const float dropoff : forced_dropoffs) {
+      for (const float range : ranges) {
+        for (const bool bunched : {true, false}) {
+          std::vector<lev::Light> spots, lights;
+          lev::LightAggregate a;
+          const glm::vec3 shared_axis = r.direction();
+          for (int i = 0; i < 4; ++i) {
+            const float spread = bunched ? 0.01f : 1.0f;
+            const glm::vec3 p(r.uniform(-spread, spread), r.uniform(-spread, spread),
+                              r.uniform(-spread, spread));
+            lev::Light l = lev::make_smooth_spot_light(p, bunched ? shared_axis : r.direction(),
+                                                       glm::vec3(2.0f, 1.0f, 0.5f), 0.9f * outer,
+                                                       outer);
+            l.dropoff = dropoff;
+            l.range = range;
+            spots.push_back(l);
+            lights.push_back(l);
+            if (!bunched) {
+              lights.push_back(lev::make_point_light(p + glm::vec3(0.5f), glm::vec3(0.25f)));
+              lights.back().range = range;
+            }
+          }
+          for (const lev::Light& l : lights) a = lev::merge_aggregates(a, lev::light_aggregate(l));
+          for (int k = 0; k < 400; ++k) {
+            // Half the probes lie just inside a spot's inner cone, where its ramp is already 1.
+            const lev::Light& spot = spots[k % 4];
+            const float gamma = 0.9f * outer * r.uniform(0.95f, 1.0f);
+            const glm::vec3 side = glm::normalize(
+                glm::cross(spot.direction, std::abs(spot.direction.z) < 0.9f ? glm::vec3(0, 0, 1)
+                                                                             : glm::vec3(1, 0, 0)));
+            const glm::vec3 dir = std::cos(gamma) * spot.direction + std::sin(gamma) * side;
+            const float distance = std::pow(10.0f, r.uniform(0.2f, 2.0f));
+            const glm::vec3 x =
+                k % 2 == 0 ? spot.position + distance * dir : distance * r.direction();
+            const std::string context = "outer " + std::to_string(outer) + " dropoff " +
+                                        std::to_string(dropoff) + " range " +
+                                        std::to_string(range) + (bunched ? " bunched" : " mixed") +
+                                        " k " + std::to_string(k);
+            expect_bound_holds(lev::irradiance_bound(a, lev::world_frame_point(x)),
+                               brute_force_irradiance(lights, x), context);
+            if (HasFatalFailure()) return;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(LightBounds, TightForOnePointLightAndForADistantCluster) {
   const lev::Light l = lev::make_point_light({1.0f, 2.0f, 3.0f}, {4.0f, 2.0f, 1.0f});
   const glm::vec3 x(1.0f, 2.0f, 13.0f);
