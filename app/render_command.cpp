@@ -8,14 +8,12 @@
 #include <filesystem>
 #include <set>
 
-#include <tbb/info.h>
-
 #include "app/interrupt.h"
+#include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/heatmap.h"
 #include "renderer/image_io.h"
 #include "renderer/pixel_error.h"
-#include "renderer/render.h"
 #include "scenes/scene_file.h"
 
 namespace app {
@@ -89,18 +87,6 @@ std::vector<double> per_sample(const renderer::Framebuffer& fb, const std::vecto
   return v;
 }
 
-// The pixels a (possibly subsampled) render produced, as 8-bit RGB.
-std::vector<std::uint8_t> rendered_pixels(const renderer::Framebuffer& fb) {
-  const std::vector<std::uint8_t> all = renderer::framebuffer_rgb8(fb);
-  std::vector<std::uint8_t> out;
-  for (std::size_t i = 0; i < fb.samples.size(); ++i) {
-    if (fb.samples[i] == 0) continue;
-    out.insert(out.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * i),
-               all.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
-  }
-  return out;
-}
-
 }  // namespace
 
 void check_output_paths(const std::vector<OutputPath>& outputs) {
@@ -129,76 +115,65 @@ void check_memory_budget(const Settings& settings, bool reference) {
   }
 }
 
-RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
-                          const std::atomic<bool>* cancel, bool show_progress) {
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, const std::string& method,
+                                    const std::atomic<bool>* cancel, bool show_progress) {
   Settings s = settings;
   s.method = method;
-  renderer::RenderStatePtr state =
-      renderer::make_render_state(loaded.scene, *loaded.rays, render_settings_from(s));
-  const auto start = std::chrono::steady_clock::now();
   bool progress_shown = false;
-  for (int pass = 0; pass < settings.spp; ++pass) {
-    if (!renderer::render_pass(*state, cancel)) {
-      if (progress_shown) std::fprintf(stderr, "\n");
-      throw Interrupted();
-    }
-    const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (show_progress && elapsed_s >= 1.0 && pass + 1 < settings.spp) {
-      const double left_s = elapsed_s / (pass + 1) * (settings.spp - pass - 1);
-      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", method.c_str(), pass + 1, settings.spp,
-                   left_s);
+  const auto on_pass_done = [&](int passes_done, double elapsed_s) {
+    if (show_progress && elapsed_s >= 1.0 && passes_done < settings.spp) {
+      const double left_s = elapsed_s / passes_done * (settings.spp - passes_done);
+      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", method.c_str(), passes_done,
+                   settings.spp, left_s);
       progress_shown = true;
     }
-  }
-  if (progress_shown) std::fprintf(stderr, "\r\033[K");
-  RenderResult result;
-  result.framebuffer = renderer::render_framebuffer(*state);
-  result.seconds = renderer::render_seconds(*state);
-  result.method_bytes = renderer::render_selector(*state).bookkeeping_bytes();
+  };
+  renderer::RenderResult result;
+  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings_from(s), settings.spp,
+                                            result, cancel, on_pass_done);
+  if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
+  if (!done) throw Interrupted();
   return result;
 }
 
-nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& settings,
-                                    const RenderResult& result, const RenderResult* reference) {
-  const renderer::FramebufferTotals t = renderer::sum_framebuffer(result.framebuffer);
-  const double points = t.shading_points > 0 ? static_cast<double>(t.shading_points) : 1.0;
-  nlohmann::ordered_json j;
-  j["scene"] = loaded.scene.name;
-  j["level"] = loaded.scene.level;
-  j["lights"] = loaded.scene.lights.light_count;
-  j["method"] = settings.method;
-  j["tolerance"] = settings.tolerance;
-  j["width"] = settings.width;
-  j["height"] = settings.height;
-  j["spp"] = settings.spp;
-  j["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
-  j["subsample"] = settings.subsample;
-  j["time_build_s"] = loaded.build_seconds;
-  j["time_render_s"] = result.seconds;
-  if (settings.subsample > 1) {
-    // The rendered pixels' time scaled to every pixel of the frame.
-    std::size_t rendered = 0;
-    for (std::uint32_t samples : result.framebuffer.samples) rendered += samples > 0 ? 1 : 0;
-    const double frame_pixels = static_cast<double>(settings.width) * settings.height;
-    j["time_render_full_frame_estimate_s"] =
-        rendered > 0 ? result.seconds * frame_pixels / static_cast<double>(rendered) : 0.0;
-  }
-  j["shading_points"] = t.shading_points;
-  j["shadow_rays"] = t.shadow_rays;
-  j["lights_tested_avg"] = static_cast<double>(t.lights_tested) / points;
-  j["lights_tested_max"] = t.lights_tested_max;
-  j["nodes_visited_avg"] = static_cast<double>(t.nodes_visited) / points;
-  j["hierarchy_bytes"] = lev::hierarchy_bytes(loaded.scene.lights);
-  j["method_bytes"] = result.method_bytes;
+namespace {
+
+// The statistics of a finished render (reference may be null); the heatmap ranges are filled by
+// the caller, which draws the heatmaps.
+RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, const renderer::RenderResult& result,
+                         const renderer::RenderResult* reference) {
+  RenderStats s;
+  s.scene = loaded.scene.name;
+  s.level = loaded.scene.level;
+  s.lights = loaded.scene.lights.light_count;
+  s.method = settings.method;
+  s.tolerance = settings.tolerance;
+  s.width = settings.width;
+  s.height = settings.height;
+  s.spp = result.passes;
+  s.threads = resolved_threads(settings.threads);
+  s.depth = settings.depth;
+  s.subsample = settings.subsample;
+  s.build_seconds = loaded.build_seconds;
+  s.setup_seconds = result.setup_seconds;
+  s.render_seconds = result.render_seconds;
+  s.pass_seconds = result.passes > 0 ? result.render_seconds / result.passes : 0.0;
+  s.totals = result.totals;
+  s.rendered_pixels = result.rendered_pixels;
+  s.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
+  s.method_bytes = result.method_bytes;
+  s.camera = loaded.scene.camera;
   if (reference) {
-    const auto error = renderer::summarize_pixel_error(renderer::pixel_error_pct(
-        rendered_pixels(result.framebuffer), rendered_pixels(reference->framebuffer)));
-    j["pixel_error_avg_pct"] = error.average_pct;
-    j["pixel_error_max_pct"] = error.max_pct;
-    j["time_reference_s"] = reference->seconds;
+    const auto error =
+        renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
+    s.error = RenderPixelError{error.average_pct, error.max_pct, result.rendered_pixels,
+                               "every pass against the rt reference's, the rendered pixels",
+                               reference->render_seconds};
   }
-  return j;
+  return s;
 }
+
+}  // namespace
 
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
   render_settings_from(settings);  // validates the combination of settings before any work
@@ -209,30 +184,30 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   InterruptScope::throw_if_interrupted();
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
-  const RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
-  RenderResult reference;
+  const renderer::RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
+  renderer::RenderResult reference;
   if (outputs.reference_rt) {
     reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt", cancel, show_progress);
   }
-  nlohmann::ordered_json stats =
-      render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
+  RenderStats stats = render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
   if (!outputs.image.empty()) {
     renderer::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));
   }
-  const std::pair<const std::string*, const std::vector<std::uint64_t>*> heatmaps[] = {
-      {&outputs.heatmap_lights, &fb.lights_tested}, {&outputs.heatmap_nodes, &fb.nodes_visited}};
-  const char* range_keys[] = {"heatmap_lights_range", "heatmap_nodes_range"};
-  for (int k = 0; k < 2; ++k) {
-    renderer::HeatmapRange range;
-    const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmaps[k].second), range);
-    stats[range_keys[k]] = {range.min, range.max};
-    if (!heatmaps[k].first->empty()) renderer::write_png_rgb8(*heatmaps[k].first, fb.width, fb.height, rgb);
+  const struct {
+    const std::string* path;
+    const std::vector<std::uint64_t>* counter;
+    renderer::HeatmapRange* range;
+  } heatmaps[] = {{&outputs.heatmap_lights, &fb.lights_tested, &stats.heatmap_lights_range},
+                  {&outputs.heatmap_nodes, &fb.nodes_visited, &stats.heatmap_nodes_range}};
+  for (const auto& heatmap : heatmaps) {
+    const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmap.counter), *heatmap.range);
+    if (!heatmap.path->empty()) renderer::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
   }
-  stats["heatmap_scale"] = "log(1 + value per sample), viridis";
-  if (!outputs.stats.empty()) renderer::write_text_file(outputs.stats, stats.dump(2) + "\n");
+  const nlohmann::ordered_json json = render_stats_json(stats);
+  if (!outputs.stats.empty()) renderer::write_text_file(outputs.stats, json.dump(2) + "\n");
 
   if (outputs.quiet) return 0;
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
@@ -245,11 +220,11 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
                "%.2f nodes visited/point",
                scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
                static_cast<unsigned long long>(loaded->scene.lights.light_count), settings.method.c_str(),
-               settings.tolerance, result.seconds, stats["lights_tested_avg"].get<double>(),
-               stats["nodes_visited_avg"].get<double>());
+               settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
+               json["nodes_visited_avg"].get<double>());
   if (outputs.reference_rt) {
-    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", stats["pixel_error_avg_pct"].get<double>(),
-                 stats["pixel_error_max_pct"].get<double>());
+    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", json["pixel_error_avg_pct"].get<double>(),
+                 json["pixel_error_max_pct"].get<double>());
   }
   std::fprintf(summary, "\n");
   std::string written;

@@ -15,7 +15,7 @@
 #include "lev/methods.h"
 #include "renderer/image_io.h"
 #include "renderer/ray_log.h"
-#include "renderer/render.h"
+#include "renderer/render_service.h"
 #include "scenes/scene_models.h"
 
 namespace app::bench {
@@ -801,19 +801,17 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
         const renderer::RenderSettings rs = render_settings_from(s);
         renderer::RayLog log;
         {
-          renderer::RenderStatePtr state =
-              renderer::make_render_state(loaded.scene, *loaded.rays, rs);
-          renderer::record_rays(*state, &log);
-          if (!renderer::render_pass(*state, &InterruptScope::flag())) throw Interrupted();
+          renderer::RenderJob recording(loaded.scene, *loaded.rays, rs);
+          renderer::record_rays(recording.state(), &log);
+          if (!recording.pass(&InterruptScope::flag())) throw Interrupted();
         }
         rays = renderer::count_logged_rays(log);
         for (int r = 0; r < c.runs; ++r) {
           double start = process_cpu_seconds();
-          renderer::RenderStatePtr state =
-              renderer::make_render_state(loaded.scene, *loaded.rays, rs);
-          if (!renderer::render_pass(*state, &InterruptScope::flag())) throw Interrupted();
+          renderer::RenderJob job(loaded.scene, *loaded.rays, rs);
+          if (!job.pass(&InterruptScope::flag())) throw Interrupted();
           render_cpu.push_back(process_cpu_seconds() - start);
-          render_wall.push_back(renderer::render_seconds(*state));
+          render_wall.push_back(renderer::render_seconds(job.state()));
           start = process_cpu_seconds();
           bare_wall.push_back(renderer::cast_logged_rays(*loaded.rays, log, run.threads()).seconds);
           bare_cpu.push_back(process_cpu_seconds() - start);

@@ -8,9 +8,9 @@
 
 #include "app/bench/table.h"
 #include "app/interrupt.h"
-#include "app/render_command.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/pixel_error.h"
+#include "renderer/render_service.h"
 #include "scenes/scene_models.h"
 
 namespace app::bench {
@@ -239,7 +239,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     std::size_t index;
     Settings settings;
     Measurement m;
-    RenderResult last;
+    renderer::RenderResult last;
     double spent = 0.0;
   };
   std::vector<Pending> pending;
@@ -250,7 +250,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       out[i] = &found->second;
       continue;
     }
-    Pending p{i, Settings{}, Measurement{}, RenderResult{}, 0.0};
+    Pending p{i, Settings{}, Measurement{}, renderer::RenderResult{}, 0.0};
     p.settings.scene = r.scene;
     p.settings.level = r.level;
     p.settings.method = r.method;
@@ -276,10 +276,13 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       LoadedScene& loaded = scene(r.scene, r.level);
       const double cpu_start = process_cpu_seconds();
       InterruptScope::throw_if_interrupted();  // the scene may have just been built
-      p.last = render_image(loaded, p.settings, r.method, &InterruptScope::flag());
+      if (!renderer::render_passes(loaded.scene, *loaded.rays, render_settings_from(p.settings), 1, p.last,
+                                   &InterruptScope::flag())) {
+        throw Interrupted();
+      }
       p.m.run_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
-      p.m.run_seconds.push_back(p.last.seconds);
-      p.spent += p.last.seconds;
+      p.m.run_seconds.push_back(p.last.render_seconds);
+      p.spent += p.last.render_seconds;
       any = true;
     }
     if (!any) break;
@@ -294,15 +297,10 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     m.cpu_seconds = median(m.run_cpu_seconds);
     m.full_pixels =
         static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
-    m.totals = renderer::sum_framebuffer(p.last.framebuffer);
+    m.totals = p.last.totals;
     m.pixels = m.totals.samples;
     m.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
-    const std::vector<std::uint8_t> all = renderer::framebuffer_rgb8(p.last.framebuffer);
-    for (std::size_t i = 0; i < p.last.framebuffer.samples.size(); ++i) {
-      if (p.last.framebuffer.samples[i] == 0) continue;
-      m.rgb.insert(m.rgb.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * i),
-                   all.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
-    }
+    m.rgb = std::move(p.last.rendered_rgb);
     const int runs = static_cast<int>(m.run_seconds.size());
     Measurement& stored = cache_[key_of(r)] = std::move(m);
     out[p.index] = &stored;

@@ -14,7 +14,7 @@
 #include "app/viewer/reference_render.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
-#include "renderer/render.h"
+#include "renderer/render_service.h"
 
 namespace app::viewer {
 
@@ -91,7 +91,7 @@ struct Worker {
   int level = -1;
   renderer::Camera preset;
   std::optional<ViewKey> view;
-  renderer::RenderStatePtr main;
+  std::unique_ptr<renderer::RenderJob> main;
   renderer::RenderSettings main_settings;
   std::uint64_t generation = 0;
   std::uint64_t last_serial = 0;  // the latest request applied; every generation is <= it
@@ -125,12 +125,12 @@ struct Worker {
     shared.wake.notify_all();
   }
 
-  void publish_main(renderer::RenderStatePtr state) {
+  void publish_main(std::unique_ptr<renderer::RenderJob> job) {
     {
       const std::lock_guard<std::mutex> lock(shared.slot_mutex);
-      shared.slot = state.get();
+      shared.slot = &job->state();
     }
-    main = std::move(state);
+    main = std::move(job);
   }
 
   void drop_main(std::uint64_t floor) {
@@ -160,7 +160,7 @@ struct Worker {
     view.reset();
   }
 
-  int passes_done() const { return main ? renderer::render_passes_done(*main) : 0; }
+  int passes_done() const { return main ? renderer::render_passes_done(main->state()) : 0; }
   bool wants_preview() const { return main && preview_levels_done < preview_steps.size(); }
 
   // Refinement passes wait while the reference renders: they would share its cores, and the
@@ -227,12 +227,11 @@ struct Worker {
 
     if (main_changed) {
       update_status([](WorkerStatus& st) { st.phase = WorkerPhase::preparing; });
-      const auto start = Clock::now();
-      renderer::RenderStatePtr state = renderer::make_render_state(sc, *loaded->rays, rs);
-      const double refit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      const int tiles = renderer::render_tile_count(*state);
-      const std::size_t method_bytes = renderer::render_selector(*state).bookkeeping_bytes();
-      publish_main(std::move(state));
+      auto job = std::make_unique<renderer::RenderJob>(sc, *loaded->rays, rs);
+      const double refit_seconds = job->setup_seconds();
+      const int tiles = renderer::render_tile_count(job->state());
+      const std::size_t method_bytes = renderer::render_selector(job->state()).bookkeeping_bytes();
+      publish_main(std::move(job));
       main_settings = rs;
       generation = serial;
       preview_steps = preview_steps_for(rs.width, rs.height, rs.pixel_stride);
@@ -265,7 +264,7 @@ struct Worker {
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;
         shared.reference_tiles.raise_floor(serial);
-        reference.begin(renderer::make_render_state(sc, *loaded->rays, ref), serial);
+        reference.begin(std::make_unique<renderer::RenderJob>(sc, *loaded->rays, ref), serial);
         update_status([&](WorkerStatus& st) {
           st.reference = ReferencePhase::rendering;
           st.reference_generation = serial;
@@ -280,7 +279,7 @@ struct Worker {
 
   // One preview level over the whole frame; a cancelled level is rendered again from the start.
   void render_preview_level() {
-    renderer::RenderState& state = *main;
+    renderer::RenderState& state = main->state();
     const int step = preview_steps[preview_levels_done];
     update_status([&](WorkerStatus& st) {
       st.phase = WorkerPhase::rendering;
@@ -294,7 +293,7 @@ struct Worker {
       shared.preview_tiles.post(copy_preview_tile(preview, step, main_settings.width,
                                                   main_settings.height, gen, tile, r));
     };
-    if (!renderer::render_pass(state, &shared.cancel, on_tile_done, step)) return;
+    if (!main->pass(&shared.cancel, on_tile_done, step)) return;
     preview_levels_done += 1;
     update_status(
         [&](WorkerStatus& st) { st.preview_levels_done = static_cast<int>(preview_levels_done); });
@@ -305,7 +304,7 @@ struct Worker {
       render_preview_level();
       return;
     }
-    renderer::RenderState& state = *main;
+    renderer::RenderState& state = main->state();
     const int pass = renderer::render_passes_done(state);
     const bool shared_cpu = pass == 0 && reference.running();
     update_status([&](WorkerStatus& st) {
@@ -321,7 +320,7 @@ struct Worker {
       renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
       shared.tiles.post(copy_tile(framebuffer, gen, tile, pass, r));
     };
-    const bool complete = renderer::render_pass(state, &shared.cancel, on_tile_done);
+    const bool complete = main->pass(&shared.cancel, on_tile_done);
     const double seconds = renderer::render_seconds(state);
     const std::size_t method_bytes = renderer::render_selector(state).bookkeeping_bytes();
     double pass_seconds = 0.0;
