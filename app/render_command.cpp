@@ -115,7 +115,7 @@ void check_memory_budget(const Settings& settings, bool reference) {
   }
 }
 
-renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, const std::string& method,
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, lev::Method method,
                                     const std::atomic<bool>* cancel, bool show_progress) {
   Settings s = settings;
   s.method = method;
@@ -123,7 +123,7 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
   const auto on_pass_done = [&](int passes_done, double elapsed_s) {
     if (show_progress && elapsed_s >= 1.0 && passes_done < settings.spp) {
       const double left_s = elapsed_s / passes_done * (settings.spp - passes_done);
-      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", method.c_str(), passes_done,
+      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", lev::method_info(method).name, passes_done,
                    settings.spp, left_s);
       progress_shown = true;
     }
@@ -146,7 +146,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.scene = loaded.scene.name;
   s.level = loaded.scene.level;
   s.lights = loaded.scene.lights.light_count;
-  s.method = settings.method;
+  s.method = lev::method_info(settings.method).name;
   s.tolerance = settings.tolerance;
   s.width = settings.width;
   s.height = settings.height;
@@ -187,7 +187,8 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   const renderer::RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
   renderer::RenderResult reference;
   if (outputs.reference_rt) {
-    reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt", cancel, show_progress);
+    const lev::Method rt = lev::reference_method();
+    reference = settings.method == rt ? result : render_image(*loaded, settings, rt, cancel, show_progress);
   }
   RenderStats stats = render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 
@@ -219,7 +220,7 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",
                scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
-               static_cast<unsigned long long>(loaded->scene.lights.light_count), settings.method.c_str(),
+               static_cast<unsigned long long>(loaded->scene.lights.light_count), lev::method_info(settings.method).name,
                settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
                json["nodes_visited_avg"].get<double>());
   if (outputs.reference_rt) {

@@ -54,7 +54,7 @@ void check_memory_budget(const Settings& settings, bool reference);
 // Throws Interrupted when *cancel is raised (Ctrl-C) before the last pass completes.
 // show_progress: after each pass, once the render has run a second, a line on stderr with the
 // passes done and an estimate of the time left (rewritten in place; for a terminal).
-renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, const std::string& method,
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, lev::Method method,
                                     const std::atomic<bool>* cancel = nullptr, bool show_progress = false);
 
 int run_render(const Settings& settings, const RenderOutputs& outputs);

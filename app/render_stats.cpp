@@ -4,7 +4,9 @@
 
 namespace app {
 
-int resolved_threads(int threads) { return threads > 0 ? threads : tbb::info::default_concurrency(); }
+int resolved_threads(int threads) {
+  return threads > 0 ? threads : tbb::info::default_concurrency();
+}
 
 nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   const renderer::FramebufferTotals& t = s.totals;
@@ -29,7 +31,9 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
     // The rendered pixels' time scaled to every pixel of the frame.
     const double frame_pixels = static_cast<double>(s.width) * s.height;
     j["time_render_full_frame_estimate_s"] =
-        s.rendered_pixels > 0 ? s.render_seconds * frame_pixels / static_cast<double>(s.rendered_pixels) : 0.0;
+        s.rendered_pixels > 0
+            ? s.render_seconds * frame_pixels / static_cast<double>(s.rendered_pixels)
+            : 0.0;
   }
   j["mrays_per_s"] = s.render_seconds > 0.0
                          ? static_cast<double>(t.samples + t.shadow_rays) / s.render_seconds * 1e-6
@@ -48,7 +52,9 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
     j["pixel_error_scope"] = s.error->scope;
     j["time_reference_s"] = s.error->reference_seconds;
   }
-  const auto vec = [](const glm::vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+  const auto vec = [](const glm::vec3& v) {
+    return nlohmann::ordered_json::array({v.x, v.y, v.z});
+  };
   j["camera"] = {{"position", vec(s.camera.position)},
                  {"target", vec(s.camera.target)},
                  {"up", vec(s.camera.up)},

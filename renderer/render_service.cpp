@@ -10,7 +10,8 @@ RenderJob::RenderJob(const Scene& scene, const RayScene& rays, const RenderSetti
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-bool RenderJob::pass(const std::atomic<bool>* cancel, const TileDoneCallback& on_tile_done, int preview_step) {
+bool RenderJob::pass(const std::atomic<bool>* cancel, const TileDoneCallback& on_tile_done,
+                     int preview_step) {
   return render_pass(*state_, cancel, on_tile_done, preview_step);
 }
 
@@ -38,8 +39,9 @@ RenderResult RenderJob::result() const {
   return r;
 }
 
-bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings, int passes,
-                   RenderResult& result, const std::atomic<bool>* cancel, const PassDoneCallback& on_pass_done) {
+bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
+                   int passes, RenderResult& result, const std::atomic<bool>* cancel,
+                   const PassDoneCallback& on_pass_done) {
   RenderJob job(scene, rays, settings);
   for (int pass = 0; pass < passes; ++pass) {
     if (!job.pass(cancel)) return false;

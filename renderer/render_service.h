@@ -24,8 +24,8 @@ struct RenderResult {
   std::vector<std::uint8_t> rendered_rgb;
   std::uint64_t rendered_pixels = 0;
   int passes = 0;
-  double setup_seconds = 0.0;   // make_render_state: selector and extent volumes
-  double render_seconds = 0.0;  // wall time inside the passes
+  double setup_seconds = 0.0;    // make_render_state: selector and extent volumes
+  double render_seconds = 0.0;   // wall time inside the passes
   std::size_t method_bytes = 0;  // the method's own bookkeeping (AST)
 };
 
@@ -35,8 +35,8 @@ class RenderJob {
   RenderJob(const Scene& scene, const RayScene& rays, const RenderSettings& settings);
 
   // One more pass (render_pass); false when *cancel stopped it.
-  bool pass(const std::atomic<bool>* cancel = nullptr, const TileDoneCallback& on_tile_done = nullptr,
-            int preview_step = 1);
+  bool pass(const std::atomic<bool>* cancel = nullptr,
+            const TileDoneCallback& on_tile_done = nullptr, int preview_step = 1);
 
   RenderState& state() { return *state_; }
   const RenderState& state() const { return *state_; }
@@ -56,8 +56,8 @@ using PassDoneCallback = std::function<void(int passes_done, double render_secon
 
 // `passes` passes of a new job. Returns false (and leaves *result untouched) when *cancel stopped
 // a pass.
-bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings, int passes,
-                   RenderResult& result, const std::atomic<bool>* cancel = nullptr,
+bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
+                   int passes, RenderResult& result, const std::atomic<bool>* cancel = nullptr,
                    const PassDoneCallback& on_pass_done = nullptr);
 
 }  // namespace renderer

@@ -21,8 +21,6 @@
 namespace app::bench {
 namespace {
 
-const char* const kMethods[] = {"rt", "ast", "lev"};
-
 // The targets (benchmarks, not tests).
 constexpr double kSpeedupOverRt = 300.0;
 constexpr double kSpeedupOverAst = 100.0;
@@ -101,27 +99,37 @@ int nearest_level(const BenchRun& run, const std::string& scene, const std::vect
 
 Section run_speed(BenchRun& run, const std::string& out_dir) {
   const SuiteConfig& c = run.config();
+  // Every method of the table, measured in turns; ratios are over the reference (rt) and of
+  // the thesis' method (lev) over the others.
+  const std::vector<lev::MethodInfo>& methods = lev::method_table();
+  const std::size_t count = methods.size();
+  const lev::Method rt = lev::reference_method();
+  const std::string rt_name = lev::method_info(rt).name;
+  const std::string lev_name = lev::method_info(lev::Method::lev).name;
   Table table;
-  table.columns = {{"scene", "scene"},
-                   {"lights", "lights"},
-                   {"rt_cpu_s", "rt (CPU s)"},
-                   {"rt_wall_s", "rt (s)", false},
-                   {"rt_pixels", "rt px"},
-                   {"ast_cpu_s", "ast (CPU s)"},
-                   {"ast_wall_s", "ast (s)", false},
-                   {"ast_pixels", "ast px"},
-                   {"lev_cpu_s", "lev (CPU s)"},
-                   {"lev_wall_s", "lev (s)"},
-                   {"lev_pixels", "lev px"},
-                   {"ast_over_rt_pct", "ast/rt (%)"},
-                   {"lev_over_rt_pct", "lev/rt (%)"},
-                   {"rt_over_lev", "lev speedup over rt"},
-                   {"ast_over_lev", "lev speedup over ast"},
-                   {"thesis_rt_over_lev", "thesis: over rt"},
-                   {"thesis_ast_over_lev", "thesis: over ast"},
-                   {"rt_tests_per_point", "rt tests/pt"},
-                   {"ast_tests_per_point", "ast tests/pt"},
-                   {"lev_tests_per_point", "lev tests/pt"}};
+  table.columns = {{"scene", "scene"}, {"lights", "lights"}};
+  for (const lev::MethodInfo& m : methods) {
+    const std::string n = m.name;
+    table.columns.push_back({n + "_cpu_s", n + " (CPU s)"});
+    table.columns.push_back({n + "_wall_s", n + " (s)", m.id == lev::Method::lev});
+    table.columns.push_back({n + "_pixels", n + " px"});
+  }
+  for (const lev::MethodInfo& m : methods) {
+    if (m.id != rt) table.columns.push_back({std::string(m.name) + "_over_" + rt_name + "_pct", std::string(m.name) + "/" + rt_name + " (%)"});
+  }
+  for (const lev::MethodInfo& m : methods) {
+    if (m.id != lev::Method::lev) {
+      table.columns.push_back({std::string(m.name) + "_over_" + lev_name, lev_name + " speedup over " + m.name});
+    }
+  }
+  table.columns.push_back({"thesis_rt_over_lev", "thesis: over rt"});
+  table.columns.push_back({"thesis_ast_over_lev", "thesis: over ast"});
+  for (const lev::MethodInfo& m : methods) {
+    table.columns.push_back({std::string(m.name) + "_tests_per_point", std::string(m.name) + " tests/pt"});
+  }
+  const std::size_t rt_index = static_cast<std::size_t>(rt);
+  const std::size_t lev_index = static_cast<std::size_t>(lev::Method::lev);
+  const std::size_t ast_index = static_cast<std::size_t>(lev::Method::ast);
   Section section;
   std::string plots;
   for (const std::string& scene : run.available_scenes()) {
@@ -131,27 +139,27 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
     chart.x_label = "lights";
     chart.y_label = "CPU seconds per frame";
     chart.log_x = chart.log_y = true;
-    std::vector<Series> series(3);
-    for (int i = 0; i < 3; ++i) series[static_cast<std::size_t>(i)].label = kMethods[i];
+    std::vector<Series> series(count);
+    for (std::size_t i = 0; i < count; ++i) series[i].label = methods[i].name;
     double rt_over_lev = kNaN, ast_over_lev = kNaN;
     std::uint64_t last_lights = 0;
     for (int level : run.levels(scene, c.min_lights, c.max_lights)) {
       const std::uint64_t lights = run.light_count(scene, level);
-      double cpu[3], wall[3], tests[3];
-      int stride[3];
+      std::vector<double> cpu(count), wall(count), tests(count);
+      std::vector<int> stride(count);
       std::vector<MeasureRequest> requests;
-      for (int i = 0; i < 3; ++i) {
-        stride[i] = run.stride_for(scene, level, kMethods[i], c.tolerance);
-        requests.push_back({scene, level, kMethods[i], c.tolerance, stride[i], c.runs});
+      for (std::size_t i = 0; i < count; ++i) {
+        stride[i] = run.stride_for(scene, level, methods[i].id, c.tolerance);
+        requests.push_back({scene, level, methods[i].id, c.tolerance, stride[i], c.runs});
       }
       const std::vector<const Measurement*> measured = run.measure_together(requests);
-      for (int i = 0; i < 3; ++i) {
-        const Measurement& m = *measured[static_cast<std::size_t>(i)];
+      for (std::size_t i = 0; i < count; ++i) {
+        const Measurement& m = *measured[i];
         cpu[i] = m.full_frame_cpu_seconds();
         wall[i] = m.full_frame_seconds();
         tests[i] = m.lights_tested_avg();
-        series[static_cast<std::size_t>(i)].x.push_back(static_cast<double>(lights));
-        series[static_cast<std::size_t>(i)].y.push_back(cpu[i]);
+        series[i].x.push_back(static_cast<double>(lights));
+        series[i].y.push_back(cpu[i]);
       }
       double thesis_rt = kNaN, thesis_ast = kNaN;
       for (const ThesisSpeed& t : thesis_speed(scene)) {
@@ -160,31 +168,27 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
           thesis_ast = t.ast / t.lev;
         }
       }
-      rt_over_lev = cpu[0] / cpu[2];
-      ast_over_lev = cpu[1] / cpu[2];
+      rt_over_lev = cpu[rt_index] / cpu[lev_index];
+      ast_over_lev = cpu[ast_index] / cpu[lev_index];
       last_lights = lights;
-      table.rows.push_back({text_cell(scene),
-                            count_cell(lights),
-                            number_cell(cpu[0], 3),
-                            number_cell(wall[0], 3),
-                            text_cell(pixels_text(stride[0])),
-                            number_cell(cpu[1], 3),
-                            number_cell(wall[1], 3),
-                            text_cell(pixels_text(stride[1])),
-                            number_cell(cpu[2], 3),
-                            number_cell(wall[2], 3),
-                            text_cell(pixels_text(stride[2])),
-                            number_cell(100.0 * cpu[1] / cpu[0], 1),
-                            number_cell(100.0 * cpu[2] / cpu[0], 2),
-                            ratio_cell(rt_over_lev),
-                            ratio_cell(ast_over_lev),
-                            ratio_cell(thesis_rt),
-                            ratio_cell(thesis_ast),
-                            number_cell(tests[0], 1),
-                            number_cell(tests[1], 1),
-                            number_cell(tests[2], 1)});
+      std::vector<Cell> row{text_cell(scene), count_cell(lights)};
+      for (std::size_t i = 0; i < count; ++i) {
+        row.push_back(number_cell(cpu[i], 3));
+        row.push_back(number_cell(wall[i], 3));
+        row.push_back(text_cell(pixels_text(stride[i])));
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        if (i != rt_index) row.push_back(number_cell(100.0 * cpu[i] / cpu[rt_index], 2));
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        if (i != lev_index) row.push_back(ratio_cell(cpu[i] / cpu[lev_index]));
+      }
+      row.push_back(ratio_cell(thesis_rt));
+      row.push_back(ratio_cell(thesis_ast));
+      for (std::size_t i = 0; i < count; ++i) row.push_back(number_cell(tests[i], 1));
+      table.rows.push_back(row);
     }
-    chart.series = series;
+  chart.series = series;
     plots += write_chart(run, out_dir, "speed_" + scene + ".png", chart);
     if (scene == "building" || scene == "maze") {
       const std::uint64_t target = scene == "building" ? kBuildingTargetLights : kMazeTargetLights;
@@ -356,9 +360,9 @@ MeasureRequest scaling_request(BenchRun& run, const std::string& scene, int leve
                                double tolerance) {
   return {scene,
           level,
-          "lev",
+          lev::Method::lev,
           tolerance,
-          run.stride_for(scene, level, "lev", tolerance),
+          run.stride_for(scene, level, lev::Method::lev, tolerance),
           run.config().runs};
 }
 
@@ -537,7 +541,7 @@ Section run_fraction(BenchRun& run, const std::string& out_dir) {
       Series s{format_count(lights) + " lights", {}, {}};
       for (double t : c.fraction_tolerances) {
         const Measurement& m =
-            run.measure({scene, level, "lev", t, run.stride_for(scene, level, "lev", t), 1});
+            run.measure({scene, level, lev::Method::lev, t, run.stride_for(scene, level, lev::Method::lev, t), 1});
         const double fraction = 100.0 * m.lights_tested_avg() / static_cast<double>(lights);
         const double thesis = thesis_lookup(thesis_fraction_tested(scene), lights, t);
         table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(tolerance_text(t)),
@@ -593,11 +597,12 @@ Section run_error(BenchRun& run, const std::string& out_dir) {
     std::uint64_t worst_avg_lights = 0, worst_max_lights = 0;
     for (int level : run.levels(scene, c.min_lights, c.max_lights)) {
       const std::uint64_t lights = run.light_count(scene, level);
-      const int stride = run.stride_for(scene, level, "rt", 0.0);
-      const Measurement& reference = run.measure({scene, level, "rt", 0.0, stride, 1});
+      const lev::Method rt = lev::reference_method();
+      const int stride = run.stride_for(scene, level, rt, 0.0);
+      const Measurement& reference = run.measure({scene, level, rt, 0.0, stride, 1});
       Series sa{format_count(lights) + " lights", {}, {}}, sm = sa;
       for (double t : c.error_tolerances) {
-        const Measurement& m = run.measure({scene, level, "lev", t, stride, 1});
+        const Measurement& m = run.measure({scene, level, lev::Method::lev, t, stride, 1});
         const PixelErrors e = pixel_errors(m, reference);
         table.rows.push_back(
             {text_cell(scene), count_cell(lights), text_cell(tolerance_text(t)),
@@ -659,6 +664,14 @@ Section run_error(BenchRun& run, const std::string& out_dir) {
 // ---------------------------------------------------------------------------------------------
 // trade: time against pixel error (new)
 
+// A method's trade sweep: its row's bench_tolerances (none for the reference); a quick run takes
+// the first, middle and last.
+std::vector<double> trade_tolerances(const BenchRun& run, const lev::MethodInfo& method) {
+  const std::vector<double>& all = method.bench_tolerances;
+  if (method.is_reference || !run.config().quick || all.size() <= 3) return method.is_reference ? std::vector<double>{} : all;
+  return {all.front(), all[all.size() / 2], all.back()};
+}
+
 Section run_trade(BenchRun& run, const std::string& out_dir) {
   const SuiteConfig& c = run.config();
   // Errors of exactly 0 cannot sit on a log axis; they are drawn at this floor.
@@ -690,24 +703,27 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
         nearest_level(run, scene, levels,
                       wanted != c.trade_lights.end() ? wanted->second : c.trade_default_lights);
     const std::uint64_t lights = run.light_count(scene, level);
-    std::vector<MeasureRequest> requests{{scene, level, "rt", 0.0, 1, c.runs}};
-    for (double t : c.trade_lev_tolerances) requests.push_back({scene, level, "lev", t, 1, c.runs});
-    for (double t : c.trade_ast_tolerances) requests.push_back({scene, level, "ast", t, 1, c.runs});
+    const lev::Method rt = lev::reference_method();
+    const char* rt_name = lev::method_info(rt).name;
+    std::vector<MeasureRequest> requests{{scene, level, rt, 0.0, 1, c.runs}};
+    for (const lev::MethodInfo& m : lev::method_table()) {
+      for (double t : trade_tolerances(run, m)) requests.push_back({scene, level, m.id, t, 1, c.runs});
+    }
     run.measure_together(requests);
     const Measurement& reference = run.measure(requests.front());
     const double rt_seconds = reference.full_frame_cpu_seconds();
-    table.rows.push_back({text_cell(scene), count_cell(lights), text_cell("rt"), text_cell("-"),
+    table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(rt_name), text_cell("-"),
                           number_cell(rt_seconds, 3),
                           number_cell(reference.full_frame_seconds(), 3), ratio_cell(1.0),
                           number_cell(0.0, 4), number_cell(0.0, 3),
                           number_cell(reference.lights_tested_avg(), 1)});
-    references.push_back({scene + " rt", {0.0}, {rt_seconds}, true});
-    for (const char* method : {"lev", "ast"}) {
-      const std::vector<double>& tolerances =
-          std::string(method) == "lev" ? c.trade_lev_tolerances : c.trade_ast_tolerances;
+    references.push_back({scene + " " + rt_name, {0.0}, {rt_seconds}, true});
+    for (const lev::MethodInfo& info : lev::method_table()) {
+      if (info.is_reference) continue;
+      const char* method = info.name;
       Series sa{scene + " " + method, {}, {}}, sm = sa;
-      for (double t : tolerances) {
-        const Measurement& m = run.measure({scene, level, method, t, 1, c.runs});
+      for (double t : trade_tolerances(run, info)) {
+        const Measurement& m = run.measure({scene, level, info.id, t, 1, c.runs});
         const PixelErrors e = pixel_errors(m, reference);
         const double seconds = m.full_frame_cpu_seconds();
         table.rows.push_back({text_cell(scene), count_cell(lights), text_cell(method),
@@ -786,7 +802,7 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
       // One recording pass, then whole renders and bare loops in turns, so that both see the
       // same machine load; a bare loop takes about half a render.
       const double cost =
-          run.predicted_seconds({scene, level, "lev", c.tolerance, 1, 1}) * (1.0 + 1.5 * c.runs);
+          run.predicted_seconds({scene, level, lev::Method::lev, c.tolerance, 1, 1}) * (1.0 + 1.5 * c.runs);
       const std::string what =
           scene + " " + format_count(lights) + " lights: recorded one lev pass, cast its rays bare";
       const bool ran = run.run_job(what, cost, [&] {

@@ -34,8 +34,6 @@ SuiteConfig thesis_suite(bool quick) {
   c.error_tolerances = {0.002, 0.01};
   c.trade_lights.clear();
   c.trade_default_lights = 64;
-  c.trade_lev_tolerances = {0.1, 0.01, 0.001};
-  c.trade_ast_tolerances = {0.1, 0.01};
   c.scaling_base_lights = 64;
   return c;
 }
@@ -148,9 +146,8 @@ std::uint64_t BenchRun::light_count(const std::string& scene, int level) const {
   return model ? model->light_count(level) : 0;
 }
 
-int BenchRun::stride_for(const std::string& scene, int level, const std::string& method,
-                         double tolerance) {
-  if (method != "lev" && light_count(scene, level) > config_.subsample_above)
+int BenchRun::stride_for(const std::string& scene, int level, lev::Method method, double tolerance) {
+  if (lev::method_info(method).scans_every_light && light_count(scene, level) > config_.subsample_above)
     return config_.subsample_stride;
   return probe(scene, level, method, tolerance).full_frame_seconds() >
                  config_.max_full_frame_seconds
@@ -159,11 +156,10 @@ int BenchRun::stride_for(const std::string& scene, int level, const std::string&
 }
 
 double BenchRun::lev_tests_per_point(const std::string& scene, int level, double tolerance) {
-  return probe(scene, level, "lev", tolerance).lights_tested_avg();
+  return probe(scene, level, lev::Method::lev, tolerance).lights_tested_avg();
 }
 
-const Measurement& BenchRun::probe(const std::string& scene, int level, const std::string& method,
-                                   double tolerance) {
+const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Method method, double tolerance) {
   const MeasureRequest request{scene, level, method, tolerance, kProbeStride, 1};
   const auto found = cache_.find(key_of(request));
   if (found != cache_.end()) return found->second;
@@ -189,8 +185,8 @@ double BenchRun::predicted_seconds(const MeasureRequest& r) {
 }
 
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
-  // rt does not depend on the tolerance: one reference serves every tolerance.
-  return {r.scene, r.level, r.method, r.method == "rt" ? 0.0 : r.tolerance, r.stride};
+  // A method that ignores the tolerance (rt) is measured once for every tolerance.
+  return {r.scene, r.level, r.method, lev::method_info(r.method).uses_tolerance ? r.tolerance : 0.0, r.stride};
 }
 
 LoadedScene& BenchRun::scene(const std::string& name, int level) {
@@ -308,7 +304,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
 
     char what[256];
     std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s",
-                  done.scene.c_str(), format_count(stored.lights).c_str(), done.method.c_str(),
+                  done.scene.c_str(), format_count(stored.lights).c_str(), lev::method_info(done.method).name,
                   done.tolerance, pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
     if (!planning_) report(what, predicted_seconds(done));

@@ -39,7 +39,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   r.scene = status.scene_name;
   r.level = status.level;
   r.lights = status.light_count;
-  r.method = status.method;
+  r.method = lev::method_info(status.method).name;
   r.tolerance = status.tolerance;
   r.width = status.width;
   r.height = status.height;

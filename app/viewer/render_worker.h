@@ -21,6 +21,7 @@
 
 #include "app/settings.h"
 #include "app/viewer/display_buffer.h"
+#include "lev/methods.h"
 #include "renderer/camera.h"
 
 namespace app::viewer {
@@ -56,7 +57,7 @@ struct WorkerStatus {
   int width = 0;
   int height = 0;
   int tile_count = 0;
-  std::string method;
+  lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
   double refit_seconds = 0.0;  // making the render state: refit and selector
   std::size_t method_bytes = 0;

@@ -14,7 +14,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.folder = state.snapshot_folder;
   char base[160];
   std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.c_str(),
-                static_cast<unsigned long long>(st.light_count), st.method.c_str(), st.tolerance);
+                static_cast<unsigned long long>(st.light_count), lev::method_info(st.method).name, st.tolerance);
   job.base = base;
   for (char& c : job.base) {
     if (c == '/' || c == '\\' || c == ' ') c = '_';

@@ -1,5 +1,6 @@
 // The render service: a job's result is the render step's own framebuffer with its totals and
-// rendered pixels, render_passes equals a job run by hand, and a cancelled render returns no result.
+// rendered pixels, render_passes equals a job run by hand, and a cancelled render returns no
+// result.
 #include "renderer/render_service.h"
 
 #include <atomic>
@@ -43,7 +44,8 @@ TEST(RenderService, TheResultIsTheRenderStepsFramebufferWithItsTotalsAndPixels) 
     const renderer::FramebufferTotals totals = renderer::sum_framebuffer(expected);
     EXPECT_EQ(result.totals.shading_points, totals.shading_points);
     EXPECT_EQ(result.totals.lights_tested, totals.lights_tested);
-    const std::uint64_t pixels = static_cast<std::uint64_t>((40 + stride - 1) / stride) * ((30 + stride - 1) / stride);
+    const std::uint64_t pixels =
+        static_cast<std::uint64_t>((40 + stride - 1) / stride) * ((30 + stride - 1) / stride);
     EXPECT_EQ(result.rendered_pixels, pixels) << "stride " << stride;
     EXPECT_EQ(result.rendered_rgb.size(), 3 * pixels);
     EXPECT_EQ(result.rendered_rgb, renderer::rendered_rgb8(expected));
@@ -58,8 +60,8 @@ TEST(RenderService, ACancelledRenderHasNoResult) {
   const std::atomic<bool> cancel{true};
   renderer::RenderResult result;
   int passes_reported = 0;
-  EXPECT_FALSE(renderer::render_passes(scene, rays, small_settings(lev::Method::lev, 1), 3, result, &cancel,
-                                       [&](int, double) { ++passes_reported; }));
+  EXPECT_FALSE(renderer::render_passes(scene, rays, small_settings(lev::Method::lev, 1), 3, result,
+                                       &cancel, [&](int, double) { ++passes_reported; }));
   EXPECT_EQ(passes_reported, 0);
   EXPECT_EQ(result.passes, 0);
   EXPECT_TRUE(result.framebuffer.samples.empty());
