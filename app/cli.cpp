@@ -154,7 +154,7 @@ int run_cli(int argc, char** argv) {
   CLI::Option* view_lights_option =
       view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
           ->type_name("COUNT");
-  ViewFlags view_options;
+  viewer::ViewFlags view_options;
   add_view_flags(*view, view_options);
 
   check_subcommand_name(cli, argc, argv);
@@ -195,8 +195,8 @@ int run_cli(int argc, char** argv) {
     Settings settings;
     settings.spp = kViewerDefaultPasses;
     try {
-      return run_view(settings, ViewFlags{});
-    } catch (const NoDisplayError&) {
+      return run_view(settings, viewer::ViewFlags{});
+    } catch (const viewer::NoDisplayError&) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }
   }

@@ -12,7 +12,7 @@
 #include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/heatmap.h"
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 #include "renderer/pixel_error.h"
 #include "scenes/scene_file.h"
 
@@ -39,7 +39,7 @@ std::string output_identity(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
   std::error_code ec;
-  const fs::path target = renderer::output_target(path);
+  const fs::path target = app::output_target(path);
   const fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
   return "path " + (ec ? target.string() : resolved.string());
 }
@@ -48,7 +48,7 @@ void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
   const std::string& path = output.path;
   const std::string flag = output.flag;
   if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
-  if (path == renderer::kStandardOutputName) {
+  if (path == app::kStandardOutputName) {
     if (!seen.insert(path).second) throw UsageError(flag + ": standard output is written by another output too, got '-'");
     return;
   }
@@ -63,7 +63,7 @@ void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
       throw UsageError(flag + ": must end in " + output.extension + " (" + output.format + "), got '" + path + "'");
     }
     // A symlink is followed: the rename happens in its target's folder.
-    const fs::path target = renderer::output_target(path);
+    const fs::path target = app::output_target(path);
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(parent, ec)) throw UsageError(flag + ": folder does not exist, got '" + path + "'");
     if (::access(parent.c_str(), W_OK) != 0) throw UsageError(flag + ": folder is not writable, got '" + path + "'");
@@ -195,7 +195,7 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
   if (!outputs.image.empty()) {
-    renderer::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));
+    app::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));
   }
   const struct {
     const std::string* path;
@@ -205,16 +205,16 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
                   {&outputs.heatmap_nodes, &fb.nodes_visited, &stats.heatmap_nodes_range}};
   for (const auto& heatmap : heatmaps) {
     const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmap.counter), *heatmap.range);
-    if (!heatmap.path->empty()) renderer::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
+    if (!heatmap.path->empty()) app::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
   }
   const nlohmann::ordered_json json = render_stats_json(stats);
-  if (!outputs.stats.empty()) renderer::write_text_file(outputs.stats, json.dump(2) + "\n");
+  if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
   if (outputs.quiet) return 0;
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
-  std::FILE* summary = outputs.image == renderer::kStandardOutputName || outputs.stats == renderer::kStandardOutputName ||
-                               outputs.heatmap_lights == renderer::kStandardOutputName ||
-                               outputs.heatmap_nodes == renderer::kStandardOutputName
+  std::FILE* summary = outputs.image == app::kStandardOutputName || outputs.stats == app::kStandardOutputName ||
+                               outputs.heatmap_lights == app::kStandardOutputName ||
+                               outputs.heatmap_nodes == app::kStandardOutputName
                            ? stderr
                            : stdout;
   std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
@@ -232,7 +232,7 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (!output.path.empty()) {
       written += (written.empty() ? "" : ", ") +
-                 (output.path == renderer::kStandardOutputName ? std::string("standard output")
+                 (output.path == app::kStandardOutputName ? std::string("standard output")
                                                                : scenes::escape_control_characters(output.path));
     }
   }

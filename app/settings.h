@@ -10,19 +10,24 @@
 #include <vector>
 
 #include "lev/methods.h"
+#include "renderer/render.h"
+#include "scenes/scene_models.h"
 
 namespace app {
 
+// The largest image side the settings take (width, height, the viewer's typed and fitted sizes).
+inline constexpr int kMaxImageSide = 16384;
+
 struct Settings {
   std::string scene = "building";
-  int level = 3;                // model level; --lights picks it by light count instead
+  int level = scenes::kDefaultSceneLevel;  // model level; --lights picks it by light count instead
   lev::Method method = lev::Method::lev;
-  double tolerance = 0.01;      // colour units, 1.0 = 255
+  double tolerance = lev::kDefaultTolerance;  // colour units, 1.0 = 255
   // The viewer's image size: the image area's pixels (fit), half or a quarter of them, or
   // width x height (typed). Headless renders always use width x height.
   std::string resolution = "fit";
-  int width = 320;
-  int height = 240;
+  int width = renderer::kDefaultImageWidth;
+  int height = renderer::kDefaultImageHeight;
   int spp = 1;                  // passes (one sample per pixel each)
   int depth = 5;                // reflection/refraction depth
   int threads = 0;              // 0 = all cores

@@ -24,6 +24,9 @@
 
 namespace lev {
 
+// The tolerance a render uses unless told otherwise (colour units, 1.0 = 255): thesis Test 1.1.
+inline constexpr double kDefaultTolerance = 0.01;
+
 // A row of method_table(), by position. The named values are the built-in rows; further rows
 // (register_method) take the next values.
 enum class Method : std::uint8_t { rt, ast, lev };

@@ -19,6 +19,7 @@
 
 #include "app/scene_loading.h"
 #include "lev/methods.h"
+#include "renderer/render.h"
 #include "renderer/framebuffer.h"
 
 namespace app::bench {
@@ -27,8 +28,8 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct SuiteConfig {
   bool quick = false;
-  int width = 320;  // thesis 5.4: every image is 320x240
-  int height = 240;
+  int width = renderer::kDefaultImageWidth;
+  int height = renderer::kDefaultImageHeight;
   int runs = 3;  // every timing is the median of at least this many runs
   // Timings quicker than this get extra runs (up to max_runs) for a steadier median.
   double extra_runs_seconds = 2.0;
@@ -44,7 +45,7 @@ struct SuiteConfig {
   std::uint64_t subsample_above = 4096;
   int subsample_stride = 4;
   double max_full_frame_seconds = 40.0;
-  double tolerance = 0.01;                                   // thesis Test 1.1
+  double tolerance = lev::kDefaultTolerance;                 // thesis Test 1.1
   std::vector<double> scaling_tolerances{0.001, 0.01, 0.1};  // Tables 4, 5
   std::vector<double> fraction_tolerances{0.0,   0.0001, 0.002, 0.004,
                                           0.006, 0.008,  0.01};            // Tables 6-9
@@ -65,7 +66,7 @@ struct MeasureRequest {
   std::string scene;
   int level = 0;
   lev::Method method = lev::Method::lev;
-  double tolerance = 0.01;
+  double tolerance = lev::kDefaultTolerance;
   int stride = 1;  // RenderSettings::pixel_stride
   int runs = 1;    // 1 for counts and images (deterministic); config.runs for timings, which take
                    // more runs (up to 9) when they are quick

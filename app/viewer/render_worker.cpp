@@ -49,14 +49,14 @@ struct ViewKey {
 };
 
 // Preview pixel steps, coarsest first: 8, 4, 2, and coarser levels in front while the coarsest
-// would have more samples than the 320x240 default frame has at step 8, so that the first whole
+// would have more samples than the default frame (320x240) has at step 8, so that the first whole
 // frame costs about the same at any window size. Steps at or below the subsample stride add
 // nothing and are left out.
 constexpr int kFinestPreviewStep = 2;
 constexpr int kCoarsePreviewStep = 8;
 constexpr int kMaxPreviewStep = 128;
 constexpr long long kCoarsestPreviewSamples =
-    (320 / kCoarsePreviewStep) * (240 / kCoarsePreviewStep);
+    (renderer::kDefaultImageWidth / kCoarsePreviewStep) * (renderer::kDefaultImageHeight / kCoarsePreviewStep);
 
 std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
   const auto samples_at = [&](int step) {
@@ -408,7 +408,7 @@ const char* worker_phase_text(WorkerPhase phase) {
     case WorkerPhase::loading:
       return "building the scene";
     case WorkerPhase::preparing:
-      return "refitting the hierarchy";
+      return "fitting the extent volumes";
     case WorkerPhase::rendering:
       return "rendering";
     case WorkerPhase::waiting_for_reference:

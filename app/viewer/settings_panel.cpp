@@ -129,7 +129,9 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
     options.push_back(current);
   bool changed = false;
   // The method table's labels name the methods; other choices show their values.
-  const auto label = [&](const std::string& o) { return choice.option_label ? choice.option_label(o) : o.c_str(); };
+  const auto label = [&](const std::string& o) {
+    return choice.option_label ? choice.option_label(o) : o.c_str();
+  };
   if (ImGui::BeginCombo(spec.label, label(current))) {
     for (const std::string& o : options) {
       ImGui::PushID(o.c_str());
@@ -137,9 +139,11 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
         choice.set(settings, o);
         changed = true;
       }
-      if (choice.option_summary && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choice.option_summary(o));
-      ImGui::PopID();
       record_item(rects, std::string(spec.name) + ":" + o);
+      // After record_item: a tooltip is a window of its own and would become the last item.
+      if (choice.option_summary && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", choice.option_summary(o));
+      ImGui::PopID();
     }
     ImGui::EndCombo();
   }
