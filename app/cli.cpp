@@ -48,10 +48,19 @@ std::string setting_type_name(const SettingSpec& spec) {
   return "{" + valid + "}" + (c.also_accepts_label ? std::string(" or ") + c.also_accepts_label : "");
 }
 
+// The help line of a setting; a choice whose options carry summaries (the method table) lists them.
+std::string setting_help(const SettingSpec& spec) {
+  std::string help = spec.help;
+  const auto* c = std::get_if<Choice>(&spec.kind);
+  if (!c || !c->option_summary) return help;
+  for (const std::string& o : c->options()) help += "\n  " + o + ": " + c->option_summary(o);
+  return help;
+}
+
 void add_setting_flags(CLI::App& command, SettingFlags& flags) {
   const Settings defaults;
   for (const SettingSpec& spec : setting_table()) {
-    flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], spec.help)
+    flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], setting_help(spec))
                                    ->type_name(setting_type_name(spec))
                                    ->default_str(setting_text(defaults, spec));
   }
@@ -121,9 +130,12 @@ int run_cli(int argc, char** argv) {
       render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json")};
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
+  const std::string reference_name = lev::method_info(lev::reference_method()).name;
   CLI::Option* reference_option =
-      render->add_option("--reference", reference, "also render this method's image and report pixel errors (rt)")
-          ->type_name("{rt}");
+      render
+          ->add_option("--reference", reference,
+                       "also render this method's image and report pixel errors (" + reference_name + ")")
+          ->type_name("{" + reference_name + "}");
 
   CLI::App* export_command = cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
   ExportFlags export_flags;
@@ -142,7 +154,7 @@ int run_cli(int argc, char** argv) {
   CLI::Option* view_lights_option =
       view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
           ->type_name("COUNT");
-  ViewFlags view_options;
+  viewer::ViewFlags view_options;
   add_view_flags(*view, view_options);
 
   check_subcommand_name(cli, argc, argv);
@@ -164,7 +176,9 @@ int run_cli(int argc, char** argv) {
       }
     }
     if (reference_option->count() > 0) {
-      if (reference != "rt") throw UsageError("--reference: must be rt, got '" + reference + "'");
+      if (reference != reference_name) {
+        throw UsageError("--reference: must be " + reference_name + ", got '" + reference + "'");
+      }
       outputs.reference_rt = true;
     }
     return run_render(settings, outputs);
@@ -181,8 +195,8 @@ int run_cli(int argc, char** argv) {
     Settings settings;
     settings.spp = kViewerDefaultPasses;
     try {
-      return run_view(settings, ViewFlags{});
-    } catch (const NoDisplayError&) {
+      return run_view(settings, viewer::ViewFlags{});
+    } catch (const viewer::NoDisplayError&) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }
   }

@@ -5,7 +5,7 @@
 
 #include "app/render_command.h"
 #include "app/scene_loading.h"
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 #include "scenes/scene_file.h"
 
 namespace app {
@@ -29,9 +29,9 @@ int run_export(const ExportFlags& flags) {
   if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
   check_output_paths({{"--out", flags.out, ".json", "a scene file"}});
   const scenes::SceneDescription description = describe_scene(settings);
-  renderer::write_text_file(flags.out, scenes::scene_file_json(description));
+  app::write_text_file(flags.out, scenes::scene_file_json(description));
   // With --out - the scene file is standard output, so the note goes to stderr.
-  std::fprintf(flags.out == renderer::kStandardOutputName ? stderr : stdout, "wrote %s: %s level %d, %zu masters\n",
+  std::fprintf(flags.out == app::kStandardOutputName ? stderr : stdout, "wrote %s: %s level %d, %zu masters\n",
                scenes::escape_control_characters(flags.out).c_str(),
                scenes::escape_control_characters(description.name).c_str(), description.level,
                description.masters.size());

@@ -8,14 +8,12 @@
 #include <filesystem>
 #include <set>
 
-#include <tbb/info.h>
-
 #include "app/interrupt.h"
+#include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/heatmap.h"
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 #include "renderer/pixel_error.h"
-#include "renderer/render.h"
 #include "scenes/scene_file.h"
 
 namespace app {
@@ -41,7 +39,7 @@ std::string output_identity(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
   std::error_code ec;
-  const fs::path target = renderer::output_target(path);
+  const fs::path target = app::output_target(path);
   const fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
   return "path " + (ec ? target.string() : resolved.string());
 }
@@ -50,7 +48,7 @@ void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
   const std::string& path = output.path;
   const std::string flag = output.flag;
   if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
-  if (path == renderer::kStandardOutputName) {
+  if (path == app::kStandardOutputName) {
     if (!seen.insert(path).second) throw UsageError(flag + ": standard output is written by another output too, got '-'");
     return;
   }
@@ -65,7 +63,7 @@ void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
       throw UsageError(flag + ": must end in " + output.extension + " (" + output.format + "), got '" + path + "'");
     }
     // A symlink is followed: the rename happens in its target's folder.
-    const fs::path target = renderer::output_target(path);
+    const fs::path target = app::output_target(path);
     const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(parent, ec)) throw UsageError(flag + ": folder does not exist, got '" + path + "'");
     if (::access(parent.c_str(), W_OK) != 0) throw UsageError(flag + ": folder is not writable, got '" + path + "'");
@@ -87,18 +85,6 @@ std::vector<double> per_sample(const renderer::Framebuffer& fb, const std::vecto
     if (fb.samples[i] > 0) v[i] = static_cast<double>(counter[i]) / fb.samples[i];
   }
   return v;
-}
-
-// The pixels a (possibly subsampled) render produced, as 8-bit RGB.
-std::vector<std::uint8_t> rendered_pixels(const renderer::Framebuffer& fb) {
-  const std::vector<std::uint8_t> all = renderer::framebuffer_rgb8(fb);
-  std::vector<std::uint8_t> out;
-  for (std::size_t i = 0; i < fb.samples.size(); ++i) {
-    if (fb.samples[i] == 0) continue;
-    out.insert(out.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * i),
-               all.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
-  }
-  return out;
 }
 
 }  // namespace
@@ -129,79 +115,68 @@ void check_memory_budget(const Settings& settings, bool reference) {
   }
 }
 
-RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
-                          const std::atomic<bool>* cancel, bool show_progress) {
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, lev::Method method,
+                                    const std::atomic<bool>* cancel, bool show_progress) {
   Settings s = settings;
   s.method = method;
-  renderer::RenderStatePtr state =
-      renderer::make_render_state(loaded.scene, *loaded.rays, render_settings_from(s));
-  const auto start = std::chrono::steady_clock::now();
   bool progress_shown = false;
-  for (int pass = 0; pass < settings.spp; ++pass) {
-    if (!renderer::render_pass(*state, cancel)) {
-      if (progress_shown) std::fprintf(stderr, "\n");
-      throw Interrupted();
-    }
-    const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (show_progress && elapsed_s >= 1.0 && pass + 1 < settings.spp) {
-      const double left_s = elapsed_s / (pass + 1) * (settings.spp - pass - 1);
-      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", method.c_str(), pass + 1, settings.spp,
-                   left_s);
+  const auto on_pass_done = [&](int passes_done, double elapsed_s) {
+    if (show_progress && elapsed_s >= 1.0 && passes_done < settings.spp) {
+      const double left_s = elapsed_s / passes_done * (settings.spp - passes_done);
+      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", lev::method_info(method).name, passes_done,
+                   settings.spp, left_s);
       progress_shown = true;
     }
-  }
-  if (progress_shown) std::fprintf(stderr, "\r\033[K");
-  RenderResult result;
-  result.framebuffer = renderer::render_framebuffer(*state);
-  result.seconds = renderer::render_seconds(*state);
-  result.method_bytes = renderer::render_selector(*state).bookkeeping_bytes();
+  };
+  renderer::RenderResult result;
+  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings_from(s), settings.spp,
+                                            result, cancel, on_pass_done);
+  if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
+  if (!done) throw Interrupted();
   return result;
 }
 
-nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& settings,
-                                    const RenderResult& result, const RenderResult* reference) {
-  const renderer::FramebufferTotals t = renderer::sum_framebuffer(result.framebuffer);
-  const double points = t.shading_points > 0 ? static_cast<double>(t.shading_points) : 1.0;
-  nlohmann::ordered_json j;
-  j["scene"] = loaded.scene.name;
-  j["level"] = loaded.scene.level;
-  j["lights"] = loaded.scene.lights.light_count;
-  j["method"] = settings.method;
-  j["tolerance"] = settings.tolerance;
-  j["width"] = settings.width;
-  j["height"] = settings.height;
-  j["spp"] = settings.spp;
-  j["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
-  j["subsample"] = settings.subsample;
-  j["light_scale"] = settings.light_scale;
-  j["camera"] = settings.camera;
-  j["directional_lights"] = loaded.scene.directional_lights.size();
-  j["time_build_s"] = loaded.build_seconds;
-  j["time_render_s"] = result.seconds;
-  if (settings.subsample > 1) {
-    // The rendered pixels' time scaled to every pixel of the frame.
-    std::size_t rendered = 0;
-    for (std::uint32_t samples : result.framebuffer.samples) rendered += samples > 0 ? 1 : 0;
-    const double frame_pixels = static_cast<double>(settings.width) * settings.height;
-    j["time_render_full_frame_estimate_s"] =
-        rendered > 0 ? result.seconds * frame_pixels / static_cast<double>(rendered) : 0.0;
-  }
-  j["shading_points"] = t.shading_points;
-  j["shadow_rays"] = t.shadow_rays;
-  j["lights_tested_avg"] = static_cast<double>(t.lights_tested) / points;
-  j["lights_tested_max"] = t.lights_tested_max;
-  j["nodes_visited_avg"] = static_cast<double>(t.nodes_visited) / points;
-  j["hierarchy_bytes"] = lev::hierarchy_bytes(loaded.scene.lights);
-  j["method_bytes"] = result.method_bytes;
+namespace {
+
+// The statistics of a finished render (reference may be null); the heatmap ranges are filled by
+// the caller, which draws the heatmaps.
+RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, const renderer::RenderResult& result,
+                         const renderer::RenderResult* reference) {
+  RenderStats s;
+  s.scene = loaded.scene.name;
+  s.level = loaded.scene.level;
+  s.lights = loaded.scene.lights.light_count;
+  s.method = lev::method_info(settings.method).name;
+  s.tolerance = settings.tolerance;
+  s.width = settings.width;
+  s.height = settings.height;
+  s.spp = result.passes;
+  s.threads = resolved_threads(settings.threads);
+  s.depth = settings.depth;
+  s.subsample = settings.subsample;
+  s.build_seconds = loaded.build_seconds;
+  s.setup_seconds = result.setup_seconds;
+  s.render_seconds = result.render_seconds;
+  s.pass_seconds = result.passes > 0 ? result.render_seconds / result.passes : 0.0;
+  s.totals = result.totals;
+  s.rendered_pixels = result.rendered_pixels;
+  s.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
+  s.method_bytes = result.method_bytes;
+  s.camera = loaded.scene.camera;
+  s.camera_index = settings.camera;
+  s.light_scale = settings.light_scale;
+  s.directional_lights = loaded.scene.directional_lights.size();
   if (reference) {
-    const auto error = renderer::summarize_pixel_error(renderer::pixel_error_pct(
-        rendered_pixels(result.framebuffer), rendered_pixels(reference->framebuffer)));
-    j["pixel_error_avg_pct"] = error.average_pct;
-    j["pixel_error_max_pct"] = error.max_pct;
-    j["time_reference_s"] = reference->seconds;
+    const auto error =
+        renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
+    s.error = RenderPixelError{error.average_pct, error.max_pct, result.rendered_pixels,
+                               "every pass against the rt reference's, the rendered pixels",
+                               reference->render_seconds};
   }
-  return j;
+  return s;
 }
+
+}  // namespace
 
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
   render_settings_from(settings);  // validates the combination of settings before any work
@@ -212,54 +187,55 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   InterruptScope::throw_if_interrupted();
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
-  const RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
-  RenderResult reference;
+  const renderer::RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
+  renderer::RenderResult reference;
   if (outputs.reference_rt) {
-    reference = settings.method == "rt" ? result : render_image(*loaded, settings, "rt", cancel, show_progress);
+    const lev::Method rt = lev::reference_method();
+    reference = settings.method == rt ? result : render_image(*loaded, settings, rt, cancel, show_progress);
   }
-  nlohmann::ordered_json stats =
-      render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
+  RenderStats stats = render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
   if (!outputs.image.empty()) {
-    renderer::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));
+    app::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));
   }
-  const std::pair<const std::string*, const std::vector<std::uint64_t>*> heatmaps[] = {
-      {&outputs.heatmap_lights, &fb.lights_tested}, {&outputs.heatmap_nodes, &fb.nodes_visited}};
-  const char* range_keys[] = {"heatmap_lights_range", "heatmap_nodes_range"};
-  for (int k = 0; k < 2; ++k) {
-    renderer::HeatmapRange range;
-    const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmaps[k].second), range);
-    stats[range_keys[k]] = {range.min, range.max};
-    if (!heatmaps[k].first->empty()) renderer::write_png_rgb8(*heatmaps[k].first, fb.width, fb.height, rgb);
+  const struct {
+    const std::string* path;
+    const std::vector<std::uint64_t>* counter;
+    renderer::HeatmapRange* range;
+  } heatmaps[] = {{&outputs.heatmap_lights, &fb.lights_tested, &stats.heatmap_lights_range},
+                  {&outputs.heatmap_nodes, &fb.nodes_visited, &stats.heatmap_nodes_range}};
+  for (const auto& heatmap : heatmaps) {
+    const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmap.counter), *heatmap.range);
+    if (!heatmap.path->empty()) app::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
   }
-  stats["heatmap_scale"] = "log(1 + value per sample), viridis";
-  if (!outputs.stats.empty()) renderer::write_text_file(outputs.stats, stats.dump(2) + "\n");
+  const nlohmann::ordered_json json = render_stats_json(stats);
+  if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
   if (outputs.quiet) return 0;
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
-  std::FILE* summary = outputs.image == renderer::kStandardOutputName || outputs.stats == renderer::kStandardOutputName ||
-                               outputs.heatmap_lights == renderer::kStandardOutputName ||
-                               outputs.heatmap_nodes == renderer::kStandardOutputName
+  std::FILE* summary = outputs.image == app::kStandardOutputName || outputs.stats == app::kStandardOutputName ||
+                               outputs.heatmap_lights == app::kStandardOutputName ||
+                               outputs.heatmap_nodes == app::kStandardOutputName
                            ? stderr
                            : stdout;
   std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",
                scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
-               static_cast<unsigned long long>(loaded->scene.lights.light_count), settings.method.c_str(),
-               settings.tolerance, result.seconds, stats["lights_tested_avg"].get<double>(),
-               stats["nodes_visited_avg"].get<double>());
+               static_cast<unsigned long long>(loaded->scene.lights.light_count), lev::method_info(settings.method).name,
+               settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
+               json["nodes_visited_avg"].get<double>());
   if (outputs.reference_rt) {
-    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", stats["pixel_error_avg_pct"].get<double>(),
-                 stats["pixel_error_max_pct"].get<double>());
+    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", json["pixel_error_avg_pct"].get<double>(),
+                 json["pixel_error_max_pct"].get<double>());
   }
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (!output.path.empty()) {
       written += (written.empty() ? "" : ", ") +
-                 (output.path == renderer::kStandardOutputName ? std::string("standard output")
+                 (output.path == app::kStandardOutputName ? std::string("standard output")
                                                                : scenes::escape_control_characters(output.path));
     }
   }

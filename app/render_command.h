@@ -1,5 +1,5 @@
 // `levrt render`: render a scene headless with one method and write the image, the heatmaps and
-// the statistics (DESIGN.md metric names), optionally against an `rt` reference.
+// the statistics (app/render_stats.h), optionally against an `rt` reference.
 #pragma once
 
 #include <atomic>
@@ -7,11 +7,9 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "app/scene_loading.h"
 #include "app/settings.h"
-#include "renderer/framebuffer.h"
+#include "renderer/render_service.h"
 
 namespace app {
 
@@ -52,22 +50,12 @@ inline constexpr std::uint64_t kRenderMemoryBudgetBytes = std::uint64_t{8} << 30
 // than kRenderMemoryBudgetBytes.
 void check_memory_budget(const Settings& settings, bool reference);
 
-struct RenderResult {
-  renderer::Framebuffer framebuffer;
-  double seconds = 0.0;
-  std::size_t method_bytes = 0;  // the method's own bookkeeping (AST)
-};
-
-// Renders settings.spp passes of `method` over the loaded scene. Throws Interrupted when
-// *cancel is raised (Ctrl-C) before the last pass completes.
+// Renders settings.spp passes of `method` over the loaded scene through the render service.
+// Throws Interrupted when *cancel is raised (Ctrl-C) before the last pass completes.
 // show_progress: after each pass, once the render has run a second, a line on stderr with the
 // passes done and an estimate of the time left (rewritten in place; for a terminal).
-RenderResult render_image(LoadedScene& loaded, const Settings& settings, const std::string& method,
-                          const std::atomic<bool>* cancel = nullptr, bool show_progress = false);
-
-// The stats JSON of a finished render (reference may be null).
-nlohmann::ordered_json render_stats(const LoadedScene& loaded, const Settings& settings,
-                                    const RenderResult& result, const RenderResult* reference);
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, lev::Method method,
+                                    const std::atomic<bool>* cancel = nullptr, bool show_progress = false);
 
 int run_render(const Settings& settings, const RenderOutputs& outputs);
 

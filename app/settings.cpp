@@ -6,7 +6,6 @@
 #include <limits>
 #include <sstream>
 
-#include "lev/methods.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_models.h"
 
@@ -31,6 +30,8 @@ namespace {
 
 bool is_scene_file_setting(const std::string& text) { return scenes::is_scene_file_name(text); }
 
+const lev::MethodInfo& method_option(const std::string& option) { return lev::method_info(*lev::parse_method(option)); }
+
 }  // namespace
 
 std::vector<std::string> scene_options() {
@@ -42,19 +43,23 @@ std::vector<std::string> scene_options() {
 const std::vector<SettingSpec>& setting_table() {
   static const std::vector<SettingSpec> table = {
       {"scene", "Scene", "scene model, or a scene file FILE.json (scenes/README.md), .gltf or .glb",
-       Choice{&Settings::scene, scene_options, is_scene_file_setting,
-              "a .json/.gltf/.glb scene file"}},
-      {"level", "Level", "scene model level (light count grows with it)",
-       IntRange{&Settings::level, 1, 10}},
-      {"method", "Method", "many-light method", Choice{&Settings::method, method_options}},
+       Choice{[](const Settings& s) { return s.scene; }, [](Settings& s, const std::string& v) { s.scene = v; },
+              scene_options, nullptr, nullptr, is_scene_file_setting, "a .json/.gltf/.glb scene file"}},
+      {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
+      {"method", "Method", "many-light method",
+       Choice{[](const Settings& s) { return std::string(lev::method_info(s.method).name); },
+              [](Settings& s, const std::string& v) { s.method = *lev::parse_method(v); }, method_options,
+              [](const std::string& o) { return method_option(o).label; },
+              [](const std::string& o) { return method_option(o).summary; }}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
        RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0}},
       {"resolution", "Resolution",
        "viewer image size: the image area's pixels (fit), 1/2 or 1/4 of them, or the typed width "
        "and height (typed; giving either selects it); headless renders always use width and height",
-       Choice{&Settings::resolution, resolution_options}},
-      {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, 16384}},
-      {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, 16384}},
+       Choice{[](const Settings& s) { return s.resolution; },
+              [](Settings& s, const std::string& v) { s.resolution = v; }, resolution_options}},
+      {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, kMaxImageSide}},
+      {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, kMaxImageSide}},
       {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
       {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
       {"threads", "Threads", "worker threads (0 = all cores)",
@@ -116,13 +121,13 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
     std::string valid;
     for (const std::string& o : c.options()) {
       if (o == text) {
-        settings.*(c.field) = text;
+        c.set(settings, text);
         return;
       }
       valid += (valid.empty() ? "" : "|") + o;
     }
     if (c.also_accepts && c.also_accepts(text)) {
-      settings.*(c.field) = text;
+      c.set(settings, text);
       return;
     }
     if (c.also_accepts_label) valid += std::string(" or ") + c.also_accepts_label;
@@ -137,7 +142,7 @@ std::string setting_text(const Settings& settings, const SettingSpec& spec) {
     s << settings.*(d->field);
     return s.str();
   }
-  return settings.*(std::get<Choice>(spec.kind).field);
+  return std::get<Choice>(spec.kind).get(settings);
 }
 
 }  // namespace app
@@ -157,9 +162,7 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   rs.max_depth = settings.depth;
   rs.threads = settings.threads;
   rs.pixel_stride = settings.subsample;
-  const auto method = lev::parse_method(settings.method);
-  if (!method) throw UsageError("--method: must be one of " + lev::method_names("|") + ", got '" + settings.method + "'");
-  rs.method = *method;
+  rs.method = settings.method;
   // Tolerances below the smallest float become 0 (no culling) and above the largest become
   // +inf (everything culled): both are the limits the user asked for.
   rs.tolerance = static_cast<float>(settings.tolerance);

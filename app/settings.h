@@ -9,20 +9,26 @@
 #include <variant>
 #include <vector>
 
+#include "lev/methods.h"
+#include "renderer/render.h"
 #include "scenes/gltf_scene.h"
+#include "scenes/scene_models.h"
 
 namespace app {
 
+// The largest image side the settings take (width, height, the viewer's typed and fitted sizes).
+inline constexpr int kMaxImageSide = 16384;
+
 struct Settings {
   std::string scene = "building";
-  int level = 3;                // model level; --lights picks it by light count instead
-  std::string method = "lev";
-  double tolerance = 0.01;      // colour units, 1.0 = 255
+  int level = scenes::kDefaultSceneLevel;  // model level; --lights picks it by light count instead
+  lev::Method method = lev::Method::lev;
+  double tolerance = lev::kDefaultTolerance;  // colour units, 1.0 = 255
   // The viewer's image size: the image area's pixels (fit), half or a quarter of them, or
   // width x height (typed). Headless renders always use width x height.
   std::string resolution = "fit";
-  int width = 320;
-  int height = 240;
+  int width = renderer::kDefaultImageWidth;
+  int height = renderer::kDefaultImageHeight;
   int spp = 1;                  // passes (one sample per pixel each)
   int depth = 5;                // reflection/refraction depth
   int threads = 0;              // 0 = all cores
@@ -50,8 +56,12 @@ struct RealRange {
   double slider_min = 0.0, slider_max = 0.0;
 };
 struct Choice {
-  std::string Settings::*field;
+  std::string (*get)(const Settings& settings);
+  void (*set)(Settings& settings, const std::string& option);  // an option, or a value also_accepts
   std::vector<std::string> (*options)();  // valid values
+  // What an option is, for the CLI help and the viewer's tooltip (null: the options say it).
+  const char* (*option_label)(const std::string& option) = nullptr;
+  const char* (*option_summary)(const std::string& option) = nullptr;
   // Values outside `options` this choice also takes (the scene: a .json scene file), and how
   // the error message names them.
   bool (*also_accepts)(const std::string& text) = nullptr;
@@ -84,7 +94,7 @@ std::vector<std::string> scene_options();
 
 namespace app {
 
-// The renderer's view of the settings (method name resolved, tolerance as the hierarchy's float).
+// The renderer's view of the settings (the tolerance as the hierarchy's float).
 renderer::RenderSettings render_settings_from(const Settings& settings);
 
 }  // namespace app

@@ -62,7 +62,7 @@ inline Light transform_light(const Light& light, const Similarity& xf) {
   return l;
 }
 
-// Scalar strength used for culling: the brightest channel (DESIGN.md).
+// Scalar strength used for culling: the brightest channel (docs/design.md).
 inline float strength(const Light& light) {
   return glm::max(glm::max(light.intensity.x, light.intensity.y), light.intensity.z);
 }

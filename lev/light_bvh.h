@@ -1,6 +1,6 @@
 // The automatic hierarchy for a flat list of lights (a scene file without structure, an import):
 // a 4-wide bounding volume hierarchy over light positions, each inner node an extent volume over
-// a union. Built once; its volumes are refit per tolerance like any other hierarchy.
+// a union. Built once; like any hierarchy, each render fits its extent volumes.
 #pragma once
 
 #include <vector>

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -48,21 +49,23 @@ struct RandomStream {
   float next_float() { return static_cast<float>(next_u64() >> 40) * 0x1.0p-24f; }
 };
 
-struct AstCandidate {
-  float potential = 0.0f;  // scalar (brightest channel) unshadowed contribution
-  std::uint32_t light = 0;
-  glm::vec3 radiance{0.0f};
+// A method's own per-thread buffers (AST's candidate heap), made by its selector
+// (LightSelector::make_scratch) the first time a thread shades with it and reused after.
+class MethodScratch {
+ public:
+  virtual ~MethodScratch() = default;
 };
 
-// Per-thread buffers a method may reuse between shading points.
+// Per-thread buffers a method may reuse between shading points. One scratch serves one method
+// (the renderer keeps one per thread per render state).
 struct SelectorScratch {
   // Raised by the caller to stop a render: long light loops read it every kCancelCheckLights
   // lights and return early (the caller discards that result).
   const std::atomic<bool>* cancel = nullptr;
-  std::vector<Light> lights;
-  WalkScratch walk;
-  std::vector<AstCandidate> candidates;
+  std::vector<Light> lights;  // for methods that select a list of lights (lev's walk)
+  WalkScratch walk;           // for methods that walk the hierarchy
   RandomStream random;
+  std::unique_ptr<MethodScratch> method;  // from the selector's make_scratch (null: none)
 };
 
 class LightSelector {
@@ -79,6 +82,16 @@ class LightSelector {
   virtual void end_pass() {}
   // Memory the method keeps besides the light hierarchy (AST's per-light statistics).
   virtual std::size_t bookkeeping_bytes() const { return 0; }
+  // The buffers of this method for one thread, kept in SelectorScratch::method; null for none.
+  virtual std::unique_ptr<MethodScratch> make_scratch() const { return nullptr; }
+
+ protected:
+  // This method's buffers in `scratch`, made on first use.
+  template <typename Scratch>
+  Scratch& method_scratch(SelectorScratch& scratch) const {
+    if (!scratch.method) scratch.method = make_scratch();
+    return static_cast<Scratch&>(*scratch.method);
+  }
 };
 
 // The shading loop shared by rt and lev: every selected light is counted as tested and, when it

@@ -1,7 +1,18 @@
-// The table of many-light methods: one row per method, read by the CLI, the viewer and the
-// benchmarks, so a new method appears everywhere once it is added here.
+// The table of many-light methods: one row per method, and everything the front ends need to
+// know about it. The CLI (--method and its help), the viewer (method switch, tooltips, trade
+// plot), the render service and the benchmarks read only this table.
+//
+// Adding a method:
+//   1. its selector, lev/selector_NAME.{h,cpp}: a LightSelector (with make_scratch when it keeps
+//      per-thread buffers, and reading SelectorScratch::random when it samples);
+//   2. one row in method_table() (lev/methods.cpp): name, label, summary, the flags below, the
+//      tolerances the bench's trade experiment sweeps, and the function that makes its selector.
+// It then appears in `--method`, the viewer's method switch and trade plot, and the benchmarks
+// that compare methods (speed, trade); nothing else names methods. (A test binary may add a row
+// with register_method instead.)
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,23 +24,44 @@
 
 namespace lev {
 
-enum class Method { rt, ast, lev, lev_bounded };
+// The tolerance a render uses unless told otherwise (colour units, 1.0 = 255): thesis Test 1.1.
+inline constexpr double kDefaultTolerance = 0.01;
+
+// A row of method_table(), by position. The named values are the built-in rows; further rows
+// (register_method) take the next values.
+enum class Method : std::uint8_t { rt, ast, lev, lev_bounded };
+
+using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
+                                                        float tolerance);
 
 struct MethodInfo {
   Method id;
-  const char* name;   // CLI value and stats JSON
-  const char* label;  // viewer
-  const char* summary;
+  const char* name;     // CLI value and stats JSON
+  const char* label;    // viewer
+  const char* summary;  // CLI help and viewer tooltip
   bool uses_tolerance;  // false: the images do not depend on the tolerance (no restart, no refit)
+  bool is_reference;    // exact: the images every other method's pixel errors are measured against
+  bool samples;         // draws from the per-sample random stream (images depend on the passes)
+  bool scans_every_light;  // its time per point grows with the light count: the bench subsamples it
+  std::vector<double> bench_tolerances;  // the trade experiment's sweep, largest first
+  MakeSelector make_selector;
 };
 
 const std::vector<MethodInfo>& method_table();
 const MethodInfo& method_info(Method method);
 std::optional<Method> parse_method(std::string_view name);
 std::string method_names(const char* separator);  // "rt|ast|lev"
+// The one row with is_reference (rt).
+Method reference_method();
+
+// Appends a row (its id is set to the next value) and returns its id. For methods outside the
+// built-in table, such as a test's; call it before anything reads the table from another thread
+// (the table is not guarded), typically from a static initialiser.
+Method register_method(MethodInfo row);
 
 // The selector for one render at one tolerance. It reads the hierarchy (which it never changes,
 // so any number of selectors may share it) and must not outlive it.
-std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy, float tolerance);
+std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy,
+                                             float tolerance);
 
 }  // namespace lev

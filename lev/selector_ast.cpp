@@ -34,8 +34,8 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   const auto cancelled = [cancel](std::size_t count) {
     return cancel && count % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed);
   };
-  // Step 1: potential contributions of every light in front of the point.
-  std::vector<AstCandidate>& heap = scratch.candidates;
+  // Step 1 of thesis fig. 2.8: the potential contribution of every light in front of the point.
+  std::vector<AstCandidate>& heap = method_scratch<AstScratch>(scratch).candidates;
   heap.clear();
   double untested = 0.0;
   for (std::uint32_t i = 0; i < world_lights_.size(); ++i) {
@@ -48,15 +48,18 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
     heap.push_back({potential, i, radiance});
     untested += potential;
   }
-  // Step 2: instead of a full sort, a heap yields the largest contributions in order; the test
-  // loop usually stops long before the heap is empty. Ties break on the light index so the
+  // Step 2: order them. Instead of a full sort, a heap yields the largest contributions in
+  // order; the test loop usually stops long before the heap is empty. Ties break on the light index so the
   // order is a pure function of the inputs.
   auto smaller = [](const AstCandidate& a, const AstCandidate& b) {
     return a.potential < b.potential || (a.potential == b.potential && a.light > b.light);
   };
   std::make_heap(heap.begin(), heap.end(), smaller);
   std::size_t remaining = heap.size();
-  // Step 4: test the largest until the untested rest is below the tolerance.
+  // Steps 3 and 4: test the largest until the untested rest is below the tolerance (which
+  // stands in for step 3's certainty sums r(i)). The sum is a float running sum, unlike the
+  // double one of sum_visible_lights: usually it adds a few large terms, where float drifts
+  // little, and ast's images are defined by it (a double sum would change them).
   glm::vec3 sum(0.0f);
   std::uint32_t point_hits = 0, point_tests = 0;
   while (remaining > 0 && untested >= tolerance_) {

@@ -20,6 +20,17 @@
 
 namespace lev {
 
+struct AstCandidate {
+  float potential = 0.0f;  // scalar (brightest channel) unshadowed contribution
+  std::uint32_t light = 0;
+  glm::vec3 radiance{0.0f};
+};
+
+// One thread's candidate heap, reused from point to point.
+struct AstScratch final : MethodScratch {
+  std::vector<AstCandidate> candidates;
+};
+
 class AstSelector final : public LightSelector {
  public:
   AstSelector(const LightHierarchy& hierarchy, float tolerance);
@@ -27,6 +38,7 @@ class AstSelector final : public LightSelector {
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
   void end_pass() override;
   std::size_t bookkeeping_bytes() const override;
+  std::unique_ptr<MethodScratch> make_scratch() const override { return std::make_unique<AstScratch>(); }
 
  private:
   const double tolerance_;

@@ -1,9 +1,10 @@
-// The one progressive render step every front end calls (viewer, `levrt render`, benchmarks):
-// a RenderState plus render_pass, which renders one more sample per pixel over all tiles on a
-// oneTBB arena. Pass 0 samples pixel centres, pass k > 0 a jittered position drawn from the
-// (pixel, pass) random stream, so images never depend on thread count or tile order. A pass can
-// be cancelled at any time (the flag is read between tiles, per row, in the recursion and every
-// few thousand lights); finished tiles keep their sample, an interrupted tile adds none.
+// The one progressive render step, under the render service every front end calls
+// (render_service.h): a RenderState plus render_pass, which renders one more sample per pixel
+// over all tiles on a oneTBB arena. Pass 0 samples pixel centres, pass k > 0 a jittered position
+// drawn from the (pixel, pass) random stream, so images never depend on thread count or tile
+// order. A pass can be cancelled at any time (the flag is read between tiles, per row, in the
+// recursion and every few thousand lights); finished tiles keep their sample, an interrupted
+// tile adds none.
 // The same pass with a pixel step > 1 is a preview: one pixel-centre sample every step pixels in
 // x and y, kept apart from the framebuffer (see render_pass), for a viewer that shows the whole
 // frame coarsely before the full-resolution passes arrive.
@@ -22,15 +23,19 @@
 
 namespace renderer {
 
+// The image size unless told otherwise: every image of the thesis is 320x240 (thesis 5.4).
+inline constexpr int kDefaultImageWidth = 320;
+inline constexpr int kDefaultImageHeight = 240;
+
 struct RenderSettings {
-  int width = 320;
-  int height = 240;
+  int width = kDefaultImageWidth;
+  int height = kDefaultImageHeight;
   int max_depth = 5;
   int threads = 0;  // 0 = all cores
   int tile_size = 16;
   int pixel_stride = 1;  // > 1: render only every stride-th pixel in x and y (a subsample)
   lev::Method method = lev::Method::lev;
-  float tolerance = 0.01f;
+  float tolerance = static_cast<float>(lev::kDefaultTolerance);
   std::uint64_t seed = 0;
 };
 

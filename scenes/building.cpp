@@ -12,6 +12,9 @@ namespace {
 constexpr float kHalfWall = 0.1f;  // each room owns half of every wall it shares
 constexpr float kDoorWidth = 2.4f;
 constexpr float kDoorHeight = 3.0f;
+// The two robots of a room face 0.6 and 2.5 radians about z (in degrees, as Affine takes them).
+constexpr float kRedRobotHeadingDeg = 34.3774677f;
+constexpr float kBlueRobotHeadingDeg = 143.239449f;
 
 // A wall along x from (0, y0) to (kRoomSize, y1) with a centred doorway.
 void add_wall_x(std::vector<SceneNode>& parts, std::uint32_t material, float y0, float y1) {
@@ -40,7 +43,10 @@ SceneNode placed(const glm::vec3& at, float degrees_about_z, SceneNode child) {
 std::uint64_t building_light_count(int level) { return 1ull << (2 * level); }
 
 SceneDescription describe_building(int level) {
-  if (level < 1 || level > 10) throw std::invalid_argument("building level must be 1..10, got " + std::to_string(level));
+  if (level < kBuildingMinLevel || level > kBuildingMaxLevel) {
+    throw std::invalid_argument("building level must be " + std::to_string(kBuildingMinLevel) + ".." +
+                                std::to_string(kBuildingMaxLevel) + ", got " + std::to_string(level));
+  }
   SceneDescription scene;
   scene.name = "building";
   scene.level = level;
@@ -66,9 +72,8 @@ SceneDescription describe_building(int level) {
   add_wall_x(room, wall, kRoomSize - kHalfWall, kRoomSize);
   add_wall_y(room, wall, 0.0f, kHalfWall);
   add_wall_y(room, wall, kRoomSize - kHalfWall, kRoomSize);
-  // 0.6 and 2.5 radians about z.
-  room.push_back(placed({3.2f, 3.6f, 0.0f}, 34.3774677f, instance_node(red_robot)));
-  room.push_back(placed({6.9f, 6.3f, 0.0f}, 143.239449f, instance_node(blue_robot)));
+  room.push_back(placed({3.2f, 3.6f, 0.0f}, kRedRobotHeadingDeg, instance_node(red_robot)));
+  room.push_back(placed({6.9f, 6.3f, 0.0f}, kBlueRobotHeadingDeg, instance_node(blue_robot)));
   room.push_back(translate_node({0.5f * kRoomSize, 0.5f * kRoomSize, kCeilingLightHeight},
                                 point_light_node(kCeilingLightIntensity * glm::vec3(1.0f, 0.95f, 0.85f))));
   std::uint32_t block = add_master(scene, "room", union_node(std::move(room)));

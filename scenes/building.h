@@ -11,6 +11,8 @@
 
 namespace scenes {
 
+inline constexpr int kBuildingMinLevel = 1;
+inline constexpr int kBuildingMaxLevel = 10;
 inline constexpr float kRoomSize = 10.0f;
 inline constexpr float kWallHeight = 4.0f;
 inline constexpr float kCeilingLightHeight = 3.8f;
@@ -20,7 +22,7 @@ inline constexpr float kCeilingLightHeight = 3.8f;
 inline constexpr float kCeilingLightIntensity = 12.7f;
 
 std::uint64_t building_light_count(int level);
-// Levels 1..10; throws std::invalid_argument otherwise.
+// Levels kBuildingMinLevel..kBuildingMaxLevel; throws std::invalid_argument otherwise.
 SceneDescription describe_building(int level);
 renderer::Scene build_building(int level);  // instantiate_scene(describe_building(level))
 

@@ -63,8 +63,8 @@ inline constexpr float kRenderSpaceRebaseDistance = 4096.0f;
 inline constexpr float kRenderSpaceRebaseRatio = 16.0f;
 glm::vec3 render_space_origin(const renderer::Camera& camera);
 
-// Validates, then builds the light hierarchy (refit for tolerance 0.01; renders refit it) and
-// the geometry, in render space.
+// Validates, then builds the light hierarchy (its structure: each render fits the extent volumes
+// for its own tolerance) and the geometry, in render space.
 renderer::Scene instantiate_scene(const SceneDescription& scene);
 
 }  // namespace scenes

@@ -8,9 +8,9 @@ namespace scenes {
 
 const std::vector<SceneModel>& scene_models() {
   static const std::vector<SceneModel> models = {
-      {"building", "Building (Scene Model 1)", 1, 10, 3, building_light_count, build_building, describe_building},
-      {"maze", "Maze (Scene Model 2)", kMazeMinLevel, kMazeMaxLevel, 3, maze_light_count, build_maze, describe_maze},
-      {"hall", "Hall (Scene Model 3)", kHallMinLevel, kHallMaxLevel, 3, hall_light_count, build_hall, describe_hall},
+      {"building", "Building (Scene Model 1)", kBuildingMinLevel, kBuildingMaxLevel, kDefaultSceneLevel, building_light_count, build_building, describe_building},
+      {"maze", "Maze (Scene Model 2)", kMazeMinLevel, kMazeMaxLevel, kDefaultSceneLevel, maze_light_count, build_maze, describe_maze},
+      {"hall", "Hall (Scene Model 3)", kHallMinLevel, kHallMaxLevel, kDefaultSceneLevel, hall_light_count, build_hall, describe_hall},
   };
   return models;
 }

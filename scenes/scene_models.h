@@ -14,6 +14,12 @@
 
 namespace scenes {
 
+// The level every model opens at (the viewer's and the CLI's default).
+inline constexpr int kDefaultSceneLevel = 3;
+// Where the thesis measured its headline speedups (Tables 1, 2): the largest building and maze.
+inline constexpr std::uint64_t kBuildingHeadlineLights = 16384;
+inline constexpr std::uint64_t kMazeHeadlineLights = 12285;
+
 struct SceneModel {
   const char* name;
   const char* label;

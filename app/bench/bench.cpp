@@ -18,7 +18,7 @@
 #include "app/bench/runner.h"
 #include "app/interrupt.h"
 #include "app/settings.h"
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 
 namespace app {
 namespace fs = std::filesystem;
@@ -196,8 +196,8 @@ std::size_t run_suite(const BenchOptions& options, const std::string& out_dir) {
         "figures are not the experiments'.\n\n";
   md += "Every figure is from one " + std::to_string(c.width) + "x" + std::to_string(c.height) +
         " frame, one sample per pixel at the pixel centres, Whitted recursion to depth 5. The "
-        "scene, its light hierarchy and its Embree BVH are built first and not timed; refitting "
-        "and selector set-up are. Times are the median of at least " +
+        "scene, its light hierarchy and its Embree BVH are built first and not timed; fitting the "
+        "extent volumes and setting up the selector are. Times are the median of at least " +
         std::to_string(c.runs) + " runs" +
         (c.extra_runs_seconds > 0.0
              ? " (quick renders get more, up to " + std::to_string(c.max_runs) + ")"
@@ -225,7 +225,7 @@ std::size_t run_suite(const BenchOptions& options, const std::string& out_dir) {
         ".csv`, ...) next to this file.\n\n";
   for (std::size_t i = 0; i < sections.size(); ++i)
     md += "<a id=\"" + names[i] + "\"></a>\n\n" + sections[i].markdown + "\n";
-  renderer::write_text_file(out_dir + "/results.md", md);
+  app::write_text_file(out_dir + "/results.md", md);
   return sections.size();
 }
 
@@ -246,9 +246,9 @@ int run_bench(const BenchFlags& flags) {
     fs::create_directories(staging);
     experiments = run_suite(options, staging);
     InterruptScope::throw_if_interrupted();
-    renderer::publish_staging_folder(staging, options.out);
+    app::publish_staging_folder(staging, options.out);
   } catch (...) {
-    renderer::discard_staging_folder(staging);
+    app::discard_staging_folder(staging);
     if (!out_existed) fs::remove(options.out, ec);  // only if empty: never anything else's
     throw;
   }

@@ -1,6 +1,6 @@
 // The experiments of `levrt bench --suite thesis`: each renders what it needs through BenchRun,
 // writes its CSV and plots into the output folder, and returns its part of results.md plus its
-// rows of the headline table (the targets). Every experiment also runs, unchanged, in
+// rows of the headline table (levrt's targets). Every experiment also runs, unchanged, in
 // BenchRun's planning pass, where it renders and writes nothing.
 #pragma once
 

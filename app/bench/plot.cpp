@@ -8,7 +8,7 @@
 
 #include <stb/stb_easy_font.h>
 
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 
 namespace app::bench {
 namespace {
@@ -402,7 +402,7 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
 }
 
 void write_chart_png(const std::string& path, const Chart& chart) {
-  renderer::write_png_rgb8(path, kChartWidth, kChartHeight,
+  app::write_png_rgb8(path, kChartWidth, kChartHeight,
                            render_chart(chart, kChartWidth, kChartHeight));
 }
 

@@ -32,7 +32,7 @@ inline constexpr int kChartHeight = 600;
 // its frame, title and a "no data" note.
 std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height);
 
-// Renders at kChartWidth x kChartHeight and writes the PNG (atomically, via renderer/image_io).
+// Renders at kChartWidth x kChartHeight and writes the PNG (atomically, via app/output_files).
 void write_chart_png(const std::string& path, const Chart& chart);
 
 }  // namespace app::bench

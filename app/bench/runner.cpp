@@ -8,9 +8,9 @@
 
 #include "app/bench/table.h"
 #include "app/interrupt.h"
-#include "app/render_command.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/pixel_error.h"
+#include "renderer/render_service.h"
 #include "scenes/scene_models.h"
 
 namespace app::bench {
@@ -34,8 +34,6 @@ SuiteConfig thesis_suite(bool quick) {
   c.error_tolerances = {0.002, 0.01};
   c.trade_lights.clear();
   c.trade_default_lights = 64;
-  c.trade_lev_tolerances = {0.1, 0.01, 0.001};
-  c.trade_ast_tolerances = {0.1, 0.01};
   c.scaling_base_lights = 64;
   return c;
 }
@@ -148,9 +146,8 @@ std::uint64_t BenchRun::light_count(const std::string& scene, int level) const {
   return model ? model->light_count(level) : 0;
 }
 
-int BenchRun::stride_for(const std::string& scene, int level, const std::string& method,
-                         double tolerance) {
-  if (method != "lev" && light_count(scene, level) > config_.subsample_above)
+int BenchRun::stride_for(const std::string& scene, int level, lev::Method method, double tolerance) {
+  if (lev::method_info(method).scans_every_light && light_count(scene, level) > config_.subsample_above)
     return config_.subsample_stride;
   return probe(scene, level, method, tolerance).full_frame_seconds() >
                  config_.max_full_frame_seconds
@@ -159,11 +156,10 @@ int BenchRun::stride_for(const std::string& scene, int level, const std::string&
 }
 
 double BenchRun::lev_tests_per_point(const std::string& scene, int level, double tolerance) {
-  return probe(scene, level, "lev", tolerance).lights_tested_avg();
+  return probe(scene, level, lev::Method::lev, tolerance).lights_tested_avg();
 }
 
-const Measurement& BenchRun::probe(const std::string& scene, int level, const std::string& method,
-                                   double tolerance) {
+const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Method method, double tolerance) {
   const MeasureRequest request{scene, level, method, tolerance, kProbeStride, 1};
   const auto found = cache_.find(key_of(request));
   if (found != cache_.end()) return found->second;
@@ -189,8 +185,8 @@ double BenchRun::predicted_seconds(const MeasureRequest& r) {
 }
 
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
-  // rt does not depend on the tolerance: one reference serves every tolerance.
-  return {r.scene, r.level, r.method, r.method == "rt" ? 0.0 : r.tolerance, r.stride};
+  // A method that ignores the tolerance (rt) is measured once for every tolerance.
+  return {r.scene, r.level, r.method, lev::method_info(r.method).uses_tolerance ? r.tolerance : 0.0, r.stride};
 }
 
 LoadedScene& BenchRun::scene(const std::string& name, int level) {
@@ -239,7 +235,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     std::size_t index;
     Settings settings;
     Measurement m;
-    RenderResult last;
+    renderer::RenderResult last;
     double spent = 0.0;
   };
   std::vector<Pending> pending;
@@ -250,7 +246,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       out[i] = &found->second;
       continue;
     }
-    Pending p{i, Settings{}, Measurement{}, RenderResult{}, 0.0};
+    Pending p{i, Settings{}, Measurement{}, renderer::RenderResult{}, 0.0};
     p.settings.scene = r.scene;
     p.settings.level = r.level;
     p.settings.method = r.method;
@@ -276,10 +272,13 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       LoadedScene& loaded = scene(r.scene, r.level);
       const double cpu_start = process_cpu_seconds();
       InterruptScope::throw_if_interrupted();  // the scene may have just been built
-      p.last = render_image(loaded, p.settings, r.method, &InterruptScope::flag());
+      if (!renderer::render_passes(loaded.scene, *loaded.rays, render_settings_from(p.settings), 1, p.last,
+                                   &InterruptScope::flag())) {
+        throw Interrupted();
+      }
       p.m.run_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
-      p.m.run_seconds.push_back(p.last.seconds);
-      p.spent += p.last.seconds;
+      p.m.run_seconds.push_back(p.last.render_seconds);
+      p.spent += p.last.render_seconds;
       any = true;
     }
     if (!any) break;
@@ -294,15 +293,10 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     m.cpu_seconds = median(m.run_cpu_seconds);
     m.full_pixels =
         static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
-    m.totals = renderer::sum_framebuffer(p.last.framebuffer);
+    m.totals = p.last.totals;
     m.pixels = m.totals.samples;
     m.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
-    const std::vector<std::uint8_t> all = renderer::framebuffer_rgb8(p.last.framebuffer);
-    for (std::size_t i = 0; i < p.last.framebuffer.samples.size(); ++i) {
-      if (p.last.framebuffer.samples[i] == 0) continue;
-      m.rgb.insert(m.rgb.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * i),
-                   all.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
-    }
+    m.rgb = std::move(p.last.rendered_rgb);
     const int runs = static_cast<int>(m.run_seconds.size());
     Measurement& stored = cache_[key_of(r)] = std::move(m);
     out[p.index] = &stored;
@@ -310,7 +304,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
 
     char what[256];
     std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s",
-                  done.scene.c_str(), format_count(stored.lights).c_str(), done.method.c_str(),
+                  done.scene.c_str(), format_count(stored.lights).c_str(), lev::method_info(done.method).name,
                   done.tolerance, pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
     if (!planning_) report(what, predicted_seconds(done));

@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "app/scene_loading.h"
+#include "lev/methods.h"
+#include "renderer/render.h"
 #include "renderer/framebuffer.h"
 
 namespace app::bench {
@@ -26,8 +28,8 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct SuiteConfig {
   bool quick = false;
-  int width = 320;  // thesis 5.4: every image is 320x240
-  int height = 240;
+  int width = renderer::kDefaultImageWidth;
+  int height = renderer::kDefaultImageHeight;
   int runs = 3;  // every timing is the median of at least this many runs
   // Timings quicker than this get extra runs (up to max_runs) for a steadier median.
   double extra_runs_seconds = 2.0;
@@ -43,7 +45,7 @@ struct SuiteConfig {
   std::uint64_t subsample_above = 4096;
   int subsample_stride = 4;
   double max_full_frame_seconds = 40.0;
-  double tolerance = 0.01;                                   // thesis Test 1.1
+  double tolerance = lev::kDefaultTolerance;                 // thesis Test 1.1
   std::vector<double> scaling_tolerances{0.001, 0.01, 0.1};  // Tables 4, 5
   std::vector<double> fraction_tolerances{0.0,   0.0001, 0.002, 0.004,
                                           0.006, 0.008,  0.01};            // Tables 6-9
@@ -53,8 +55,8 @@ struct SuiteConfig {
   std::map<std::string, std::uint64_t> trade_lights{
       {"building", 1024}, {"maze", 765}, {"hall", 256}};
   std::uint64_t trade_default_lights = 1024;
-  std::vector<double> trade_lev_tolerances{0.1, 0.03, 0.01, 0.003, 0.001};
-  std::vector<double> trade_ast_tolerances{1.0, 0.3, 0.1, 0.03, 0.01};
+  // Each method's trade sweep is its row's bench_tolerances (lev::method_table); a quick run
+  // takes the first, middle and last of them.
   std::uint64_t scaling_base_lights = 1024;  // the scaling target compares with this count
 };
 
@@ -63,8 +65,8 @@ SuiteConfig thesis_suite(bool quick);
 struct MeasureRequest {
   std::string scene;
   int level = 0;
-  std::string method = "lev";
-  double tolerance = 0.01;
+  lev::Method method = lev::Method::lev;
+  double tolerance = lev::kDefaultTolerance;
   int stride = 1;  // RenderSettings::pixel_stride
   int runs = 1;    // 1 for counts and images (deterministic); config.runs for timings, which take
                    // more runs (up to 9) when they are quick
@@ -131,11 +133,11 @@ class BenchRun {
   // Levels of `scene` whose light count lies in [lo, hi].
   std::vector<int> levels(const std::string& scene, std::uint64_t lo, std::uint64_t hi) const;
   std::uint64_t light_count(const std::string& scene, int level) const;
-  // The pixel stride a measurement uses: rt and ast subsample above config.subsample_above
-  // lights (thesis sizes), and any method whose full frame would take more than
+  // The pixel stride a measurement uses: methods that look at every light (rt, ast) subsample
+  // above config.subsample_above lights (thesis sizes), and any method whose full frame would take more than
   // config.max_full_frame_seconds (the maze and the hall, where rays are dearer or most lights
   // reach every point; lev at tolerance 0). The probe render tells.
-  int stride_for(const std::string& scene, int level, const std::string& method, double tolerance);
+  int stride_for(const std::string& scene, int level, lev::Method method, double tolerance);
   // lev's lights tested per shading point, from the probe.
   double lev_tests_per_point(const std::string& scene, int level, double tolerance);
 
@@ -158,13 +160,12 @@ class BenchRun {
   double predicted_seconds(const MeasureRequest& request);
 
  private:
-  using Key = std::tuple<std::string, int, std::string, double, int>;
+  using Key = std::tuple<std::string, int, lev::Method, double, int>;
   static constexpr int kProbeStride = 8;
   Key key_of(const MeasureRequest& request) const;
   // A render of one pixel in every kProbeStride^2, made once (also while planning): what the
   // plan, the subsample policy and lev_tests_per_point go by.
-  const Measurement& probe(const std::string& scene, int level, const std::string& method,
-                           double tolerance);
+  const Measurement& probe(const std::string& scene, int level, lev::Method method, double tolerance);
   // Renders what is not cached yet (in turns), whatever the pass.
   std::vector<const Measurement*> render(const std::vector<MeasureRequest>& requests);
   void report(const std::string& what, double predicted_seconds);

@@ -61,7 +61,7 @@ bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
 
 TileTotals sum_tile_totals(const DisplayImage& image);
 
-// Pixel error of the pass-0 image against the reference (DESIGN.md: |dR|+|dG|+|dB| of 765, in
+// Pixel error of the pass-0 image against the reference (docs/design.md: |dR|+|dG|+|dB| of 765, in
 // percent), over the pixels both have rendered.
 struct ErrorImage {
   std::vector<float> pct;  // per pixel; negative where not comparable (yet)

@@ -37,7 +37,7 @@ struct FrameLog {
   bool enabled = true;
   std::vector<double> frame_ms;  // from one frame's start to the next's
   std::vector<double>
-      busy_frame_ms;            // the same, while the worker was loading, refitting or rendering
+      busy_frame_ms;            // the same, while the worker was loading, preparing or rendering
   std::vector<double> work_ms;  // the UI thread's own work per frame, pacing excluded
   std::vector<LatencyRecord> latencies;
 };

@@ -8,6 +8,7 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
   const bool current = image.generation == status.generation && status.generation != 0;
   if (current) {
     const TileTotals t = sum_tile_totals(image);
+    s.totals = t;
     s.samples = t.samples;
     s.shading_points = t.shading_points;
     s.shadow_rays = t.shadow_rays;
@@ -32,48 +33,40 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
   return s;
 }
 
-nlohmann::ordered_json live_stats_json(const LiveStats& s, const WorkerStatus& status,
-                                       const Settings& settings, const renderer::Camera& camera) {
-  nlohmann::ordered_json j;
-  j["scene"] = status.scene;
-  j["level"] = status.level;
-  j["lights"] = status.light_count;
-  j["method"] = status.method;
-  j["tolerance"] = status.tolerance;
-  j["width"] = status.width;
-  j["height"] = status.height;
-  j["spp"] = status.passes_done;
-  j["threads"] = settings.threads;
-  j["depth"] = settings.depth;
-  j["subsample"] = settings.subsample;
-  j["light_scale"] = settings.light_scale;
-  j["camera"] = settings.camera;
-  j["time_build_s"] = status.build_seconds;
-  j["time_refit_s"] = status.refit_seconds;
-  j["time_render_s"] = s.render_seconds;
-  j["time_pass_s"] = s.pass_seconds;
-  j["mrays_per_s"] = s.mrays_per_second;
-  j["shading_points"] = s.shading_points;
-  j["shadow_rays"] = s.shadow_rays;
-  j["lights_tested_avg"] = s.lights_tested_avg;
-  j["lights_tested_max"] = s.lights_tested_max;
-  j["nodes_visited_avg"] = s.nodes_visited_avg;
-  j["hierarchy_bytes"] = status.hierarchy_bytes;
-  j["method_bytes"] = status.method_bytes;
+RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const Settings& settings,
+                           const renderer::Camera& camera) {
+  RenderStats r;
+  r.scene = status.scene_name;
+  r.level = status.level;
+  r.lights = status.light_count;
+  r.method = lev::method_info(status.method).name;
+  r.tolerance = status.tolerance;
+  r.width = status.width;
+  r.height = status.height;
+  r.spp = status.passes_done;
+  r.threads = resolved_threads(settings.threads);
+  r.depth = settings.depth;
+  r.subsample = settings.subsample;
+  r.light_scale = settings.light_scale;
+  r.camera_index = settings.camera;
+  r.directional_lights = status.directional_lights;
+  r.build_seconds = status.build_seconds;
+  r.setup_seconds = status.refit_seconds;
+  r.render_seconds = s.render_seconds;
+  r.pass_seconds = s.pass_seconds;
+  r.totals = s.totals;
+  // Every pass samples the same pixels once.
+  r.rendered_pixels = status.passes_done > 0 ? s.totals.samples / static_cast<std::uint64_t>(status.passes_done)
+                                             : s.totals.samples;
+  r.hierarchy_bytes = status.hierarchy_bytes;
+  r.method_bytes = status.method_bytes;
   if (s.error_avg_pct) {
-    j["pixel_error_avg_pct"] = *s.error_avg_pct;
-    j["pixel_error_max_pct"] = *s.error_max_pct;
-    j["pixel_error_pixels"] = s.error_pixels;
-    j["pixel_error_scope"] = "pass 0 against the rt reference, pixels both have rendered";
+    r.error = RenderPixelError{*s.error_avg_pct, *s.error_max_pct, s.error_pixels,
+                               "pass 0 against the rt reference, pixels both have rendered",
+                               status.reference_seconds};
   }
-  const auto vec = [](const glm::vec3& v) {
-    return nlohmann::ordered_json::array({v.x, v.y, v.z});
-  };
-  j["camera"] = {{"position", vec(camera.position)},
-                 {"target", vec(camera.target)},
-                 {"up", vec(camera.up)},
-                 {"vertical_fov_deg", camera.vertical_fov_deg}};
-  return j;
+  r.camera = camera;
+  return r;
 }
 
 }  // namespace app::viewer

@@ -1,13 +1,12 @@
 // The statistics the panel shows and a snapshot writes, computed on the UI thread from the tiles
-// it has received and the worker's status. Names follow DESIGN.md's metrics.
+// it has received and the worker's status.
 #pragma once
 
 #include <chrono>
 #include <cstdint>
 #include <optional>
 
-#include <nlohmann/json.hpp>
-
+#include "app/render_stats.h"
 #include "app/settings.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
@@ -16,6 +15,7 @@
 namespace app::viewer {
 
 struct LiveStats {
+  renderer::FramebufferTotals totals;  // of the tiles received
   std::uint64_t samples = 0;  // primary rays
   std::uint64_t shading_points = 0;
   std::uint64_t shadow_rays = 0;
@@ -34,7 +34,9 @@ struct LiveStats {
 LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
                              const ErrorImage& error, std::chrono::steady_clock::time_point now);
 
-nlohmann::ordered_json live_stats_json(const LiveStats& stats, const WorkerStatus& status,
-                                       const Settings& settings, const renderer::Camera& camera);
+// What a snapshot's stats JSON says (app/render_stats.h, the keys of `levrt render --stats`); the
+// heatmap ranges are the caller's.
+RenderStats snapshot_stats(const LiveStats& stats, const WorkerStatus& status, const Settings& settings,
+                           const renderer::Camera& camera);
 
 }  // namespace app::viewer

@@ -12,14 +12,14 @@ ReferenceRender::~ReferenceRender() {
   discard();
 }
 
-void ReferenceRender::begin(renderer::RenderStatePtr state, std::uint64_t generation) {
+void ReferenceRender::begin(std::unique_ptr<renderer::RenderJob> job, std::uint64_t generation) {
   discard();
-  state_ = std::move(state);
+  job_ = std::move(job);
   generation_ = generation;
 }
 
 void ReferenceRender::resume() {
-  if (!state_ || running_.load() || complete_.load() || failed_.load()) return;
+  if (!job_ || running_.load() || complete_.load() || failed_.load()) return;
   if (thread_.joinable()) thread_.join();
   cancel_.store(false);
   running_.store(true);
@@ -34,18 +34,18 @@ void ReferenceRender::stop() {
 
 void ReferenceRender::discard() {
   stop();
-  state_.reset();
+  job_.reset();
   complete_.store(false);
   failed_.store(false);
   generation_ = 0;
 }
 
 int ReferenceRender::tile_count() const {
-  return state_ ? renderer::render_tile_count(*state_) : 0;
+  return job_ ? renderer::render_tile_count(job_->state()) : 0;
 }
 
 void ReferenceRender::run() {
-  renderer::RenderState& state = *state_;
+  renderer::RenderState& state = job_->state();
   const renderer::Framebuffer& framebuffer = renderer::render_framebuffer(state);
   const std::uint64_t generation = generation_;
   const auto on_tile_done = [&](int tile) {
@@ -56,7 +56,7 @@ void ReferenceRender::run() {
   std::string error;
   bool done = false;
   try {
-    done = renderer::render_pass(state, &cancel_, on_tile_done);
+    done = job_->pass(&cancel_, on_tile_done);
   } catch (const std::exception& e) {
     error = e.what();
   }

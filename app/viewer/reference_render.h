@@ -9,11 +9,12 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <thread>
 
 #include "app/viewer/display_buffer.h"
-#include "renderer/render.h"
+#include "renderer/render_service.h"
 
 namespace app::viewer {
 
@@ -29,7 +30,7 @@ class ReferenceRender {
   ReferenceRender& operator=(const ReferenceRender&) = delete;
 
   // Replaces the reference (stopping the previous one); tiles are posted with `generation`.
-  void begin(renderer::RenderStatePtr state, std::uint64_t generation);
+  void begin(std::unique_ptr<renderer::RenderJob> job, std::uint64_t generation);
   // Starts (or continues) rendering unless complete, failed, already running or without a state.
   void resume();
   // Cancels the pass in flight and joins the thread; the state and its finished tiles stay.
@@ -37,7 +38,7 @@ class ReferenceRender {
   // Stops and forgets the state.
   void discard();
 
-  bool has_state() const { return state_ != nullptr; }
+  bool has_state() const { return job_ != nullptr; }
   bool running() const { return running_.load(); }
   bool complete() const { return complete_.load(); }
   std::uint64_t generation() const { return generation_; }
@@ -48,7 +49,7 @@ class ReferenceRender {
 
   DisplayBuffer& tiles_;
   Finished on_finished_;
-  renderer::RenderStatePtr state_;
+  std::unique_ptr<renderer::RenderJob> job_;
   std::uint64_t generation_ = 0;
   std::thread thread_;
   std::atomic<bool> cancel_{false};

@@ -14,7 +14,7 @@
 #include "app/viewer/reference_render.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
-#include "renderer/render.h"
+#include "renderer/render_service.h"
 
 namespace app::viewer {
 
@@ -49,14 +49,14 @@ struct ViewKey {
 };
 
 // Preview pixel steps, coarsest first: 8, 4, 2, and coarser levels in front while the coarsest
-// would have more samples than the 320x240 default frame has at step 8, so that the first whole
+// would have more samples than the default frame (320x240) has at step 8, so that the first whole
 // frame costs about the same at any window size. Steps at or below the subsample stride add
 // nothing and are left out.
 constexpr int kFinestPreviewStep = 2;
 constexpr int kCoarsePreviewStep = 8;
 constexpr int kMaxPreviewStep = 128;
 constexpr long long kCoarsestPreviewSamples =
-    (320 / kCoarsePreviewStep) * (240 / kCoarsePreviewStep);
+    (renderer::kDefaultImageWidth / kCoarsePreviewStep) * (renderer::kDefaultImageHeight / kCoarsePreviewStep);
 
 std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
   const auto samples_at = [&](int step) {
@@ -93,7 +93,7 @@ struct Worker {
   int camera_index = -1;
   renderer::Camera preset;
   std::optional<ViewKey> view;
-  renderer::RenderStatePtr main;
+  std::unique_ptr<renderer::RenderJob> main;
   renderer::RenderSettings main_settings;
   std::uint64_t generation = 0;
   std::uint64_t last_serial = 0;  // the latest request applied; every generation is <= it
@@ -127,12 +127,12 @@ struct Worker {
     shared.wake.notify_all();
   }
 
-  void publish_main(renderer::RenderStatePtr state) {
+  void publish_main(std::unique_ptr<renderer::RenderJob> job) {
     {
       const std::lock_guard<std::mutex> lock(shared.slot_mutex);
-      shared.slot = state.get();
+      shared.slot = &job->state();
     }
-    main = std::move(state);
+    main = std::move(job);
   }
 
   void drop_main(std::uint64_t floor) {
@@ -162,7 +162,7 @@ struct Worker {
     view.reset();
   }
 
-  int passes_done() const { return main ? renderer::render_passes_done(*main) : 0; }
+  int passes_done() const { return main ? renderer::render_passes_done(main->state()) : 0; }
   bool wants_preview() const { return main && preview_levels_done < preview_steps.size(); }
 
   // Refinement passes wait while the reference renders: they would share its cores, and the
@@ -197,6 +197,7 @@ struct Worker {
       st.scene_serial += 1;
       st.scene_name = loaded->scene.name;
       st.light_count = loaded->scene.lights.light_count;
+      st.directional_lights = loaded->scene.directional_lights.size();
       st.preset_camera = preset;
       st.build_seconds = loaded->build_seconds;
       st.hierarchy_bytes = lev::hierarchy_bytes(loaded->scene.lights);
@@ -233,12 +234,11 @@ struct Worker {
 
     if (main_changed) {
       update_status([](WorkerStatus& st) { st.phase = WorkerPhase::preparing; });
-      const auto start = Clock::now();
-      renderer::RenderStatePtr state = renderer::make_render_state(sc, *loaded->rays, rs);
-      const double refit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      const int tiles = renderer::render_tile_count(*state);
-      const std::size_t method_bytes = renderer::render_selector(*state).bookkeeping_bytes();
-      publish_main(std::move(state));
+      auto job = std::make_unique<renderer::RenderJob>(sc, *loaded->rays, rs);
+      const double refit_seconds = job->setup_seconds();
+      const int tiles = renderer::render_tile_count(job->state());
+      const std::size_t method_bytes = renderer::render_selector(job->state()).bookkeeping_bytes();
+      publish_main(std::move(job));
       main_settings = rs;
       generation = serial;
       preview_steps = preview_steps_for(rs.width, rs.height, rs.pixel_stride);
@@ -271,7 +271,7 @@ struct Worker {
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;
         shared.reference_tiles.raise_floor(serial);
-        reference.begin(renderer::make_render_state(sc, *loaded->rays, ref), serial);
+        reference.begin(std::make_unique<renderer::RenderJob>(sc, *loaded->rays, ref), serial);
         update_status([&](WorkerStatus& st) {
           st.reference = ReferencePhase::rendering;
           st.reference_generation = serial;
@@ -286,7 +286,7 @@ struct Worker {
 
   // One preview level over the whole frame; a cancelled level is rendered again from the start.
   void render_preview_level() {
-    renderer::RenderState& state = *main;
+    renderer::RenderState& state = main->state();
     const int step = preview_steps[preview_levels_done];
     update_status([&](WorkerStatus& st) {
       st.phase = WorkerPhase::rendering;
@@ -300,7 +300,7 @@ struct Worker {
       shared.preview_tiles.post(copy_preview_tile(preview, step, main_settings.width,
                                                   main_settings.height, gen, tile, r));
     };
-    if (!renderer::render_pass(state, &shared.cancel, on_tile_done, step)) return;
+    if (!main->pass(&shared.cancel, on_tile_done, step)) return;
     preview_levels_done += 1;
     update_status(
         [&](WorkerStatus& st) { st.preview_levels_done = static_cast<int>(preview_levels_done); });
@@ -311,7 +311,7 @@ struct Worker {
       render_preview_level();
       return;
     }
-    renderer::RenderState& state = *main;
+    renderer::RenderState& state = main->state();
     const int pass = renderer::render_passes_done(state);
     const bool shared_cpu = pass == 0 && reference.running();
     update_status([&](WorkerStatus& st) {
@@ -327,7 +327,7 @@ struct Worker {
       renderer::render_tile_rect(state, tile, r.x0, r.y0, r.x1, r.y1);
       shared.tiles.post(copy_tile(framebuffer, gen, tile, pass, r));
     };
-    const bool complete = renderer::render_pass(state, &shared.cancel, on_tile_done);
+    const bool complete = main->pass(&shared.cancel, on_tile_done);
     const double seconds = renderer::render_seconds(state);
     const std::size_t method_bytes = renderer::render_selector(state).bookkeeping_bytes();
     double pass_seconds = 0.0;
@@ -415,7 +415,7 @@ const char* worker_phase_text(WorkerPhase phase) {
     case WorkerPhase::loading:
       return "building the scene";
     case WorkerPhase::preparing:
-      return "refitting the hierarchy";
+      return "fitting the extent volumes";
     case WorkerPhase::rendering:
       return "rendering";
     case WorkerPhase::waiting_for_reference:

@@ -1,12 +1,12 @@
 // The viewer's background side. One worker thread owns the scene: it loads (rebuilds) it, sets
-// the camera, makes the render states (which refit the hierarchy for the tolerance) and drives
-// renderer::render_pass pass after pass, posting every finished tile to a DisplayBuffer from the
+// the camera, makes the render jobs (renderer/render_service.h: each fits its own extent volumes
+// for its tolerance) and runs their passes one after another, posting every finished tile to a DisplayBuffer from the
 // tile-done callback. The UI thread only posts requests (the whole view it wants), reads a status
 // snapshot and takes tiles; posting sets the cancel flag, so the pass in flight stops between
 // tiles and the worker picks the request up at once. A render state whose settings did not change
 // is kept, and its interrupted pass resumes. The `rt` reference of the same view renders on a
-// second thread (ReferenceRender), which the worker stops and joins before anything changes the
-// scene and resumes afterwards when the view is the same. Every new render state starts with
+// second thread (ReferenceRender); it keeps rendering through method and tolerance changes (the
+// scene is only read) and is dropped when the view (camera, size, depth, subsample) changes. Every new render state starts with
 // preview passes (pixel steps 8, 4, 2: renderer::render_pass's preview_step) posted to a display
 // buffer of their own, so preview samples never mix with the render's tiles.
 #pragma once
@@ -21,6 +21,7 @@
 
 #include "app/settings.h"
 #include "app/viewer/display_buffer.h"
+#include "lev/methods.h"
 #include "renderer/camera.h"
 
 namespace app::viewer {
@@ -47,6 +48,7 @@ struct WorkerStatus {
   std::string scene_name;          // as the scene calls itself
   int level = 0;
   std::uint64_t light_count = 0;
+  std::size_t directional_lights = 0;  // suns, outside the hierarchy
   renderer::Camera preset_camera;
   double build_seconds = 0.0;  // model, hierarchy and Embree build
   std::size_t hierarchy_bytes = 0;
@@ -56,7 +58,7 @@ struct WorkerStatus {
   int width = 0;
   int height = 0;
   int tile_count = 0;
-  std::string method;
+  lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
   double refit_seconds = 0.0;  // making the render state: refit and selector
   std::size_t method_bytes = 0;

@@ -26,7 +26,11 @@ std::uint64_t parse_count(const std::string& text, const std::string& change) {
   return n;
 }
 
-// "A<separator>B" with A in [min_a, 16384] and B in [min_b, 16384].
+// The smallest window the viewer opens.
+constexpr int kMinWindowWidth = 320;
+constexpr int kMinWindowHeight = 240;
+
+// "A<separator>B" with A in [min_a, kMaxImageSide] and B in [min_b, kMaxImageSide].
 bool parse_int_pair(const std::string& text, char separator, long min_a, long min_b, int& a,
                     int& b) {
   const std::size_t at = text.find(separator);
@@ -37,7 +41,7 @@ bool parse_int_pair(const std::string& text, char separator, long min_a, long mi
   const long la = std::strtol(as.c_str(), &end_a, 10);
   const long lb = std::strtol(bs.c_str(), &end_b, 10);
   if (as.empty() || bs.empty() || *end_a != '\0' || *end_b != '\0' || la < min_a || lb < min_b ||
-      la > 16384 || lb > 16384) {
+      la > kMaxImageSide || lb > kMaxImageSide) {
     return false;
   }
   a = static_cast<int>(la);
@@ -52,7 +56,7 @@ bool parse_pixel(const std::string& text, int& x, int& y) {
 }  // namespace
 
 bool parse_window_size(const std::string& text, int& width, int& height) {
-  return parse_int_pair(text, 'x', 320, 240, width, height);
+  return parse_int_pair(text, 'x', kMinWindowWidth, kMinWindowHeight, width, height);
 }
 
 ScriptedChange parse_scripted_change(const std::string& text) {

@@ -123,18 +123,27 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
 bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choice,
                  ControlRects* rects) {
   std::vector<std::string> options = choice.options();
-  const std::string current = settings.*(choice.field);
+  const std::string current = choice.get(settings);
   // A value from the command line outside the list (a scene file) stays selectable.
   if (std::find(options.begin(), options.end(), current) == options.end())
     options.push_back(current);
   bool changed = false;
-  if (ImGui::BeginCombo(spec.label, current.c_str())) {
+  // The method table's labels name the methods; other choices show their values.
+  const auto label = [&](const std::string& o) {
+    return choice.option_label ? choice.option_label(o) : o.c_str();
+  };
+  if (ImGui::BeginCombo(spec.label, label(current))) {
     for (const std::string& o : options) {
-      if (ImGui::Selectable(o.c_str(), o == current) && o != current) {
-        settings.*(choice.field) = o;
+      ImGui::PushID(o.c_str());
+      if (ImGui::Selectable(label(o), o == current) && o != current) {
+        choice.set(settings, o);
         changed = true;
       }
       record_item(rects, std::string(spec.name) + ":" + o);
+      // After record_item: a tooltip is a window of its own and would become the last item.
+      if (choice.option_summary && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", choice.option_summary(o));
+      ImGui::PopID();
     }
     ImGui::EndCombo();
   }

@@ -14,25 +14,25 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.folder = state.snapshot_folder;
   char base[160];
   std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.c_str(),
-                static_cast<unsigned long long>(st.light_count), st.method.c_str(), st.tolerance);
+                static_cast<unsigned long long>(st.light_count), lev::method_info(st.method).name, st.tolerance);
   job.base = base;
   for (char& c : job.base) {
     if (c == '/' || c == '\\' || c == ' ') c = '_';
   }
   job.width = state.image.width;
   job.height = state.image.height;
+  RenderStats stats =
+      snapshot_stats(collect_live_stats(state.image, st, state.error, now), st, state.settings, current_camera(state));
   renderer::HeatmapRange range;
   job.image_rgb = view_rgb8(state.image, state.error, ViewMode::image, range);
+  // The ranges of both counters' heatmaps, as `levrt render` reports them; the file holds the
+  // one on screen (lights when the image is).
+  view_rgb8(state.image, state.error, ViewMode::lights, stats.heatmap_lights_range);
+  view_rgb8(state.image, state.error, ViewMode::nodes, stats.heatmap_nodes_range);
   const ViewMode heat = state.view == ViewMode::image ? ViewMode::lights : state.view;
   job.heatmap_name = view_mode_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
-  nlohmann::ordered_json stats =
-      live_stats_json(collect_live_stats(state.image, st, state.error, now), st, state.settings,
-                      current_camera(state));
-  stats["heatmap"] = job.heatmap_name;
-  stats["heatmap_range"] = {range.min, range.max};
-  stats["heatmap_scale"] = "log(1 + value per sample), viridis";
-  job.stats_json = stats.dump(2) + "\n";
+  job.stats_json = render_stats_json(stats).dump(2) + "\n";
   return job;
 }
 

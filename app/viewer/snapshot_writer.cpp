@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 
 namespace app::viewer {
 namespace {
@@ -45,11 +45,11 @@ void SnapshotWriter::run(const SnapshotJob& job) {
     const std::string image = stem.string() + ".png";
     const std::string heatmap = stem.string() + "_" + job.heatmap_name + ".png";
     const std::string stats = stem.string() + "_stats.json";
-    renderer::write_png_rgb8(image, job.width, job.height, job.image_rgb);
+    app::write_png_rgb8(image, job.width, job.height, job.image_rgb);
     steps_done_.store(1);
-    renderer::write_png_rgb8(heatmap, job.width, job.height, job.heatmap_rgb);
+    app::write_png_rgb8(heatmap, job.width, job.height, job.heatmap_rgb);
     steps_done_.store(2);
-    renderer::write_text_file(stats, job.stats_json);
+    app::write_text_file(stats, job.stats_json);
     steps_done_.store(3);
     message = "wrote " + image + ", " + heatmap + ", " + stats;
   } catch (const std::exception& e) {

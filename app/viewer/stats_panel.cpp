@@ -85,11 +85,11 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
   row("scene", "%s, %llu lights", st.scene_name.c_str(),
       static_cast<unsigned long long>(st.light_count));
-  const std::optional<lev::Method> method = lev::parse_method(st.method);
-  if (method && !lev::method_info(*method).uses_tolerance)
-    row("method", "%s (ignores the tolerance)", st.method.c_str());
+  const lev::MethodInfo& method = lev::method_info(st.method);
+  if (!method.uses_tolerance)
+    row("method", "%s (ignores the tolerance)", method.name);
   else
-    row("method", "%s, tolerance %g", st.method.c_str(), st.tolerance);
+    row("method", "%s, tolerance %g", method.name, st.tolerance);
   row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
   row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
   row("Mrays/s", "%.2f (primary + shadow)", s.mrays_per_second);
@@ -97,7 +97,7 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   row("shadow rays", "%llu", static_cast<unsigned long long>(s.shadow_rays));
   row("lights tested/point", "%.2f avg, %u max", s.lights_tested_avg, s.lights_tested_max);
   if (s.shading_points > 0 && s.nodes_visited_avg == 0.0)
-    row("nodes visited/point", "none (%s walks no light hierarchy)", st.method.c_str());
+    row("nodes visited/point", "none (%s walks no light hierarchy)", method.name);
   else
     row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
   row("hierarchy", "%s", bytes_text(st.hierarchy_bytes).c_str());

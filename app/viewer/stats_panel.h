@@ -1,5 +1,5 @@
 // Live statistics of the render on screen (time per pass, Mrays/s, shading points, lights tested
-// and nodes visited per point, hierarchy memory, build and refit time, pixel error) and the rt
+// and nodes visited per point, hierarchy memory, build and render set-up time, pixel error) and the rt
 // reference's controls: compute, progress, cancel.
 #pragma once
 

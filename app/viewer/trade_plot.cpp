@@ -32,15 +32,11 @@ bool has_trade_point(const TradePlot& plot, std::uint64_t generation) {
 namespace {
 
 // One colour per row of lev::method_table(), so new methods get their own.
-ImU32 method_colour(const std::string& method) {
+ImU32 method_colour(lev::Method method) {
   static const ImU32 kPalette[] = {IM_COL32(230, 230, 230, 255), IM_COL32(240, 160, 60, 255),
                                    IM_COL32(90, 200, 250, 255),  IM_COL32(200, 120, 220, 255),
                                    IM_COL32(120, 220, 120, 255), IM_COL32(250, 110, 110, 255)};
-  const auto& table = lev::method_table();
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    if (method == table[i].name) return kPalette[i % (sizeof kPalette / sizeof kPalette[0])];
-  }
-  return IM_COL32(150, 150, 150, 255);
+  return kPalette[static_cast<std::size_t>(method) % (sizeof kPalette / sizeof kPalette[0])];
 }
 
 }  // namespace
@@ -102,14 +98,14 @@ void draw_trade_plot(const TradePlot& plot, std::uint64_t current) {
   }
   if (nearest) {
     ImGui::BeginTooltip();
-    ImGui::Text("%s, tolerance %g", nearest->method.c_str(), nearest->tolerance);
+    ImGui::Text("%s, tolerance %g", lev::method_info(nearest->method).name, nearest->tolerance);
     ImGui::Text("pass 0: %.3f s", nearest->seconds);
     ImGui::Text("error avg %.4f%%, max %.3f%%", nearest->error_avg_pct, nearest->error_max_pct);
     if (nearest->shared_cpu) ImGui::TextDisabled("measured while the reference rendered");
     ImGui::EndTooltip();
   }
   for (const lev::MethodInfo& m : lev::method_table()) {
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(method_colour(m.name)), "%s", m.name);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(method_colour(m.id)), "%s", m.name);
     ImGui::SameLine();
   }
   ImGui::TextDisabled("  y: avg pixel error; hollow: shared CPU");

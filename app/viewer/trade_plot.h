@@ -8,10 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "lev/methods.h"
+
 namespace app::viewer {
 
 struct TradePoint {
-  std::string method;
+  lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
   double seconds = 0.0;
   double error_avg_pct = 0.0;

@@ -30,7 +30,7 @@
 #include "app/viewer/trade_plot.h"
 #include "app/viewer/view_panel.h"
 #include "app/viewer/viewer_state.h"
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 
 namespace app::viewer {
 namespace {
@@ -288,8 +288,8 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
   fit.resolution = state.settings.resolution;
   state.fit_pending = false;
   if (divisor == 0 || state.image_area_width <= 0 || state.image_area_height <= 0) return;
-  const int width = std::clamp(state.image_area_width / divisor, 1, 16384);
-  const int height = std::clamp(state.image_area_height / divisor, 1, 16384);
+  const int width = std::clamp(state.image_area_width / divisor, 1, kMaxImageSide);
+  const int height = std::clamp(state.image_area_height / divisor, 1, kMaxImageSide);
   if (width != fit.width || height != fit.height) {
     fit.width = width;
     fit.height = height;
@@ -320,7 +320,7 @@ bool preview_settled(const ViewerState& state, std::uint64_t last_posted) {
 void write_screenshot(GLFWwindow* window, const std::string& path) {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window, &width, &height);
-  renderer::write_png_rgb8(path, width, height, read_window_rgb8(width, height));
+  app::write_png_rgb8(path, width, height, read_window_rgb8(width, height));
 }
 
 // The window's layout: the panel on the left; on the right the picture above the results

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "app/settings.h"
-#include "app/view_command.h"
+#include "app/viewer/view_flags.h"
 
 namespace app::viewer {
 

@@ -4,9 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/heatmap.h"
-#include "renderer/image_io.h"
 #include "renderer/pixel_error.h"
-#include "tests/support/temp_dir.h"
 
 namespace {
 
@@ -33,20 +31,6 @@ TEST(Heatmap, LogScaleAndViridisEnds) {
   EXPECT_EQ(rgb[6], 253);  // max -> top
   // log(10)/log(100) = 0.5: the middle of the map.
   EXPECT_EQ(glm::u8vec3(rgb[3], rgb[4], rgb[5]), renderer::viridis(0.5f));
-}
-
-TEST(ImageIo, WritesCompleteFileAndLeavesNoTemporary) {
-  const levrt_test::TempDir temp("levrt_image_io_test_");
-  const std::filesystem::path& dir = temp.path();
-  const std::string path = (dir / "a.png").string();
-  renderer::write_png_rgb8(path, 2, 1, {255, 0, 0, 0, 255, 0});
-  EXPECT_GT(std::filesystem::file_size(path), 8u);
-  std::size_t files = 0;
-  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++files;
-  EXPECT_EQ(files, 1u);
-  EXPECT_THROW(renderer::write_png_rgb8((dir / "missing" / "b.png").string(), 2, 1, {0, 0, 0, 0, 0, 0}),
-               std::runtime_error);
-  EXPECT_THROW(renderer::write_png_rgb8(path, 3, 1, {0, 0, 0}), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Scenes the file format accepts that used to crash or hang the renderer (issue 15): cameras and
+// Scenes the file format accepts that used to crash or hang the renderer: cameras and
 // boxes so small that the render threads' flush-to-zero turned their normals into NaN rays, a
 // refraction index that computed inf * 0, and trees of reflection and refraction too deep to
 // finish, which must still stop promptly when cancelled.

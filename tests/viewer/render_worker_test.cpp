@@ -141,7 +141,7 @@ TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
   for (const lev::MethodInfo& method : lev::method_table()) {
     Ui ui;
     app::Settings s = small_settings();
-    s.method = method.name;
+    s.method = method.id;
     const std::uint64_t first = ui.worker.post(request_for(s));
     ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); })) << method.name;
     s.tolerance = 0.2;
@@ -183,7 +183,7 @@ TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
     ui.worker.post(request_for(s, true));
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  s.method = "rt";
+  s.method = lev::Method::rt;
   const std::uint64_t serial = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until([&] {
     return ui.settled(serial) && ui.status.reference == ReferencePhase::done &&
@@ -196,7 +196,7 @@ TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
   EXPECT_EQ(ui.reference.rgb, direct_render_rgb8(rt));
 
   // lev at a large tolerance differs from the reference, which is still the same.
-  s.method = "lev";
+  s.method = lev::Method::lev;
   s.tolerance = 0.5;
   const std::uint64_t lev = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(lev); }));

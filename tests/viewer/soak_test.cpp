@@ -28,7 +28,7 @@ using levrt_test::shell_quote;
 namespace fs = std::filesystem;
 
 constexpr int kWarmUpChanges = 100;           // memory is compared with its value after these
-constexpr double kAllowedMemoryGrowth = 1.5;  // the bound for the last change
+constexpr double kAllowedMemoryGrowth = 1.5;  // the bound for the last change
 constexpr std::uint64_t kMaxSoakLights = 65536;
 
 struct SceneLights {

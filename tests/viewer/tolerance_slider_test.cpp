@@ -43,7 +43,7 @@ app::Settings small_view(const std::string& method) {
   s.width = 64;
   s.height = 48;
   s.depth = 2;
-  s.method = method;
+  s.method = *lev::parse_method(method);
   return s;
 }
 

@@ -353,9 +353,9 @@ TEST(DisplayImage, APreviewCoversTheFrameOnScreenButNeverTheSavedViews) {
 TEST(TradePlot, PointsBelongToOneReferenceAndReplaceTheSameSetting) {
   TradePlot plot;
   follow_reference(plot, 4);
-  add_trade_point(plot, {"lev", 0.01, 0.5, 0.2, 3.0, false, 10});
-  add_trade_point(plot, {"lev", 0.1, 0.2, 1.2, 9.0, false, 11});
-  add_trade_point(plot, {"lev", 0.01, 0.4, 0.2, 3.0, false, 12});
+  add_trade_point(plot, {lev::Method::lev, 0.01, 0.5, 0.2, 3.0, false, 10});
+  add_trade_point(plot, {lev::Method::lev, 0.1, 0.2, 1.2, 9.0, false, 11});
+  add_trade_point(plot, {lev::Method::lev, 0.01, 0.4, 0.2, 3.0, false, 12});
   EXPECT_EQ(plot.points.size(), 2u);
   EXPECT_TRUE(has_trade_point(plot, 12));
   EXPECT_FALSE(has_trade_point(plot, 10));

@@ -269,6 +269,40 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   }
 }
 
+TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  // One function writes both files (app/render_stats.h): the keys cannot drift, and threads 0
+  // is resolved to the core count in both.
+  const std::vector<std::string> settings = {"--lights", "64", "--width", "48", "--height", "32", "--threads", "0"};
+  std::vector<std::string> view_args = settings;
+  for (const char* a : {"--window", "800x600", "--frames", "3", "--set", "await=idle@0", "--set"})
+    view_args.emplace_back(a);
+  view_args.push_back("snapshot=" + path("keys") + "@1");
+  const CommandRun view = run_viewer(view_args);
+  ASSERT_EQ(view.exit_code, 0) << view.output;
+  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
+  for (const std::string& a : settings) render += " " + shell_quote(a);
+  render += " --stats " + shell_quote(path("render_stats.json"));
+  const CommandRun headless = run_shell(render);
+  ASSERT_EQ(headless.exit_code, 0) << headless.output;
+
+  nlohmann::json snapshot;
+  for (const auto& entry : fs::directory_iterator(dir_ / "keys")) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 11 && name.compare(name.size() - 11, 11, "_stats.json") == 0) snapshot = read_json(entry.path());
+  }
+  const nlohmann::json rendered = read_json(path("render_stats.json"));
+  ASSERT_TRUE(snapshot.is_object() && rendered.is_object()) << view.output;
+  std::vector<std::string> snapshot_keys, render_keys;
+  for (const auto& item : snapshot.items()) snapshot_keys.push_back(item.key());
+  for (const auto& item : rendered.items()) render_keys.push_back(item.key());
+  EXPECT_EQ(snapshot_keys, render_keys);
+  EXPECT_GT(snapshot["threads"].get<int>(), 0);
+  EXPECT_EQ(snapshot["threads"], rendered["threads"]);
+  EXPECT_EQ(snapshot["depth"], rendered["depth"]);
+}
+
 TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
   if (!have_xvfb())
     GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";

@@ -1,4 +1,4 @@
-#include "renderer/image_io.h"
+#include "app/output_files.h"
 
 #include <fcntl.h>
 #include <pthread.h>
@@ -17,7 +17,7 @@
 
 #include <stb/stb_image_write.h>
 
-namespace renderer {
+namespace app {
 namespace {
 
 // Blocks the termination signals while the temporary exists, so Ctrl-C cannot leave it behind;
@@ -182,4 +182,4 @@ void discard_staging_folder(const std::string& staging) noexcept {
   std::filesystem::remove_all(staging, ec);
 }
 
-}  // namespace renderer
+}  // namespace app

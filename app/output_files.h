@@ -1,6 +1,7 @@
-// PNG and text output that never leaves a half-written file: a regular file (or a new name) is
-// written to a temporary in the target's folder and renamed onto it when complete; a symlink is
-// followed and stays a symlink; an existing pipe or device is written in place, never replaced;
+// The commands' output files (render, export, bench, viewer snapshots): PNG and text that never
+// leave a half-written file. A regular file (or a new name) is written to a temporary in the
+// target's folder, with the termination signals blocked, and renamed onto it when complete; a
+// symlink is followed and stays a symlink; an existing pipe or device is written in place, never replaced;
 // "-" is standard output. Write errors name their reason (strerror).
 #pragma once
 
@@ -9,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace renderer {
+namespace app {
 
 // The output name that means standard output.
 inline constexpr const char* kStandardOutputName = "-";
@@ -29,4 +30,4 @@ void write_text_file(const std::string& path, const std::string& text);
 void publish_staging_folder(const std::string& staging, const std::string& destination);
 void discard_staging_folder(const std::string& staging) noexcept;
 
-}  // namespace renderer
+}  // namespace app

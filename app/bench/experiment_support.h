@@ -1,0 +1,67 @@
+// What the experiments of `levrt bench` share: text helpers, the scaling plan that scaling and
+// work both read, and write_section, the one layout every experiment's output takes (its table
+// as NAME.csv, its charts as PNGs, its part of results.md). An experiment declares its renders
+// as MeasureRequests that BenchRun::measure_together runs in turns, fills a Table and Charts from
+// the measurements, and hands them to write_section.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/bench/experiments.h"
+#include "app/bench/plot.h"
+#include "app/bench/runner.h"
+#include "app/bench/table.h"
+
+namespace app::bench {
+
+std::string scene_label(const std::string& scene);
+std::string tolerance_text(double t);
+// "met", "missed", or "n/a" when the figure is not comparable with the target.
+std::string status(bool comparable, bool met);
+// The level of `scene` among `levels` whose light count is nearest `lights` (in ratio).
+int nearest_level(const BenchRun& run, const std::string& scene, const std::vector<int>& levels,
+                  std::uint64_t lights);
+
+struct NamedChart {
+  std::string file;  // PNG file name in the output folder
+  Chart chart;
+};
+
+// How an experiment's part of results.md reads: "## heading", the quick-run note, the intro, the
+// scenes this build lacks, `before_table`, the table and the plots.
+struct SectionText {
+  std::string heading;
+  std::string intro;
+  std::string before_table;
+};
+
+// Writes NAME.csv and the charts (not while planning) and returns the section.
+Section write_section(const BenchRun& run, const std::string& out_dir, const std::string& name,
+                      const SectionText& text, const Table& table,
+                      const std::vector<NamedChart>& charts,
+                      std::vector<HeadlineRow> headline = {});
+
+// scaling (thesis Tables 4, 5) and work (Tables 12-15, from the same runs).
+struct ScalingPlan {
+  std::string scene;
+  std::vector<int> levels;
+};
+std::vector<ScalingPlan> scaling_plan(const BenchRun& run);
+MeasureRequest scaling_request(BenchRun& run, const std::string& scene, int level,
+                               double tolerance);
+const Measurement& scaling_measure(BenchRun& run, const std::string& scene, int level,
+                                   double tolerance);
+
+// The experiments, one file each (experiment_NAME.cpp).
+Section run_speed(BenchRun& run, const std::string& out_dir);
+Section run_memory(BenchRun& run, const std::string& out_dir);
+Section run_scaling(BenchRun& run, const std::string& out_dir);
+Section run_fraction(BenchRun& run, const std::string& out_dir);
+Section run_error(BenchRun& run, const std::string& out_dir);
+Section run_work(BenchRun& run, const std::string& out_dir);
+Section run_trade(BenchRun& run, const std::string& out_dir);
+Section run_limit(BenchRun& run, const std::string& out_dir);
+
+}  // namespace app::bench

@@ -1,0 +1,71 @@
+#include "app/render_stats.h"
+
+#include <tbb/info.h>
+
+namespace app {
+
+int resolved_threads(int threads) {
+  return threads > 0 ? threads : tbb::info::default_concurrency();
+}
+
+nlohmann::ordered_json render_stats_json(const RenderStats& s) {
+  const renderer::FramebufferTotals& t = s.totals;
+  const double points = t.shading_points > 0 ? static_cast<double>(t.shading_points) : 1.0;
+  nlohmann::ordered_json j;
+  j["scene"] = s.scene;
+  j["level"] = s.level;
+  j["lights"] = s.lights;
+  j["method"] = s.method;
+  j["tolerance"] = s.tolerance;
+  j["width"] = s.width;
+  j["height"] = s.height;
+  j["spp"] = s.spp;
+  j["threads"] = s.threads;
+  j["depth"] = s.depth;
+  j["subsample"] = s.subsample;
+  j["light_scale"] = s.light_scale;
+  j["directional_lights"] = s.directional_lights;
+  j["time_build_s"] = s.build_seconds;
+  j["time_refit_s"] = s.setup_seconds;
+  j["time_render_s"] = s.render_seconds;
+  j["time_pass_s"] = s.pass_seconds;
+  if (s.subsample > 1) {
+    // The rendered pixels' time scaled to every pixel of the frame.
+    const double frame_pixels = static_cast<double>(s.width) * s.height;
+    j["time_render_full_frame_estimate_s"] =
+        s.rendered_pixels > 0
+            ? s.render_seconds * frame_pixels / static_cast<double>(s.rendered_pixels)
+            : 0.0;
+  }
+  j["mrays_per_s"] = s.render_seconds > 0.0
+                         ? static_cast<double>(t.samples + t.shadow_rays) / s.render_seconds * 1e-6
+                         : 0.0;
+  j["shading_points"] = t.shading_points;
+  j["shadow_rays"] = t.shadow_rays;
+  j["lights_tested_avg"] = static_cast<double>(t.lights_tested) / points;
+  j["lights_tested_max"] = t.lights_tested_max;
+  j["nodes_visited_avg"] = static_cast<double>(t.nodes_visited) / points;
+  j["hierarchy_bytes"] = s.hierarchy_bytes;
+  j["method_bytes"] = s.method_bytes;
+  if (s.error) {
+    j["pixel_error_avg_pct"] = s.error->average_pct;
+    j["pixel_error_max_pct"] = s.error->max_pct;
+    j["pixel_error_pixels"] = s.error->pixels;
+    j["pixel_error_scope"] = s.error->scope;
+    j["time_reference_s"] = s.error->reference_seconds;
+  }
+  const auto vec = [](const glm::vec3& v) {
+    return nlohmann::ordered_json::array({v.x, v.y, v.z});
+  };
+  j["camera"] = {{"index", s.camera_index},
+                 {"position", vec(s.camera.position)},
+                 {"target", vec(s.camera.target)},
+                 {"up", vec(s.camera.up)},
+                 {"vertical_fov_deg", s.camera.vertical_fov_deg}};
+  j["heatmap_lights_range"] = {s.heatmap_lights_range.min, s.heatmap_lights_range.max};
+  j["heatmap_nodes_range"] = {s.heatmap_nodes_range.min, s.heatmap_nodes_range.max};
+  j["heatmap_scale"] = "log(1 + value per sample), viridis";
+  return j;
+}
+
+}  // namespace app

@@ -1,0 +1,60 @@
+// The statistics of one render (docs/design.md's metric names), as `levrt render --stats` and a
+// viewer snapshot both write them: each front end fills one RenderStats, and one function turns
+// it into JSON, so the two files always carry the same keys.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/camera.h"
+#include "renderer/framebuffer.h"
+#include "renderer/heatmap.h"
+
+namespace app {
+
+struct RenderPixelError {
+  double average_pct = 0.0;
+  double max_pct = 0.0;
+  std::uint64_t pixels = 0;  // pixels compared
+  std::string scope;         // which pixels, against what
+  double reference_seconds = 0.0;
+};
+
+struct RenderStats {
+  std::string scene;  // as the scene calls itself
+  int level = 0;
+  std::uint64_t lights = 0;
+  std::string method;
+  double tolerance = 0.0;
+  int width = 0;
+  int height = 0;
+  int spp = 0;      // passes done
+  int threads = 0;  // resolved: never 0
+  int depth = 0;
+  int subsample = 1;
+  double light_scale = 1.0;         // glTF light exposure (Settings::light_scale)
+  std::size_t directional_lights = 0;  // suns, shadow-tested at every point outside the hierarchy
+  double build_seconds = 0.0;
+  double setup_seconds = 0.0;  // the render state: selector and extent volumes
+  double render_seconds = 0.0;
+  double pass_seconds = 0.0;  // the last complete pass
+  renderer::FramebufferTotals totals;
+  std::uint64_t rendered_pixels = 0;  // pixels with a sample (the subsample's)
+  std::size_t hierarchy_bytes = 0;
+  std::size_t method_bytes = 0;
+  std::optional<RenderPixelError> error;  // against the rt reference
+  renderer::Camera camera;
+  int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
+  renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
+};
+
+// The thread count a setting of 0 (all cores) stands for.
+int resolved_threads(int threads);
+
+nlohmann::ordered_json render_stats_json(const RenderStats& stats);
+
+}  // namespace app

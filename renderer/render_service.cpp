@@ -1,0 +1,54 @@
+#include "renderer/render_service.h"
+
+#include <chrono>
+
+namespace renderer {
+
+RenderJob::RenderJob(const Scene& scene, const RayScene& rays, const RenderSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  state_ = make_render_state(scene, rays, settings);
+  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool RenderJob::pass(const std::atomic<bool>* cancel, const TileDoneCallback& on_tile_done,
+                     int preview_step) {
+  return render_pass(*state_, cancel, on_tile_done, preview_step);
+}
+
+std::vector<std::uint8_t> rendered_rgb8(const Framebuffer& framebuffer) {
+  const std::vector<std::uint8_t> all = framebuffer_rgb8(framebuffer);
+  std::vector<std::uint8_t> out;
+  for (std::size_t i = 0; i < framebuffer.samples.size(); ++i) {
+    if (framebuffer.samples[i] == 0) continue;
+    out.insert(out.end(), all.begin() + static_cast<std::ptrdiff_t>(3 * i),
+               all.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+  }
+  return out;
+}
+
+RenderResult RenderJob::result() const {
+  RenderResult r;
+  r.framebuffer = render_framebuffer(*state_);
+  r.totals = sum_framebuffer(r.framebuffer);
+  r.rendered_rgb = rendered_rgb8(r.framebuffer);
+  r.rendered_pixels = r.rendered_rgb.size() / 3;
+  r.passes = render_passes_done(*state_);
+  r.setup_seconds = setup_seconds_;
+  r.render_seconds = render_seconds(*state_);
+  r.method_bytes = render_selector(*state_).bookkeeping_bytes();
+  return r;
+}
+
+bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
+                   int passes, RenderResult& result, const std::atomic<bool>* cancel,
+                   const PassDoneCallback& on_pass_done) {
+  RenderJob job(scene, rays, settings);
+  for (int pass = 0; pass < passes; ++pass) {
+    if (!job.pass(cancel)) return false;
+    if (on_pass_done) on_pass_done(pass + 1, render_seconds(job.state()));
+  }
+  result = job.result();
+  return true;
+}
+
+}  // namespace renderer
