@@ -151,9 +151,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.width = settings.width;
   s.height = settings.height;
   s.spp = result.passes;
-  s.threads = resolved_threads(settings.threads);
-  s.depth = settings.depth;
-  s.subsample = settings.subsample;
+  set_stats_from_settings(s, settings);
   s.build_seconds = loaded.build_seconds;
   s.setup_seconds = result.setup_seconds;
   s.render_seconds = result.render_seconds;
@@ -163,8 +161,6 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
   s.method_bytes = result.method_bytes;
   s.camera = loaded.scene.camera;
-  s.camera_index = settings.camera;
-  s.light_scale = settings.light_scale;
   s.directional_lights = loaded.scene.directional_lights.size();
   if (reference) {
     const auto error =

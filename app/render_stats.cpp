@@ -8,6 +8,14 @@ int resolved_threads(int threads) {
   return threads > 0 ? threads : tbb::info::default_concurrency();
 }
 
+void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
+  stats.threads = resolved_threads(settings.threads);
+  stats.depth = settings.depth;
+  stats.subsample = settings.subsample;
+  stats.light_scale = settings.light_scale;
+  stats.camera_index = settings.camera;
+}
+
 nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   const renderer::FramebufferTotals& t = s.totals;
   const double points = t.shading_points > 0 ? static_cast<double>(t.shading_points) : 1.0;

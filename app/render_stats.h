@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/settings.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/heatmap.h"
@@ -54,6 +55,10 @@ struct RenderStats {
 
 // The thread count a setting of 0 (all cores) stands for.
 int resolved_threads(int threads);
+
+// The fields the settings decide alone, the same for `render` and a viewer snapshot: threads
+// (resolved), depth, subsample, light scale and camera index.
+void set_stats_from_settings(RenderStats& stats, const Settings& settings);
 
 nlohmann::ordered_json render_stats_json(const RenderStats& stats);
 

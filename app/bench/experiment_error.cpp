@@ -18,14 +18,10 @@ constexpr double kErrorMaxLimitPct = 5.0;
 Section run_error(BenchRun& run, const std::string& out_dir) {
   const SuiteConfig& c = run.config();
   Table table;
-  table.columns = {{"scene", "scene"},
-                   {"lights", "lights"},
-                   {"tolerance", "tolerance"},
-                   {"pixels", "px"},
-                   {"pixel_error_avg_pct", "avg error (%)"},
-                   {"pixel_error_max_pct", "max error (%)"},
-                   {"thesis_avg_pct", "thesis: avg (%)"},
-                   {"thesis_max_pct", "thesis: max (%)"}};
+  table.columns = per_tolerance_columns({{"pixel_error_avg_pct", "avg error (%)"},
+                                         {"pixel_error_max_pct", "max error (%)"},
+                                         {"thesis_avg_pct", "thesis: avg (%)"},
+                                         {"thesis_max_pct", "thesis: max (%)"}});
   Section section;
   std::vector<NamedChart> charts;
   for (const std::string& scene : run.available_scenes()) {

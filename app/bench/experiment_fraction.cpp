@@ -12,15 +12,11 @@ namespace app::bench {
 Section run_fraction(BenchRun& run, const std::string& out_dir) {
   const SuiteConfig& c = run.config();
   Table table;
-  table.columns = {{"scene", "scene"},
-                   {"lights", "lights"},
-                   {"tolerance", "tolerance"},
-                   {"pixels", "px"},
-                   {"lights_tested_avg", "lights tested/pt"},
-                   {"fraction_pct", "fraction (%)"},
-                   {"nodes_visited_avg", "volumes checked/pt"},
-                   {"thesis_lights_tested", "thesis: lights/pt"},
-                   {"thesis_fraction_pct", "thesis: fraction (%)"}};
+  table.columns = per_tolerance_columns({{"lights_tested_avg", "lights tested/pt"},
+                                         {"fraction_pct", "fraction (%)"},
+                                         {"nodes_visited_avg", "volumes checked/pt"},
+                                         {"thesis_lights_tested", "thesis: lights/pt"},
+                                         {"thesis_fraction_pct", "thesis: fraction (%)"}});
   std::vector<NamedChart> charts;
   for (const std::string& scene : run.available_scenes()) {
     Chart chart;

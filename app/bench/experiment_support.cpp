@@ -23,6 +23,13 @@ std::string status(bool comparable, bool met) {
   return !comparable ? "n/a" : (met ? "met" : "missed");
 }
 
+std::vector<Column> per_tolerance_columns(std::vector<Column> rest) {
+  std::vector<Column> columns = {
+      {"scene", "scene"}, {"lights", "lights"}, {"tolerance", "tolerance"}, {"pixels", "px"}};
+  columns.insert(columns.end(), rest.begin(), rest.end());
+  return columns;
+}
+
 namespace {
 
 void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,

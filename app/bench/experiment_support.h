@@ -24,6 +24,9 @@ std::string status(bool comparable, bool met);
 int nearest_level(const BenchRun& run, const std::string& scene, const std::vector<int>& levels,
                   std::uint64_t lights);
 
+// The columns of a table with one row per (scene, light count, tolerance) render, then `rest`.
+std::vector<Column> per_tolerance_columns(std::vector<Column> rest);
+
 struct NamedChart {
   std::string file;  // PNG file name in the output folder
   Chart chart;

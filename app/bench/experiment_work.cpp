@@ -11,15 +11,11 @@ namespace app::bench {
 Section run_work(BenchRun& run, const std::string& out_dir) {
   const SuiteConfig& c = run.config();
   Table table;
-  table.columns = {{"scene", "scene"},
-                   {"lights", "lights"},
-                   {"tolerance", "tolerance"},
-                   {"pixels", "px"},
-                   {"lights_tested_avg", "lights tested/pt"},
-                   {"nodes_visited_avg", "volumes checked/pt"},
-                   {"shadow_rays_avg", "shadow rays/pt"},
-                   {"thesis_lights_tested", "thesis: lights/pt"},
-                   {"thesis_nodes_visited", "thesis: volumes/pt"}};
+  table.columns = per_tolerance_columns({{"lights_tested_avg", "lights tested/pt"},
+                                         {"nodes_visited_avg", "volumes checked/pt"},
+                                         {"shadow_rays_avg", "shadow rays/pt"},
+                                         {"thesis_lights_tested", "thesis: lights/pt"},
+                                         {"thesis_nodes_visited", "thesis: volumes/pt"}});
   std::vector<NamedChart> charts;
   for (const ScalingPlan& p : scaling_plan(run)) {
     Chart tested, nodes;

@@ -44,11 +44,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   r.width = status.width;
   r.height = status.height;
   r.spp = status.passes_done;
-  r.threads = resolved_threads(settings.threads);
-  r.depth = settings.depth;
-  r.subsample = settings.subsample;
-  r.light_scale = settings.light_scale;
-  r.camera_index = settings.camera;
+  set_stats_from_settings(r, settings);
   r.directional_lights = status.directional_lights;
   r.build_seconds = status.build_seconds;
   r.setup_seconds = status.refit_seconds;

@@ -7,6 +7,7 @@
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
 #include "scenes/building.h"
+#include "tests/support/framebuffer_compare.h"
 
 namespace {
 
@@ -22,13 +23,6 @@ renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RaySc
   auto state = renderer::make_render_state(scene, rays, rs);
   for (int i = 0; i < 2; ++i) EXPECT_TRUE(renderer::render_pass(*state));
   return renderer::render_framebuffer(*state);
-}
-
-bool bitwise_equal(const renderer::Framebuffer& a, const renderer::Framebuffer& b) {
-  return a.radiance_sum.size() == b.radiance_sum.size() &&
-         std::memcmp(a.radiance_sum.data(), b.radiance_sum.data(),
-                     a.radiance_sum.size() * sizeof(glm::vec3)) == 0 &&
-         a.samples == b.samples;
 }
 
 TEST(LevBoundedRender, EqualsRtAtToleranceZeroAndIsDeterministic) {

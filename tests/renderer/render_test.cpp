@@ -9,6 +9,7 @@
 
 #include "renderer/ray_scene.h"
 #include "scenes/building.h"
+#include "tests/support/framebuffer_compare.h"
 
 namespace {
 
@@ -32,12 +33,6 @@ renderer::Framebuffer render(TestScene& t, lev::Method method, float tolerance, 
   auto state = renderer::make_render_state(t.scene, *t.rays, rs);
   for (int i = 0; i < passes; ++i) EXPECT_TRUE(renderer::render_pass(*state));
   return renderer::render_framebuffer(*state);
-}
-
-bool bitwise_equal(const renderer::Framebuffer& a, const renderer::Framebuffer& b) {
-  return a.radiance_sum.size() == b.radiance_sum.size() &&
-         std::memcmp(a.radiance_sum.data(), b.radiance_sum.data(), a.radiance_sum.size() * sizeof(glm::vec3)) == 0 &&
-         a.samples == b.samples;
 }
 
 TEST(Render, LevAtToleranceZeroEqualsRtBitForBit) {

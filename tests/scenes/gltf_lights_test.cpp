@@ -16,6 +16,7 @@
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_instantiation.h"
 #include "tests/support/gltf_builder.h"
+#include "tests/support/framebuffer_compare.h"
 
 namespace {
 
@@ -95,13 +96,6 @@ renderer::Framebuffer render(const renderer::Scene& scene, lev::Method method, f
   auto state = renderer::make_render_state(scene, rays, rs);
   EXPECT_TRUE(renderer::render_pass(*state));
   return renderer::render_framebuffer(*state);
-}
-
-bool bitwise_equal(const renderer::Framebuffer& a, const renderer::Framebuffer& b) {
-  return a.radiance_sum.size() == b.radiance_sum.size() &&
-         std::memcmp(a.radiance_sum.data(), b.radiance_sum.data(),
-                     a.radiance_sum.size() * sizeof(glm::vec3)) == 0 &&
-         a.samples == b.samples;
 }
 
 scenes::SceneDescription parse(GltfBuilder& builder, float light_scale = 1.0f, int camera = 0) {

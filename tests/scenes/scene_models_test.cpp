@@ -12,6 +12,7 @@
 #include "renderer/render.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_instantiation.h"
+#include "tests/support/framebuffer_compare.h"
 
 namespace {
 
@@ -26,12 +27,6 @@ renderer::Framebuffer render(renderer::Scene& scene, lev::Method method, float t
   auto state = renderer::make_render_state(scene, rays, rs);
   EXPECT_TRUE(renderer::render_pass(*state));
   return renderer::render_framebuffer(*state);
-}
-
-bool bitwise_equal(const renderer::Framebuffer& a, const renderer::Framebuffer& b) {
-  return a.radiance_sum.size() == b.radiance_sum.size() &&
-         std::memcmp(a.radiance_sum.data(), b.radiance_sum.data(), a.radiance_sum.size() * sizeof(glm::vec3)) == 0 &&
-         a.samples == b.samples;
 }
 
 TEST(SceneModels, ExportedFileRendersTheSameImageAndHierarchy) {
