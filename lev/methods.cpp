@@ -52,7 +52,7 @@ std::vector<MethodInfo>& table_rows() {
        }},
       {Method::lev_bounded,
        "lev_bounded",
-       "LEV bounded (culled sum <= tolerance)",
+       "LEV bounded (guaranteed)",
        "LEV that culls only while the summed irradiance bound of what it culled at the point stays "
        "within the tolerance",
        true,
