@@ -8,7 +8,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtinygltf-dev libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libgl-dev libopengl-dev libegl-dev libx11-dev
   xvfb xauth mesa-utils xdotool
-  clang
+  clang python3
 )
 missing=()
 for p in "${packages[@]}"; do
