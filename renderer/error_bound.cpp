@@ -21,13 +21,15 @@ glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_
 double error_bound_pct(const glm::vec3& mean_bound) {
   double sum = 0.0;
   // A NaN bound would say nothing: it counts as the largest error a channel can have.
-  for (int c = 0; c < 3; ++c) sum += std::isnan(mean_bound[c]) ? 1.0 : std::min(double{mean_bound[c]}, 1.0);
+  for (int c = 0; c < 3; ++c)
+    sum += std::isnan(mean_bound[c]) ? 1.0 : std::min(double{mean_bound[c]}, 1.0);
   return 100.0 * sum * 255.0 / 765.0;
 }
 
 double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i) {
   if (framebuffer.samples[i] == 0) return 0.0;
-  return error_bound_pct(framebuffer.error_bound_sum[i] / static_cast<float>(framebuffer.samples[i]));
+  return error_bound_pct(framebuffer.error_bound_sum[i] /
+                         static_cast<float>(framebuffer.samples[i]));
 }
 
 std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer) {

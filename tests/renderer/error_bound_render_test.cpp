@@ -32,8 +32,8 @@ constexpr int kHeight = 24;
 // One 8-bit step per channel, on the error scale (pixel_error.h): the rounding of both images.
 constexpr double kRoundingPct = 100.0 * 3.0 / 765.0;
 
-renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays, lev::Method method,
-                             float tolerance, bool compute_error_bound = true) {
+renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
+                             lev::Method method, float tolerance, bool compute_error_bound = true) {
   renderer::RenderSettings rs;
   rs.width = kWidth;
   rs.height = kHeight;
@@ -60,14 +60,15 @@ double expect_bound_holds(const renderer::Scene& scene, const std::vector<float>
     if (method.is_reference) continue;
     for (float tolerance : tolerances) {
       const renderer::Framebuffer fb = render(scene, rays, method.id, tolerance);
-      const std::vector<double> error = renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), rt_rgb);
+      const std::vector<double> error =
+          renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), rt_rgb);
       int violations = 0;
       for (std::size_t i = 0; i < error.size(); ++i) {
         const double bound = renderer::pixel_error_bound_pct(fb, i);
         largest_error = std::max(largest_error, error[i]);
         if (error[i] > bound + kRoundingPct + 1e-9 && violations++ < 3) {
-          ADD_FAILURE() << label << " " << method.name << " tolerance " << tolerance << " pixel " << i
-                        << ": error " << error[i] << "% > bound " << bound << "%";
+          ADD_FAILURE() << label << " " << method.name << " tolerance " << tolerance << " pixel "
+                        << i << ": error " << error[i] << "% > bound " << bound << "%";
         }
       }
       EXPECT_EQ(violations, 0) << label << " " << method.name << " tolerance " << tolerance;
@@ -83,8 +84,8 @@ TEST(ErrorBoundRender, EveryModelSceneIsWithinItsBoundAtTwoLightCountsAndThreeTo
     // The two smallest levels keep rt cheap; both have lights that every method culls.
     for (int level : {model.min_level, model.min_level + 1}) {
       const renderer::Scene scene = model.build(level);
-      const double largest_error =
-          expect_bound_holds(scene, kTolerances, std::string(model.name) + " level " + std::to_string(level));
+      const double largest_error = expect_bound_holds(
+          scene, kTolerances, std::string(model.name) + " level " + std::to_string(level));
       // The check met real errors, beyond the rounding it allows.
       EXPECT_GT(largest_error, kRoundingPct) << model.name << " level " << level;
     }
@@ -96,7 +97,9 @@ TEST(ErrorBoundRender, EveryModelSceneIsWithinItsBoundAtTwoLightCountsAndThreeTo
 // and read back, as `levrt render --scene FILE.json` would.
 renderer::Scene random_scene_file(std::uint64_t seed) {
   std::mt19937_64 engine(seed);
-  const auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(engine); };
+  const auto uniform = [&](float lo, float hi) {
+    return std::uniform_real_distribution<float>(lo, hi)(engine);
+  };
   scenes::SceneDescription d;
   d.name = "random " + std::to_string(seed);
   d.camera.position = {0.0f, -14.0f, 7.0f};
@@ -106,14 +109,16 @@ renderer::Scene random_scene_file(std::uint64_t seed) {
   shiny.ks = 0.6f;
   shiny.shininess = 40.0f;
   shiny.colour = {0.9f, 0.5f, 0.2f};
-  const std::uint32_t materials[] = {scenes::add_material(d, "matte", matte), scenes::add_material(d, "shiny", shiny),
+  const std::uint32_t materials[] = {scenes::add_material(d, "matte", matte),
+                                     scenes::add_material(d, "shiny", shiny),
                                      scenes::add_material(d, "mirror", levrt_test::pure_mirror()),
                                      scenes::add_material(d, "glass", levrt_test::clear_glass())};
   std::vector<scenes::SceneNode> lamp;
   for (int i = 0; i < 6; ++i) {
     const glm::vec3 offset(uniform(-1.5f, 1.5f), uniform(-1.5f, 1.5f), uniform(-0.3f, 0.3f));
-    const glm::vec3 intensity = glm::vec3(uniform(0.05f, 1.0f), uniform(0.05f, 1.0f), uniform(0.05f, 1.0f)) *
-                                std::pow(10.0f, uniform(-1.0f, 0.5f));
+    const glm::vec3 intensity =
+        glm::vec3(uniform(0.05f, 1.0f), uniform(0.05f, 1.0f), uniform(0.05f, 1.0f)) *
+        std::pow(10.0f, uniform(-1.0f, 0.5f));
     if (i % 2 == 0) {
       lamp.push_back(scenes::translate_node(offset, scenes::point_light_node(intensity)));
     } else {
@@ -127,7 +132,8 @@ renderer::Scene random_scene_file(std::uint64_t seed) {
           tilt, scenes::spot_light_node(intensity, kCones[engine() % 4], kDropoffs[engine() % 3])));
     }
   }
-  const std::uint32_t lamp_master = scenes::add_master(d, "lamp", scenes::union_node(std::move(lamp)));
+  const std::uint32_t lamp_master =
+      scenes::add_master(d, "lamp", scenes::union_node(std::move(lamp)));
   std::vector<scenes::SceneNode> root;
   root.push_back(scenes::quad_node(materials[0], {-12, -12, 0}, {24, 0, 0}, {0, 24, 0}));
   for (int i = 0; i < 6; ++i) {
@@ -137,7 +143,8 @@ renderer::Scene random_scene_file(std::uint64_t seed) {
     if (i % 2 == 0) {
       root.push_back(scenes::sphere_node(material, at + glm::vec3(0, 0, size), size));
     } else {
-      root.push_back(scenes::box_node(material, at - glm::vec3(size, size, 0), at + glm::vec3(size, size, 2 * size)));
+      root.push_back(scenes::box_node(material, at - glm::vec3(size, size, 0),
+                                      at + glm::vec3(size, size, 2 * size)));
     }
   }
   for (int i = 0; i < 8; ++i) {
@@ -177,8 +184,8 @@ glm::vec3 traced_bound(const renderer::Scene& scene, const renderer::RayScene& r
   renderer::TraceContext context{scene, rays, selector, scratch};
   context.compute_error_bound = true;
   renderer::PathCounters counters;
-  const renderer::Ray ray =
-      renderer::primary_ray(scene.camera, kWidth, kHeight, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+  const renderer::Ray ray = renderer::primary_ray(
+      scene.camera, kWidth, kHeight, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
   renderer::trace_radiance(context, ray, 0, counters);
   return counters.error_bound;
 }
@@ -201,7 +208,8 @@ TEST(ErrorBoundRender, LevBoundedStaysWithinToleranceTimesTheMaterialResponse) {
           const glm::vec3 p = traced_bound(scene, rays, *plain, x, y);
           for (int c = 0; c < 3; ++c) {
             // Room for the float rounding of the path weights and sums.
-            EXPECT_LE(b[c], limit[c] * 1.0001f + 1e-12f) << name << " " << tolerance << " pixel " << x << "," << y;
+            EXPECT_LE(b[c], limit[c] * 1.0001f + 1e-12f)
+                << name << " " << tolerance << " pixel " << x << "," << y;
             bounded_largest = std::max(bounded_largest, b[c]);
             plain_excess = std::max(plain_excess, p[c] - limit[c]);
           }

@@ -27,8 +27,8 @@ struct Traced {
   glm::vec3 bound{0.0f};
 };
 
-Traced trace(const renderer::Scene& scene, const renderer::RayScene& rays, const lev::LightSelector& selector,
-             const renderer::Ray& ray, int max_depth = 5) {
+Traced trace(const renderer::Scene& scene, const renderer::RayScene& rays,
+             const lev::LightSelector& selector, const renderer::Ray& ray, int max_depth = 5) {
   lev::SelectorScratch scratch;
   renderer::TraceContext context{scene, rays, selector, scratch, max_depth};
   context.compute_error_bound = true;
@@ -73,7 +73,8 @@ renderer::Material matte_wall() {
 }
 
 void expect_near(const glm::vec3& got, const glm::vec3& want) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-6f * (1.0f + want[c])) << "channel " << c;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(got[c], want[c], 1e-6f * (1.0f + want[c])) << "channel " << c;
 }
 
 const renderer::Ray kAlongY{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
@@ -134,7 +135,8 @@ TEST(ShadingErrorBound, AMaterialThatReflectsNothingBoundsNothingEvenWhenTheCull
 // reporting their exact summed irradiance as its culled bound.
 class DropOddLights final : public lev::LightSelector {
  public:
-  explicit DropOddLights(const lev::LightHierarchy& hierarchy) : lights_(lev::flatten_lights(hierarchy)) {}
+  explicit DropOddLights(const lev::LightHierarchy& hierarchy)
+      : lights_(lev::flatten_lights(hierarchy)) {}
   glm::vec3 direct_radiance(lev::ShadingPoint& point, lev::SelectorScratch& scratch,
                             lev::SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override {
@@ -158,7 +160,9 @@ class DropOddLights final : public lev::LightSelector {
 };
 
 renderer::Scene mirror_and_glass_scene(std::mt19937_64& engine) {
-  const auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(engine); };
+  const auto uniform = [&](float lo, float hi) {
+    return std::uniform_real_distribution<float>(lo, hi)(engine);
+  };
   renderer::Scene scene;
   scene.materials = {matte_wall(), levrt_test::pure_mirror(), levrt_test::clear_glass()};
   renderer::Prototype prototype;
@@ -178,8 +182,9 @@ renderer::Scene mirror_and_glass_scene(std::mt19937_64& engine) {
     const glm::vec3 p(uniform(-8, 8), uniform(-8, 8), uniform(0.5f, 6.0f));
     const glm::vec3 intensity(uniform(0.05f, 2.0f), uniform(0.05f, 2.0f), uniform(0.05f, 2.0f));
     if (i % 3 == 0) {
-      lights.push_back(lev::light_node(lev::make_spot_light(p, glm::normalize(glm::vec3(uniform(-1, 1), uniform(-1, 1), -1.0f)),
-                                                            intensity, uniform(0.2f, 3.1f), uniform(0.0f, 10.0f))));
+      lights.push_back(lev::light_node(
+          lev::make_spot_light(p, glm::normalize(glm::vec3(uniform(-1, 1), uniform(-1, 1), -1.0f)),
+                               intensity, uniform(0.2f, 3.1f), uniform(0.0f, 10.0f))));
     } else {
       lights.push_back(lev::light_node(lev::make_point_light(p, intensity)));
     }
@@ -191,7 +196,9 @@ renderer::Scene mirror_and_glass_scene(std::mt19937_64& engine) {
 
 TEST(ShadingErrorBound, DroppingLightsStaysWithinTheBoundThroughMirrorsAndGlass) {
   std::mt19937_64 engine(11);
-  const auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(engine); };
+  const auto uniform = [&](float lo, float hi) {
+    return std::uniform_real_distribution<float>(lo, hi)(engine);
+  };
   int rays_with_error = 0, rays_needing_the_recursion = 0;
   for (int s = 0; s < 3; ++s) {
     const renderer::Scene scene = mirror_and_glass_scene(engine);
@@ -209,7 +216,8 @@ TEST(ShadingErrorBound, DroppingLightsStaysWithinTheBoundThroughMirrorsAndGlass)
       for (int c = 0; c < 3; ++c) {
         const float error = std::abs(dropped.radiance[c] - exact.radiance[c]);
         // Room for the float rounding of the two radiance sums.
-        EXPECT_LE(error, dropped.bound[c] + 1e-5f * (1.0f + exact.radiance[c])) << "scene " << s << " ray " << i;
+        EXPECT_LE(error, dropped.bound[c] + 1e-5f * (1.0f + exact.radiance[c]))
+            << "scene " << s << " ray " << i;
         if (error > 1e-4f) {
           ++rays_with_error;
           if (error > first_hit_only.bound[c]) ++rays_needing_the_recursion;
