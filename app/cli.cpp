@@ -104,6 +104,7 @@ int run_snapshot() {
   outputs.image = "out/building.png";
   outputs.heatmap_lights = "out/building_lights_tested.png";
   outputs.heatmap_nodes = "out/building_nodes_visited.png";
+  outputs.heatmap_bound = "out/building_error_bound.png";
   outputs.stats = "out/building_stats.json";
   outputs.reference_rt = true;
   return run_render(settings, outputs);

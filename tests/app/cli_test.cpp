@@ -155,6 +155,20 @@ TEST_F(Cli, HeatmapBoundIntoAMissingFolderOrOntoTheImageIsOneLineExitTwoAndNothi
   }
 }
 
+// The headless main job writes every output into out/, the error bound's heatmap among them.
+TEST_F(Cli, TheSnapshotWritesTheErrorBoundHeatmapBesideTheOthers) {
+  const CommandRun r = levrt_test::run_shell("cd " + levrt_test::shell_quote(dir_.string()) + " && " +
+                                             levrt_test::shell_quote(LEVRT_BINARY) + " snapshot");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {"building.png", "building_lights_tested.png", "building_nodes_visited.png",
+                        "building_error_bound.png", "building_stats.json"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "out" / f)) << f << "\n" << r.output;
+  }
+  std::ifstream in(dir_ / "out" / "building_stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  EXPECT_TRUE(stats.contains("error_bound_avg_pct") && stats.contains("pixel_error_avg_pct"));
+}
+
 // The stats report the certified bound without a reference: 0 for rt, which tests every light,
 // and above 0 for lev on the hall, where every point has lights below the tolerance.
 TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
