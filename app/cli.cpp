@@ -104,6 +104,7 @@ int run_snapshot() {
   outputs.image = "out/building.png";
   outputs.heatmap_lights = "out/building_lights_tested.png";
   outputs.heatmap_nodes = "out/building_nodes_visited.png";
+  outputs.heatmap_bound = "out/building_error_bound.png";
   outputs.stats = "out/building_stats.json";
   outputs.reference_rt = true;
   return run_render(settings, outputs);
@@ -127,7 +128,9 @@ int run_cli(int argc, char** argv) {
       render->add_option("--out", outputs.image, "image PNG (- for standard output)")->type_name("FILE.png"),
       render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")->type_name("FILE.png"),
       render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")->type_name("FILE.png"),
-      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json")};
+      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
+      render->add_option("--heatmap-bound", outputs.heatmap_bound, "certified error bound heatmap PNG (percent)")
+          ->type_name("FILE.png")};
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   const std::string reference_name = lev::method_info(lev::reference_method()).name;

@@ -11,6 +11,7 @@
 #include "app/interrupt.h"
 #include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
+#include "renderer/error_bound.h"
 #include "renderer/heatmap.h"
 #include "app/output_files.h"
 #include "renderer/pixel_error.h"
@@ -100,7 +101,8 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
   return {{"--out", o.image, ".png", "PNG"},
           {"--heatmap-lights", o.heatmap_lights, ".png", "PNG"},
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
-          {"--stats", o.stats, ".json", "JSON"}};
+          {"--stats", o.stats, ".json", "JSON"},
+          {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -128,9 +130,11 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
       progress_shown = true;
     }
   };
+  renderer::RenderSettings render_settings = render_settings_from(s);
+  render_settings.compute_error_bound = true;  // every render reports its certified bound
   renderer::RenderResult result;
-  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings_from(s), settings.spp,
-                                            result, cancel, on_pass_done);
+  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings, settings.spp, result,
+                                            cancel, on_pass_done);
   if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
   if (!done) throw Interrupted();
   return result;
@@ -162,6 +166,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.method_bytes = result.method_bytes;
   s.camera = loaded.scene.camera;
   s.directional_lights = loaded.scene.directional_lights.size();
+  s.error_bound = renderer::error_bound_stats(result.totals);
   if (reference) {
     const auto error =
         renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
@@ -206,22 +211,26 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmap.counter), *heatmap.range);
     if (!heatmap.path->empty()) app::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
   }
+  const std::vector<std::uint8_t> bound_rgb =
+      renderer::heatmap_rgb8(renderer::error_bound_pct_image(fb), stats.heatmap_bound_range);
+  if (!outputs.heatmap_bound.empty()) app::write_png_rgb8(outputs.heatmap_bound, fb.width, fb.height, bound_rgb);
   const nlohmann::ordered_json json = render_stats_json(stats);
   if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
   if (outputs.quiet) return 0;
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
-  std::FILE* summary = outputs.image == app::kStandardOutputName || outputs.stats == app::kStandardOutputName ||
-                               outputs.heatmap_lights == app::kStandardOutputName ||
-                               outputs.heatmap_nodes == app::kStandardOutputName
-                           ? stderr
-                           : stdout;
+  std::FILE* summary = stdout;
+  for (const OutputPath& output : render_output_paths(outputs)) {
+    if (output.path == app::kStandardOutputName) summary = stderr;
+  }
   std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",
                scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
                static_cast<unsigned long long>(loaded->scene.lights.light_count), lev::method_info(settings.method).name,
                settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
                json["nodes_visited_avg"].get<double>());
+  std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%", json["error_bound_avg_pct"].get<double>(),
+               json["error_bound_max_pct"].get<double>());
   if (outputs.reference_rt) {
     std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", json["pixel_error_avg_pct"].get<double>(),
                  json["pixel_error_max_pct"].get<double>());

@@ -55,6 +55,10 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["nodes_visited_avg"] = static_cast<double>(t.nodes_visited) / points;
   j["hierarchy_bytes"] = s.hierarchy_bytes;
   j["method_bytes"] = s.method_bytes;
+  if (s.error_bound) {
+    j["error_bound_avg_pct"] = s.error_bound->average_pct;
+    j["error_bound_max_pct"] = s.error_bound->max_pct;
+  }
   if (s.error) {
     j["pixel_error_avg_pct"] = s.error->average_pct;
     j["pixel_error_max_pct"] = s.error->max_pct;
@@ -72,6 +76,7 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
                  {"vertical_fov_deg", s.camera.vertical_fov_deg}};
   j["heatmap_lights_range"] = {s.heatmap_lights_range.min, s.heatmap_lights_range.max};
   j["heatmap_nodes_range"] = {s.heatmap_nodes_range.min, s.heatmap_nodes_range.max};
+  if (s.error_bound) j["heatmap_bound_range"] = {s.heatmap_bound_range.min, s.heatmap_bound_range.max};
   j["heatmap_scale"] = "log(1 + value per sample), viridis";
   return j;
 }

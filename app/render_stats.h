@@ -14,6 +14,7 @@
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/heatmap.h"
+#include "renderer/pixel_error.h"
 
 namespace app {
 
@@ -48,9 +49,13 @@ struct RenderStats {
   std::size_t hierarchy_bytes = 0;
   std::size_t method_bytes = 0;
   std::optional<RenderPixelError> error;  // against the rt reference
+  // The certified bound of that error, known without the reference (renderer/error_bound.h);
+  // absent when the render did not compute it.
+  std::optional<renderer::PixelErrorStats> error_bound;
   renderer::Camera camera;
   int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
   renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
+  renderer::HeatmapRange heatmap_bound_range;  // percent, the error scale
 };
 
 // The thread count a setting of 0 (all cores) stands for.

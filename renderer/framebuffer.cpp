@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/error_bound.h"
+
 namespace renderer {
 
 Framebuffer make_framebuffer(int width, int height) {
@@ -21,6 +23,7 @@ void clear_framebuffer(Framebuffer& f) {
   f.lights_tested.assign(n, 0);
   f.nodes_visited.assign(n, 0);
   f.shadow_rays.assign(n, 0);
+  f.error_bound_sum.assign(n, glm::vec3(0.0f));
 }
 
 std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& f) {
@@ -46,6 +49,24 @@ void add_pixel_totals(const Framebuffer& f, std::size_t i, FramebufferTotals& t)
     const auto per_point = static_cast<std::uint32_t>(f.lights_tested[i] / f.shading_points[i]);
     t.lights_tested_max = std::max(t.lights_tested_max, per_point);
   }
+  if (f.samples[i] > 0) {
+    const double bound_pct = pixel_error_bound_pct(f, i);
+    t.pixels_sampled += 1;
+    t.error_bound_pct_sum += bound_pct;
+    t.error_bound_pct_max = std::max(t.error_bound_pct_max, bound_pct);
+  }
+}
+
+void add_totals(const FramebufferTotals& other, FramebufferTotals& t) {
+  t.samples += other.samples;
+  t.shading_points += other.shading_points;
+  t.lights_tested += other.lights_tested;
+  t.nodes_visited += other.nodes_visited;
+  t.shadow_rays += other.shadow_rays;
+  t.lights_tested_max = std::max(t.lights_tested_max, other.lights_tested_max);
+  t.pixels_sampled += other.pixels_sampled;
+  t.error_bound_pct_sum += other.error_bound_pct_sum;
+  t.error_bound_pct_max = std::max(t.error_bound_pct_max, other.error_bound_pct_max);
 }
 
 FramebufferTotals sum_framebuffer(const Framebuffer& f) {

@@ -19,6 +19,9 @@ struct Framebuffer {
   std::vector<std::uint64_t> lights_tested;
   std::vector<std::uint64_t> nodes_visited;
   std::vector<std::uint64_t> shadow_rays;
+  // Per pixel, summed over samples: the certified bound of |radiance - rt's radiance| (RGB,
+  // error_bound.h); zero unless RenderSettings::compute_error_bound.
+  std::vector<glm::vec3> error_bound_sum;
 };
 
 Framebuffer make_framebuffer(int width, int height);
@@ -34,9 +37,16 @@ struct FramebufferTotals {
   std::uint64_t nodes_visited = 0;
   std::uint64_t shadow_rays = 0;
   std::uint32_t lights_tested_max = 0;  // per shading point, over pixels (pixel mean)
+  // The certified error bound (error_bound.h) of the pixels with a sample: how many they are,
+  // the sum and the largest of their bounds, in percent of 765.
+  std::uint64_t pixels_sampled = 0;
+  double error_bound_pct_sum = 0.0;
+  double error_bound_pct_max = 0.0;
 };
 // Adds pixel i's counters to totals (sum_framebuffer is this over every pixel).
 void add_pixel_totals(const Framebuffer& framebuffer, std::size_t i, FramebufferTotals& totals);
 FramebufferTotals sum_framebuffer(const Framebuffer& framebuffer);
+// Adds the totals of other pixels (a tile's) to totals.
+void add_totals(const FramebufferTotals& other, FramebufferTotals& totals);
 
 }  // namespace renderer

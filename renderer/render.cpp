@@ -72,7 +72,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
   const std::size_t logged_before = ray_log ? ray_log->size() : 0;
   scratch.cancel = cancel;
   const lev::LightSelector& selector = preview ? *state.preview_selector : *state.selector;
-  TraceContext context{state.scene, state.rays, selector, scratch, rs.max_depth, ray_log, cancel};
+  TraceContext context{state.scene, state.rays, selector, scratch, rs.max_depth, ray_log, cancel,
+                       rs.compute_error_bound};
   struct PixelSample {
     std::size_t pixel;
     glm::vec3 radiance;
@@ -118,6 +119,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
     fb.lights_tested[sample.pixel] += sample.counters.selection.lights_tested;
     fb.nodes_visited[sample.pixel] += sample.counters.selection.nodes_visited;
     fb.shadow_rays[sample.pixel] += sample.counters.selection.shadow_rays;
+    fb.error_bound_sum[sample.pixel] += sample.counters.error_bound;
   }
   return true;
 }

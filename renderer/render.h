@@ -37,6 +37,9 @@ struct RenderSettings {
   lev::Method method = lev::Method::lev;
   float tolerance = static_cast<float>(lev::kDefaultTolerance);
   std::uint64_t seed = 0;
+  // Fill Framebuffer::error_bound_sum (error_bound.h). Off by default: the renders whose cost is
+  // compared (the bench) skip the selectors' bound work; `levrt render` and the viewer ask for it.
+  bool compute_error_bound = false;
 };
 
 enum class TileStatus : std::uint8_t { waiting, rendering, done };

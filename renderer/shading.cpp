@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "renderer/direction.h"
+#include "renderer/error_bound.h"
 
 namespace renderer {
 namespace {
@@ -60,7 +61,8 @@ class SurfacePoint final : public lev::ShadingPoint {
   }
 
  private:
-  // Phong's diffuse and specular response (thesis eq. 6) to light arriving along unit l.
+  // Phong's diffuse and specular response (thesis eq. 6) to light arriving along unit l; at most
+  // largest_response(material) (error_bound.h), which the error bound relies on.
   glm::vec3 response(const glm::vec3& l, float cos_theta) const {
     glm::vec3 r = material_.kd * cos_theta * material_.colour;
     if (material_.ks > 0.0f) {
@@ -102,7 +104,14 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
 
   glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
   SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
-  radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+  if (context.compute_error_bound) {
+    // The direct term is weighed by path_weight in the pixel, so is what it may miss.
+    glm::vec3 culled_irradiance(0.0f);
+    radiance += context.selector.direct_radiance(point, context.scratch, counters.selection, &culled_irradiance);
+    counters.error_bound += path_weight * shading_error_bound(material, culled_irradiance);
+  } else {
+    radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+  }
   // Suns are outside every method's selection: all methods add them alike, after the rest.
   for (const DirectionalLight& sun : context.scene.directional_lights) {
     radiance += point.directional_radiance(sun, counters.selection);

@@ -18,6 +18,9 @@ namespace renderer {
 struct PathCounters {
   std::uint64_t shading_points = 0;
   lev::SelectionCounters selection;
+  // When TraceContext::compute_error_bound: an upper bound of |this radiance - rt's radiance|
+  // per channel (error_bound.h), summed over the path's shading points as the radiance is.
+  glm::vec3 error_bound{0.0f};
 };
 
 struct TraceContext {
@@ -29,6 +32,9 @@ struct TraceContext {
   std::vector<LoggedRay>* ray_log = nullptr;  // when set, every ray cast is appended (ray_log.h)
   // When set and raised, the trace stops casting (what it returns is then discarded by the caller).
   const std::atomic<bool>* cancel = nullptr;
+  // Asks the selector for its culled irradiance bound and carries it into PathCounters::error_bound
+  // (off: the selector skips that work).
+  bool compute_error_bound = false;
 };
 
 // Reflection and refraction stop where the path weight (the product of kr and kt along the path)
@@ -39,7 +45,8 @@ inline constexpr float kBrightestPixelValue = 1.0f;
 inline constexpr float kSmallestVisibleWeight = 0.5f / 255.0f / kBrightestPixelValue;
 
 // Radiance arriving along the ray; depth 0 is the primary ray, path_weight the factor the caller
-// scales the result by (1 for a primary ray).
+// scales the result by (1 for a primary ray). Adds the work to counters and, when asked, the error
+// bound of path_weight times the result (the pixel's units, as the recursion shares counters).
 glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathCounters& counters,
                          float path_weight = 1.0f);
 

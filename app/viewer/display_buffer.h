@@ -37,6 +37,8 @@ struct TileUpdate {
   std::vector<float> lights_tested;  // per sample
   std::vector<float> nodes_visited;  // per sample
   TileTotals totals;
+  // The certified error bound per pixel, % of 765 (renderer/error_bound.h).
+  std::vector<float> error_bound_pct;
 };
 
 // 8-bit colour of a mean radiance exactly as renderer::framebuffer_rgb8 computes it, so that

@@ -27,6 +27,7 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
   image.samples.assign(n, 0);
   image.lights_tested.assign(n, 0.0f);
   image.nodes_visited.assign(n, 0.0f);
+  image.error_bound_pct.assign(n, 0.0f);
   image.tile_totals.clear();
   image.tile_seen.clear();
   image.tiles_seen = 0;
@@ -58,6 +59,7 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       image.samples[i] = u.samples[k];
       image.lights_tested[i] = u.lights_tested[k];
       image.nodes_visited[i] = u.nodes_visited[k];
+      image.error_bound_pct[i] = u.error_bound_pct[k];
       // Pixels skipped by a subsample keep the backdrop.
       if (u.samples[k] == 0) continue;
       for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
@@ -77,6 +79,7 @@ void start_preview(PreviewImage& preview, std::uint64_t generation, int width, i
   preview.rgb.assign(3 * n, 0);
   preview.lights_tested.assign(n, 0.0f);
   preview.nodes_visited.assign(n, 0.0f);
+  preview.error_bound_pct.assign(n, 0.0f);
 }
 
 // Fills the block of each sample, where no finer level has been received.
@@ -97,6 +100,7 @@ void apply_preview_update(PreviewImage& preview, const TileUpdate& u) {
           for (int c = 0; c < 3; ++c) preview.rgb[3 * i + c] = u.rgb[3 * k + c];
           preview.lights_tested[i] = u.lights_tested[k];
           preview.nodes_visited[i] = u.nodes_visited[k];
+          preview.error_bound_pct[i] = u.error_bound_pct[k];
         }
       }
     }
@@ -156,14 +160,7 @@ bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
 
 TileTotals sum_tile_totals(const DisplayImage& image) {
   TileTotals sum;
-  for (const TileTotals& t : image.tile_totals) {
-    sum.samples += t.samples;
-    sum.shading_points += t.shading_points;
-    sum.lights_tested += t.lights_tested;
-    sum.nodes_visited += t.nodes_visited;
-    sum.shadow_rays += t.shadow_rays;
-    sum.lights_tested_max = std::max(sum.lights_tested_max, t.lights_tested_max);
-  }
+  for (const TileTotals& t : image.tile_totals) renderer::add_totals(t, sum);
   return sum;
 }
 
@@ -193,6 +190,19 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
 }
 
 namespace {
+
+// The per-sample field a heatmap view shows at pixel i (of a DisplayImage or a PreviewImage).
+template <typename Image>
+double sample_value(const Image& image, ViewMode mode, std::size_t i) {
+  switch (mode) {
+    case ViewMode::lights:
+      return image.lights_tested[i];
+    case ViewMode::nodes:
+      return image.nodes_visited[i];
+    default:
+      return image.error_bound_pct[i];
+  }
+}
 
 std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewImage* preview,
                                        const ErrorImage& error, ViewMode mode,
@@ -227,11 +237,10 @@ std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewI
       if (known[i]) values[i] = error.pct[i];
     } else if (shows_preview(image, preview, i)) {
       known[i] = 1;
-      values[i] = mode == ViewMode::lights ? preview->lights_tested[i] : preview->nodes_visited[i];
+      values[i] = sample_value(*preview, mode, i);
     } else {
       known[i] = image.samples[i] > 0;
-      if (known[i])
-        values[i] = mode == ViewMode::lights ? image.lights_tested[i] : image.nodes_visited[i];
+      if (known[i]) values[i] = sample_value(image, mode, i);
     }
   }
   double lo = std::numeric_limits<double>::max(), hi = 0.0;
@@ -283,6 +292,7 @@ PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, 
   p.lights_tested = image.lights_tested[i];
   p.nodes_visited = image.nodes_visited[i];
   if (i < error.pct.size() && error.pct[i] >= 0.0f) p.error_pct = error.pct[i];
+  p.error_bound_pct = image.error_bound_pct[i];
   return p;
 }
 

@@ -32,6 +32,9 @@ struct DisplayImage {
   int pass = 0;                // the pass the latest tile belongs to
   int tiles_done_in_pass = 0;  // tiles of that pass received so far
   std::uint64_t version = 0;   // bumped whenever anything above changes
+  // The certified bound of the error against rt per pixel, % of 765, of the mean colour (every
+  // pass so far, as `levrt render` reports it).
+  std::vector<float> error_bound_pct;
 };
 
 // The coarse preview of the render in `generation`: per image pixel, the value of the preview
@@ -44,6 +47,7 @@ struct PreviewImage {
   std::vector<std::uint8_t> rgb;
   std::vector<float> lights_tested;  // per sample
   std::vector<float> nodes_visited;
+  std::vector<float> error_bound_pct;
 };
 
 // Forgets everything (no render to show).
@@ -95,6 +99,7 @@ struct PixelInfo {
   float lights_tested = 0.0f;
   float nodes_visited = 0.0f;
   std::optional<float> error_pct;
+  float error_bound_pct = 0.0f;
 };
 PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y);
 

@@ -62,6 +62,7 @@ void draw_hover(const ViewerState& state, int x, int y, const ImVec2& tooltip_at
   } else {
     ImGui::TextDisabled("error          needs the rt reference");
   }
+  ImGui::Text("error bound    %.3f%% (certified)", p.error_bound_pct);
   ImGui::Text("samples        %u", p.samples);
   ImGui::EndTooltip();
 }

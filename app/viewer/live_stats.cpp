@@ -1,5 +1,7 @@
 #include "app/viewer/live_stats.h"
 
+#include "renderer/error_bound.h"
+
 namespace app::viewer {
 
 LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
@@ -13,6 +15,7 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
     s.shading_points = t.shading_points;
     s.shadow_rays = t.shadow_rays;
     s.lights_tested_max = t.lights_tested_max;
+    if (t.pixels_sampled > 0) s.error_bound = renderer::error_bound_stats(t);
     if (t.shading_points > 0) {
       s.lights_tested_avg =
           static_cast<double>(t.lights_tested) / static_cast<double>(t.shading_points);
@@ -56,6 +59,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
                                              : s.totals.samples;
   r.hierarchy_bytes = status.hierarchy_bytes;
   r.method_bytes = status.method_bytes;
+  r.error_bound = s.error_bound;
   if (s.error_avg_pct) {
     r.error = RenderPixelError{*s.error_avg_pct, *s.error_max_pct, s.error_pixels,
                                "pass 0 against the rt reference, pixels both have rendered",

@@ -11,6 +11,7 @@
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
 #include "renderer/camera.h"
+#include "renderer/pixel_error.h"
 
 namespace app::viewer {
 
@@ -28,6 +29,8 @@ struct LiveStats {
   std::optional<double> error_avg_pct;
   std::optional<double> error_max_pct;
   std::size_t error_pixels = 0;
+  // The certified bound of that error over the pixels received, known without the reference.
+  std::optional<renderer::PixelErrorStats> error_bound;
 };
 
 // `error` is used when it has compared pixels.

@@ -213,7 +213,8 @@ struct Worker {
                                s.light_scale != light_scale || s.camera != camera_index;
     if (scene_changed) load(s, serial);
     renderer::Scene& sc = loaded->scene;
-    const renderer::RenderSettings rs = render_settings_from(s);
+    renderer::RenderSettings rs = render_settings_from(s);
+    rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it
     const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth,
                       rs.pixel_stride};
     const bool view_changed = !view || !same_view(key, *view);

@@ -13,6 +13,9 @@ const std::vector<ViewModeInfo>& view_mode_table() {
        "this method does not walk the light hierarchy"},
       {ViewMode::error, "error", "Error vs rt", "error per pixel, % of 765 (pass 0 against rt)",
        "the image equals rt"},
+      {ViewMode::bound, "bound", "Error bound",
+       "certified bound of the error vs rt per pixel, % of 765 (no reference needed)",
+       "no light was left out: the image is rt's, up to 8-bit rounding"},
   };
   return table;
 }

@@ -1,5 +1,6 @@
-// The four pictures the viewer can show of one render: the image itself and three heatmaps
-// (lights tested, nodes visited, and the error against the `rt` reference of the same view).
+// The pictures the viewer can show of one render: the image itself and four heatmaps (lights
+// tested, nodes visited, the error against the `rt` reference of the same view, and the
+// certified bound of that error, known without the reference: renderer/error_bound.h).
 // One table names them for the panel, for --set view=... and for snapshot file names.
 #pragma once
 
@@ -10,7 +11,7 @@
 
 namespace app::viewer {
 
-enum class ViewMode { image, lights, nodes, error };
+enum class ViewMode { image, lights, nodes, error, bound };
 
 struct ViewModeInfo {
   ViewMode mode;

@@ -2,11 +2,14 @@
 
 #include <array>
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.h"
 
@@ -84,6 +87,8 @@ TEST_F(Cli, BadOutputPathsExitTwoAndWriteNothing) {
       {"--heatmap-nodes", ""},
       {"--out", path("same.png"), "--heatmap-lights", path("same.png")},
       {"--out", path("x.png"), "--stats", path("./x.png")},
+      {"--heatmap-bound", path("missing/b.png")},
+      {"--out", path("b.png"), "--heatmap-bound", path("b.png")},
   };
   for (const auto& c : cases) {
     std::vector<std::string> args = {"render", "--width", "8", "--height", "8"};
@@ -111,9 +116,10 @@ TEST_F(Cli, RenderWritesEveryOutputWithTheDocumentedStats) {
   const CommandRun r = run_levrt({"render", "--scene", "building", "--lights", "64", "--method", "lev",
                            "--tolerance", "0.01", "--width", "40", "--height", "30", "--spp", "2",
                            "--out", path("i.png"), "--heatmap-lights", path("l.png"), "--heatmap-nodes",
-                           path("n.png"), "--stats", path("s.json"), "--reference", "rt"});
+                           path("n.png"), "--heatmap-bound", path("b.png"), "--stats", path("s.json"),
+                           "--reference", "rt"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* f : {"i.png", "l.png", "n.png", "s.json"}) EXPECT_TRUE(fs::exists(path(f))) << f;
+  for (const char* f : {"i.png", "l.png", "n.png", "b.png", "s.json"}) EXPECT_TRUE(fs::exists(path(f))) << f;
   std::FILE* f = std::fopen(path("s.json").c_str(), "r");
   ASSERT_NE(f, nullptr);
   std::string json;
@@ -124,9 +130,62 @@ TEST_F(Cli, RenderWritesEveryOutputWithTheDocumentedStats) {
                           "\"width\": 40", "\"height\": 30", "\"spp\": 2", "\"threads\"", "\"time_build_s\"",
                           "\"time_render_s\"", "\"shading_points\"", "\"shadow_rays\"", "\"lights_tested_avg\"",
                           "\"nodes_visited_avg\"", "\"hierarchy_bytes\"", "\"pixel_error_avg_pct\"",
-                          "\"pixel_error_max_pct\""}) {
+                          "\"pixel_error_max_pct\"", "\"error_bound_avg_pct\"", "\"error_bound_max_pct\""}) {
     EXPECT_NE(json.find(key), std::string::npos) << key;
   }
+}
+
+// --heatmap-bound takes the same checks as every output: a missing folder, or the file --out
+// writes, is one line naming the flag, exit code 2, and nothing written.
+TEST_F(Cli, HeatmapBoundIntoAMissingFolderOrOntoTheImageIsOneLineExitTwoAndNothingWritten) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--out", path("a.png"), "--heatmap-bound", path("missing/b.png")},
+      {"--out", path("a.png"), "--heatmap-bound", path("a.png")},
+      {"--out", path("a.png"), "--heatmap-bound", path("./a.png")},
+      {"--heatmap-bound", path("b.json")},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {"render", "--width", "8", "--height", "8", "--stats", path("s.json")};
+    args.insert(args.end(), c.begin(), c.end());
+    const CommandRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--heatmap-bound"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_TRUE(folder_is_empty()) << r.output;
+  }
+}
+
+// The headless main job writes every output into out/, the error bound's heatmap among them.
+TEST_F(Cli, TheSnapshotWritesTheErrorBoundHeatmapBesideTheOthers) {
+  const CommandRun r = levrt_test::run_shell("cd " + levrt_test::shell_quote(dir_.string()) + " && " +
+                                             levrt_test::shell_quote(LEVRT_BINARY) + " snapshot");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* f : {"building.png", "building_lights_tested.png", "building_nodes_visited.png",
+                        "building_error_bound.png", "building_stats.json"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "out" / f)) << f << "\n" << r.output;
+  }
+  std::ifstream in(dir_ / "out" / "building_stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  EXPECT_TRUE(stats.contains("error_bound_avg_pct") && stats.contains("pixel_error_avg_pct"));
+}
+
+// The stats report the certified bound without a reference: 0 for rt, which tests every light,
+// and above 0 for lev on the hall, where every point has lights below the tolerance.
+TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
+  const auto bound = [&](const std::string& method) {
+    const CommandRun r = run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method, "--width", "16",
+                                    "--height", "12", "--stats", path(method + ".json"), "--heatmap-bound",
+                                    path(method + ".png"), "--quiet"});
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(path(method + ".json"));
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    EXPECT_FALSE(stats.contains("pixel_error_avg_pct"));
+    EXPECT_TRUE(fs::exists(path(method + ".png")));
+    EXPECT_LE(stats.at("error_bound_avg_pct").get<double>(), stats.at("error_bound_max_pct").get<double>());
+    return stats.at("error_bound_max_pct").get<double>();
+  };
+  EXPECT_EQ(bound("rt"), 0.0);
+  EXPECT_GT(bound("lev"), 0.0);
 }
 
 }  // namespace

@@ -298,6 +298,30 @@ TEST(DisplayImage, ErrorAgainstTheReferenceUsesPassZero) {
   EXPECT_TRUE(pixel_info(other, e, 3, 3).error_pct.has_value());
 }
 
+// The error bound travels with the tiles: the view, the hover read-out and the totals show the
+// framebuffer's per-pixel bound (renderer/error_bound.h), without any reference.
+TEST(DisplayImage, TheErrorBoundViewShowsEachPixelsBoundWithoutAReference) {
+  renderer::Framebuffer f = test_framebuffer(16, 8, 0.5f, 2);
+  for (std::size_t i = 0; i < f.samples.size(); ++i) {
+    // Per sample 0.01 * (i % 4) in red: the pixel's bound is that / 3 * 100 percent.
+    f.error_bound_sum[i] = glm::vec3(0.02f * static_cast<float>(i % 4), 0.0f, 0.0f);
+  }
+  DisplayImage image;
+  apply_tile_updates(image, all_tiles(f, 3, 1, 8));
+  EXPECT_NEAR(pixel_info(image, ErrorImage{}, 3, 0).error_bound_pct, 100.0 * 0.03 / 3.0, 1e-4);
+  EXPECT_FALSE(pixel_info(image, ErrorImage{}, 3, 0).error_pct.has_value());
+  renderer::HeatmapRange range;
+  const std::vector<std::uint8_t> bound = view_rgb8(image, ErrorImage{}, ViewMode::bound, range);
+  EXPECT_DOUBLE_EQ(range.min, 0.0);
+  EXPECT_NEAR(range.max, 1.0, 1e-5);
+  EXPECT_NE(bound, view_rgb8(image, ErrorImage{}, ViewMode::nodes, range));
+  const TileTotals t = sum_tile_totals(image);
+  EXPECT_EQ(t.pixels_sampled, 128u);
+  EXPECT_NEAR(t.error_bound_pct_max, 1.0, 1e-5);
+  EXPECT_NEAR(t.error_bound_pct_sum / 128.0, 0.5, 1e-5);
+  EXPECT_EQ(parse_view_mode("bound"), ViewMode::bound);
+}
+
 // Preview tiles of a framebuffer sampled every `step` pixels (ceil(w/step) x ceil(h/step)).
 std::vector<TileUpdate> preview_tiles(const renderer::Framebuffer& preview, int step, int width,
                                       int height, std::uint64_t generation, int tile_size) {

@@ -269,6 +269,51 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   }
 }
 
+// The "Error bound" view needs no reference: it shows the certified bound per pixel, its hover
+// read-out and stats say the same as `levrt render` of the same settings, and no rt is rendered.
+TEST_F(ViewerWindow, TheErrorBoundViewShowsTheBoundWithoutTheReference) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  const std::vector<std::string> settings = {"--scene", "hall", "--lights", "256", "--width",
+                                             "128",     "--height", "96", "--spp",    "1"};
+  std::vector<std::string> view_args = settings;
+  // clang-format off
+  for (const std::string& a : std::vector<std::string>{
+           "--window", "1024x640", "--frames", "8",
+           "--set", "await=idle@0",
+           "--set", "screenshot=" + path("image.png") + "@1",
+           "--set", "view=bound@2",
+           "--set", "await=idle@3",
+           "--set", "hover=64,40@4",
+           "--set", "screenshot=" + path("bound.png") + "@5",
+           "--set", "snapshot=" + path("snap") + "@6"})
+    view_args.push_back(a);
+  // clang-format on
+  const CommandRun view = run_viewer(view_args);
+  ASSERT_EQ(view.exit_code, 0) << view.output;
+  const Png image = read_png(path("image.png"));
+  const Png bound = read_png(path("bound.png"));
+  ASSERT_TRUE(image.ok() && bound.ok()) << view.output;
+  EXPECT_GT(picture_differences(image, bound), 1000);
+
+  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
+  for (const std::string& a : settings) render += " " + shell_quote(a);
+  render += " --stats " + shell_quote(path("render_stats.json"));
+  const CommandRun headless = run_shell(render);
+  ASSERT_EQ(headless.exit_code, 0) << headless.output;
+  const fs::path snap = dir_ / "snap";
+  EXPECT_TRUE(fs::exists(snap / "view_hall_256_lev_0.01_bound.png")) << view.output;
+  const nlohmann::json a = read_json(snap / "view_hall_256_lev_0.01_stats.json");
+  const nlohmann::json b = read_json(path("render_stats.json"));
+  ASSERT_FALSE(a.is_discarded() || b.is_discarded()) << view.output;
+  EXPECT_FALSE(a.contains("pixel_error_avg_pct"));  // the view started no reference
+  EXPECT_GT(a["error_bound_max_pct"].get<double>(), 0.0);
+  // The viewer keeps each pixel's bound as a float: the same numbers to float precision.
+  for (const char* key : {"error_bound_avg_pct", "error_bound_max_pct"}) {
+    EXPECT_NEAR(a[key].get<double>(), b[key].get<double>(), 1e-5 * b[key].get<double>()) << key;
+  }
+}
+
 TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
   if (!have_xvfb())
     GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";

@@ -1,0 +1,47 @@
+// The certified error bound (DESIGN.md "Error control"): how far a pixel of any method can be
+// from the `rt` pixel of the same view. Every selector reports, per shading point, an upper bound
+// of the unshadowed irradiance of the lights it neither shadow-tested nor accounted for
+// (LightSelector::direct_radiance); the shading recursion (shading.cpp) turns it into radiance
+// through the material's largest Phong response and weighs it by the path weight (the product of
+// kr and kt) exactly as the radiance is weighed, so a sample's bound is at least
+// |sample - rt sample| per channel. Ambient, suns and the recursion's cut-off are the same for
+// every method, so they add nothing. A pixel's bound is the mean over its samples, put on the
+// DESIGN.md error scale like pixel_error.h's error: a clamped 8-bit channel cannot differ by more
+// than 255, and rounding to 8 bits adds at most one step per channel on top of the bound.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/framebuffer.h"
+#include "renderer/material.h"
+#include "renderer/pixel_error.h"
+
+namespace renderer {
+
+// The largest Phong response (thesis eq. 6 without the irradiance) of the material to light from
+// any direction toward any viewer: kd * colour + ks, since cos(theta) <= 1 and cos(alpha)^n <= 1
+// (shading.cpp's response()). Absolute values, so a negative coefficient cannot shrink it.
+glm::vec3 largest_response(const Material& material);
+
+// Upper bound of the radiance error at one shading point whose selector left a culled
+// irradiance bound (RGB): the bound times the largest response. A channel the material does not
+// reflect at all bounds nothing, even when the irradiance bound is infinite (never inf * 0).
+glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound);
+
+// A pixel's bound on the DESIGN.md error scale: sum over channels of min(bound_c, 1) * 255, as a
+// percentage of 765. mean_bound is the pixel's bound per sample (Framebuffer::error_bound_sum
+// over its samples).
+double error_bound_pct(const glm::vec3& mean_bound);
+// Pixel i's bound in percent; 0 for a pixel without samples.
+double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i);
+// Every pixel's bound in percent, in pixel order (0 where no sample was taken): the heatmap's.
+std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer);
+// Average and maximum bound over the pixels with at least one sample (the totals of a whole
+// framebuffer or of the tiles received): the pixels rendered_rgb8 keeps, so the bound and the
+// pixel error describe one set of pixels.
+PixelErrorStats error_bound_stats(const FramebufferTotals& totals);
+
+}  // namespace renderer

@@ -1,0 +1,226 @@
+// The certified error bound in whole renders (renderer/error_bound.h): for every built-in scene
+// at two light counts and three tolerances, and for random scene files, every method's pixel is
+// within its bound of the `rt` pixel (plus one 8-bit step per channel of rounding); `rt`'s bound
+// is 0 everywhere; `lev_bounded`'s bound at a shading point is at most the tolerance times the
+// material's largest response, carried along the path like the radiance.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lev/methods.h"
+#include "renderer/camera.h"
+#include "renderer/error_bound.h"
+#include "renderer/pixel_error.h"
+#include "renderer/ray_scene.h"
+#include "renderer/render.h"
+#include "renderer/shading.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_instantiation.h"
+#include "scenes/scene_models.h"
+#include "tests/support/error_bound_support.h"
+
+namespace {
+
+constexpr int kWidth = 32;
+constexpr int kHeight = 24;
+// One 8-bit step per channel, on the error scale (pixel_error.h): the rounding of both images.
+constexpr double kRoundingPct = 100.0 * 3.0 / 765.0;
+
+renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
+                             lev::Method method, float tolerance, bool compute_error_bound = true) {
+  renderer::RenderSettings rs;
+  rs.width = kWidth;
+  rs.height = kHeight;
+  rs.method = method;
+  rs.tolerance = tolerance;
+  rs.tile_size = 8;
+  rs.compute_error_bound = compute_error_bound;
+  auto state = renderer::make_render_state(scene, rays, rs);
+  // Two passes: the second is jittered, so the bound is a mean over samples as the image is.
+  for (int pass = 0; pass < 2; ++pass) EXPECT_TRUE(renderer::render_pass(*state));
+  return renderer::render_framebuffer(*state);
+}
+
+// Every pixel of every non-reference method within its bound of rt's; rt's bound is exactly 0.
+// Returns the largest pixel error seen (to show the check was not vacuous).
+double expect_bound_holds(const renderer::Scene& scene, const std::vector<float>& tolerances,
+                          const std::string& label) {
+  const renderer::RayScene rays(scene.geometry);
+  const renderer::Framebuffer rt = render(scene, rays, lev::reference_method(), 0.0f);
+  for (const glm::vec3& b : rt.error_bound_sum) EXPECT_EQ(b, glm::vec3(0.0f)) << label;
+  const std::vector<std::uint8_t> rt_rgb = renderer::framebuffer_rgb8(rt);
+  double largest_error = 0.0;
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    if (method.is_reference) continue;
+    for (float tolerance : tolerances) {
+      const renderer::Framebuffer fb = render(scene, rays, method.id, tolerance);
+      const std::vector<double> error =
+          renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), rt_rgb);
+      int violations = 0;
+      for (std::size_t i = 0; i < error.size(); ++i) {
+        const double bound = renderer::pixel_error_bound_pct(fb, i);
+        largest_error = std::max(largest_error, error[i]);
+        if (error[i] > bound + kRoundingPct + 1e-9 && violations++ < 3) {
+          ADD_FAILURE() << label << " " << method.name << " tolerance " << tolerance << " pixel "
+                        << i << ": error " << error[i] << "% > bound " << bound << "%";
+        }
+      }
+      EXPECT_EQ(violations, 0) << label << " " << method.name << " tolerance " << tolerance;
+    }
+  }
+  return largest_error;
+}
+
+const std::vector<float> kTolerances = {0.1f, 0.01f, 0.001f};
+
+TEST(ErrorBoundRender, EveryModelSceneIsWithinItsBoundAtTwoLightCountsAndThreeTolerances) {
+  for (const scenes::SceneModel& model : scenes::scene_models()) {
+    // The two smallest levels keep rt cheap; both have lights that every method culls.
+    for (int level : {model.min_level, model.min_level + 1}) {
+      const renderer::Scene scene = model.build(level);
+      const double largest_error = expect_bound_holds(
+          scene, kTolerances, std::string(model.name) + " level " + std::to_string(level));
+      // The check met real errors, beyond the rounding it allows.
+      EXPECT_GT(largest_error, kRoundingPct) << model.name << " level " << level;
+    }
+  }
+}
+
+// A random scene file: a floor, mirror, glass and matte spheres and boxes, point lights and spots
+// of every cone and dropoff placed in masters instanced at random scales; written as a scene file
+// and read back, as `levrt render --scene FILE.json` would.
+renderer::Scene random_scene_file(std::uint64_t seed) {
+  std::mt19937_64 engine(seed);
+  const auto uniform = [&](float lo, float hi) {
+    return std::uniform_real_distribution<float>(lo, hi)(engine);
+  };
+  scenes::SceneDescription d;
+  d.name = "random " + std::to_string(seed);
+  d.camera.position = {0.0f, -14.0f, 7.0f};
+  d.camera.target = {0.0f, 0.0f, 1.0f};
+  renderer::Material matte;
+  renderer::Material shiny;
+  shiny.ks = 0.6f;
+  shiny.shininess = 40.0f;
+  shiny.colour = {0.9f, 0.5f, 0.2f};
+  const std::uint32_t materials[] = {scenes::add_material(d, "matte", matte),
+                                     scenes::add_material(d, "shiny", shiny),
+                                     scenes::add_material(d, "mirror", levrt_test::pure_mirror()),
+                                     scenes::add_material(d, "glass", levrt_test::clear_glass())};
+  std::vector<scenes::SceneNode> lamp;
+  for (int i = 0; i < 6; ++i) {
+    const glm::vec3 offset(uniform(-1.5f, 1.5f), uniform(-1.5f, 1.5f), uniform(-0.3f, 0.3f));
+    const glm::vec3 intensity =
+        glm::vec3(uniform(0.05f, 1.0f), uniform(0.05f, 1.0f), uniform(0.05f, 1.0f)) *
+        std::pow(10.0f, uniform(-1.0f, 0.5f));
+    if (i % 2 == 0) {
+      lamp.push_back(scenes::translate_node(offset, scenes::point_light_node(intensity)));
+    } else {
+      static const float kCones[] = {5.0f, 45.0f, 90.0f, 180.0f};
+      static const float kDropoffs[] = {0.0f, 1.0f, 20.0f};
+      scenes::Affine tilt;
+      tilt.translate = offset;
+      tilt.rotate_axis = {uniform(-1, 1), uniform(-1, 1), 0.1f};
+      tilt.rotate_degrees = uniform(0.0f, 60.0f);
+      lamp.push_back(scenes::affine_node(
+          tilt, scenes::spot_light_node(intensity, kCones[engine() % 4], kDropoffs[engine() % 3])));
+    }
+  }
+  const std::uint32_t lamp_master =
+      scenes::add_master(d, "lamp", scenes::union_node(std::move(lamp)));
+  std::vector<scenes::SceneNode> root;
+  root.push_back(scenes::quad_node(materials[0], {-12, -12, 0}, {24, 0, 0}, {0, 24, 0}));
+  for (int i = 0; i < 6; ++i) {
+    const std::uint32_t material = materials[engine() % 4];
+    const glm::vec3 at(uniform(-5, 5), uniform(-5, 5), 0.0f);
+    const float size = uniform(0.5f, 1.5f);
+    if (i % 2 == 0) {
+      root.push_back(scenes::sphere_node(material, at + glm::vec3(0, 0, size), size));
+    } else {
+      root.push_back(scenes::box_node(material, at - glm::vec3(size, size, 0),
+                                      at + glm::vec3(size, size, 2 * size)));
+    }
+  }
+  for (int i = 0; i < 8; ++i) {
+    scenes::Affine place;
+    place.translate = {uniform(-8, 8), uniform(-8, 8), uniform(3, 6)};
+    place.scale = std::pow(2.0f, uniform(-1.0f, 1.0f));
+    root.push_back(scenes::affine_node(place, scenes::instance_node(lamp_master)));
+  }
+  d.root = scenes::union_node(std::move(root));
+  const std::string text = scenes::scene_file_json(d);
+  return scenes::instantiate_scene(scenes::parse_scene_json(text, d.name + ".json"));
+}
+
+TEST(ErrorBoundRender, RandomSceneFilesAreWithinTheirBound) {
+  double largest_error = 0.0;
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    const renderer::Scene scene = random_scene_file(seed);
+    largest_error = std::max(largest_error, expect_bound_holds(scene, kTolerances, scene.name));
+  }
+  EXPECT_GT(largest_error, kRoundingPct);
+}
+
+TEST(ErrorBoundRender, NothingIsComputedUnlessAsked) {
+  const renderer::Scene scene = scenes::find_scene_model("hall")->build(3);
+  const renderer::RayScene rays(scene.geometry);
+  const renderer::Framebuffer without = render(scene, rays, lev::Method::lev, 0.01f, false);
+  const renderer::Framebuffer with = render(scene, rays, lev::Method::lev, 0.01f, true);
+  EXPECT_EQ(without.radiance_sum, with.radiance_sum);  // the bound never changes the image
+  for (const glm::vec3& b : without.error_bound_sum) EXPECT_EQ(b, glm::vec3(0.0f));
+  EXPECT_GT(renderer::error_bound_stats(renderer::sum_framebuffer(with)).max_pct, 0.0);
+}
+
+// The error bound of a pixel-centre trace with `selector`.
+glm::vec3 traced_bound(const renderer::Scene& scene, const renderer::RayScene& rays,
+                       const lev::LightSelector& selector, int x, int y) {
+  lev::SelectorScratch scratch;
+  renderer::TraceContext context{scene, rays, selector, scratch};
+  context.compute_error_bound = true;
+  renderer::PathCounters counters;
+  const renderer::Ray ray = renderer::primary_ray(
+      scene.camera, kWidth, kHeight, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+  renderer::trace_radiance(context, ray, 0, counters);
+  return counters.error_bound;
+}
+
+// lev_bounded culls at a point only while the culled bound's brightest channel stays within the
+// tolerance, so per channel its bound is at most tolerance x the unit selector's; lev's is not.
+TEST(ErrorBoundRender, LevBoundedStaysWithinToleranceTimesTheMaterialResponse) {
+  const levrt_test::UnitCulledSelector unit;
+  for (const char* name : {"hall", "building"}) {
+    const renderer::Scene scene = scenes::find_scene_model(name)->build(4);
+    const renderer::RayScene rays(scene.geometry);
+    for (float tolerance : {0.1f, 0.01f}) {
+      const auto bounded = lev::make_selector(lev::Method::lev_bounded, scene.lights, tolerance);
+      const auto plain = lev::make_selector(lev::Method::lev, scene.lights, tolerance);
+      float bounded_largest = 0.0f, plain_excess = 0.0f;
+      for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+          const glm::vec3 limit = tolerance * traced_bound(scene, rays, unit, x, y);
+          const glm::vec3 b = traced_bound(scene, rays, *bounded, x, y);
+          const glm::vec3 p = traced_bound(scene, rays, *plain, x, y);
+          for (int c = 0; c < 3; ++c) {
+            // Room for the float rounding of the path weights and sums.
+            EXPECT_LE(b[c], limit[c] * 1.0001f + 1e-12f)
+                << name << " " << tolerance << " pixel " << x << "," << y;
+            bounded_largest = std::max(bounded_largest, b[c]);
+            plain_excess = std::max(plain_excess, p[c] - limit[c]);
+          }
+        }
+      }
+      EXPECT_GT(bounded_largest, 0.0f) << name << " " << tolerance;  // it culls something
+      if (std::string(name) == "hall") {
+        EXPECT_GT(plain_excess, 0.0f) << tolerance;  // the check can fail
+      }
+    }
+  }
+}
+
+}  // namespace
