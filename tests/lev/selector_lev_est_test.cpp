@@ -15,10 +15,12 @@
 #include "lev/methods.h"
 #include "lev/selector_lev_est.h"
 #include "lev/selector_rt.h"
+#include "tests/lev/open_point.h"
 #include "tests/lev/random_light_scenes.h"
 
 namespace {
 
+using lev_test::OpenPoint;
 using lev_test::Random;
 
 // A random instanced tree, and for odd seeds one more master whose lights sit right below their
@@ -87,20 +89,6 @@ TEST(LevEst, ClustersAccountForEveryCulledLightAndTheBoundHolds) {
   // Subtrees were culled whole into clusters of several lights at many points.
   EXPECT_GT(clustered_points, 1000u);
 }
-
-// A surface that faces every light, reflects irradiance unchanged and is never shadowed.
-class OpenPoint final : public lev::ShadingPoint {
- public:
-  explicit OpenPoint(const glm::vec3& x) : x_(x) {}
-  glm::vec3 position() const override { return x_; }
-  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
-    return lev::irradiance(light, x_);
-  }
-  bool visible(const lev::Light&) override { return true; }
-
- private:
-  glm::vec3 x_;
-};
 
 TEST(LevEst, SelectorBoundHoldsAndToleranceZeroIsRt) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {

@@ -10,22 +10,14 @@
 #include "scenes/building.h"
 #include "scenes/hall.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
                              lev::Method method, float tolerance, int threads, int width = 64,
                              int height = 48) {
-  renderer::RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.method = method;
-  rs.tolerance = tolerance;
-  rs.threads = threads;
-  rs.tile_size = 8;
-  auto state = renderer::make_render_state(scene, rays, rs);
-  EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, method, tolerance, threads, 1, width, height);
 }
 
 renderer::PixelErrorStats error_against(const renderer::Framebuffer& image,
