@@ -67,7 +67,7 @@ std::vector<MethodInfo>& table_rows() {
        }},
       {Method::lev_est,
        "lev_est",
-       "LEV + estimate (clusters)",
+       "LEV estimated (clusters)",
        "LEV, plus an estimate of what it culled: the culled subtrees cut into clusters, each a "
        "representative light with the cluster's intensity and one shadow ray (Lightcuts)",
        true,
