@@ -145,23 +145,34 @@ Light representative_light(const LightHierarchy& h, std::uint32_t node, const Wa
     return transform_light(h.lights[top.payload], world_from_local);
   }
   const LightAggregate& aggregate = kept_aggregate(h, node);  // in the frame just composed
-  const Similarity cluster_from_local = world_from_local;
+  const Similarity& cluster_from_local = world_from_local;
+  // Below, only the first light's parameters are wanted: its frame is composed in full only
+  // when its own direction is (the cone of axes is too wide to aim along); else its scale does.
+  const bool aim_along_cone = aggregate.cos_axis_spread > 0.0f;
+  Similarity light_from_local = cluster_from_local;
+  float scale = cluster_from_local.scale;
   for (;;) {
     const HierarchyNode& n = h.nodes[node];
     switch (n.kind) {
       case NodeKind::point_light:
       case NodeKind::spot_light: {
-        Light representative = transform_light(h.lights[n.payload], world_from_local);
+        Light representative = h.lights[n.payload];
+        if (aim_along_cone) {
+          representative.range *= scale;
+          if (representative.kind == LightKind::spot) {
+            representative.direction = glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
+          }
+        } else {
+          representative = transform_light(representative, light_from_local);
+        }
         representative.intensity = aggregate.intensity * (cluster_from_local.scale * cluster_from_local.scale);
         representative.position =
             apply_point(cluster_from_local, 0.5f * (aggregate.positions.lo + aggregate.positions.hi));
-        if (representative.kind == LightKind::spot && aggregate.cos_axis_spread > 0.0f) {
-          representative.direction = glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
-        }
         return representative;
       }
       case NodeKind::affine:
-        world_from_local = compose(world_from_local, h.transforms[n.payload]);
+        scale *= h.transforms[n.payload].scale;
+        if (!aim_along_cone) light_from_local = compose(light_from_local, h.transforms[n.payload]);
         node += 1;
         break;
       case NodeKind::extent_volume:
