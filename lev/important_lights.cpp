@@ -54,9 +54,22 @@ struct FittedNodes {
   const Bounds& volume(std::uint32_t i) const { return nodes[i].volume; }
 };
 
-// What the walk does with what it culls: drop it, also sum its irradiance bound, or cull only
-// while that sum stays within the tolerance (find_lights_within_budget).
-enum class Culled { dropped, summed, budgeted };
+// What the walk does with what it culls: drop it, also sum its irradiance bound, cull only
+// while that sum stays within the tolerance (find_lights_within_budget), or also cut it into
+// clusters for an estimate (find_lights_and_clusters).
+enum class Culled { dropped, summed, budgeted, clustered };
+
+// What has been culled so far at this point: the summed bound and, when clustered, the cut.
+struct CulledSoFar {
+  // In double: a million culled terms summed in float would drift by up to 1%.
+  glm::dvec3 sum{0.0};
+  ClusterCut cut;
+  std::vector<Light>* clusters = nullptr;  // representatives
+};
+
+inline float brightest(const glm::dvec3& v) {
+  return static_cast<float>(std::max(std::max(v.x, v.y), v.z));
+}
 
 // The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
 // of the per-light test, the brightest channel (DESIGN.md), with the tolerance, less room for
@@ -69,14 +82,18 @@ inline bool fits_budget(const glm::dvec3& culled, const glm::dvec3& more, float 
 // The exact test of one world-space light (is_important, one falloff for both uses); a light
 // that fails it adds its irradiance to `culled`, and under a budget it is kept (it passes) when
 // the budget cannot take it.
+// Clustered, a culled light bright enough to keep is a cluster of its own.
 template <Culled kCulled>
-inline bool passes(const Light& world, const glm::vec3& point, float tolerance, glm::dvec3& culled) {
+inline bool passes(const Light& world, const glm::vec3& point, float tolerance, CulledSoFar& culled) {
   const float falloff = irradiance_falloff(world, point);
   if (is_important_from_falloff(world, falloff, tolerance)) return true;
   if constexpr (kCulled != Culled::dropped) {
     const glm::dvec3 e(irradiance_from_falloff(world, falloff));
-    if (kCulled == Culled::budgeted && !fits_budget(culled, e, tolerance)) return true;
-    culled += e;
+    if (kCulled == Culled::budgeted && !fits_budget(culled.sum, e, tolerance)) return true;
+    culled.sum += e;
+    if (kCulled == Culled::clustered && brightest(e) > culled.cut.keep_above) {
+      culled.clusters->push_back(world);
+    }
   }
   return false;
 }
@@ -87,7 +104,7 @@ inline bool passes(const Light& world, const glm::vec3& point, float tolerance, 
 template <bool kCull, Culled kCulled>
 inline void visit_light(const Light& local, const glm::vec3& point, float tolerance, const WalkLinear& linear,
                         bool identity, const glm::vec3& translation, std::vector<Light>& out,
-                        std::uint64_t& visited, glm::dvec3& culled) {
+                        std::uint64_t& visited, CulledSoFar& culled) {
   if (identity && local.kind == LightKind::point) {
     Light world = local;
     world.position = local.position + translation;
@@ -105,19 +122,98 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
   }
 }
 
+// Whether a subtree holds any light (a union may be empty).
+bool holds_lights(const LightHierarchy& h, std::uint32_t node) {
+  while (h.nodes[node].kind == NodeKind::affine) node += 1;
+  const NodeKind kind = h.nodes[node].kind;
+  return kind == NodeKind::point_light || kind == NodeKind::spot_light || !is_empty(kept_aggregate(h, node));
+}
+
+// A culled subtree as one light, its representative (find_lights_and_clusters). Entered with
+// world_from_local = (linear, translation). The centre of the positions rather than one of the
+// lights: measured in lev_est's selector (selector_lev_est.cpp).
+Light representative_light(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
+                           const glm::vec3& translation) {
+  Similarity world_from_local{linear.rotation, linear.scale, translation};
+  while (h.nodes[node].kind == NodeKind::affine) {
+    world_from_local = compose(world_from_local, h.transforms[h.nodes[node].payload]);
+    node += 1;
+  }
+  // A light below a transform is culled by its box like a subtree: it stands for itself.
+  const HierarchyNode& top = h.nodes[node];
+  if (top.kind == NodeKind::point_light || top.kind == NodeKind::spot_light) {
+    return transform_light(h.lights[top.payload], world_from_local);
+  }
+  const LightAggregate& aggregate = kept_aggregate(h, node);  // in the frame just composed
+  const Similarity& cluster_from_local = world_from_local;
+  // Below, only the first light's parameters are wanted: its frame is composed in full only
+  // when its own direction is (the cone of axes is too wide to aim along); else its scale does.
+  const bool aim_along_cone = aggregate.cos_axis_spread > 0.0f;
+  Similarity light_from_local = cluster_from_local;
+  float scale = cluster_from_local.scale;
+  for (;;) {
+    const HierarchyNode& n = h.nodes[node];
+    switch (n.kind) {
+      case NodeKind::point_light:
+      case NodeKind::spot_light: {
+        Light representative = h.lights[n.payload];
+        if (aim_along_cone) {
+          representative.range *= scale;
+          if (representative.kind == LightKind::spot) {
+            representative.direction = glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
+          }
+        } else {
+          representative = transform_light(representative, light_from_local);
+        }
+        representative.intensity = aggregate.intensity * (cluster_from_local.scale * cluster_from_local.scale);
+        representative.position =
+            apply_point(cluster_from_local, 0.5f * (aggregate.positions.lo + aggregate.positions.hi));
+        return representative;
+      }
+      case NodeKind::affine:
+        scale *= h.transforms[n.payload].scale;
+        if (!aim_along_cone) light_from_local = compose(light_from_local, h.transforms[n.payload]);
+        node += 1;
+        break;
+      case NodeKind::extent_volume:
+      case NodeKind::master:
+        node += 1;
+        break;
+      case NodeKind::instance:
+        node = n.payload;
+        break;
+      case NodeKind::set_union: {
+        // The subtree holds lights (its bound is above 0), so one of the children does.
+        const std::uint32_t* children = &h.union_children[n.payload + 1];
+        while (!holds_lights(h, *children)) ++children;
+        node = *children;
+        break;
+      }
+    }
+  }
+}
+
 // A subtree whose volume missed the point, the walk's point in the frame (linear, translation) it
 // is entered with (point_magnitude is max_abs(world point)): its aggregate bound is summed into
 // `culled` unless the walk drops what it culls.
-// True when the subtree is culled: always unless under a budget its bound does not fit.
+// True when the subtree is culled: always unless under a budget its bound does not fit, or,
+// clustered, its bound is above the cut's refine_above (then it is walked, its parts culled).
 template <Culled kCulled>
 inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
                          float point_magnitude, const glm::vec3& translation, const WalkLinear& linear,
-                         float tolerance, glm::dvec3& culled) {
+                         float tolerance, CulledSoFar& culled) {
   if constexpr (kCulled == Culled::dropped) return true;
   const glm::dvec3 b(
       irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
-  if (kCulled == Culled::budgeted && !fits_budget(culled, b, tolerance)) return false;
-  culled += b;
+  if (kCulled == Culled::budgeted && !fits_budget(culled.sum, b, tolerance)) return false;
+  if constexpr (kCulled == Culled::clustered) {
+    const float brightest_bound = brightest(b);
+    if (!(brightest_bound <= culled.cut.refine_above)) return false;  // NaN-safe: +inf refines
+    if (brightest_bound > culled.cut.keep_above) {
+      culled.clusters->push_back(representative_light(h, node, linear, translation));
+    }
+  }
+  culled.sum += b;
   return true;
 }
 
@@ -139,15 +235,15 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std:
 // with a volume inside it (moved by a translation), so that node does not test it again.
 // Unless kCulled is `dropped` every cull also adds what it dropped to the culled irradiance bound;
 // under a budget a subtree that does not fit is walked as if its volume held the point.
+// Clustered, the subtrees culled with a bound above the cut's refine_above are walked too, so
+// that what is culled comes in parts no brighter than that.
 template <bool kCull, Culled kCulled, typename Nodes>
 void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, const glm::vec3& point,
           WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters,
-          glm::vec3* culled_irradiance_bound) {
+          glm::vec3* culled_irradiance_bound, CulledSoFar culled = {}) {
   std::vector<WalkFrame>& stack = scratch.stack;
   std::vector<WalkLinear>& linear = scratch.linear;
   std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
-  // In double: a million culled terms summed in float would drift by up to 1%.
-  glm::dvec3 culled(0.0);
   const float point_magnitude = max_abs(point);
   stack.clear();
   linear.clear();
@@ -285,7 +381,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
-  if constexpr (kCulled != Culled::dropped) *culled_irradiance_bound = round_up_sum(culled);
+  if constexpr (kCulled != Culled::dropped) *culled_irradiance_bound = round_up_sum(culled.sum);
 }
 
 }  // namespace
@@ -312,6 +408,21 @@ void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolu
   glm::vec3 culled;  // the budget needs the sum either way
   walk<true, Culled::budgeted>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, lights,
                                counters, culled_irradiance_bound ? culled_irradiance_bound : &culled);
+}
+
+void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                              const ClusterCut& cut, const glm::vec3& point, WalkScratch& scratch,
+                              std::vector<Light>& important_lights, std::vector<Light>& clusters,
+                              WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  CulledSoFar culled;
+  culled.cut = cut;
+  culled.clusters = &clusters;
+  glm::vec3 bound;  // summed either way: the cut needs each culled part's bound
+  walk<true, Culled::clustered>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch,
+                                important_lights, counters,
+                                culled_irradiance_bound ? culled_irradiance_bound : &bound, culled);
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {

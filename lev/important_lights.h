@@ -64,6 +64,29 @@ void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolu
                                const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
                                WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
 
+// Where find_lights_and_clusters cuts what it culls, on the scale of the per-light test (the
+// brightest channel of an irradiance bound).
+struct ClusterCut {
+  // A culled subtree whose bound exceeds this is not culled whole: it is walked, and its parts
+  // (smaller subtrees, single lights) are culled instead.
+  float refine_above = 0.0f;
+  // A culled part whose bound exceeds this becomes a cluster; the rest is only summed.
+  float keep_above = 0.0f;
+};
+
+// The walk of `lev_est`: like find_important_lights (the same lights), and everything it culls
+// cut into parts whose irradiance bound is at most cut.refine_above; each part brighter than
+// cut.keep_above is appended to `clusters` (in depth-first order) as one light in world space: a
+// culled light itself, or a culled subtree's representative (Lightcuts', Walter et al. 2005): a
+// light like the subtree's first one, at the centre of the box around the subtree's light
+// positions, aimed along the axis of its spots' direction cone (when that cone is narrower than
+// a hemisphere), carrying the summed intensity of the subtree. culled_irradiance_bound, as
+// find_important_lights', counts every culled part, clusters included.
+void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                              const ClusterCut& cut, const glm::vec3& point, WalkScratch& scratch,
+                              std::vector<Light>& important_lights, std::vector<Light>& clusters,
+                              WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+
 // Every light of the scene in world space, instances expanded, in the same depth-first order as
 // the walk and through the same arithmetic, so a light here is bit-identical to the one the walk
 // returns.

@@ -5,6 +5,7 @@
 #include "lev/selector_ast.h"
 #include "lev/selector_lev.h"
 #include "lev/selector_lev_bounded.h"
+#include "lev/selector_lev_est.h"
 #include "lev/selector_rt.h"
 
 namespace lev {
@@ -63,6 +64,19 @@ std::vector<MethodInfo>& table_rows() {
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevBoundedSelector>(h, tolerance);
+       }},
+      {Method::lev_est,
+       "lev_est",
+       "LEV estimated (clusters)",
+       "LEV, plus an estimate of what it culled: the culled subtrees cut into clusters, each a "
+       "representative light with the cluster's intensity and one shadow ray (Lightcuts)",
+       true,
+       false,
+       false,
+       false,
+       {0.1, 0.03, 0.01, 0.003, 0.001},
+       [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevEstSelector>(h, tolerance);
        }},
   };
   return table;

@@ -29,7 +29,7 @@ inline constexpr double kDefaultTolerance = 0.01;
 
 // A row of method_table(), by position. The named values are the built-in rows; further rows
 // (register_method) take the next values.
-enum class Method : std::uint8_t { rt, ast, lev, lev_bounded };
+enum class Method : std::uint8_t { rt, ast, lev, lev_bounded, lev_est };
 
 using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
                                                         float tolerance);

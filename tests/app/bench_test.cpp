@@ -59,9 +59,11 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        // Every method of the table, in its order.
        "scene,lights,rt_cpu_s,rt_wall_s,rt_pixels,ast_cpu_s,ast_wall_s,ast_pixels,lev_cpu_s,"
        "lev_wall_s,lev_pixels,lev_bounded_cpu_s,lev_bounded_wall_s,lev_bounded_pixels,"
-       "ast_over_rt_pct,lev_over_rt_pct,lev_bounded_over_rt_pct,rt_over_lev,ast_over_lev,"
-       "lev_bounded_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,"
-       "ast_tests_per_point,lev_tests_per_point,lev_bounded_tests_per_point"},
+       "lev_est_cpu_s,lev_est_wall_s,lev_est_pixels,"
+       "ast_over_rt_pct,lev_over_rt_pct,lev_bounded_over_rt_pct,lev_est_over_rt_pct,rt_over_lev,"
+       "ast_over_lev,lev_bounded_over_lev,lev_est_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,"
+       "rt_tests_per_point,ast_tests_per_point,lev_tests_per_point,lev_bounded_tests_per_point,"
+       "lev_est_tests_per_point"},
       {"memory",
        "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
        "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"

@@ -16,10 +16,12 @@
 #include "lev/selector_ast.h"
 #include "lev/selector_lev.h"
 #include "lev/selector_rt.h"
+#include "tests/lev/open_point.h"
 #include "tests/lev/random_light_scenes.h"
 
 namespace {
 
+using lev_test::OpenPoint;
 using lev_test::Random;
 
 const float kTolerances[] = {0.0f, 1e-3f, 1e-2f, 0.1f, 1e30f};
@@ -86,21 +88,6 @@ TEST(CulledBound, NeverBelowTheIrradianceOfTheLightsNotReturned) {
   EXPECT_GT(culled_points, 4000u);
   EXPECT_GT(finite_points, 3000u);
 }
-
-// A surface that faces every light, reflects irradiance unchanged and is never shadowed: the
-// direct radiance is the sum of the irradiance of the lights a method accounts for.
-class OpenPoint final : public lev::ShadingPoint {
- public:
-  explicit OpenPoint(const glm::vec3& x) : x_(x) {}
-  glm::vec3 position() const override { return x_; }
-  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
-    return lev::irradiance(light, x_);
-  }
-  bool visible(const lev::Light&) override { return true; }
-
- private:
-  glm::vec3 x_;
-};
 
 TEST(CulledBound, SelectorsReportWhatTheyLeftOut) {
   Random r(11);

@@ -8,21 +8,13 @@
 #include "renderer/render.h"
 #include "scenes/building.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
                              lev::Method method, float tolerance, int threads) {
-  renderer::RenderSettings rs;
-  rs.width = 64;
-  rs.height = 48;
-  rs.method = method;
-  rs.tolerance = tolerance;
-  rs.threads = threads;
-  rs.tile_size = 8;
-  auto state = renderer::make_render_state(scene, rays, rs);
-  for (int i = 0; i < 2; ++i) EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, method, tolerance, threads, 2);
 }
 
 TEST(LevBoundedRender, EqualsRtAtToleranceZeroAndIsDeterministic) {

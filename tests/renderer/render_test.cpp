@@ -10,6 +10,7 @@
 #include "renderer/ray_scene.h"
 #include "scenes/building.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
@@ -23,16 +24,7 @@ struct TestScene {
 
 renderer::Framebuffer render(TestScene& t, lev::Method method, float tolerance, int threads, int passes,
                              int width = 64, int height = 48) {
-  renderer::RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.method = method;
-  rs.tolerance = tolerance;
-  rs.threads = threads;
-  rs.tile_size = 8;
-  auto state = renderer::make_render_state(t.scene, *t.rays, rs);
-  for (int i = 0; i < passes; ++i) EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(t.scene, *t.rays, method, tolerance, threads, passes, width, height);
 }
 
 TEST(Render, LevAtToleranceZeroEqualsRtBitForBit) {

@@ -1,0 +1,65 @@
+// `lev_est` in the renderer: at tolerance 0 its image equals rt's bit for bit; at a positive
+// tolerance the image is the same for one and two threads; and on the hall, where every light
+// falls below the tolerance while together they light the stage, its estimate of the culled rest
+// keeps the image close to rt's where lev, which drops that rest, is far off.
+#include <gtest/gtest.h>
+
+#include "renderer/pixel_error.h"
+#include "renderer/ray_scene.h"
+#include "renderer/render.h"
+#include "scenes/building.h"
+#include "scenes/hall.h"
+#include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
+
+namespace {
+
+renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
+                             lev::Method method, float tolerance, int threads, int width = 64,
+                             int height = 48) {
+  return render_test_image(scene, rays, method, tolerance, threads, 1, width, height);
+}
+
+renderer::PixelErrorStats error_against(const renderer::Framebuffer& image,
+                                        const renderer::Framebuffer& reference) {
+  return renderer::summarize_pixel_error(renderer::pixel_error_pct(
+      renderer::framebuffer_rgb8(image), renderer::framebuffer_rgb8(reference)));
+}
+
+TEST(LevEstRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
+  const renderer::Scene scene = scenes::build_building(3);
+  const renderer::RayScene rays(scene.geometry);
+  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 0);
+  const renderer::Framebuffer exact = render(scene, rays, lev::Method::lev_est, 0.0f, 0);
+  EXPECT_TRUE(bitwise_equal(rt, exact));
+  EXPECT_EQ(rt.lights_tested, exact.lights_tested);
+  EXPECT_EQ(rt.shadow_rays, exact.shadow_rays);
+}
+
+TEST(LevEstRender, HallDeterministicAndFarCloserToRtThanLev) {
+  const renderer::Scene scene =
+      scenes::build_hall(6);  // 4,096 spotlights, all below 0.01 on the stage
+  const renderer::RayScene rays(scene.geometry);
+  constexpr int kWidth = 40, kHeight = 30;  // rt shoots about 2,400 shadow rays per pixel here
+  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2, kWidth, kHeight);
+  const renderer::Framebuffer one =
+      render(scene, rays, lev::Method::lev_est, 0.01f, 1, kWidth, kHeight);
+  const renderer::Framebuffer two =
+      render(scene, rays, lev::Method::lev_est, 0.01f, 2, kWidth, kHeight);
+  EXPECT_TRUE(bitwise_equal(one, two));
+  EXPECT_EQ(one.shadow_rays, two.shadow_rays);
+  const renderer::Framebuffer plain =
+      render(scene, rays, lev::Method::lev, 0.01f, 2, kWidth, kHeight);
+  const renderer::PixelErrorStats est = error_against(one, rt);
+  const renderer::PixelErrorStats dropped = error_against(plain, rt);
+  // The culled rest matters here (lev is visibly off), and the estimate recovers most of it.
+  EXPECT_GT(dropped.average_pct, 1.0);
+  EXPECT_LT(est.average_pct, 0.2 * dropped.average_pct);
+  EXPECT_LT(est.max_pct, 0.5 * dropped.max_pct);
+  // An estimate, not rt under another name: far fewer shadow rays.
+  const renderer::FramebufferTotals est_totals = renderer::sum_framebuffer(one);
+  const renderer::FramebufferTotals rt_totals = renderer::sum_framebuffer(rt);
+  EXPECT_LT(est_totals.shadow_rays * 2, rt_totals.shadow_rays);
+}
+
+}  // namespace
