@@ -127,7 +127,10 @@ int run_cli(int argc, char** argv) {
       render->add_option("--out", outputs.image, "image PNG (- for standard output)")->type_name("FILE.png"),
       render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")->type_name("FILE.png"),
       render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")->type_name("FILE.png"),
-      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json")};
+      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
+      render->add_option("--heatmap-noise", outputs.heatmap_noise,
+                         "estimated standard error per pixel (noise across passes) heatmap PNG")
+          ->type_name("FILE.png")};
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   const std::string reference_name = lev::method_info(lev::reference_method()).name;

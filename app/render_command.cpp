@@ -14,6 +14,7 @@
 #include "renderer/heatmap.h"
 #include "app/output_files.h"
 #include "renderer/pixel_error.h"
+#include "renderer/pixel_noise.h"
 #include "scenes/scene_file.h"
 
 namespace app {
@@ -100,7 +101,8 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
   return {{"--out", o.image, ".png", "PNG"},
           {"--heatmap-lights", o.heatmap_lights, ".png", "PNG"},
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
-          {"--stats", o.stats, ".json", "JSON"}};
+          {"--stats", o.stats, ".json", "JSON"},
+          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -162,6 +164,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.method_bytes = result.method_bytes;
   s.camera = loaded.scene.camera;
   s.directional_lights = loaded.scene.directional_lights.size();
+  if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
   if (reference) {
     const auto error =
         renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
@@ -206,6 +209,11 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmap.counter), *heatmap.range);
     if (!heatmap.path->empty()) app::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
   }
+  {
+    const std::vector<std::uint8_t> rgb =
+        renderer::heatmap_rgb8(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range);
+    if (!outputs.heatmap_noise.empty()) app::write_png_rgb8(outputs.heatmap_noise, fb.width, fb.height, rgb);
+  }
   const nlohmann::ordered_json json = render_stats_json(stats);
   if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
@@ -213,7 +221,8 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
   std::FILE* summary = outputs.image == app::kStandardOutputName || outputs.stats == app::kStandardOutputName ||
                                outputs.heatmap_lights == app::kStandardOutputName ||
-                               outputs.heatmap_nodes == app::kStandardOutputName
+                               outputs.heatmap_nodes == app::kStandardOutputName ||
+                               outputs.heatmap_noise == app::kStandardOutputName
                            ? stderr
                            : stdout;
   std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
@@ -226,6 +235,7 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", json["pixel_error_avg_pct"].get<double>(),
                  json["pixel_error_max_pct"].get<double>());
   }
+  if (stats.std_error_avg_pct) std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {

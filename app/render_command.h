@@ -18,6 +18,7 @@ struct RenderOutputs {
   std::string heatmap_lights;  // PNG
   std::string heatmap_nodes;   // PNG
   std::string stats;           // JSON
+  std::string heatmap_noise;   // PNG: the estimated standard error per pixel (pixel_noise.h)
   bool reference_rt = false;
   bool quiet = false;  // no progress, no summary, no "wrote" line
 };
@@ -40,9 +41,10 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& outputs);
 // Peak memory of `levrt render` per image pixel (framebuffer, counters, heatmaps; the reference
 // adds a second framebuffer), measured as the slope of peak RSS (/usr/bin/time -v) between
 // 2048x2048 and 4096x4096 renders with --subsample 64 and every output: subsampling does not
-// reduce it, the framebuffer is full size.
-inline constexpr std::uint64_t kRenderBytesPerPixel = 96;
-inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 144;
+// reduce it, the framebuffer is full size. (96 and 144 measured, then 12 bytes per framebuffer
+// copy added for the variance sums and the noise heatmap, counted rather than measured.)
+inline constexpr std::uint64_t kRenderBytesPerPixel = 120;
+inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 192;
 // The memory a render may plan for; larger images are refused before any work.
 inline constexpr std::uint64_t kRenderMemoryBudgetBytes = std::uint64_t{8} << 30;
 

@@ -51,6 +51,10 @@ struct RenderStats {
   renderer::Camera camera;
   int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
   renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
+  // The estimated standard error of the mean over passes (renderer/pixel_noise.h), from two
+  // passes on, and the range of its heatmap.
+  std::optional<double> std_error_avg_pct;
+  renderer::HeatmapRange heatmap_noise_range;
 };
 
 // The thread count a setting of 0 (all cores) stands for.

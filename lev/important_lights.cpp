@@ -54,9 +54,9 @@ struct FittedNodes {
   const Bounds& volume(std::uint32_t i) const { return nodes[i].volume; }
 };
 
-// What the walk does with what it culls: drop it, also sum its irradiance bound, or cull only
-// while that sum stays within the tolerance (find_lights_within_budget).
-enum class Culled { dropped, summed, budgeted };
+// What the walk does with what it culls: drop it, also sum its irradiance bound, cull only
+// while that sum stays within the tolerance (find_lights_within_budget), or keep it (CulledParts).
+enum class Culled { dropped, summed, budgeted, collected };
 
 // The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
 // of the per-light test, the brightest channel (DESIGN.md), with the tolerance, less room for
@@ -70,10 +70,13 @@ inline bool fits_budget(const glm::dvec3& culled, const glm::dvec3& more, float 
 // that fails it adds its irradiance to `culled`, and under a budget it is kept (it passes) when
 // the budget cannot take it.
 template <Culled kCulled>
-inline bool passes(const Light& world, const glm::vec3& point, float tolerance, glm::dvec3& culled) {
+inline bool passes(const Light& world, const glm::vec3& point, float tolerance, glm::dvec3& culled,
+                   CulledParts* parts) {
   const float falloff = irradiance_falloff(world, point);
   if (is_important_from_falloff(world, falloff, tolerance)) return true;
-  if constexpr (kCulled != Culled::dropped) {
+  if constexpr (kCulled == Culled::collected) {
+    if (falloff > 0.0f) parts->lights.push_back(world);
+  } else if constexpr (kCulled != Culled::dropped) {
     const glm::dvec3 e(irradiance_from_falloff(world, falloff));
     if (kCulled == Culled::budgeted && !fits_budget(culled, e, tolerance)) return true;
     culled += e;
@@ -87,13 +90,13 @@ inline bool passes(const Light& world, const glm::vec3& point, float tolerance, 
 template <bool kCull, Culled kCulled>
 inline void visit_light(const Light& local, const glm::vec3& point, float tolerance, const WalkLinear& linear,
                         bool identity, const glm::vec3& translation, std::vector<Light>& out,
-                        std::uint64_t& visited, glm::dvec3& culled) {
+                        std::uint64_t& visited, glm::dvec3& culled, CulledParts* parts) {
   if (identity && local.kind == LightKind::point) {
     Light world = local;
     world.position = local.position + translation;
     if constexpr (kCull) {
       ++visited;
-      if (!passes<kCulled>(world, point, tolerance, culled)) return;
+      if (!passes<kCulled>(world, point, tolerance, culled, parts)) return;
     }
     out.emplace_back(local).position = world.position;
     return;
@@ -101,19 +104,24 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
   const Light& world = push_world_light(out, local, linear, identity, translation);
   if constexpr (kCull) {
     ++visited;
-    if (!passes<kCulled>(world, point, tolerance, culled)) out.pop_back();
+    if (!passes<kCulled>(world, point, tolerance, culled, parts)) out.pop_back();
   }
 }
 
 // A subtree whose volume missed the point, the walk's point in the frame (linear, translation) it
 // is entered with (point_magnitude is max_abs(world point)): its aggregate bound is summed into
-// `culled` unless the walk drops what it culls.
+// `culled` unless the walk drops what it culls or keeps the subtree itself in `parts`.
 // True when the subtree is culled: always unless under a budget its bound does not fit.
 template <Culled kCulled>
 inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
                          float point_magnitude, const glm::vec3& translation, const WalkLinear& linear,
-                         float tolerance, glm::dvec3& culled) {
+                         float tolerance, glm::dvec3& culled, CulledParts* parts) {
   if constexpr (kCulled == Culled::dropped) return true;
+  if constexpr (kCulled == Culled::collected) {
+    parts->subtrees.push_back({node, Similarity{linear.rotation, linear.scale, translation},
+                               walk_frame_point(local_point, point_magnitude, translation, linear.scale)});
+    return true;
+  }
   const glm::dvec3 b(
       irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
   if (kCulled == Culled::budgeted && !fits_budget(culled, b, tolerance)) return false;
@@ -142,7 +150,7 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear, std:
 template <bool kCull, Culled kCulled, typename Nodes>
 void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, const glm::vec3& point,
           WalkScratch& scratch, std::vector<Light>& out, WalkCounters& counters,
-          glm::vec3* culled_irradiance_bound) {
+          glm::vec3* culled_irradiance_bound, CulledParts* parts) {
   std::vector<WalkFrame>& stack = scratch.stack;
   std::vector<WalkLinear>& linear = scratch.linear;
   std::uint64_t visited = 0;  // a local, so the compiler need not store it through every write
@@ -170,7 +178,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
         case NodeKind::point_light:
         case NodeKind::spot_light:
           visit_light<kCull, kCulled>(h.lights[node.payload], point, tolerance, linear[linear_index],
-                                     linear_index == 0, translation, out, visited, culled);
+                                     linear_index == 0, translation, out, visited, culled, parts);
           break;
         case NodeKind::affine: {
           const Similarity& xf = h.transforms[node.payload];
@@ -202,7 +210,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               ++visited;
               if (!contains(nodes.volume(index), local_point) &&
                   cull_subtree<kCulled>(h, index, local_point, point_magnitude, translation, linear[linear_index],
-                                        tolerance, culled)) {
+                                        tolerance, culled, parts)) {
                 break;
               }
             }
@@ -224,7 +232,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
             const HierarchyNode& c = nodes.node(children[first_pending]);
             if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
             visit_light<kCull, kCulled>(h.lights[c.payload], point, tolerance, linear[linear_index],
-                                       linear_index == 0, translation, out, visited, culled);
+                                       linear_index == 0, translation, out, visited, culled, parts);
           }
           // The first child that passes is walked right away; the later ones are pushed
           // last-first so that they come off the stack in order (depth-first, left to right).
@@ -245,7 +253,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
                 ++visited;
                 if (!contains(nodes.volume(child), local_point) &&
                     cull_subtree<kCulled>(h, child, local_point, point_magnitude, translation, linear[linear_index],
-                                          tolerance, culled)) {
+                                          tolerance, culled, parts)) {
                   continue;
                 }
                 // Passed, or walked anyway under the budget: the child need not test its box again.
@@ -285,7 +293,9 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
-  if constexpr (kCulled != Culled::dropped) *culled_irradiance_bound = round_up_sum(culled);
+  if constexpr (kCulled == Culled::summed || kCulled == Culled::budgeted) {
+    *culled_irradiance_bound = round_up_sum(culled);
+  }
 }
 
 }  // namespace
@@ -298,10 +308,21 @@ void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes&
   const FittedNodes nodes{volumes.nodes.data()};
   if (culled_irradiance_bound) {
     walk<true, Culled::summed>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters,
-                               culled_irradiance_bound);
+                               culled_irradiance_bound, nullptr);
   } else {
-    walk<true, Culled::dropped>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
+    walk<true, Culled::dropped>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr,
+                                nullptr);
   }
+}
+
+void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
+                               WalkCounters& counters, CulledParts& culled) {
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  culled.clear();
+  walk<true, Culled::collected>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch,
+                                important_lights, counters, nullptr, &culled);
 }
 
 void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
@@ -311,7 +332,7 @@ void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolu
   assert(volumes.tolerance <= tolerance);
   glm::vec3 culled;  // the budget needs the sum either way
   walk<true, Culled::budgeted>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch, lights,
-                               counters, culled_irradiance_bound ? culled_irradiance_bound : &culled);
+                               counters, culled_irradiance_bound ? culled_irradiance_bound : &culled, nullptr);
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
@@ -320,7 +341,7 @@ std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
   WalkScratch scratch;
   WalkCounters counters;
   walk<false, Culled::dropped>(hierarchy, StructureNodes{hierarchy.nodes.data()}, 0.0f, glm::vec3(0.0f), scratch, lights,
-                     counters, nullptr);
+                     counters, nullptr, nullptr);
   return lights;
 }
 

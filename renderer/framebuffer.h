@@ -19,6 +19,9 @@ struct Framebuffer {
   std::vector<std::uint64_t> lights_tested;
   std::vector<std::uint64_t> nodes_visited;
   std::vector<std::uint64_t> shadow_rays;
+  // Per pixel and channel, the sum of each sample's radiance squared: with radiance_sum and
+  // samples, the variance across passes behind the noise estimate (pixel_noise.h).
+  std::vector<glm::vec3> radiance_square_sum;
 };
 
 Framebuffer make_framebuffer(int width, int height);
