@@ -52,7 +52,7 @@ struct RenderStats {
   int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
   renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), from two
-  // passes on, and the range of its heatmap.
+  // passes on (null in the JSON before), and the range of its heatmap.
   std::optional<double> std_error_avg_pct;
   renderer::HeatmapRange heatmap_noise_range;
 };

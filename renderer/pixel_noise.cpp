@@ -4,9 +4,8 @@
 #include <cmath>
 
 namespace renderer {
-namespace {
-
-double pixel_std_error(const Framebuffer& f, std::size_t i) {
+double pixel_std_error_pct(const Framebuffer& f, std::size_t i) {
+  if (f.samples[i] < 2) return 0.0;
   const double n = f.samples[i];
   double sum_pct = 0.0;
   for (int c = 0; c < 3; ++c) {
@@ -20,13 +19,9 @@ double pixel_std_error(const Framebuffer& f, std::size_t i) {
   return sum_pct * 100.0 / 3.0;
 }
 
-}  // namespace
-
 std::vector<double> pixel_std_error_pct(const Framebuffer& f) {
   std::vector<double> out(f.samples.size(), 0.0);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (f.samples[i] >= 2) out[i] = pixel_std_error(f, i);
-  }
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = pixel_std_error_pct(f, i);
   return out;
 }
 
@@ -35,7 +30,7 @@ double std_error_avg_pct(const Framebuffer& f) {
   std::size_t pixels = 0;
   for (std::size_t i = 0; i < f.samples.size(); ++i) {
     if (f.samples[i] < 2) continue;
-    sum += pixel_std_error(f, i);
+    sum += pixel_std_error_pct(f, i);
     ++pixels;
   }
   return pixels > 0 ? sum / static_cast<double>(pixels) : 0.0;

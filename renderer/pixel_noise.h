@@ -13,7 +13,9 @@
 
 namespace renderer {
 
-// Per pixel, in percent; 0 for a pixel with fewer than two samples (no variance known).
+// One pixel, in percent; 0 for a pixel with fewer than two samples (no variance known).
+double pixel_std_error_pct(const Framebuffer& framebuffer, std::size_t pixel);
+// Every pixel, as above.
 std::vector<double> pixel_std_error_pct(const Framebuffer& framebuffer);
 
 // The average of pixel_std_error_pct over the pixels with at least two samples; 0 when none has.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "renderer/pixel_noise.h"
+
 namespace app::viewer {
 
 void mean_rgb8(const renderer::Framebuffer& f, std::size_t pixel, std::uint8_t* rgb) {
@@ -35,6 +37,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   u.samples.resize(count);
   u.lights_tested.resize(count);
   u.nodes_visited.resize(count);
+  u.noise_pct.resize(count);
   std::size_t k = 0;
   for (int y = rect.y0; y < rect.y1; ++y) {
     for (int x = rect.x0; x < rect.x1; ++x, ++k) {
@@ -47,6 +50,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
           n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;
       u.nodes_visited[k] =
           n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
+      u.noise_pct[k] = static_cast<float>(renderer::pixel_std_error_pct(f, i));
       renderer::add_pixel_totals(f, i, u.totals);
     }
   }

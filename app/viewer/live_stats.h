@@ -28,6 +28,9 @@ struct LiveStats {
   std::optional<double> error_avg_pct;
   std::optional<double> error_max_pct;
   std::size_t error_pixels = 0;
+  // The estimated standard error of the mean over passes (renderer/pixel_noise.h), averaged over
+  // the pixels with two samples or more; none before the second pass reaches a pixel.
+  std::optional<double> noise_avg_pct;
 };
 
 // `error` is used when it has compared pixels.

@@ -13,6 +13,8 @@ const std::vector<ViewModeInfo>& view_mode_table() {
        "this method does not walk the light hierarchy"},
       {ViewMode::error, "error", "Error vs rt", "error per pixel, % of 765 (pass 0 against rt)",
        "the image equals rt"},
+      {ViewMode::noise, "noise", "Noise", "estimated standard error of the pixel mean over passes, % of 765",
+       "the passes agree: no noise (or fewer than two passes yet)"},
   };
   return table;
 }

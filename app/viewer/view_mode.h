@@ -1,5 +1,6 @@
-// The four pictures the viewer can show of one render: the image itself and three heatmaps
-// (lights tested, nodes visited, and the error against the `rt` reference of the same view).
+// The pictures the viewer can show of one render: the image itself and four heatmaps (lights
+// tested, nodes visited, the error against the `rt` reference of the same view, and the noise:
+// the estimated standard error of the mean over the passes so far).
 // One table names them for the panel, for --set view=... and for snapshot file names.
 #pragma once
 
@@ -10,7 +11,7 @@
 
 namespace app::viewer {
 
-enum class ViewMode { image, lights, nodes, error };
+enum class ViewMode { image, lights, nodes, error, noise };
 
 struct ViewModeInfo {
   ViewMode mode;

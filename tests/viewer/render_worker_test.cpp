@@ -156,6 +156,25 @@ TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
   EXPECT_TRUE(lev::method_info(lev::Method::lev).uses_tolerance);
 }
 
+TEST(RenderWorker, ALightSamplesChangeRestartsOnlyTheSamplingMethods) {
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    Ui ui;
+    app::Settings s = small_settings();
+    s.method = method.id;
+    const std::uint64_t first = ui.worker.post(request_for(s));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); })) << method.name;
+    s.samples = 3;
+    const std::uint64_t second = ui.worker.post(request_for(s));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(second); })) << method.name;
+    EXPECT_EQ(ui.status.generation, method.samples ? second : first) << method.name;
+    EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s)) << method.name;
+    // From the second pass on every pixel has a noise estimate (zero where the passes agree).
+    EXPECT_EQ(ui.image.noise_pct.size(), ui.image.samples.size());
+  }
+  EXPECT_TRUE(lev::method_info(lev::Method::lev_mc).samples);
+  EXPECT_TRUE(lev::method_info(lev::Method::light_tree).samples);
+}
+
 TEST(RenderWorker, ResumedPassesKeepTheImageExact) {
   // Requests that change nothing the render depends on interrupt the pass, which then resumes.
   Ui ui;
