@@ -1,7 +1,5 @@
 #include "lev/selector_lev_mc.h"
 
-#include <limits>
-
 #include "lev/important_lights.h"
 #include "lev/light_sampling.h"
 
@@ -9,21 +7,14 @@ namespace lev {
 
 LevMcSelector::LevMcSelector(const LightHierarchy& hierarchy, float tolerance,
                              int samples_per_point)
-    : hierarchy_(hierarchy),
+    : SamplingSelector(hierarchy, samples_per_point),
       volumes_(fit_extent_volumes(hierarchy, tolerance)),
-      tolerance_(tolerance),
-      samples_per_point_(samples_per_point) {}
-
-std::unique_ptr<MethodScratch> LevMcSelector::make_scratch() const {
-  return std::make_unique<SamplingScratch>();
-}
+      tolerance_(tolerance) {}
 
 glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                          SelectionCounters& counters,
                                          glm::vec3* culled_irradiance_bound) const {
-  SamplingScratch& sampling = method_scratch<SamplingScratch>(scratch);
-  if (culled_irradiance_bound)
-    *culled_irradiance_bound = glm::vec3(std::numeric_limits<float>::infinity());
+  SamplingScratch& sampling = begin_point(scratch, culled_irradiance_bound);
   scratch.lights.clear();
   WalkCounters walk_counters;
   find_important_and_culled(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk,

@@ -8,28 +8,22 @@
 // the image equals `rt` bit for bit.
 #pragma once
 
-#include <memory>
-
 #include "lev/light_hierarchy.h"
-#include "lev/light_selector.h"
+#include "lev/sampling_selector.h"
 
 namespace lev {
 
-class LevMcSelector final : public LightSelector {
+class LevMcSelector final : public SamplingSelector {
  public:
   // samples_per_point: k, the lights drawn from the culled rest at each shading point (>= 1).
   LevMcSelector(const LightHierarchy& hierarchy, float tolerance, int samples_per_point);
-  // culled_irradiance_bound receives +inf: a sampled estimate has no certified error bound.
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
-  std::unique_ptr<MethodScratch> make_scratch() const override;
 
  private:
-  const LightHierarchy& hierarchy_;
   const ExtentVolumes volumes_;
   const float tolerance_;
-  const int samples_per_point_;
 };
 
 }  // namespace lev

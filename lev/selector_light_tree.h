@@ -5,27 +5,18 @@
 // normal), one shadow ray each, weighed by 1/probability. Unbiased: passes converge to `rt`.
 #pragma once
 
-#include <memory>
-
 #include "lev/light_hierarchy.h"
-#include "lev/light_selector.h"
+#include "lev/sampling_selector.h"
 
 namespace lev {
 
-class LightTreeSelector final : public LightSelector {
+class LightTreeSelector final : public SamplingSelector {
  public:
-  // samples_per_point: k, the lights drawn at each shading point (>= 1).
   LightTreeSelector(const LightHierarchy& hierarchy, int samples_per_point)
-      : hierarchy_(hierarchy), samples_per_point_(samples_per_point) {}
-  // culled_irradiance_bound receives +inf: a sampled estimate has no certified error bound.
+      : SamplingSelector(hierarchy, samples_per_point) {}
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
-  std::unique_ptr<MethodScratch> make_scratch() const override;
-
- private:
-  const LightHierarchy& hierarchy_;
-  const int samples_per_point_;
 };
 
 }  // namespace lev
