@@ -130,6 +130,9 @@ int run_cli(int argc, char** argv) {
       render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")->type_name("FILE.png"),
       render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
       render->add_option("--heatmap-bound", outputs.heatmap_bound, "certified error bound heatmap PNG (percent)")
+          ->type_name("FILE.png"),
+      render->add_option("--heatmap-noise", outputs.heatmap_noise,
+                         "estimated standard error per pixel (noise across passes) heatmap PNG")
           ->type_name("FILE.png")};
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;

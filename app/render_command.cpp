@@ -15,6 +15,7 @@
 #include "renderer/heatmap.h"
 #include "app/output_files.h"
 #include "renderer/pixel_error.h"
+#include "renderer/pixel_noise.h"
 #include "scenes/scene_file.h"
 
 namespace app {
@@ -102,7 +103,8 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
           {"--heatmap-lights", o.heatmap_lights, ".png", "PNG"},
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
           {"--stats", o.stats, ".json", "JSON"},
-          {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"}};
+          {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"},
+          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -167,6 +169,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.camera = loaded.scene.camera;
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
+  if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
   if (reference) {
     const auto error =
         renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
@@ -214,6 +217,11 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   const std::vector<std::uint8_t> bound_rgb =
       renderer::heatmap_rgb8(renderer::error_bound_pct_image(fb), stats.heatmap_bound_range);
   if (!outputs.heatmap_bound.empty()) app::write_png_rgb8(outputs.heatmap_bound, fb.width, fb.height, bound_rgb);
+  {
+    const std::vector<std::uint8_t> rgb =
+        renderer::heatmap_rgb8(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range);
+    if (!outputs.heatmap_noise.empty()) app::write_png_rgb8(outputs.heatmap_noise, fb.width, fb.height, rgb);
+  }
   const nlohmann::ordered_json json = render_stats_json(stats);
   if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
@@ -235,6 +243,7 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", json["pixel_error_avg_pct"].get<double>(),
                  json["pixel_error_max_pct"].get<double>());
   }
+  if (stats.std_error_avg_pct) std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {

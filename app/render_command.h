@@ -19,6 +19,7 @@ struct RenderOutputs {
   std::string heatmap_nodes;   // PNG
   std::string heatmap_bound;   // PNG: the certified error bound per pixel (renderer/error_bound.h)
   std::string stats;           // JSON
+  std::string heatmap_noise;   // PNG: the estimated standard error per pixel (pixel_noise.h)
   bool reference_rt = false;
   bool quiet = false;  // no progress, no summary, no "wrote" line
 };
@@ -41,10 +42,11 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& outputs);
 // Peak memory of `levrt render` per image pixel (framebuffer, counters, heatmaps; the reference
 // adds a second framebuffer), measured as the slope of peak RSS (/usr/bin/time -v) between
 // 2048x2048 and 4096x4096 renders with --subsample 64 and every output: subsampling does not
-// reduce it, the framebuffer is full size. (123 and 183 bytes, rounded up, since the error
-// bound's per-pixel sum and heatmap.)
-inline constexpr std::uint64_t kRenderBytesPerPixel = 124;
-inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 184;
+// reduce it, the framebuffer is full size. (Measured: 123 and 183 bytes with the error bound's
+// per-pixel sum and heatmap; then 24 and 48 bytes counted, not measured, for the variance sums
+// and the noise heatmap of issue 10.)
+inline constexpr std::uint64_t kRenderBytesPerPixel = 148;
+inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 232;
 // The memory a render may plan for; larger images are refused before any work.
 inline constexpr std::uint64_t kRenderMemoryBudgetBytes = std::uint64_t{8} << 30;
 

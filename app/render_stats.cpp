@@ -78,6 +78,13 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["heatmap_nodes_range"] = {s.heatmap_nodes_range.min, s.heatmap_nodes_range.max};
   if (s.error_bound) j["heatmap_bound_range"] = {s.heatmap_bound_range.min, s.heatmap_bound_range.max};
   j["heatmap_scale"] = "log(1 + value per sample), viridis";
+  // null before a second pass: no spread between passes is known yet.
+  if (s.std_error_avg_pct) {
+    j["std_error_avg_pct"] = *s.std_error_avg_pct;
+  } else {
+    j["std_error_avg_pct"] = nullptr;
+  }
+  j["heatmap_noise_range"] = {s.heatmap_noise_range.min, s.heatmap_noise_range.max};
   return j;
 }
 

@@ -61,6 +61,9 @@ const std::vector<SettingSpec>& setting_table() {
       {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, kMaxImageSide}},
       {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, kMaxImageSide}},
       {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
+      {"samples", "Light samples",
+       "lights lev_mc and light_tree draw per shading point and pass (each one shadow ray)",
+       IntRange{&Settings::samples, 1, lev::kMaxLightSamples}},
       {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
       {"threads", "Threads", "worker threads (0 = all cores)",
        IntRange{&Settings::threads, 0, 1024}},
@@ -166,6 +169,7 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   // Tolerances below the smallest float become 0 (no culling) and above the largest become
   // +inf (everything culled): both are the limits the user asked for.
   rs.tolerance = static_cast<float>(settings.tolerance);
+  rs.light_samples = settings.samples;
   return rs;
 }
 

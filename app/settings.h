@@ -30,6 +30,7 @@ struct Settings {
   int width = renderer::kDefaultImageWidth;
   int height = renderer::kDefaultImageHeight;
   int spp = 1;                  // passes (one sample per pixel each)
+  int samples = 1;              // lights lev_mc and light_tree draw per shading point and pass
   int depth = 5;                // reflection/refraction depth
   int threads = 0;              // 0 = all cores
   int subsample = 1;            // render every n-th pixel in x and y (for slow references)

@@ -55,16 +55,18 @@ struct FittedNodes {
 };
 
 // What the walk does with what it culls: drop it, also sum its irradiance bound, cull only
-// while that sum stays within the tolerance (find_lights_within_budget), or also cut it into
-// clusters for an estimate (find_lights_and_clusters).
-enum class Culled { dropped, summed, budgeted, clustered };
+// while that sum stays within the tolerance (find_lights_within_budget), also cut it into
+// clusters for an estimate (find_lights_and_clusters), or keep it (CulledParts, for sampling).
+enum class Culled { dropped, summed, budgeted, clustered, collected };
 
-// What has been culled so far at this point: the summed bound and, when clustered, the cut.
+// What has been culled so far at this point: the summed bound and, when clustered, the cut;
+// when collected, the culled parts themselves.
 struct CulledSoFar {
   // In double: a million culled terms summed in float would drift by up to 1%.
   glm::dvec3 sum{0.0};
   ClusterCut cut;
   std::vector<Light>* clusters = nullptr;  // representatives
+  CulledParts* parts = nullptr;
 };
 
 inline float brightest(const glm::dvec3& v) {
@@ -87,7 +89,9 @@ template <Culled kCulled>
 inline bool passes(const Light& world, const glm::vec3& point, float tolerance, CulledSoFar& culled) {
   const float falloff = irradiance_falloff(world, point);
   if (is_important_from_falloff(world, falloff, tolerance)) return true;
-  if constexpr (kCulled != Culled::dropped) {
+  if constexpr (kCulled == Culled::collected) {
+    if (falloff > 0.0f) culled.parts->lights.push_back(world);
+  } else if constexpr (kCulled != Culled::dropped) {
     const glm::dvec3 e(irradiance_from_falloff(world, falloff));
     if (kCulled == Culled::budgeted && !fits_budget(culled.sum, e, tolerance)) return true;
     culled.sum += e;
@@ -203,6 +207,11 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
                          float point_magnitude, const glm::vec3& translation, const WalkLinear& linear,
                          float tolerance, CulledSoFar& culled) {
   if constexpr (kCulled == Culled::dropped) return true;
+  if constexpr (kCulled == Culled::collected) {
+    culled.parts->subtrees.push_back({node, Similarity{linear.rotation, linear.scale, translation},
+                                      walk_frame_point(local_point, point_magnitude, translation, linear.scale)});
+    return true;
+  }
   const glm::dvec3 b(
       irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
   if (kCulled == Culled::budgeted && !fits_budget(culled.sum, b, tolerance)) return false;
@@ -381,7 +390,9 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
-  if constexpr (kCulled != Culled::dropped) *culled_irradiance_bound = round_up_sum(culled.sum);
+  if constexpr (kCulled != Culled::dropped && kCulled != Culled::collected) {
+    *culled_irradiance_bound = round_up_sum(culled.sum);
+  }
 }
 
 }  // namespace
@@ -398,6 +409,18 @@ void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes&
   } else {
     walk<true, Culled::dropped>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
   }
+}
+
+void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
+                               WalkCounters& counters, CulledParts& culled) {
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  culled.clear();
+  CulledSoFar so_far;
+  so_far.parts = &culled;
+  walk<true, Culled::collected>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch,
+                                important_lights, counters, nullptr, so_far);
 }
 
 void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lev/light.h"
+#include "lev/light_bounds.h"
 #include "lev/light_hierarchy.h"
 #include "lev/light_tree.h"
 
@@ -44,6 +45,28 @@ struct WalkScratch {
   std::vector<WalkLinear> linear;
 };
 
+// A subtree the walk culled: its node, entered in the frame world_from_local, and the query point
+// in that frame (with its rounding allowance, as irradiance_bound takes it).
+struct SubtreeRef {
+  std::uint32_t node = 0;
+  Similarity world_from_local;
+  FramePoint point;
+};
+
+// Everything the walk culled at one point, so that a method can still account for it (lev_mc
+// samples it): the subtrees whose volume missed the point, and the lights below the tolerance
+// whose irradiance there is not zero, in world space (the walk's own copies, so the same floats
+// rt shades). Lights that cannot light the point are left out. The walk's lights and these
+// parts together hold every light of the scene that can light the point, each once.
+struct CulledParts {
+  std::vector<SubtreeRef> subtrees;
+  std::vector<Light> lights;
+  void clear() {
+    subtrees.clear();
+    lights.clear();
+  }
+};
+
 // Appends to important_lights every light with irradiance >= tolerance at point. `volumes` are
 // the hierarchy's, fitted for `tolerance` (or a smaller one, which culls less).
 // When culled_irradiance_bound is given, it receives an upper bound of the summed irradiance (RGB,
@@ -53,6 +76,11 @@ struct WalkScratch {
 void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
                            WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+
+// find_important_lights, keeping in `culled` (cleared first) what it culls instead of dropping it.
+void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
+                               WalkCounters& counters, CulledParts& culled);
 
 // The walk of `lev_bounded`: like find_important_lights, but a subtree or light is culled only
 // while the running sum of what was culled at this point (the culled_irradiance_bound above) stays

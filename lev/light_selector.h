@@ -23,6 +23,9 @@ class ShadingPoint {
  public:
   virtual ~ShadingPoint() = default;
   virtual glm::vec3 position() const = 0;
+  // The unit normal on the side a light must be on to add anything (unshadowed_radiance is zero
+  // from the other side), for methods that sample by importance; zero when unknown.
+  virtual glm::vec3 normal() const { return glm::vec3(0.0f); }
   // Radiance the light would add toward the viewer if unoccluded: eq. 6 without the ambient
   // term. Zero when the light is behind the surface.
   virtual glm::vec3 unshadowed_radiance(const Light& world_light) const = 0;

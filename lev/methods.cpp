@@ -6,6 +6,8 @@
 #include "lev/selector_lev.h"
 #include "lev/selector_lev_bounded.h"
 #include "lev/selector_lev_est.h"
+#include "lev/selector_lev_mc.h"
+#include "lev/selector_light_tree.h"
 #include "lev/selector_rt.h"
 
 namespace lev {
@@ -78,6 +80,34 @@ std::vector<MethodInfo>& table_rows() {
        [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevEstSelector>(h, tolerance);
        }},
+      {Method::lev_mc,
+       "lev_mc",
+       "LEV + sampled rest (unbiased)",
+       "LEV's shadow rays, plus k lights (--samples) drawn from what the walk culled by their "
+       "irradiance bound, weighed by 1/probability: passes converge to rt",
+       true,
+       false,
+       true,
+       false,
+       {0.1, 0.03, 0.01, 0.003, 0.001},
+       nullptr,
+       [](const LightHierarchy& h, float tolerance, int samples) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevMcSelector>(h, tolerance, samples);
+       }},
+      {Method::light_tree,
+       "light_tree",
+       "Light tree (pbrt-v4, Cycles)",
+       "k lights (--samples) drawn from the whole hierarchy by importance (pbrt-v4's "
+       "BVHLightSampler, Cycles' light tree), weighed by 1/probability: passes converge to rt",
+       false,
+       false,
+       true,
+       false,
+       {},
+       nullptr,
+       [](const LightHierarchy& h, float, int samples) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LightTreeSelector>(h, samples);
+       }},
   };
   return table;
 }
@@ -130,8 +160,14 @@ Method register_method(MethodInfo row) {
 }
 
 std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy,
-                                             float tolerance) {
-  return method_info(method).make_selector(hierarchy, tolerance);
+                                             float tolerance, int samples_per_point) {
+  if (samples_per_point < 1 || samples_per_point > kMaxLightSamples) {
+    throw std::invalid_argument("samples per point " + std::to_string(samples_per_point) + " outside [1, " +
+                                std::to_string(kMaxLightSamples) + "]");
+  }
+  const MethodInfo& info = method_info(method);
+  if (info.make_sampling_selector) return info.make_sampling_selector(hierarchy, tolerance, samples_per_point);
+  return info.make_selector(hierarchy, tolerance);
 }
 
 }  // namespace lev

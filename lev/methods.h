@@ -6,7 +6,8 @@
 //   1. its selector, lev/selector_NAME.{h,cpp}: a LightSelector (with make_scratch when it keeps
 //      per-thread buffers, and reading SelectorScratch::random when it samples);
 //   2. one row in method_table() (lev/methods.cpp): name, label, summary, the flags below, the
-//      tolerances the bench's trade experiment sweeps, and the function that makes its selector.
+//      tolerances the bench's trade experiment sweeps, and the function that makes its selector
+//      (make_sampling_selector instead for a method that draws k lights per point).
 // It then appears in `--method`, the viewer's method switch and trade plot, and the benchmarks
 // that compare methods (speed, trade); nothing else names methods. (A test binary may add a row
 // with register_method instead.)
@@ -29,10 +30,16 @@ inline constexpr double kDefaultTolerance = 0.01;
 
 // A row of method_table(), by position. The named values are the built-in rows; further rows
 // (register_method) take the next values.
-enum class Method : std::uint8_t { rt, ast, lev, lev_bounded, lev_est };
+enum class Method : std::uint8_t { rt, ast, lev, lev_bounded, lev_est, lev_mc, light_tree };
 
 using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
                                                         float tolerance);
+
+// The lights a sampling method draws per shading point (--samples): 1 by default, at most this.
+inline constexpr int kMaxLightSamples = 1024;
+// For methods that draw samples_per_point lights at each shading point (lev_mc, light_tree).
+using MakeSamplingSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy, float tolerance,
+                                                                int samples_per_point);
 
 struct MethodInfo {
   Method id;
@@ -44,7 +51,8 @@ struct MethodInfo {
   bool samples;         // draws from the per-sample random stream (images depend on the passes)
   bool scans_every_light;  // its time per point grows with the light count: the bench subsamples it
   std::vector<double> bench_tolerances;  // the trade experiment's sweep, largest first
-  MakeSelector make_selector;
+  MakeSelector make_selector;  // null when make_sampling_selector is given
+  MakeSamplingSelector make_sampling_selector = nullptr;
 };
 
 const std::vector<MethodInfo>& method_table();
@@ -59,9 +67,10 @@ Method reference_method();
 // (the table is not guarded), typically from a static initialiser.
 Method register_method(MethodInfo row);
 
-// The selector for one render at one tolerance. It reads the hierarchy (which it never changes,
-// so any number of selectors may share it) and must not outlive it.
+// The selector for one render at one tolerance (and, for a sampling method, samples_per_point
+// lights drawn per shading point, in [1, kMaxLightSamples]). It reads the hierarchy (which it
+// never changes, so any number of selectors may share it) and must not outlive it.
 std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy,
-                                             float tolerance);
+                                             float tolerance, int samples_per_point = 1);
 
 }  // namespace lev

@@ -24,6 +24,7 @@ void clear_framebuffer(Framebuffer& f) {
   f.nodes_visited.assign(n, 0);
   f.shadow_rays.assign(n, 0);
   f.error_bound_sum.assign(n, glm::vec3(0.0f));
+  f.radiance_square_sum.assign(n, glm::vec3(0.0f));
 }
 
 std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& f) {

@@ -22,6 +22,9 @@ struct Framebuffer {
   // Per pixel, summed over samples: the certified bound of |radiance - rt's radiance| (RGB,
   // error_bound.h); zero unless RenderSettings::compute_error_bound.
   std::vector<glm::vec3> error_bound_sum;
+  // Per pixel and channel, the sum of each sample's radiance squared: with radiance_sum and
+  // samples, the variance across passes behind the noise estimate (pixel_noise.h).
+  std::vector<glm::vec3> radiance_square_sum;
 };
 
 Framebuffer make_framebuffer(int width, int height);

@@ -120,6 +120,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
     fb.nodes_visited[sample.pixel] += sample.counters.selection.nodes_visited;
     fb.shadow_rays[sample.pixel] += sample.counters.selection.shadow_rays;
     fb.error_bound_sum[sample.pixel] += sample.counters.error_bound;
+    fb.radiance_square_sum[sample.pixel] += sample.radiance * sample.radiance;
   }
   return true;
 }
@@ -129,11 +130,12 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
 RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
                                  const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
-      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0) {
+      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0 || settings.light_samples < 1 ||
+      settings.light_samples > lev::kMaxLightSamples) {
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
-  state->selector = lev::make_selector(settings.method, scene.lights, settings.tolerance);
+  state->selector = lev::make_selector(settings.method, scene.lights, settings.tolerance, settings.light_samples);
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
@@ -154,7 +156,8 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
   if (preview) {
     if (!state.preview_selector)
       state.preview_selector =
-          lev::make_selector(state.settings.method, state.scene.lights, state.settings.tolerance);
+          lev::make_selector(state.settings.method, state.scene.lights, state.settings.tolerance,
+                             state.settings.light_samples);
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
                                      (state.settings.height + preview_step - 1) / preview_step);
   }

@@ -36,6 +36,7 @@ struct RenderSettings {
   int pixel_stride = 1;  // > 1: render only every stride-th pixel in x and y (a subsample)
   lev::Method method = lev::Method::lev;
   float tolerance = static_cast<float>(lev::kDefaultTolerance);
+  int light_samples = 1;  // lights a sampling method draws per shading point, [1, lev::kMaxLightSamples]
   std::uint64_t seed = 0;
   // Fill Framebuffer::error_bound_sum (error_bound.h). Off by default: the renders whose cost is
   // compared (the bench) skip the selectors' bound work; `levrt render` and the viewer ask for it.

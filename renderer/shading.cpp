@@ -22,6 +22,7 @@ class SurfacePoint final : public lev::ShadingPoint {
         shadow_origin_(offset_ray_origin(hit.position, side, hit.distance, rays.offset_floor())), ray_log_(ray_log) {}
 
   glm::vec3 position() const override { return position_; }
+  glm::vec3 normal() const override { return normal_; }
 
   glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
     const glm::vec3 to_light = light.position - position_;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "renderer/error_bound.h"
+#include "renderer/pixel_noise.h"
 
 namespace app::viewer {
 
@@ -38,6 +39,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   u.lights_tested.resize(count);
   u.nodes_visited.resize(count);
   u.error_bound_pct.resize(count);
+  u.noise_pct.resize(count);
   std::size_t k = 0;
   for (int y = rect.y0; y < rect.y1; ++y) {
     for (int x = rect.x0; x < rect.x1; ++x, ++k) {
@@ -51,6 +53,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
       u.nodes_visited[k] =
           n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
       u.error_bound_pct[k] = static_cast<float>(renderer::pixel_error_bound_pct(f, i));
+      u.noise_pct[k] = static_cast<float>(renderer::pixel_std_error_pct(f, i));
       renderer::add_pixel_totals(f, i, u.totals);
     }
   }

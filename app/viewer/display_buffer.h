@@ -36,6 +36,7 @@ struct TileUpdate {
   std::vector<std::uint32_t> samples;
   std::vector<float> lights_tested;  // per sample
   std::vector<float> nodes_visited;  // per sample
+  std::vector<float> noise_pct;      // estimated standard error (renderer/pixel_noise.h)
   TileTotals totals;
   // The certified error bound per pixel, % of 765 (renderer/error_bound.h).
   std::vector<float> error_bound_pct;

@@ -28,6 +28,7 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
   image.lights_tested.assign(n, 0.0f);
   image.nodes_visited.assign(n, 0.0f);
   image.error_bound_pct.assign(n, 0.0f);
+  image.noise_pct.assign(n, 0.0f);
   image.tile_totals.clear();
   image.tile_seen.clear();
   image.tiles_seen = 0;
@@ -60,6 +61,7 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       image.lights_tested[i] = u.lights_tested[k];
       image.nodes_visited[i] = u.nodes_visited[k];
       image.error_bound_pct[i] = u.error_bound_pct[k];
+      image.noise_pct[i] = u.noise_pct[k];
       // Pixels skipped by a subsample keep the backdrop.
       if (u.samples[k] == 0) continue;
       for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
@@ -235,6 +237,10 @@ std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewI
     if (mode == ViewMode::error) {
       known[i] = i < error.pct.size() && error.pct[i] >= 0.0f;
       if (known[i]) values[i] = error.pct[i];
+    } else if (mode == ViewMode::noise) {
+      // Known from the second pass on; a preview has no spread.
+      known[i] = image.samples[i] >= 2;
+      if (known[i]) values[i] = image.noise_pct[i];
     } else if (shows_preview(image, preview, i)) {
       known[i] = 1;
       values[i] = sample_value(*preview, mode, i);

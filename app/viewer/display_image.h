@@ -26,6 +26,7 @@ struct DisplayImage {
   std::vector<std::uint32_t> samples;        // 0: not rendered yet in this generation
   std::vector<float> lights_tested;          // per sample
   std::vector<float> nodes_visited;          // per sample
+  std::vector<float> noise_pct;              // estimated standard error; 0 below two samples
   std::vector<TileTotals> tile_totals;       // by tile index
   std::vector<std::uint8_t> tile_seen;       // by tile index
   int tiles_seen = 0;

@@ -3,6 +3,21 @@
 #include "renderer/error_bound.h"
 
 namespace app::viewer {
+namespace {
+
+std::optional<double> noise_average_pct(const DisplayImage& image) {
+  double sum = 0.0;
+  std::size_t pixels = 0;
+  for (std::size_t i = 0; i < image.noise_pct.size(); ++i) {
+    if (image.samples[i] < 2) continue;
+    sum += image.noise_pct[i];
+    ++pixels;
+  }
+  if (pixels == 0) return std::nullopt;
+  return sum / static_cast<double>(pixels);
+}
+
+}  // namespace
 
 LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
                              const ErrorImage& error, std::chrono::steady_clock::time_point now) {
@@ -27,6 +42,7 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
     if (s.render_seconds > 0.0) {
       s.mrays_per_second = static_cast<double>(s.samples + s.shadow_rays) / s.render_seconds * 1e-6;
     }
+    s.noise_avg_pct = noise_average_pct(image);
   }
   if (error.pixels_compared > 0) {
     s.error_avg_pct = error.average_pct;
@@ -55,8 +71,9 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   r.pass_seconds = s.pass_seconds;
   r.totals = s.totals;
   // Every pass samples the same pixels once.
-  r.rendered_pixels = status.passes_done > 0 ? s.totals.samples / static_cast<std::uint64_t>(status.passes_done)
-                                             : s.totals.samples;
+  r.rendered_pixels = status.passes_done > 0
+                          ? s.totals.samples / static_cast<std::uint64_t>(status.passes_done)
+                          : s.totals.samples;
   r.hierarchy_bytes = status.hierarchy_bytes;
   r.method_bytes = status.method_bytes;
   r.error_bound = s.error_bound;
@@ -65,6 +82,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
                                "pass 0 against the rt reference, pixels both have rendered",
                                status.reference_seconds};
   }
+  r.std_error_avg_pct = s.noise_avg_pct;
   r.camera = camera;
   return r;
 }

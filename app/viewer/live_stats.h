@@ -31,6 +31,9 @@ struct LiveStats {
   std::size_t error_pixels = 0;
   // The certified bound of that error over the pixels received, known without the reference.
   std::optional<renderer::PixelErrorStats> error_bound;
+  // The estimated standard error of the mean over passes (renderer/pixel_noise.h), averaged over
+  // the pixels with two samples or more; none before the second pass reaches a pixel.
+  std::optional<double> noise_avg_pct;
 };
 
 // `error` is used when it has compared pixels.

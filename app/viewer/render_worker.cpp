@@ -221,8 +221,11 @@ struct Worker {
     // A method that ignores the tolerance keeps rendering when only the tolerance moves.
     const bool tolerance_matters =
         rs.tolerance != main_settings.tolerance && lev::method_info(rs.method).uses_tolerance;
+    // Only a sampling method draws light_samples lights per point.
+    const bool light_samples_matter =
+        rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              tolerance_matters || rs.threads != main_settings.threads;
+                              tolerance_matters || light_samples_matter || rs.threads != main_settings.threads;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing

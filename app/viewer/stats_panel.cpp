@@ -111,6 +111,11 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   } else {
     row("pixel error", "needs the rt reference");
   }
+  if (s.noise_avg_pct) {
+    row("noise", "%.4f%% avg std error (%d passes)", *s.noise_avg_pct, st.passes_done);
+  } else {
+    row("noise", "from the second pass on");
+  }
   row("UI", "%.0f fps", state.ui_fps);
   ImGui::EndTable();
 }

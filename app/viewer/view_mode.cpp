@@ -16,6 +16,8 @@ const std::vector<ViewModeInfo>& view_mode_table() {
       {ViewMode::bound, "bound", "Error bound",
        "certified bound of the error vs rt per pixel, % of 765 (no reference needed)",
        "no light was left out: the image is rt's, up to 8-bit rounding"},
+      {ViewMode::noise, "noise", "Noise", "estimated standard error of the pixel mean over passes, % of 765",
+       "the passes agree: no noise (or fewer than two passes yet)"},
   };
   return table;
 }

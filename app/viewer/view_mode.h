@@ -1,6 +1,7 @@
-// The pictures the viewer can show of one render: the image itself and four heatmaps (lights
-// tested, nodes visited, the error against the `rt` reference of the same view, and the
-// certified bound of that error, known without the reference: renderer/error_bound.h).
+// The pictures the viewer can show of one render: the image itself and five heatmaps (lights
+// tested, nodes visited, the error against the `rt` reference of the same view, the certified
+// bound of that error, known without the reference (renderer/error_bound.h), and the noise: the
+// estimated standard error of the mean over the passes so far).
 // One table names them for the panel, for --set view=... and for snapshot file names.
 #pragma once
 
@@ -11,7 +12,7 @@
 
 namespace app::viewer {
 
-enum class ViewMode { image, lights, nodes, error, bound };
+enum class ViewMode { image, lights, nodes, error, bound, noise };
 
 struct ViewModeInfo {
   ViewMode mode;

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -20,16 +21,7 @@ namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::run_levrt;
 
-std::string read_file(const fs::path& path) {
-  std::string text;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return text;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), f)) > 0) text.append(buffer.data(), n);
-  std::fclose(f);
-  return text;
-}
+using levrt_test::read_file;
 
 std::string first_line(const fs::path& path) {
   const std::string text = read_file(path);
@@ -59,11 +51,13 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        // Every method of the table, in its order.
        "scene,lights,rt_cpu_s,rt_wall_s,rt_pixels,ast_cpu_s,ast_wall_s,ast_pixels,lev_cpu_s,"
        "lev_wall_s,lev_pixels,lev_bounded_cpu_s,lev_bounded_wall_s,lev_bounded_pixels,"
-       "lev_est_cpu_s,lev_est_wall_s,lev_est_pixels,"
-       "ast_over_rt_pct,lev_over_rt_pct,lev_bounded_over_rt_pct,lev_est_over_rt_pct,rt_over_lev,"
-       "ast_over_lev,lev_bounded_over_lev,lev_est_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,"
-       "rt_tests_per_point,ast_tests_per_point,lev_tests_per_point,lev_bounded_tests_per_point,"
-       "lev_est_tests_per_point"},
+       "lev_est_cpu_s,lev_est_wall_s,lev_est_pixels,lev_mc_cpu_s,lev_mc_wall_s,lev_mc_pixels,"
+       "light_tree_cpu_s,light_tree_wall_s,light_tree_pixels,ast_over_rt_pct,lev_over_rt_pct,"
+       "lev_bounded_over_rt_pct,lev_est_over_rt_pct,lev_mc_over_rt_pct,light_tree_over_rt_pct,"
+       "rt_over_lev,ast_over_lev,lev_bounded_over_lev,lev_est_over_lev,lev_mc_over_lev,"
+       "light_tree_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,"
+       "ast_tests_per_point,lev_tests_per_point,lev_bounded_tests_per_point,"
+       "lev_est_tests_per_point,lev_mc_tests_per_point,light_tree_tests_per_point"},
       {"memory",
        "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
        "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"

@@ -11,11 +11,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
 namespace {
 namespace fs = std::filesystem;
 using levrt_test::CommandRun;
+using levrt_test::read_file;
 using levrt_test::run_levrt;
 
 class Cli : public ::testing::Test {
@@ -47,6 +49,7 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
       {"--level", {"0", "11", "x", ""}},
       {"--lights", {"1000", "-64", "abc", "", "65"}},
       {"--reference", {"lev", ""}},
+      {"--samples", {"0", "-1", "1025", "99999999999999999999", "x", "", "2.5"}},
   };
   const std::string out = path("image.png");
   for (const auto& [flag, values] : cases) {
@@ -85,6 +88,9 @@ TEST_F(Cli, BadOutputPathsExitTwoAndWriteNothing) {
       {"--stats", path("nope/s.json")},
       {"--heatmap-lights", dir_.string()},
       {"--heatmap-nodes", ""},
+      {"--heatmap-noise", path("noise.jpg")},
+      {"--heatmap-noise", path("missing/n.png")},
+      {"--out", path("n.png"), "--heatmap-noise", path("n.png")},
       {"--out", path("same.png"), "--heatmap-lights", path("same.png")},
       {"--out", path("x.png"), "--stats", path("./x.png")},
       {"--heatmap-bound", path("missing/b.png")},
@@ -186,6 +192,27 @@ TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
   };
   EXPECT_EQ(bound("rt"), 0.0);
   EXPECT_GT(bound("lev"), 0.0);
+TEST_F(Cli, SamplingMethodsWriteTheNoiseHeatmapAndItsEstimate) {
+  for (const char* method : {"lev_mc", "light_tree"}) {
+    const std::string stats = path(std::string(method) + ".json");
+    const std::string noise = path(std::string(method) + "_noise.png");
+    const CommandRun r = run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method,
+                                    "--tolerance", "0.3", "--width", "32", "--height", "24", "--spp", "4",
+                                    "--samples", "2", "--heatmap-noise", noise, "--stats", stats, "--reference", "rt"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("std error avg"), std::string::npos) << r.output;
+    const std::string png = read_file(noise);
+    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << method;
+    const nlohmann::json j = nlohmann::json::parse(read_file(stats));
+    EXPECT_EQ(j["method"], method);
+    EXPECT_GT(j["std_error_avg_pct"].get<double>(), 0.0) << method;
+    EXPECT_GT(j["pixel_error_avg_pct"].get<double>(), 0.0) << method;
+    EXPECT_TRUE(j["heatmap_noise_range"].is_array()) << method;
+  }
+  // One pass has no spread: no estimate is claimed.
+  const CommandRun one = run_levrt({"render", "--lights", "64", "--width", "8", "--height", "8", "--stats", path("one.json")});
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_TRUE(nlohmann::json::parse(read_file(path("one.json")))["std_error_avg_pct"].is_null());
 }
 
 }  // namespace

@@ -137,23 +137,37 @@ TEST(RenderWorker, ALaterRequestCancelsTheRenderInFlightAndWins) {
   EXPECT_EQ(ui.image.rgb, direct_render_rgb8(fast));
 }
 
-TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
+// Renders every method, changes one setting, and expects a new render exactly for the methods
+// `restarts` names; either way the image is that of the new settings.
+void expect_change_restarts_only(const std::function<void(app::Settings&)>& change,
+                                 const std::function<bool(const lev::MethodInfo&)>& restarts) {
   for (const lev::MethodInfo& method : lev::method_table()) {
     Ui ui;
     app::Settings s = small_settings();
     s.method = method.id;
     const std::uint64_t first = ui.worker.post(request_for(s));
     ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); })) << method.name;
-    s.tolerance = 0.2;
+    change(s);
     const std::uint64_t second = ui.worker.post(request_for(s));
     ASSERT_TRUE(ui.run_until([&] { return ui.settled(second); })) << method.name;
-    // A restart starts a new generation; a method that ignores the tolerance keeps its image,
-    // which is still the image of the new settings.
-    EXPECT_EQ(ui.status.generation, method.uses_tolerance ? second : first) << method.name;
+    EXPECT_EQ(ui.status.generation, restarts(method) ? second : first) << method.name;
     EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s)) << method.name;
+    EXPECT_EQ(ui.image.noise_pct.size(), ui.image.samples.size());
   }
+}
+
+TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
+  expect_change_restarts_only([](app::Settings& s) { s.tolerance = 0.2; },
+                              [](const lev::MethodInfo& m) { return m.uses_tolerance; });
   EXPECT_FALSE(lev::method_info(lev::Method::rt).uses_tolerance);
   EXPECT_TRUE(lev::method_info(lev::Method::lev).uses_tolerance);
+}
+
+TEST(RenderWorker, ALightSamplesChangeRestartsOnlyTheSamplingMethods) {
+  expect_change_restarts_only([](app::Settings& s) { s.samples = 3; },
+                              [](const lev::MethodInfo& m) { return m.samples; });
+  EXPECT_TRUE(lev::method_info(lev::Method::lev_mc).samples);
+  EXPECT_TRUE(lev::method_info(lev::Method::light_tree).samples);
 }
 
 TEST(RenderWorker, ResumedPassesKeepTheImageExact) {

@@ -75,9 +75,9 @@ TEST(ScriptedChanges, ParseValidChanges) {
   EXPECT_EQ(a.value, "0.1");
   EXPECT_EQ(a.frame, 12);
   EXPECT_EQ(parse_scripted_change("screenshot=/tmp/a@b.png@3").value, "/tmp/a@b.png");
-  for (const char* ok : {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1",
-                         "await=idle@2", "snapshot=out@9", "hover=10,20@4", "width=64@1",
-                         "memory=report@6", "scene=maze@3"}) {
+  for (const char* ok :
+       {"method=rt@0", "lights=256@5", "view=error@7", "reference=off@1", "await=idle@2",
+        "snapshot=out@9", "hover=10,20@4", "width=64@1", "memory=report@6", "scene=maze@3"}) {
     EXPECT_NO_THROW(parse_scripted_change(ok)) << ok;
   }
 }
@@ -255,6 +255,37 @@ TEST(DisplayImage, TilesRebuildTheFramebuffersColoursAndTotals) {
   EXPECT_EQ(s.lights_tested_max, t.lights_tested_max);
   EXPECT_EQ(image.tiles_seen, 15);
   EXPECT_FLOAT_EQ(image.lights_tested[3], 3.0f);
+}
+
+TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) {
+  renderer::Framebuffer f = renderer::make_framebuffer(4, 3);
+  for (std::size_t i = 0; i < f.samples.size(); ++i) {
+    // Pixel i: samples 0.5 and 0.5 + 0.01 i (the first pixel's passes agree, exactly in float).
+    const float a = 0.5f, b = 0.5f + 0.01f * static_cast<float>(i);
+    f.radiance_sum[i] = glm::vec3(a + b);
+    f.radiance_square_sum[i] = glm::vec3(a * a + b * b);
+    f.samples[i] = 2;
+  }
+  DisplayImage image;
+  EXPECT_TRUE(apply_tile_updates(image, all_tiles(f, 1, 1, 2)));
+  for (std::size_t i = 0; i < f.samples.size(); ++i) {
+    // Two samples a, b: standard error |a - b| / 2 per channel, three channels, % of 3.
+    const double expected = 100.0 * 0.01 * static_cast<double>(i) / 2.0;
+    EXPECT_NEAR(image.noise_pct[i], expected, 1e-3 + 1e-3 * expected) << i;
+  }
+  renderer::HeatmapRange range;
+  const std::vector<std::uint8_t> rgb = view_rgb8(image, ErrorImage{}, ViewMode::noise, range);
+  EXPECT_EQ(range.min, 0.0);
+  EXPECT_NEAR(range.max, image.noise_pct.back(), 1e-9);
+  EXPECT_NE(std::vector<std::uint8_t>(rgb.begin(), rgb.begin() + 3),
+            std::vector<std::uint8_t>(rgb.end() - 3, rgb.end()));
+  // One sample: no spread known, the pixels show as not yet rendered.
+  f.samples.assign(f.samples.size(), 1);
+  DisplayImage single;
+  apply_tile_updates(single, all_tiles(f, 2, 0, 2));
+  view_rgb8(single, ErrorImage{}, ViewMode::noise, range);
+  EXPECT_EQ(range.max, 0.0);
+  EXPECT_EQ(parse_view_mode("noise"), ViewMode::noise);
 }
 
 TEST(DisplayImage, OlderGenerationsAreDroppedAndNewerOnesKeepADimmedBackdrop) {

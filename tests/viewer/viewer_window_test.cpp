@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
-#include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -205,6 +205,34 @@ TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
                         "view_building_64_lev_1_stats.json"}) {
     EXPECT_TRUE(fs::exists(dir_ / "snap" / f)) << f << "\n" << r.output;
   }
+}
+
+TEST_F(ViewerWindow, TheNoiseViewOfASamplingMethodShowsAndSnapshotsItsEstimate) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--scene", "hall", "--lights", "64", "--method", "lev_mc", "--tolerance", "0.3", "--samples", "2",
+      "--width", "96", "--height", "72", "--spp", "6", "--window", "1024x640", "--frames", "8",
+      "--set", "await=idle@0",
+      "--set", "screenshot=" + path("image.png") + "@1",
+      "--set", "view=noise@2",
+      "--set", "await=idle@3",
+      "--set", "screenshot=" + path("noise.png") + "@4",
+      "--set", "snapshot=" + path("snap") + "@5",
+  });
+  // clang-format on
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Png image = read_png(path("image.png"));
+  const Png noise = read_png(path("noise.png"));
+  ASSERT_TRUE(image.ok() && noise.ok()) << r.output;
+  EXPECT_FALSE(uniform(noise));
+  EXPECT_GT(picture_differences(image, noise), 1000);
+  const fs::path stats = dir_ / "snap" / "view_hall_64_lev_mc_0.3_stats.json";
+  ASSERT_TRUE(fs::exists(dir_ / "snap" / "view_hall_64_lev_mc_0.3_noise.png")) << r.output;
+  ASSERT_TRUE(fs::exists(stats)) << r.output;
+  const std::string json = read_file_bytes(stats);
+  EXPECT_NE(json.find("\"std_error_avg_pct\""), std::string::npos) << json;
 }
 
 TEST_F(ViewerWindow, OnceThePreviewIsDoneNoPixelIsGreyAfterAChangeToRt) {

@@ -1,0 +1,261 @@
+#include "lev/light_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lev/light_bounds.h"
+
+namespace lev {
+namespace {
+
+// The share of its bound a light keeps where its exact importance is zero (the point just
+// outside its cone or behind the surface plane, as far as rounding can tell): small enough not
+// to waste samples, never zero where the bound is not.
+constexpr double kEdgeShare = 1e-3;
+// The cosine factor never drops below this where the box may still lie in front of the surface.
+constexpr float kMinCosine = 1e-3f;
+// Squared distances below this are clamped, as irradiance clamps at kMinLightDistance.
+constexpr double kMinDistance2 = 1e-36;
+
+double channel_sum(const glm::vec3& v) {
+  return static_cast<double>(v.x) + static_cast<double>(v.y) + static_cast<double>(v.z);
+}
+
+// The largest cos(theta) between the normal and a direction from x into a ball of squared
+// radius r2 around `to_centre` (x at the origin), at least kMinCosine; 0 when the box with half
+// extent `half` lies behind the surface plane by more than rounding can explain.
+float cosine_factor(const glm::vec3& normal, const glm::vec3& to_centre, const glm::vec3& half,
+                    float r2, float rounding) {
+  if (normal == glm::vec3(0.0f)) return 1.0f;
+  const float slack = rounding + kFrameRounding * (max_abs(to_centre) + max_abs(half));
+  if (glm::dot(normal, to_centre) + glm::dot(glm::abs(normal), half) < -slack) return 0.0f;
+  const float d2 = glm::dot(to_centre, to_centre);
+  if (d2 <= r2) return 1.0f;
+  const float d = std::sqrt(d2);
+  const float sin_b = std::sqrt(r2) / d;
+  const float cos_b = std::sqrt(std::max(0.0f, (1.0f - sin_b) * (1.0f + sin_b)));
+  const float cos_n = glm::dot(normal, to_centre) / d;
+  if (cos_n >= cos_b) return 1.0f;
+  const float sin_n = glm::length(glm::cross(normal, to_centre)) / d;
+  return std::max(kMinCosine, cos_n * cos_b + sin_n * sin_b);
+}
+
+// pbrt-v4's importance of an aggregate (header comment), zero exactly where irradiance_bound is
+// or the box is behind the surface.
+double aggregate_importance(const LightAggregate& a, const FramePoint& x, const glm::vec3& normal) {
+  if (is_empty(a)) return 0.0;
+  const double intensity = channel_sum(a.intensity);
+  if (!(intensity > 0.0)) return 0.0;
+  const float cone = shines_everywhere(a) ? 1.0f : spot_cone_factor(a, x);
+  if (cone == 0.0f) return 0.0;
+  const glm::vec3 half = 0.5f * (a.positions.hi - a.positions.lo);
+  const glm::vec3 to_centre = 0.5f * (a.positions.lo + a.positions.hi) - x.point;
+  const float r2 = glm::dot(half, half);
+  const float cosine = cosine_factor(normal, to_centre, half, r2, x.rounding);
+  if (cosine == 0.0f) return 0.0;
+  const double d2 = std::max({static_cast<double>(glm::dot(to_centre, to_centre)),
+                              static_cast<double>(r2), kMinDistance2});
+  return intensity * static_cast<double>(cone) * static_cast<double>(cosine) / d2;
+}
+
+// Where a descent stands: the node's frame (world_from_local), the point and normal in it.
+struct DescentFrame {
+  Similarity world_from_local;
+  FramePoint point;
+  glm::vec3 normal{0.0f};
+};
+
+// Moves node and frame through the transform into an affine node's child.
+void enter_affine(const LightHierarchy& h, std::uint32_t& node, DescentFrame& frame) {
+  const HierarchyNode& n = h.nodes[node];
+  const Similarity& xf = h.transforms[n.payload];
+  frame.world_from_local = compose(frame.world_from_local, xf);
+  if ((n.flags & kTranslationOnly) != 0) {
+    frame.point = to_translated_frame(frame.point, xf.translation);
+  } else {
+    frame.point = to_node_frame(frame.point, xf);
+    frame.normal = glm::transpose(xf.rotation) * frame.normal;
+  }
+  node += 1;
+}
+
+// Follows the nodes that do not branch (affine, extent volume, master, instance) down to the
+// next light or union.
+void pass_through(const LightHierarchy& h, std::uint32_t& node, DescentFrame& frame) {
+  for (;;) {
+    const HierarchyNode& n = h.nodes[node];
+    switch (n.kind) {
+      case NodeKind::affine:
+        enter_affine(h, node, frame);
+        break;
+      case NodeKind::extent_volume:
+      case NodeKind::master:
+        node += 1;
+        break;
+      case NodeKind::instance:
+        node = n.payload;
+        break;
+      case NodeKind::point_light:
+      case NodeKind::spot_light:
+      case NodeKind::set_union:
+        return;
+    }
+  }
+}
+
+// The importances of a union's children into weights; returns their sum. When every child's is
+// zero (the union's own aggregate is looser than its children's) they are weighed alike, so a
+// descent always ends at a light and its probabilities sum to 1; such lights cannot light the
+// point and cost no shadow ray.
+double child_weights(const LightHierarchy& h, std::uint32_t union_node, const DescentFrame& frame,
+                     std::vector<double>& weights, std::uint64_t& nodes_visited) {
+  const std::uint32_t* children = &h.union_children[h.nodes[union_node].payload];
+  const std::uint32_t count = children[0];
+  weights.clear();
+  double total = 0.0;
+  for (std::uint32_t k = 1; k <= count; ++k) {
+    const double w = subtree_importance(h, children[k], frame.point, frame.normal);
+    weights.push_back(w);
+    total += w;
+  }
+  nodes_visited += count;
+  if (total > 0.0) return total;
+  weights.assign(count, 1.0);
+  return static_cast<double>(count);
+}
+
+DescentFrame start_frame(const SubtreeRef& start, const SamplingPoint& point) {
+  return {start.world_from_local, start.point,
+          glm::transpose(start.world_from_local.rotation) * point.normal};
+}
+
+void enumerate(const LightHierarchy& h, std::uint32_t node, DescentFrame frame, double probability,
+               std::vector<SampledLight>& out) {
+  pass_through(h, node, frame);
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind != NodeKind::set_union) {
+    out.push_back({transform_light(h.lights[n.payload], frame.world_from_local), probability});
+    return;
+  }
+  std::vector<double> weights;
+  std::uint64_t visited = 0;
+  const double total = child_weights(h, node, frame, weights, visited);
+  const std::uint32_t* children = &h.union_children[n.payload];
+  for (std::size_t k = 0; k < weights.size(); ++k) {
+    const double p = probability * (weights[k] / total);
+    enumerate(h, children[k + 1], frame, p, out);
+  }
+}
+
+}  // namespace
+
+SubtreeRef whole_hierarchy(const LightHierarchy& hierarchy, const glm::vec3& world_point) {
+  return {hierarchy.root, Similarity{}, world_frame_point(world_point)};
+}
+
+double light_importance(const Light& light, const FramePoint& x, const glm::vec3& normal) {
+  double e = channel_sum(irradiance(light, x.point));
+  if (e > 0.0 && normal != glm::vec3(0.0f)) {
+    const glm::vec3 to_light = light.position - x.point;
+    const float d = glm::length(to_light);
+    const float cosine = d > 0.0f ? glm::dot(normal, to_light) / d : 1.0f;
+    e *= std::max(0.0f, cosine);
+  }
+  if (e > 0.0) return e;
+  return kEdgeShare * aggregate_importance(light_aggregate(light), x, normal);
+}
+
+double subtree_importance(const LightHierarchy& h, std::uint32_t node, const FramePoint& local,
+                          const glm::vec3& local_normal) {
+  DescentFrame frame{Similarity{}, local, local_normal};
+  while (h.nodes[node].kind == NodeKind::affine) enter_affine(h, node, frame);
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
+    return light_importance(h.lights[n.payload], frame.point, frame.normal);
+  }
+  return aggregate_importance(kept_aggregate(h, node), frame.point, frame.normal);
+}
+
+std::size_t choose_weighted(const std::vector<double>& weights, double total, float u) {
+  const double target = static_cast<double>(u) * total;
+  double cumulative = 0.0;
+  std::size_t last = 0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    if (!(weights[i] > 0.0)) continue;
+    last = i;
+    cumulative += weights[i];
+    if (target < cumulative) return i;
+  }
+  return last;  // u * total rounded up to the sum
+}
+
+void sample_light(const LightHierarchy& h, const SubtreeRef& start, const SamplingPoint& point,
+                  RandomStream& random, std::vector<double>& weights, SampledLight& sampled,
+                  std::uint64_t& nodes_visited) {
+  std::uint32_t node = start.node;
+  DescentFrame frame = start_frame(start, point);
+  double probability = 1.0;
+  for (;;) {
+    pass_through(h, node, frame);
+    const HierarchyNode& n = h.nodes[node];
+    if (n.kind != NodeKind::set_union) {
+      sampled.light = transform_light(h.lights[n.payload], frame.world_from_local);
+      sampled.probability = probability;
+      return;
+    }
+    const double total = child_weights(h, node, frame, weights, nodes_visited);
+    const std::size_t k = choose_weighted(weights, total, random.next_float());
+    probability *= weights[k] / total;
+    node = h.union_children[n.payload + 1 + k];
+  }
+}
+
+void light_probabilities(const LightHierarchy& hierarchy, const SubtreeRef& start,
+                         const SamplingPoint& point, std::vector<SampledLight>& lights) {
+  lights.clear();
+  enumerate(hierarchy, start.node, start_frame(start, point), 1.0, lights);
+}
+
+glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, const CulledParts& parts, int k,
+                           ShadingPoint& point, RandomStream& random,
+                           std::vector<double>& part_weights, std::vector<double>& weights,
+                           SelectionCounters& counters) {
+  const SamplingPoint at{point.position(), point.normal()};
+  const FramePoint world_point = world_frame_point(at.position);
+  part_weights.clear();
+  double total = 0.0;
+  for (const SubtreeRef& subtree : parts.subtrees) {
+    part_weights.push_back(
+        subtree_importance(hierarchy, subtree.node, subtree.point,
+                           glm::transpose(subtree.world_from_local.rotation) * at.normal));
+  }
+  for (const Light& light : parts.lights)
+    part_weights.push_back(light_importance(light, world_point, at.normal));
+  for (double w : part_weights) total += w;
+  counters.nodes_visited += part_weights.size();
+  if (!(total > 0.0)) return glm::vec3(0.0f);
+  glm::dvec3 sum(0.0);
+  SampledLight sampled;
+  for (int draw = 0; draw < k; ++draw) {
+    const std::size_t part = choose_weighted(part_weights, total, random.next_float());
+    const double part_probability = part_weights[part] / total;
+    if (part < parts.subtrees.size()) {
+      sample_light(hierarchy, parts.subtrees[part], at, random, weights, sampled,
+                   counters.nodes_visited);
+    } else {
+      sampled.light = parts.lights[part - parts.subtrees.size()];
+      sampled.probability = 1.0;
+    }
+    ++counters.lights_tested;
+    const glm::vec3 radiance = point.unshadowed_radiance(sampled.light);
+    if (radiance == glm::vec3(0.0f)) continue;
+    ++counters.shadow_rays;
+    if (point.visible(sampled.light))
+      sum += glm::dvec3(radiance) / (part_probability * sampled.probability);
+  }
+  return glm::vec3(
+      glm::min(sum / static_cast<double>(k), glm::dvec3(std::numeric_limits<float>::max())));
+}
+
+}  // namespace lev

@@ -1,0 +1,90 @@
+// The importance descent that the sampling methods share (lev_mc's culled rest, light_tree's
+// whole hierarchy): from a subtree, choose a child with probability proportional to its
+// importance at the point, down to one light, and return that light in world space with the
+// probability of having chosen it. An estimator that weighs the light's contribution by
+// 1/probability is unbiased as long as every light that can light the point has a non-zero
+// probability; the importance is therefore zero only where the aggregate bound of light_bounds.h
+// is (no light of the subtree can shine on the point) or where every light lies behind the
+// surface.
+//
+// The importance of a subtree is its light aggregate's bound at the point, with two refinements
+// from pbrt-v4's LightBounds::Importance that make it an estimate rather than a worst case: the
+// distance is measured to the centre of the box of light positions, clamped below at half its
+// diagonal (so a point inside the box gets a finite importance instead of irradiance_bound's
+// infinity), and with a surface normal the bound of cos(theta) between the normal and the
+// directions to the box multiplies it. A single light's importance is its exact irradiance times
+// that cosine, with a small share of its bound where the exact value is zero, so rounding at the
+// edge of a spot cone or of the surface plane never makes a contributing light unreachable.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lev/important_lights.h"
+#include "lev/light.h"
+#include "lev/light_hierarchy.h"
+#include "lev/light_selector.h"
+
+namespace lev {
+
+// The point lights are sampled for: its world position and, when the surface is known, its unit
+// normal on the side lights must be on (zero when any side may be lit).
+struct SamplingPoint {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f};
+};
+
+struct SampledLight {
+  Light light;               // world space
+  double probability = 0.0;  // of choosing this light, > 0
+};
+
+// A whole hierarchy as the descent's starting subtree (the root in the world frame).
+SubtreeRef whole_hierarchy(const LightHierarchy& hierarchy, const glm::vec3& world_point);
+
+// The importance of the subtree at `node` entered in `world_from_local`, with `local` the point
+// in that frame and `local_normal` the normal turned into it.
+double subtree_importance(const LightHierarchy& hierarchy, std::uint32_t node,
+                          const FramePoint& local, const glm::vec3& local_normal);
+// The importance of one light, light and point in the same frame.
+double light_importance(const Light& light, const FramePoint& x, const glm::vec3& normal);
+
+// Index of the item whose cumulative weight first exceeds u * total (u in [0, 1)); only items of
+// non-zero weight are chosen. total = the sum of weights, > 0.
+std::size_t choose_weighted(const std::vector<double>& weights, double total, float u);
+
+// One descent from `start`, one uniform number per choice from `random`. `weights` is scratch.
+// The light and its probability within the subtree (the caller multiplies in how it chose the
+// subtree); a union whose children all have zero importance (none can light the point) is
+// descended uniformly, so the probabilities over the subtree's lights sum to 1. nodes_visited
+// counts the importances computed.
+void sample_light(const LightHierarchy& hierarchy, const SubtreeRef& start,
+                  const SamplingPoint& point, RandomStream& random, std::vector<double>& weights,
+                  SampledLight& sampled, std::uint64_t& nodes_visited);
+
+// Every light of the subtree with the probability sample_light gives it (zero included), in the
+// hierarchy's depth-first order: the descent enumerated, for tests and for checks of the
+// estimators.
+void light_probabilities(const LightHierarchy& hierarchy, const SubtreeRef& start,
+                         const SamplingPoint& point, std::vector<SampledLight>& lights);
+
+// The estimator both sampling methods use: k draws, each choosing one of the parts (a subtree or
+// a single world light) with probability proportional to its importance and then, for a
+// subtree, a light by sample_light; one shadow ray per draw, its radiance weighed by
+// 1/probability, the mean of the k returned. Its expected value is the summed unshadowed-and-
+// visible radiance of every light in the parts. part_weights and weights are scratch.
+glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, const CulledParts& parts, int k,
+                           ShadingPoint& point, RandomStream& random,
+                           std::vector<double>& part_weights, std::vector<double>& weights,
+                           SelectionCounters& counters);
+
+// The per-thread buffers of a sampling method (its MethodScratch).
+struct SamplingScratch final : MethodScratch {
+  CulledParts parts;
+  std::vector<double> part_weights;
+  std::vector<double> weights;
+};
+
+}  // namespace lev

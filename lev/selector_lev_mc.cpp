@@ -1,0 +1,31 @@
+#include "lev/selector_lev_mc.h"
+
+#include "lev/important_lights.h"
+#include "lev/light_sampling.h"
+
+namespace lev {
+
+LevMcSelector::LevMcSelector(const LightHierarchy& hierarchy, float tolerance,
+                             int samples_per_point)
+    : SamplingSelector(hierarchy, samples_per_point),
+      volumes_(fit_extent_volumes(hierarchy, tolerance)),
+      tolerance_(tolerance) {}
+
+glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                                         SelectionCounters& counters,
+                                         glm::vec3* culled_irradiance_bound) const {
+  SamplingScratch& sampling = begin_point(scratch, culled_irradiance_bound);
+  scratch.lights.clear();
+  WalkCounters walk_counters;
+  find_important_and_culled(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk,
+                            scratch.lights, walk_counters, sampling.parts);
+  counters.nodes_visited += walk_counters.nodes_visited;
+  const glm::vec3 tested = sum_visible_lights(
+      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
+  if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) return tested;
+  return tested + sampled_radiance(hierarchy_, sampling.parts, samples_per_point_, point,
+                                   scratch.random, sampling.part_weights, sampling.weights,
+                                   counters);
+}
+
+}  // namespace lev

@@ -1,0 +1,195 @@
+// The importance descent (lev/light_sampling.h) on random instanced hierarchies: one descent's
+// probabilities over every light sum to 1; every light that can light a point (inside light
+// boxes, on spot cone edges, with and without a surface normal) has a non-zero probability; a
+// sampled light comes with the probability the enumeration gives it, so the weighted estimator's
+// expectation is the exact sum; and the walk's culled parts plus its lights are every light
+// that can light the point, once each.
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lev/important_lights.h"
+#include "lev/light_hierarchy.h"
+#include "lev/light_sampling.h"
+#include "tests/lev/random_light_scenes.h"
+
+namespace {
+
+using lev_test::Random;
+
+// Points where sampling is hard: near and inside light boxes (on a light, beside it), on the
+// edge of spot cones (rotated by a few float ulps either way), and anywhere.
+std::vector<glm::vec3> hard_points(Random& r, const std::vector<lev::Light>& lights) {
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < 6; ++i)
+    points.push_back({r.uniform(-30, 30), r.uniform(-30, 30), r.uniform(-10, 10)});
+  for (int i = 0; i < 6; ++i) {
+    const lev::Light& l =
+        lights[static_cast<std::size_t>(r.integer(0, static_cast<int>(lights.size()) - 1))];
+    points.push_back(l.position);
+    points.push_back(l.position + r.direction() * r.uniform(1e-4f, 0.5f));
+    if (l.kind == lev::LightKind::spot && l.cos_cone_half_angle > -1.0f &&
+        l.cos_cone_half_angle < 1.0f) {
+      // A direction at the cone's half-angle from the axis.
+      glm::vec3 side = glm::cross(l.direction, r.direction());
+      if (glm::dot(side, side) < 1e-6f) continue;
+      side = glm::normalize(side);
+      const float c = l.cos_cone_half_angle, s = std::sqrt(std::max(0.0f, 1.0f - c * c));
+      for (int k = -8; k <= 8;
+           ++k) {  // turned off the edge by k float ulps of the angle, either way
+        const float turn = 6e-8f * static_cast<float>(k);
+        const glm::vec3 edge = (c - turn * s) * l.direction + (s + turn * c) * side;
+        for (float d : {0.01f, 1.0f, 7.0f}) points.push_back(l.position + d * edge);
+      }
+    }
+  }
+  return points;
+}
+
+// Lights straight under unions (no extent volume of their own), instanced under random
+// similarities: the descent then weighs each light by itself, in its master's frame.
+lev::LightTree bare_light_tree(Random& r) {
+  lev::LightTree tree;
+  std::vector<lev::LightTreeNode> lights;
+  const int count = r.integer(2, 6);
+  for (int c = 0; c < count; ++c) lights.push_back(lev::light_node(lev_test::random_light(r)));
+  tree.masters.push_back(lev::union_node(std::move(lights)));
+  std::vector<lev::LightTreeNode> roots;
+  for (int i = 0; i < 3; ++i)
+    roots.push_back(lev::affine_node(lev_test::random_similarity(r), lev::instance_node(0)));
+  roots.push_back(lev::light_node(lev_test::random_light(r)));
+  tree.root = lev::union_node(std::move(roots));
+  return tree;
+}
+
+lev::LightTree random_tree(Random& r, int scene) {
+  return scene % 2 == 0 ? lev_test::random_instanced_tree(r) : bare_light_tree(r);
+}
+
+bool same_light(const lev::Light& a, const lev::Light& b) {
+  return a.position == b.position && a.intensity == b.intensity && a.direction == b.direction;
+}
+
+// What the estimator weighs a light by, on the light's own side of a surface with this normal.
+double contribution(const lev::Light& light, const glm::vec3& x, const glm::vec3& normal) {
+  const glm::vec3 e = lev::irradiance(light, x);
+  double sum = static_cast<double>(e.x) + e.y + e.z;
+  if (normal != glm::vec3(0.0f)) {
+    const glm::vec3 to_light = light.position - x;
+    if (!(glm::dot(normal, to_light) > 0.0f)) sum = 0.0;
+  }
+  return sum;
+}
+
+TEST(LightSampling, ProbabilitiesSumToOneAndReachEveryContributingLight) {
+  Random r(20261123);
+  int checked_points = 0, contributing = 0;
+  for (int scene = 0; scene < 200; ++scene) {
+    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const std::vector<lev::Light> flat = lev::flatten_lights(h);
+    for (const glm::vec3& x : hard_points(r, flat)) {
+      for (const glm::vec3 normal : {glm::vec3(0.0f), r.direction()}) {
+        const lev::SamplingPoint at{x, normal};
+        std::vector<lev::SampledLight> enumerated;
+        lev::light_probabilities(h, lev::whole_hierarchy(h, x), at, enumerated);
+        ASSERT_EQ(enumerated.size(), flat.size());
+        double total = 0.0, exact = 0.0, expected = 0.0;
+        for (std::size_t i = 0; i < flat.size(); ++i) {
+          // The descent composes frames as the walk does: the same world lights, bit for bit.
+          ASSERT_TRUE(same_light(enumerated[i].light, flat[i]))
+              << "scene " << scene << ", light " << i;
+          const double p = enumerated[i].probability;
+          const double f = contribution(flat[i], x, normal);
+          total += p;
+          exact += f;
+          if (f > 0.0) {
+            ++contributing;
+            ASSERT_GT(p, 0.0) << "scene " << scene << ", light " << i
+                              << " lights the point but cannot be drawn";
+            expected += p * (f / p);
+          }
+        }
+        ++checked_points;
+        EXPECT_NEAR(total, 1.0, 1e-9);
+        EXPECT_NEAR(expected, exact, 1e-9 * exact);
+      }
+    }
+  }
+  EXPECT_GT(contributing, 1000);  // the cases above really contain lights that light the points
+  EXPECT_GT(checked_points, 500);
+}
+
+TEST(LightSampling, DrawnLightsComeWithTheirEnumeratedProbabilityAndFrequency) {
+  Random r(7);
+  for (int scene = 0; scene < 10; ++scene) {
+    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const std::vector<lev::Light> flat = lev::flatten_lights(h);
+    const glm::vec3 x(r.uniform(-10, 10), r.uniform(-10, 10), r.uniform(-5, 5));
+    const lev::SamplingPoint at{x, r.direction()};
+    std::vector<lev::SampledLight> enumerated;
+    lev::light_probabilities(h, lev::whole_hierarchy(h, x), at, enumerated);
+    lev::RandomStream random{static_cast<std::uint64_t>(scene) + 1};
+    std::vector<double> weights;
+    std::vector<int> drawn(flat.size(), 0);
+    constexpr int kDraws = 20000;
+    for (int d = 0; d < kDraws; ++d) {
+      lev::SampledLight s;
+      std::uint64_t visited = 0;
+      lev::sample_light(h, lev::whole_hierarchy(h, x), at, random, weights, s, visited);
+      std::size_t i = 0;
+      while (i < flat.size() &&
+             !(same_light(flat[i], s.light) && enumerated[i].probability == s.probability))
+        ++i;
+      ASSERT_LT(i, flat.size()) << "a drawn light or its probability is not the enumeration's";
+      ++drawn[i];
+    }
+    // Each light's frequency is binomial: within 5 standard deviations of p * draws.
+    for (std::size_t i = 0; i < flat.size(); ++i) {
+      const double p = enumerated[i].probability;
+      const double sd = std::sqrt(kDraws * p * (1.0 - p));
+      EXPECT_NEAR(drawn[i], kDraws * p, 5.0 * sd + 1.0) << "scene " << scene << ", light " << i;
+    }
+  }
+}
+
+TEST(LightSampling, WalkLightsAndCulledPartsAreEveryContributingLightOnce) {
+  Random r(99);
+  for (int scene = 0; scene < 30; ++scene) {
+    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const std::vector<lev::Light> flat = lev::flatten_lights(h);
+    const float tolerance = std::pow(10.0f, r.uniform(-4.0f, 1.0f));
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
+    for (const glm::vec3& x : hard_points(r, flat)) {
+      std::vector<lev::Light> important;
+      lev::CulledParts culled;
+      lev::WalkScratch scratch;
+      lev::WalkCounters counters;
+      lev::find_important_and_culled(h, volumes, tolerance, x, scratch, important, counters,
+                                     culled);
+      std::vector<lev::Light> parts = important;
+      parts.insert(parts.end(), culled.lights.begin(), culled.lights.end());
+      for (const lev::SubtreeRef& subtree : culled.subtrees) {
+        std::vector<lev::SampledLight> lights;
+        lev::light_probabilities(h, subtree, {x, glm::vec3(0.0f)}, lights);
+        for (const lev::SampledLight& l : lights) parts.push_back(l.light);
+      }
+      for (std::size_t i = 0; i < flat.size(); ++i) {
+        int found = 0;
+        for (const lev::Light& l : parts) found += same_light(l, flat[i]) ? 1 : 0;
+        // Lights of one scene may coincide (instances of one master placed alike): count them too.
+        int twins = 0;
+        for (const lev::Light& l : flat) twins += same_light(l, flat[i]) ? 1 : 0;
+        if (lev::irradiance(flat[i], x) != glm::vec3(0.0f)) {
+          EXPECT_EQ(found, twins) << "scene " << scene << ", light " << i;
+        } else {
+          EXPECT_LE(found, twins);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
