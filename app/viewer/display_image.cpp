@@ -299,6 +299,7 @@ PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, 
   p.nodes_visited = image.nodes_visited[i];
   if (i < error.pct.size() && error.pct[i] >= 0.0f) p.error_pct = error.pct[i];
   p.error_bound_pct = image.error_bound_pct[i];
+  if (p.samples >= 2) p.noise_pct = image.noise_pct[i];
   return p;
 }
 

@@ -101,6 +101,7 @@ struct PixelInfo {
   float nodes_visited = 0.0f;
   std::optional<float> error_pct;
   float error_bound_pct = 0.0f;
+  std::optional<float> noise_pct;  // the estimated standard error, from the second sample on
 };
 PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y);
 

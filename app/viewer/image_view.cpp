@@ -63,6 +63,11 @@ void draw_hover(const ViewerState& state, int x, int y, const ImVec2& tooltip_at
     ImGui::TextDisabled("error          needs the rt reference");
   }
   ImGui::Text("error bound    %.3f%% (certified)", p.error_bound_pct);
+  if (p.noise_pct) {
+    ImGui::Text("noise          %.3f%% (std error of the mean)", *p.noise_pct);
+  } else {
+    ImGui::TextDisabled("noise          from the second sample on");
+  }
   ImGui::Text("samples        %u", p.samples);
   ImGui::EndTooltip();
 }

@@ -192,6 +192,8 @@ TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
   };
   EXPECT_EQ(bound("rt"), 0.0);
   EXPECT_GT(bound("lev"), 0.0);
+}
+
 TEST_F(Cli, SamplingMethodsWriteTheNoiseHeatmapAndItsEstimate) {
   for (const char* method : {"lev_mc", "light_tree"}) {
     const std::string stats = path(std::string(method) + ".json");

@@ -272,6 +272,10 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
     // Two samples a, b: standard error |a - b| / 2 per channel, three channels, % of 3.
     const double expected = 100.0 * 0.01 * static_cast<double>(i) / 2.0;
     EXPECT_NEAR(image.noise_pct[i], expected, 1e-3 + 1e-3 * expected) << i;
+    // The hover read-out shows the same value.
+    const PixelInfo p = pixel_info(image, ErrorImage{}, static_cast<int>(i % 4), static_cast<int>(i / 4));
+    ASSERT_TRUE(p.noise_pct.has_value()) << i;
+    EXPECT_FLOAT_EQ(*p.noise_pct, image.noise_pct[i]) << i;
   }
   renderer::HeatmapRange range;
   const std::vector<std::uint8_t> rgb = view_rgb8(image, ErrorImage{}, ViewMode::noise, range);
@@ -285,6 +289,7 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
   apply_tile_updates(single, all_tiles(f, 2, 0, 2));
   view_rgb8(single, ErrorImage{}, ViewMode::noise, range);
   EXPECT_EQ(range.max, 0.0);
+  EXPECT_FALSE(pixel_info(single, ErrorImage{}, 3, 2).noise_pct.has_value());
   EXPECT_EQ(parse_view_mode("noise"), ViewMode::noise);
 }
 
