@@ -38,6 +38,19 @@ std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer) {
   return pct;
 }
 
+std::vector<double> rendered_error_bound_pct(const Framebuffer& framebuffer) {
+  std::vector<double> pct;
+  for (std::size_t i = 0; i < framebuffer.samples.size(); ++i) {
+    if (framebuffer.samples[i] != 0) pct.push_back(pixel_error_bound_pct(framebuffer, i));
+  }
+  return pct;
+}
+
+bool within_error_bound(double error_pct, double bound_pct) {
+  // Room for the double rounding of the two percentages.
+  return error_pct <= bound_pct + kErrorBoundRoundingPct + 1e-9;
+}
+
 PixelErrorStats error_bound_stats(const FramebufferTotals& totals) {
   PixelErrorStats s;
   if (totals.pixels_sampled == 0) return s;

@@ -39,6 +39,16 @@ double error_bound_pct(const glm::vec3& mean_bound);
 double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i);
 // Every pixel's bound in percent, in pixel order (0 where no sample was taken): the heatmap's.
 std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer);
+// The bounds of the pixels with at least one sample, in pixel order: one per pixel of
+// rendered_rgb8 (render_service.h), so a subsampled render's bounds line up with its pixels.
+std::vector<double> rendered_error_bound_pct(const Framebuffer& framebuffer);
+
+// One 8-bit step per channel on the error scale: the rounding of the two images compared, which
+// the bound (on unrounded radiance) leaves out.
+inline constexpr double kErrorBoundRoundingPct = 100.0 * 3.0 / 765.0;
+// Whether a pixel's error against rt (pixel_error.h) is within its bound, rounding allowed.
+bool within_error_bound(double error_pct, double bound_pct);
+
 // Average and maximum bound over the pixels with at least one sample (the totals of a whole
 // framebuffer or of the tiles received): the pixels rendered_rgb8 keeps, so the bound and the
 // pixel error describe one set of pixels.

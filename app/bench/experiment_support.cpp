@@ -1,5 +1,6 @@
 #include "app/bench/experiment_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -21,6 +22,34 @@ std::string tolerance_text(double t) {
 
 std::string status(bool comparable, bool met) {
   return !comparable ? "n/a" : (met ? "met" : "missed");
+}
+
+std::vector<double> swept_tolerances(const BenchRun& run, const lev::MethodInfo& method) {
+  const std::vector<double>& all = method.bench_tolerances;
+  if (method.is_reference) return {};
+  // A method whose images do not depend on the tolerance and that names no sweep (light_tree)
+  // is still measured, once.
+  if (!method.uses_tolerance && all.empty()) return {lev::kDefaultTolerance};
+  if (!run.config().quick || all.size() <= 3) return all;
+  return {all.front(), all[all.size() / 2], all.back()};
+}
+
+std::vector<Column> per_method_columns(std::vector<Column> rest) {
+  std::vector<Column> columns = {{"scene", "scene"},
+                                 {"lights", "lights"},
+                                 {"method", "method"},
+                                 {"tolerance", "tolerance"},
+                                 {"time_cpu_s", "time (CPU s)"},
+                                 {"time_wall_s", "time (s)", false},
+                                 {"speedup_over_rt", "speedup over rt"},
+                                 {"pixel_error_avg_pct", "avg error (%)"},
+                                 {"pixel_error_max_pct", "max error (%)"}};
+  columns.insert(columns.end(), rest.begin(), rest.end());
+  return columns;
+}
+
+double error_on_log_axis(double error_pct) {
+  return std::max(error_pct, kErrorFloorPct);
 }
 
 std::vector<Column> per_tolerance_columns(std::vector<Column> rest) {

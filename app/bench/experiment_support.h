@@ -13,6 +13,7 @@
 #include "app/bench/plot.h"
 #include "app/bench/runner.h"
 #include "app/bench/table.h"
+#include "lev/methods.h"
 
 namespace app::bench {
 
@@ -23,6 +24,18 @@ std::string status(bool comparable, bool met);
 // The level of `scene` among `levels` whose light count is nearest `lights` (in ratio).
 int nearest_level(const BenchRun& run, const std::string& scene, const std::vector<int>& levels,
                   std::uint64_t lights);
+
+// The tolerances a method is swept over (trade, control): its row's bench_tolerances, none for
+// the reference, the default alone for a method that ignores the tolerance and names none; a quick run
+// takes the first, middle and last.
+std::vector<double> swept_tolerances(const BenchRun& run, const lev::MethodInfo& method);
+
+// The columns of a table with one row per (scene, light count, method, tolerance) render: its
+// time, speedup over rt and pixel errors, then `rest` (trade, control).
+std::vector<Column> per_method_columns(std::vector<Column> rest);
+// Where an error sits on a log axis: errors of exactly 0 cannot, so they are drawn at 1e-4 %.
+inline constexpr double kErrorFloorPct = 1e-4;
+double error_on_log_axis(double error_pct);
 
 // The columns of a table with one row per (scene, light count, tolerance) render, then `rest`.
 std::vector<Column> per_tolerance_columns(std::vector<Column> rest);
@@ -66,5 +79,6 @@ Section run_error(BenchRun& run, const std::string& out_dir);
 Section run_work(BenchRun& run, const std::string& out_dir);
 Section run_trade(BenchRun& run, const std::string& out_dir);
 Section run_limit(BenchRun& run, const std::string& out_dir);
+Section run_control(BenchRun& run, const std::string& out_dir);
 
 }  // namespace app::bench

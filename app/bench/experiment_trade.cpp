@@ -9,34 +9,10 @@
 
 namespace app::bench {
 
-namespace {
-
-// A method's trade sweep: its row's bench_tolerances (none for the reference); a quick run takes
-// the first, middle and last.
-std::vector<double> trade_tolerances(const BenchRun& run, const lev::MethodInfo& method) {
-  const std::vector<double>& all = method.bench_tolerances;
-  if (method.is_reference || !run.config().quick || all.size() <= 3)
-    return method.is_reference ? std::vector<double>{} : all;
-  return {all.front(), all[all.size() / 2], all.back()};
-}
-
-}  // namespace
-
 Section run_trade(BenchRun& run, const std::string& out_dir) {
   const SuiteConfig& c = run.config();
-  // Errors of exactly 0 cannot sit on a log axis; they are drawn at this floor.
-  constexpr double kErrorFloorPct = 1e-4;
   Table table;
-  table.columns = {{"scene", "scene"},
-                   {"lights", "lights"},
-                   {"method", "method"},
-                   {"tolerance", "tolerance"},
-                   {"time_cpu_s", "time (CPU s)"},
-                   {"time_wall_s", "time (s)", false},
-                   {"speedup_over_rt", "speedup over rt"},
-                   {"pixel_error_avg_pct", "avg error (%)"},
-                   {"pixel_error_max_pct", "max error (%)"},
-                   {"lights_tested_avg", "lights tested/pt"}};
+  table.columns = per_method_columns({{"lights_tested_avg", "lights tested/pt"}});
   Chart avg, max;
   avg.title = "Time against average pixel error (dashed: rt, exact)";
   max.title = "Time against maximum pixel error (dashed: rt, exact)";
@@ -57,7 +33,7 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
     const char* rt_name = lev::method_info(rt).name;
     std::vector<MeasureRequest> requests{{scene, level, rt, 0.0, 1, c.runs}};
     for (const lev::MethodInfo& m : lev::method_table()) {
-      for (double t : trade_tolerances(run, m))
+      for (double t : swept_tolerances(run, m))
         requests.push_back({scene, level, m.id, t, 1, c.runs});
     }
     run.measure_together(requests);
@@ -73,7 +49,7 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
       if (info.is_reference) continue;
       const char* method = info.name;
       Series sa{scene + " " + method, {}, {}}, sm = sa;
-      for (double t : trade_tolerances(run, info)) {
+      for (double t : swept_tolerances(run, info)) {
         const Measurement& m = run.measure({scene, level, info.id, t, 1, c.runs});
         const PixelErrors e = pixel_errors(m, reference);
         const double seconds = m.full_frame_cpu_seconds();
@@ -82,9 +58,9 @@ Section run_trade(BenchRun& run, const std::string& out_dir) {
                               number_cell(m.full_frame_seconds(), 3),
                               ratio_cell(rt_seconds / seconds), number_cell(e.average_pct, 4),
                               number_cell(e.max_pct, 3), number_cell(m.lights_tested_avg(), 1)});
-        sa.x.push_back(std::max(e.average_pct, kErrorFloorPct));
+        sa.x.push_back(error_on_log_axis(e.average_pct));
         sa.y.push_back(seconds);
-        sm.x.push_back(std::max(e.max_pct, kErrorFloorPct));
+        sm.x.push_back(error_on_log_axis(e.max_pct));
         sm.y.push_back(seconds);
       }
       avg.series.push_back(sa);

@@ -15,6 +15,9 @@ const std::vector<ExperimentInfo>& experiments() {
        run_error},
       {"work", "Tables 12-15", "lights tested and volumes checked per point", run_work},
       {"trade", "new", "time against pixel error per method and scene", run_trade},
+      {"control", "new",
+       "every method's pixel error against its certified bound, and time, per tolerance",
+       run_control},
       {"limit", "new", "levrt's render against a bare Embree loop on the same rays", run_limit},
   };
   return table;

@@ -9,6 +9,7 @@
 #include "app/bench/table.h"
 #include "app/interrupt.h"
 #include "lev/light_hierarchy.h"
+#include "renderer/error_bound.h"
 #include "renderer/pixel_error.h"
 #include "renderer/render_service.h"
 #include "scenes/scene_models.h"
@@ -35,6 +36,7 @@ SuiteConfig thesis_suite(bool quick) {
   c.trade_lights.clear();
   c.trade_default_lights = 64;
   c.scaling_base_lights = 64;
+  c.control_renders = {{"building", 64}, {"maze", 45}, {"hall", 64}, {"hall", 256}};
   return c;
 }
 
@@ -77,6 +79,17 @@ PixelErrors pixel_errors(const Measurement& image, const Measurement& reference)
   e.average_pct = s.average_pct;
   e.max_pct = s.max_pct;
   return e;
+}
+
+double bound_holds_pct(const Measurement& image, const Measurement& reference) {
+  if (image.rgb.empty() || image.rgb.size() != reference.rgb.size() ||
+      image.error_bound_pct.size() * 3 != image.rgb.size())
+    return kNaN;
+  const std::vector<double> error = renderer::pixel_error_pct(image.rgb, reference.rgb);
+  std::size_t held = 0;
+  for (std::size_t i = 0; i < error.size(); ++i)
+    held += renderer::within_error_bound(error[i], image.error_bound_pct[i]) ? 1 : 0;
+  return 100.0 * static_cast<double>(held) / static_cast<double>(error.size());
 }
 
 double median(std::vector<double> values) {
@@ -186,7 +199,8 @@ double BenchRun::predicted_seconds(const MeasureRequest& r) {
 
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
   // A method that ignores the tolerance (rt) is measured once for every tolerance.
-  return {r.scene, r.level, r.method, lev::method_info(r.method).uses_tolerance ? r.tolerance : 0.0, r.stride};
+  const double tolerance = lev::method_info(r.method).uses_tolerance ? r.tolerance : 0.0;
+  return {r.scene, r.level, r.method, tolerance, r.stride, r.error_bound};
 }
 
 LoadedScene& BenchRun::scene(const std::string& name, int level) {
@@ -234,6 +248,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
   struct Pending {
     std::size_t index;
     Settings settings;
+    renderer::RenderSettings render_settings;
     Measurement m;
     renderer::RenderResult last;
     double spent = 0.0;
@@ -246,7 +261,8 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       out[i] = &found->second;
       continue;
     }
-    Pending p{i, Settings{}, Measurement{}, renderer::RenderResult{}, 0.0};
+    Pending p{};
+    p.index = i;
     p.settings.scene = r.scene;
     p.settings.level = r.level;
     p.settings.method = r.method;
@@ -255,6 +271,8 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     p.settings.height = config_.height;
     p.settings.threads = threads_;
     p.settings.subsample = r.stride;
+    p.render_settings = render_settings_from(p.settings);
+    p.render_settings.compute_error_bound = r.error_bound;
     p.m.request = r;
     pending.push_back(std::move(p));
   }
@@ -272,7 +290,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       LoadedScene& loaded = scene(r.scene, r.level);
       const double cpu_start = process_cpu_seconds();
       InterruptScope::throw_if_interrupted();  // the scene may have just been built
-      if (!renderer::render_passes(loaded.scene, *loaded.rays, render_settings_from(p.settings), 1, p.last,
+      if (!renderer::render_passes(loaded.scene, *loaded.rays, p.render_settings, 1, p.last,
                                    &InterruptScope::flag())) {
         throw Interrupted();
       }
@@ -297,6 +315,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     m.pixels = m.totals.samples;
     m.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
     m.rgb = std::move(p.last.rendered_rgb);
+    if (r.error_bound) m.error_bound_pct = renderer::rendered_error_bound_pct(p.last.framebuffer);
     const int runs = static_cast<int>(m.run_seconds.size());
     Measurement& stored = cache_[key_of(r)] = std::move(m);
     out[p.index] = &stored;

@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "app/scene_loading.h"
@@ -57,6 +58,11 @@ struct SuiteConfig {
   std::uint64_t trade_default_lights = 1024;
   // Each method's trade sweep is its row's bench_tolerances (lev::method_table); a quick run
   // takes the first, middle and last of them.
+  // control: the (scene, light count) renders where every method's error is set against its
+  // certified bound (issue 11: where lev's per-light tolerance holds, and the hall, where it
+  // does not).
+  std::vector<std::pair<std::string, std::uint64_t>> control_renders{
+      {"building", 4096}, {"maze", 3069}, {"hall", 4096}, {"hall", 16384}};
   std::uint64_t scaling_base_lights = 1024;  // the scaling target compares with this count
 };
 
@@ -70,6 +76,9 @@ struct MeasureRequest {
   int stride = 1;  // RenderSettings::pixel_stride
   int runs = 1;    // 1 for counts and images (deterministic); config.runs for timings, which take
                    // more runs (up to 9) when they are quick
+  // Also compute the certified error bound (RenderSettings::compute_error_bound); it costs time,
+  // so a render with it is a measurement of its own.
+  bool error_bound = false;
 };
 
 struct Measurement {
@@ -88,6 +97,9 @@ struct Measurement {
   renderer::FramebufferTotals totals;
   std::size_t hierarchy_bytes = 0;
   std::vector<std::uint8_t> rgb;  // the rendered pixels, 8-bit RGB, for pixel errors
+  // With request.error_bound: each rendered pixel's certified bound (percent of 765), in rgb's
+  // order.
+  std::vector<double> error_bound_pct;
 
   // The median times scaled to every pixel of the frame (the identity without a subsample).
   double full_frame_seconds() const;
@@ -103,6 +115,10 @@ struct PixelErrors {
 };
 // Thesis 5.4.2.4 against the reference on the same pixels; NaN when they do not match.
 PixelErrors pixel_errors(const Measurement& image, const Measurement& reference);
+
+// The share of the pixels (percent) whose error against the reference is within the image's
+// certified bound (renderer::within_error_bound); NaN when the pixels or bounds do not match.
+double bound_holds_pct(const Measurement& image, const Measurement& reference);
 
 // The middle value (the upper one of an even count); NaN for none.
 double median(std::vector<double> values);
@@ -160,7 +176,7 @@ class BenchRun {
   double predicted_seconds(const MeasureRequest& request);
 
  private:
-  using Key = std::tuple<std::string, int, lev::Method, double, int>;
+  using Key = std::tuple<std::string, int, lev::Method, double, int, bool>;
   static constexpr int kProbeStride = 8;
   Key key_of(const MeasureRequest& request) const;
   // A render of one pixel in every kProbeStride^2, made once (also while planning): what the

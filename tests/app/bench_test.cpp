@@ -2,16 +2,20 @@
 // its plots (the figures themselves are benchmarks, never checked here); bad flags exit 2 with
 // one line and write nothing.
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "lev/methods.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -78,6 +82,9 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
       {"trade",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
        "pixel_error_max_pct,lights_tested_avg"},
+      {"control",
+       "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
+       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels"},
       {"limit",
        "scene,lights,render_cpu_s,bare_cpu_s,render_over_bare,render_wall_s,bare_wall_s,"
        "closest_hit_rays,shadow_rays,bare_mrays_per_cpu_s"},
@@ -94,7 +101,7 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        {"speed_building.png", "memory_building.png", "scaling_building.png",
         "fraction_building.png", "error_avg_building.png", "error_max_building.png",
         "work_lights_building.png", "work_volumes_building.png", "trade_avg.png", "trade_max.png",
-        "limit.png"}) {
+        "control_building_64.png", "control_hall_256.png", "limit.png"}) {
     const fs::path p = out / png;
     ASSERT_TRUE(fs::exists(p)) << png;
     EXPECT_EQ(read_file(p).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
@@ -107,6 +114,62 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
   for (const auto& entry : fs::directory_iterator(out)) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
   }
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  for (char ch : line + ",") {
+    if (ch == ',') {
+      cells.push_back(cell);
+      cell.clear();
+    } else {
+      cell += ch;
+    }
+  }
+  return cells;
+}
+
+// control: a row for every method of the table at every scene of the experiment, each with its
+// bound and errors, and the bound holding on every pixel.
+TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
+  const fs::path out = dir_ / "control";
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "control", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream csv(read_file(out / "control.csv"));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = split_csv_line(line);
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(at, header.end()) << name;
+    return static_cast<std::size_t>(at - header.begin());
+  };
+  const std::size_t scene = column("scene"), lights = column("lights"), method = column("method"),
+                    held = column("bound_holds_pct"), error_max = column("pixel_error_max_pct"),
+                    bound_max = column("error_bound_max_pct");
+  std::map<std::string, std::set<std::string>> methods_per_scene;  // "hall 256" -> methods
+  double largest_error = 0.0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> cells = split_csv_line(line);
+    ASSERT_EQ(cells.size(), header.size()) << line;
+    const std::string where = cells[scene] + " " + cells[lights];
+    methods_per_scene[where].insert(cells[method]);
+    EXPECT_EQ(std::stod(cells[held]), 100.0) << line;
+    largest_error = std::max(largest_error, std::stod(cells[error_max]));
+    if (cells[method] == "rt") {
+      EXPECT_EQ(std::stod(cells[bound_max]), 0.0) << line;
+    }
+  }
+  // building, maze and the hall at two light counts.
+  EXPECT_EQ(methods_per_scene.size(), 4u);
+  for (const auto& [where, methods] : methods_per_scene) {
+    for (const lev::MethodInfo& info : lev::method_table())
+      EXPECT_EQ(methods.count(info.name), 1u) << where << " " << info.name;
+  }
+  EXPECT_GT(largest_error, 0.0) << "some method erred, so the check met real errors";
+  EXPECT_NE(read_file(out / "results.md").find("| 100.00 |"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "control_maze_45.png"));
 }
 
 TEST_F(Bench, OnlyRunsTheNamedExperiments) {

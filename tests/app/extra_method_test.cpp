@@ -2,7 +2,7 @@
 // binary registers a small one, `every2` (a shadow ray to every second light), and checks that
 // it renders through the render service and `levrt render`'s path, is offered by the method
 // list the CLI and the viewer build their controls from, and runs in the bench's trade
-// experiment. Its own binary, so the row never reaches the other tests' method lists.
+// and control experiments. Its own binary, so the row never reaches the other tests' method lists.
 #include <algorithm>
 #include <cstddef>
 #include <fstream>
@@ -113,18 +113,28 @@ TEST(ExtraMethod, ItRendersThroughTheRenderService) {
   EXPECT_EQ(again.totals.lights_tested, every2.totals.lights_tested);
 }
 
-TEST(ExtraMethod, TheTradeExperimentMeasuresIt) {
+TEST(ExtraMethod, TheTradeAndControlExperimentsMeasureIt) {
   const levrt_test::TempDir dir("levrt_extra_method_");
   app::BenchFlags flags;
   flags.out = dir.path().string();
   flags.quick = true;
-  flags.only = "trade";
+  flags.only = "trade,control";
   flags.only_given = true;
   ASSERT_EQ(app::run_bench(flags), 0);
   std::ifstream csv(dir.path() / "trade.csv");
   std::stringstream text;
   text << csv.rdbuf();
   EXPECT_NE(text.str().find(",every2,0.1,"), std::string::npos) << text.str();
+  // control: its row (a method that ignores the tolerance shows none), its bound holding on
+  // every pixel.
+  std::ifstream control_csv(dir.path() / "control.csv");
+  std::stringstream control;
+  control << control_csv.rdbuf();
+  const std::size_t row = control.str().find(",every2,-,");
+  ASSERT_NE(row, std::string::npos) << control.str();
+  const std::string line = control.str().substr(row, control.str().find('\n', row) - row);
+  const std::string held = line.substr(0, line.rfind(','));  // before the pixels column
+  EXPECT_EQ(held.substr(held.rfind(',') + 1), "100") << line;
 }
 
 }  // namespace

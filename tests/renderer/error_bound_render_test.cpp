@@ -29,8 +29,7 @@ namespace {
 
 constexpr int kWidth = 32;
 constexpr int kHeight = 24;
-// One 8-bit step per channel, on the error scale (pixel_error.h): the rounding of both images.
-constexpr double kRoundingPct = 100.0 * 3.0 / 765.0;
+constexpr double kRoundingPct = renderer::kErrorBoundRoundingPct;
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
                              lev::Method method, float tolerance, bool compute_error_bound = true) {
@@ -66,7 +65,7 @@ double expect_bound_holds(const renderer::Scene& scene, const std::vector<float>
       for (std::size_t i = 0; i < error.size(); ++i) {
         const double bound = renderer::pixel_error_bound_pct(fb, i);
         largest_error = std::max(largest_error, error[i]);
-        if (error[i] > bound + kRoundingPct + 1e-9 && violations++ < 3) {
+        if (!renderer::within_error_bound(error[i], bound) && violations++ < 3) {
           ADD_FAILURE() << label << " " << method.name << " tolerance " << tolerance << " pixel "
                         << i << ": error " << error[i] << "% > bound " << bound << "%";
         }

@@ -131,6 +131,23 @@ TEST(ShadingErrorBound, AMaterialThatReflectsNothingBoundsNothingEvenWhenTheCull
   EXPECT_DOUBLE_EQ(renderer::error_bound_pct(glm::vec3(0.5f, 0.0f, 2.0f)), 50.0);
 }
 
+// The bench's per-pixel bounds follow rendered_rgb8's pixels (those with a sample, in order), and
+// a pixel's error may exceed its bound by the rounding of one 8-bit step per channel, no more.
+TEST(ShadingErrorBound, RenderedBoundsLineUpWithTheSampledPixelsAndAllowOneStepOfRounding) {
+  renderer::Framebuffer fb = renderer::make_framebuffer(3, 1);
+  fb.samples = {2, 0, 1};
+  fb.error_bound_sum = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(1.0f), glm::vec3(0.0f, 0.0f, 0.5f)};
+  const std::vector<double> bounds = renderer::rendered_error_bound_pct(fb);
+  ASSERT_EQ(bounds.size(), 2u);
+  EXPECT_DOUBLE_EQ(bounds[0], renderer::error_bound_pct(glm::vec3(0.5f, 0.0f, 0.0f)));
+  EXPECT_DOUBLE_EQ(bounds[1], renderer::error_bound_pct(glm::vec3(0.0f, 0.0f, 0.5f)));
+  const double step = renderer::kErrorBoundRoundingPct;
+  EXPECT_TRUE(renderer::within_error_bound(0.0, 0.0));
+  EXPECT_TRUE(renderer::within_error_bound(2.0 + step, 2.0));
+  EXPECT_FALSE(renderer::within_error_bound(2.0 + step + 1e-6, 2.0));
+  EXPECT_FALSE(renderer::within_error_bound(step + 1e-6, 0.0));
+}
+
 // A method that shadow-tests the lights of even index (as rt would) and drops the others,
 // reporting their exact summed irradiance as its culled bound.
 class DropOddLights final : public lev::LightSelector {
