@@ -59,12 +59,12 @@ std::vector<Column> per_tolerance_columns(std::vector<Column> rest) {
   return columns;
 }
 
-namespace {
-
 void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
                  const Table& table) {
   if (!run.planning()) app::write_text_file(out_dir + "/" + name + ".csv", table_csv(table));
 }
+
+namespace {
 
 std::string write_chart(const BenchRun& run, const std::string& out_dir, const std::string& file,
                         const Chart& chart) {

@@ -53,6 +53,10 @@ struct SectionText {
   std::string before_table;
 };
 
+// Writes NAME.csv (not while planning): a table of its own besides the section's.
+void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
+                 const Table& table);
+
 // Writes NAME.csv and the charts (not while planning) and returns the section.
 Section write_section(const BenchRun& run, const std::string& out_dir, const std::string& name,
                       const SectionText& text, const Table& table,
@@ -80,5 +84,6 @@ Section run_work(BenchRun& run, const std::string& out_dir);
 Section run_trade(BenchRun& run, const std::string& out_dir);
 Section run_limit(BenchRun& run, const std::string& out_dir);
 Section run_control(BenchRun& run, const std::string& out_dir);
+Section run_converge(BenchRun& run, const std::string& out_dir);
 
 }  // namespace app::bench
