@@ -126,13 +126,10 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
   const double ratio_budget = c.converge_budgets_of_rt.back();
 
   for (const auto& [scene, wanted_lights] : c.converge_renders) {
-    const std::vector<int> levels = run.levels(scene, 1, ~std::uint64_t{0});
-    if (levels.empty()) continue;  // not in this build's scene table: the section says so
-    const int level = nearest_level(run, scene, levels, wanted_lights);
-    const std::uint64_t lights = run.light_count(scene, level);
+    const std::optional<ReferencedScene> where = referenced_scene(run, scene, wanted_lights);
+    if (!where) continue;  // not in this build's scene table: the section says so
+    const auto [level, lights, stride] = *where;
     const lev::Method rt = lev::reference_method();
-    // Every render of a scene takes rt's pixels, so that errors compare the same pixels.
-    const int stride = run.stride_for(scene, level, rt, 0.0);
     const MeasureRequest rt_request{scene, level, rt, 0.0, stride, c.runs};
     std::vector<MeasureRequest> requests;
     for (const std::string& name : c.converge_methods) {

@@ -142,6 +142,13 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return cells;
 }
 
+// The index of a CSV column by its name (a failure, and the header's size, when it is missing).
+std::size_t column_of(const std::vector<std::string>& header, const std::string& name) {
+  const auto at = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(at, header.end()) << name;
+  return static_cast<std::size_t>(at - header.begin());
+}
+
 // control: a row for every method of the table at every scene of the experiment, each with its
 // bound and errors, and the bound holding on every pixel.
 TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
@@ -152,11 +159,7 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
   std::string line;
   ASSERT_TRUE(std::getline(csv, line));
   const std::vector<std::string> header = split_csv_line(line);
-  const auto column = [&](const std::string& name) {
-    const auto at = std::find(header.begin(), header.end(), name);
-    EXPECT_NE(at, header.end()) << name;
-    return static_cast<std::size_t>(at - header.begin());
-  };
+  const auto column = [&](const std::string& name) { return column_of(header, name); };
   const std::size_t scene = column("scene"), lights = column("lights"), method = column("method"),
                     held = column("bound_holds_pct"), error_max = column("pixel_error_max_pct"),
                     bound_max = column("error_bound_max_pct");
@@ -194,11 +197,7 @@ TEST_F(Bench, ConvergeFollowsEachMethodPassByPass) {
   std::string line;
   ASSERT_TRUE(std::getline(csv, line));
   const std::vector<std::string> header = split_csv_line(line);
-  const auto column = [&](const std::string& name) {
-    const auto at = std::find(header.begin(), header.end(), name);
-    EXPECT_NE(at, header.end()) << name;
-    return static_cast<std::size_t>(at - header.begin());
-  };
+  const auto column = [&](const std::string& name) { return column_of(header, name); };
   const std::size_t scene = column("scene"), lights = column("lights"), method = column("method"),
                     passes = column("passes"), time = column("time_cpu_s"),
                     error = column("pixel_error_avg_pct"), noise = column("std_error_avg_pct");
