@@ -92,7 +92,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
                          static_cast<std::size_t>(x);
       lev::RandomStream random{mix(mix(rs.seed, pixel), pass)};
       float jx = 0.5f, jy = 0.5f;
-      if (pass > 0) {
+      if (pass > 0 && rs.jitter_pixels) {
         jx = random.next_float();
         jy = random.next_float();
       }

@@ -1,10 +1,10 @@
 // The one progressive render step, under the render service every front end calls
 // (render_service.h): a RenderState plus render_pass, which renders one more sample per pixel
 // over all tiles on a oneTBB arena. Pass 0 samples pixel centres, pass k > 0 a jittered position
-// drawn from the (pixel, pass) random stream, so images never depend on thread count or tile
-// order. A pass can be cancelled at any time (the flag is read between tiles, per row, in the
-// recursion and every few thousand lights); finished tiles keep their sample, an interrupted
-// tile adds none.
+// (unless RenderSettings::jitter_pixels is off) drawn from the (pixel, pass) random stream, so
+// images never depend on thread count or tile order. A pass can be cancelled at any time (the
+// flag is read between tiles, per row, in the recursion and every few thousand lights); finished
+// tiles keep their sample, an interrupted tile adds none.
 // The same pass with a pixel step > 1 is a preview: one pixel-centre sample every step pixels in
 // x and y, kept apart from the framebuffer (see render_pass), for a viewer that shows the whole
 // frame coarsely before the full-resolution passes arrive.
@@ -41,6 +41,10 @@ struct RenderSettings {
   // Fill Framebuffer::error_bound_sum (error_bound.h). Off by default: the renders whose cost is
   // compared (the bench) skip the selectors' bound work; `levrt render` and the viewer ask for it.
   bool compute_error_bound = false;
+  // Pass k > 0 samples a jittered position in the pixel (antialiasing). Off, every pass samples
+  // the pixel centres, so only a sampling method's light draws differ between passes and its
+  // passes converge to the one-pass rt image (the bench's converge experiment).
+  bool jitter_pixels = true;
 };
 
 enum class TileStatus : std::uint8_t { waiting, rendering, done };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,13 +25,10 @@ Section run_control(BenchRun& run, const std::string& out_dir) {
   double fewest_held_pct = 100.0;
   bool measured = false;
   for (const auto& [scene, wanted_lights] : c.control_renders) {
-    const std::vector<int> levels = run.levels(scene, 1, ~std::uint64_t{0});
-    if (levels.empty()) continue;  // not in this build's scene table: the section says so
-    const int level = nearest_level(run, scene, levels, wanted_lights);
-    const std::uint64_t lights = run.light_count(scene, level);
+    const std::optional<ReferencedScene> where = referenced_scene(run, scene, wanted_lights);
+    if (!where) continue;  // not in this build's scene table: the section says so
+    const auto [level, lights, stride] = *where;
     const lev::Method rt = lev::reference_method();
-    // Every render of a scene takes rt's pixels, so that errors compare the same pixels.
-    const int stride = run.stride_for(scene, level, rt, 0.0);
     std::vector<MeasureRequest> requests{{scene, level, rt, 0.0, stride, c.runs, true}};
     for (const lev::MethodInfo& m : lev::method_table()) {
       for (double t : swept_tolerances(run, m))

@@ -24,6 +24,17 @@ std::string status(bool comparable, bool met) {
   return !comparable ? "n/a" : (met ? "met" : "missed");
 }
 
+std::optional<ReferencedScene> referenced_scene(BenchRun& run, const std::string& scene,
+                                                std::uint64_t wanted_lights) {
+  const std::vector<int> levels = run.levels(scene, 1, ~std::uint64_t{0});
+  if (levels.empty()) return std::nullopt;
+  ReferencedScene r;
+  r.level = nearest_level(run, scene, levels, wanted_lights);
+  r.lights = run.light_count(scene, r.level);
+  r.stride = run.stride_for(scene, r.level, lev::reference_method(), 0.0);
+  return r;
+}
+
 std::vector<double> swept_tolerances(const BenchRun& run, const lev::MethodInfo& method) {
   const std::vector<double>& all = method.bench_tolerances;
   if (method.is_reference) return {};
@@ -59,12 +70,12 @@ std::vector<Column> per_tolerance_columns(std::vector<Column> rest) {
   return columns;
 }
 
-namespace {
-
 void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
                  const Table& table) {
   if (!run.planning()) app::write_text_file(out_dir + "/" + name + ".csv", table_csv(table));
 }
+
+namespace {
 
 std::string write_chart(const BenchRun& run, const std::string& out_dir, const std::string& file,
                         const Chart& chart) {

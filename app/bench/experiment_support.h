@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,17 @@ std::string status(bool comparable, bool met);
 // The level of `scene` among `levels` whose light count is nearest `lights` (in ratio).
 int nearest_level(const BenchRun& run, const std::string& scene, const std::vector<int>& levels,
                   std::uint64_t lights);
+
+// A (scene, light count) render that every method's errors are taken against rt on (control,
+// converge): the level nearest the wanted count, and rt's pixel stride, which every render of
+// the scene takes so that errors compare the same pixels. Empty when the build lacks the scene.
+struct ReferencedScene {
+  int level = 0;
+  std::uint64_t lights = 0;
+  int stride = 1;
+};
+std::optional<ReferencedScene> referenced_scene(BenchRun& run, const std::string& scene,
+                                                std::uint64_t wanted_lights);
 
 // The tolerances a method is swept over (trade, control): its row's bench_tolerances, none for
 // the reference, the default alone for a method that ignores the tolerance and names none; a quick run
@@ -53,6 +65,10 @@ struct SectionText {
   std::string before_table;
 };
 
+// Writes NAME.csv (not while planning): a table of its own besides the section's.
+void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
+                 const Table& table);
+
 // Writes NAME.csv and the charts (not while planning) and returns the section.
 Section write_section(const BenchRun& run, const std::string& out_dir, const std::string& name,
                       const SectionText& text, const Table& table,
@@ -80,5 +96,6 @@ Section run_work(BenchRun& run, const std::string& out_dir);
 Section run_trade(BenchRun& run, const std::string& out_dir);
 Section run_limit(BenchRun& run, const std::string& out_dir);
 Section run_control(BenchRun& run, const std::string& out_dir);
+Section run_converge(BenchRun& run, const std::string& out_dir);
 
 }  // namespace app::bench

@@ -18,6 +18,9 @@ const std::vector<ExperimentInfo>& experiments() {
       {"control", "new",
        "every method's pixel error against its certified bound, and time, per tolerance",
        run_control},
+      {"converge", "new",
+       "error against time as passes accumulate, per method; the equal-time comparison",
+       run_converge},
       {"limit", "new", "levrt's render against a bare Embree loop on the same rays", run_limit},
   };
   return table;

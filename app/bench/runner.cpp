@@ -11,6 +11,7 @@
 #include "lev/light_hierarchy.h"
 #include "renderer/error_bound.h"
 #include "renderer/pixel_error.h"
+#include "renderer/pixel_noise.h"
 #include "renderer/render_service.h"
 #include "scenes/scene_models.h"
 
@@ -37,6 +38,8 @@ SuiteConfig thesis_suite(bool quick) {
   c.trade_default_lights = 64;
   c.scaling_base_lights = 64;
   c.control_renders = {{"building", 64}, {"maze", 45}, {"hall", 64}, {"hall", 256}};
+  c.converge_renders = c.control_renders;
+  c.converge_passes = 8;
   return c;
 }
 
@@ -71,14 +74,24 @@ double Measurement::shadow_rays_avg() const {
                                : kNaN;
 }
 
-PixelErrors pixel_errors(const Measurement& image, const Measurement& reference) {
+double ProgressMeasurement::full_frame_cpu_seconds(const PassSnapshot& snapshot) const {
+  if (pixels == 0) return kNaN;
+  return snapshot.cpu_seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
+}
+
+PixelErrors pixel_errors(const std::vector<std::uint8_t>& image,
+                         const std::vector<std::uint8_t>& reference) {
   PixelErrors e;
-  if (image.rgb.empty() || image.rgb.size() != reference.rgb.size()) return e;
+  if (image.empty() || image.size() != reference.size()) return e;
   const renderer::PixelErrorStats s =
-      renderer::summarize_pixel_error(renderer::pixel_error_pct(image.rgb, reference.rgb));
+      renderer::summarize_pixel_error(renderer::pixel_error_pct(image, reference));
   e.average_pct = s.average_pct;
   e.max_pct = s.max_pct;
   return e;
+}
+
+PixelErrors pixel_errors(const Measurement& image, const Measurement& reference) {
+  return pixel_errors(image.rgb, reference.rgb);
 }
 
 double bound_holds_pct(const Measurement& image, const Measurement& reference) {
@@ -203,6 +216,21 @@ BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
   return {r.scene, r.level, r.method, tolerance, r.stride, r.error_bound};
 }
 
+renderer::RenderSettings BenchRun::render_settings_for(const MeasureRequest& r) const {
+  Settings s;
+  s.scene = r.scene;
+  s.level = r.level;
+  s.method = r.method;
+  s.tolerance = r.tolerance;
+  s.width = config_.width;
+  s.height = config_.height;
+  s.threads = threads_;
+  s.subsample = r.stride;
+  renderer::RenderSettings rs = render_settings_from(s);
+  rs.compute_error_bound = r.error_bound;
+  return rs;
+}
+
 LoadedScene& BenchRun::scene(const std::string& name, int level) {
   // The levels of one scene model stay loaded together (measurements across levels are run in
   // turns); moving to another model frees them first.
@@ -247,7 +275,6 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
   // What is not cached yet, with its settings.
   struct Pending {
     std::size_t index;
-    Settings settings;
     renderer::RenderSettings render_settings;
     Measurement m;
     renderer::RenderResult last;
@@ -263,16 +290,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     }
     Pending p{};
     p.index = i;
-    p.settings.scene = r.scene;
-    p.settings.level = r.level;
-    p.settings.method = r.method;
-    p.settings.tolerance = r.tolerance;
-    p.settings.width = config_.width;
-    p.settings.height = config_.height;
-    p.settings.threads = threads_;
-    p.settings.subsample = r.stride;
-    p.render_settings = render_settings_from(p.settings);
-    p.render_settings.compute_error_bound = r.error_bound;
+    p.render_settings = render_settings_for(r);
     p.m.request = r;
     pending.push_back(std::move(p));
   }
@@ -327,6 +345,68 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
                   done.tolerance, pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
     if (!planning_) report(what, predicted_seconds(done));
+  }
+  return out;
+}
+
+std::vector<ProgressMeasurement> BenchRun::measure_progress(
+    const std::vector<MeasureRequest>& requests, const std::vector<int>& pass_counts) {
+  std::vector<ProgressMeasurement> out(requests.size());
+  const int last = pass_counts.empty() ? 0 : pass_counts.back();
+  for (std::size_t i = 0; i < requests.size(); ++i) {
+    out[i].request = requests[i];
+    out[i].request.runs = 1;
+    out[i].lights = light_count(requests[i].scene, requests[i].level);
+    out[i].planned_only = planning_;
+  }
+  if (planning_) {
+    for (const ProgressMeasurement& m : out) {
+      seconds_planned_ += predicted_seconds(m.request) * last;
+      jobs_planned_[experiment_] += 1;
+    }
+    return out;
+  }
+  // The jobs of one scene live together (BenchRun::scene keeps one model's levels loaded).
+  std::vector<std::unique_ptr<renderer::RenderJob>> jobs;
+  for (ProgressMeasurement& m : out) {
+    renderer::RenderSettings rs = render_settings_for(m.request);
+    rs.jitter_pixels = false;
+    LoadedScene& loaded = scene(m.request.scene, m.request.level);
+    InterruptScope::throw_if_interrupted();  // the scene may have just been built
+    jobs.push_back(std::make_unique<renderer::RenderJob>(loaded.scene, *loaded.rays, rs));
+    m.full_pixels =
+        static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
+  }
+  std::vector<double> cpu_spent(out.size(), 0.0);
+  std::size_t next_count = 0;
+  for (int pass = 1; pass <= last; ++pass) {
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      const double cpu_start = process_cpu_seconds();
+      if (!jobs[i]->pass(&InterruptScope::flag())) throw Interrupted();
+      cpu_spent[i] += process_cpu_seconds() - cpu_start;
+    }
+    if (next_count >= pass_counts.size() || pass != pass_counts[next_count]) continue;
+    ++next_count;
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      renderer::RenderResult result = jobs[i]->result();
+      PassSnapshot snapshot;
+      snapshot.passes = pass;
+      snapshot.seconds = result.render_seconds;
+      snapshot.cpu_seconds = cpu_spent[i];
+      snapshot.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
+      snapshot.rgb = std::move(result.rendered_rgb);
+      out[i].pixels = result.rendered_pixels;
+      out[i].snapshots.push_back(std::move(snapshot));
+    }
+  }
+  for (const ProgressMeasurement& m : out) {
+    const MeasureRequest& r = m.request;
+    char what[256];
+    std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px, %d passes: %.3f s",
+                  r.scene.c_str(), format_count(m.lights).c_str(), lev::method_info(r.method).name,
+                  r.tolerance, pixels_text(r.stride).c_str(), last,
+                  m.snapshots.empty() ? kNaN : m.snapshots.back().seconds);
+    report(what, predicted_seconds(r) * last);
   }
   return out;
 }

@@ -85,6 +85,15 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
       {"control",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
        "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels"},
+      {"converge",
+       "scene,lights,method,tolerance,pass_cpu_s,passes_in_rt_over_100,"
+       "pixel_error_avg_pct_at_rt_over_100,pixel_error_max_pct_at_rt_over_100,passes_in_rt_over_10,"
+       "pixel_error_avg_pct_at_rt_over_10,pixel_error_max_pct_at_rt_over_10,"
+       "pixel_error_avg_pct_at_last,pixel_error_max_pct_at_last,error_slope,target_passes,"
+       "target_speedup_over_rt,pixels"},
+      {"converge_passes",
+       "scene,lights,method,tolerance,passes,time_cpu_s,time_wall_s,speedup_over_rt,"
+       "pixel_error_avg_pct,pixel_error_max_pct,std_error_avg_pct,pixels"},
       {"limit",
        "scene,lights,render_cpu_s,bare_cpu_s,render_over_bare,render_wall_s,bare_wall_s,"
        "closest_hit_rays,shadow_rays,bare_mrays_per_cpu_s"},
@@ -101,15 +110,18 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        {"speed_building.png", "memory_building.png", "scaling_building.png",
         "fraction_building.png", "error_avg_building.png", "error_max_building.png",
         "work_lights_building.png", "work_volumes_building.png", "trade_avg.png", "trade_max.png",
-        "control_building_64.png", "control_hall_256.png", "limit.png"}) {
+        "control_building_64.png", "control_hall_256.png", "converge_avg_hall_256.png",
+        "converge_max_maze_45.png", "limit.png"}) {
     const fs::path p = out / png;
     ASSERT_TRUE(fs::exists(p)) << png;
     EXPECT_EQ(read_file(p).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
   }
   const std::string md = read_file(out / "results.md");
   EXPECT_NE(md.find("## Headline"), std::string::npos);
-  for (const auto& [name, header] : columns)
+  for (const auto& [name, header] : columns) {
+    if (name == "converge_passes") continue;  // a CSV beside converge's section
     EXPECT_NE(md.find("## " + name + ":"), std::string::npos) << name;
+  }
   EXPECT_NE(md.find("(speed_building.png)"), std::string::npos);
   for (const auto& entry : fs::directory_iterator(out)) {
     EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << entry.path();
@@ -130,6 +142,13 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return cells;
 }
 
+// The index of a CSV column by its name (a failure, and the header's size, when it is missing).
+std::size_t column_of(const std::vector<std::string>& header, const std::string& name) {
+  const auto at = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(at, header.end()) << name;
+  return static_cast<std::size_t>(at - header.begin());
+}
+
 // control: a row for every method of the table at every scene of the experiment, each with its
 // bound and errors, and the bound holding on every pixel.
 TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
@@ -140,11 +159,7 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
   std::string line;
   ASSERT_TRUE(std::getline(csv, line));
   const std::vector<std::string> header = split_csv_line(line);
-  const auto column = [&](const std::string& name) {
-    const auto at = std::find(header.begin(), header.end(), name);
-    EXPECT_NE(at, header.end()) << name;
-    return static_cast<std::size_t>(at - header.begin());
-  };
+  const auto column = [&](const std::string& name) { return column_of(header, name); };
   const std::size_t scene = column("scene"), lights = column("lights"), method = column("method"),
                     held = column("bound_holds_pct"), error_max = column("pixel_error_max_pct"),
                     bound_max = column("error_bound_max_pct");
@@ -170,6 +185,66 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
   EXPECT_GT(largest_error, 0.0) << "some method erred, so the check met real errors";
   EXPECT_NE(read_file(out / "results.md").find("| 100.00 |"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "control_maze_45.png"));
+}
+
+// converge: every pass at the pixel centres, so lev repeats its image (its error never moves)
+// while the sampling methods' means approach rt; times grow with the passes.
+TEST_F(Bench, ConvergeFollowsEachMethodPassByPass) {
+  const fs::path out = dir_ / "converge";
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "converge", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream csv(read_file(out / "converge_passes.csv"));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = split_csv_line(line);
+  const auto column = [&](const std::string& name) { return column_of(header, name); };
+  const std::size_t scene = column("scene"), lights = column("lights"), method = column("method"),
+                    passes = column("passes"), time = column("time_cpu_s"),
+                    error = column("pixel_error_avg_pct"), noise = column("std_error_avg_pct");
+  struct Point {
+    int passes;
+    double seconds, error, noise;
+  };
+  std::map<std::string, std::vector<Point>> curves;  // "hall 256 lev_mc" -> its snapshots
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> cells = split_csv_line(line);
+    ASSERT_EQ(cells.size(), header.size()) << line;
+    curves[cells[scene] + " " + cells[lights] + " " + cells[method]].push_back(
+        {std::stoi(cells[passes]), std::stod(cells[time]), std::stod(cells[error]),
+         std::stod(cells[noise])});
+  }
+  int sampled_curves = 0, converging = 0;
+  for (const auto& [what, points] : curves) {
+    ASSERT_EQ(points.size(), 4u) << what << ": 1, 2, 4 and 8 passes";
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      EXPECT_EQ(points[i].passes, 2 * points[i - 1].passes) << what;
+      EXPECT_GT(points[i].seconds, points[i - 1].seconds) << what;
+    }
+    const bool lev = what.size() > 4 && what.substr(what.size() - 4) == " lev";
+    const bool sampled =
+        what.find(" lev_mc") != std::string::npos || what.find(" light_tree") != std::string::npos;
+    if (lev) {
+      for (const Point& p : points) {
+        // The same image every pass, up to a rare flip of an 8-bit step by the float rounding of
+        // the sums (one step in one pixel moves the average by about 3e-4 %).
+        EXPECT_NEAR(p.error, points.front().error, 0.005) << what;
+        EXPECT_LT(p.noise, 0.01) << what;
+      }
+    }
+    if (sampled && points.front().error > 0.0) {
+      ++sampled_curves;
+      converging += points.back().error < points.front().error ? 1 : 0;
+      EXPECT_GT(points.back().noise, 0.0) << what;
+    }
+  }
+  EXPECT_EQ(curves.count("hall 256 lev"), 1u);
+  EXPECT_EQ(curves.count("hall 256 lev_mc"), 1u);
+  EXPECT_EQ(curves.count("hall 256 light_tree"), 1u);
+  EXPECT_EQ(curves.count("hall 256 rt"), 0u) << "rt is the reference, not a curve";
+  ASSERT_GT(sampled_curves, 0);
+  EXPECT_EQ(converging, sampled_curves) << "every sampled curve ends nearer rt than it starts";
+  EXPECT_NE(read_file(out / "results.md").find("## converge:"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "converge.csv"));
 }
 
 TEST_F(Bench, OnlyRunsTheNamedExperiments) {

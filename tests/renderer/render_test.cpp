@@ -175,6 +175,44 @@ TEST(Render, PreviewPassesSamplePixelCentresEveryStepAndLeaveTheRenderAlone) {
             renderer::render_framebuffer(*plain).lights_tested);
 }
 
+// Without jitter every pass samples the pixel centres: a deterministic method's passes all equal
+// its first, while a sampling method still draws other lights each pass (its random stream is
+// the pass's), so its passes converge to the one-pass rt image.
+TEST(Render, WithoutJitterEveryPassSamplesThePixelCentres) {
+  TestScene t(3);
+  const auto passes_of = [&](lev::Method method, bool jitter, int passes) {
+    renderer::RenderSettings rs;
+    rs.width = 64;
+    rs.height = 48;
+    rs.tile_size = 8;
+    rs.method = method;
+    rs.jitter_pixels = jitter;
+    auto state = renderer::make_render_state(t.scene, *t.rays, rs);
+    for (int i = 0; i < passes; ++i) EXPECT_TRUE(renderer::render_pass(*state));
+    return renderer::render_framebuffer(*state);
+  };
+  const renderer::Framebuffer one = passes_of(lev::Method::lev, false, 1);
+  const renderer::Framebuffer centres = passes_of(lev::Method::lev, false, 4);
+  const renderer::Framebuffer jittered = passes_of(lev::Method::lev, true, 4);
+  for (std::size_t i = 0; i < one.radiance_sum.size(); ++i) {
+    ASSERT_EQ(centres.samples[i], 4u);
+    // Four equal samples: the sum is four times the one (exact in binary floating point up to
+    // the one rounding of 3x).
+    EXPECT_NEAR(centres.radiance_sum[i].x, 4.0f * one.radiance_sum[i].x,
+                1e-6f * (1.0f + one.radiance_sum[i].x))
+        << i;
+  }
+  EXPECT_EQ(renderer::framebuffer_rgb8(centres), renderer::framebuffer_rgb8(one));
+  EXPECT_NE(renderer::framebuffer_rgb8(jittered), renderer::framebuffer_rgb8(one))
+      << "jittered passes sample elsewhere in the pixels (the building's edges change)";
+  const renderer::Framebuffer sampled = passes_of(lev::Method::light_tree, false, 2);
+  const renderer::Framebuffer sampled_once = passes_of(lev::Method::light_tree, false, 1);
+  bool passes_differ = false;
+  for (std::size_t i = 0; i < sampled.radiance_sum.size(); ++i)
+    passes_differ |= sampled.radiance_sum[i] != 2.0f * sampled_once.radiance_sum[i];
+  EXPECT_TRUE(passes_differ) << "a sampling method draws other lights in its second pass";
+}
+
 TEST(Render, HugeToleranceLeavesOnlyAmbient) {
   TestScene t(2);
   const renderer::Framebuffer fb = render(t, lev::Method::lev, 1e30f, 0, 1);
