@@ -350,7 +350,8 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
 }
 
 std::vector<ProgressMeasurement> BenchRun::measure_progress(
-    const std::vector<MeasureRequest>& requests, const std::vector<int>& pass_counts) {
+    const std::vector<MeasureRequest>& requests, const std::vector<int>& pass_counts,
+    double deterministic_cpu_seconds) {
   std::vector<ProgressMeasurement> out(requests.size());
   const int last = pass_counts.empty() ? 0 : pass_counts.back();
   for (std::size_t i = 0; i < requests.size(); ++i) {
@@ -378,9 +379,11 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
         static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
   }
   std::vector<double> cpu_spent(out.size(), 0.0);
+  std::vector<bool> stopped(out.size(), false);
   std::size_t next_count = 0;
   for (int pass = 1; pass <= last; ++pass) {
     for (std::size_t i = 0; i < jobs.size(); ++i) {
+      if (stopped[i]) continue;
       const double cpu_start = process_cpu_seconds();
       if (!jobs[i]->pass(&InterruptScope::flag())) throw Interrupted();
       cpu_spent[i] += process_cpu_seconds() - cpu_start;
@@ -388,6 +391,7 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
     if (next_count >= pass_counts.size() || pass != pass_counts[next_count]) continue;
     ++next_count;
     for (std::size_t i = 0; i < jobs.size(); ++i) {
+      if (stopped[i]) continue;
       renderer::RenderResult result = jobs[i]->result();
       PassSnapshot snapshot;
       snapshot.passes = pass;
@@ -397,6 +401,8 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
       snapshot.rgb = std::move(result.rendered_rgb);
       out[i].pixels = result.rendered_pixels;
       out[i].snapshots.push_back(std::move(snapshot));
+      stopped[i] = !lev::method_info(out[i].request.method).samples &&
+                   cpu_spent[i] > deterministic_cpu_seconds;
     }
   }
   for (const ProgressMeasurement& m : out) {
@@ -404,7 +410,8 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
     char what[256];
     std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px, %d passes: %.3f s",
                   r.scene.c_str(), format_count(m.lights).c_str(), lev::method_info(r.method).name,
-                  r.tolerance, pixels_text(r.stride).c_str(), last,
+                  r.tolerance, pixels_text(r.stride).c_str(),
+                  m.snapshots.empty() ? 0 : m.snapshots.back().passes,
                   m.snapshots.empty() ? kNaN : m.snapshots.back().seconds);
     report(what, predicted_seconds(r) * last);
   }

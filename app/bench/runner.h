@@ -203,10 +203,13 @@ class BenchRun {
   // Renders each request (runs ignored) pass after pass up to the last of pass_counts (ascending),
   // every pass at the pixel centres (RenderSettings::jitter_pixels off, so a sampling method's
   // passes converge to the one-pass reference), pass k of every request before pass k + 1 of
-  // any, and keeps a snapshot after each count in pass_counts. Not cached. While planning it
-  // only counts (snapshots empty, planned_only).
+  // any, and keeps a snapshot after each count in pass_counts. A method that does not sample
+  // repeats its image every pass, so it stops at the first snapshot whose CPU time exceeds
+  // deterministic_cpu_seconds (NaN: never): more passes would only add time. Not cached. While
+  // planning it only counts (snapshots empty, planned_only).
   std::vector<ProgressMeasurement> measure_progress(const std::vector<MeasureRequest>& requests,
-                                                    const std::vector<int>& pass_counts);
+                                                    const std::vector<int>& pass_counts,
+                                                    double deterministic_cpu_seconds = kNaN);
 
   // The loaded scene (built on first use; the levels of one scene model are kept together).
   LoadedScene& scene(const std::string& name, int level);
