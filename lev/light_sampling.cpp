@@ -38,7 +38,10 @@ float cosine_factor(const glm::vec3& normal, const glm::vec3& to_centre, const g
   const float cos_n = glm::dot(normal, to_centre) / d;
   if (cos_n >= cos_b) return 1.0f;
   const float sin_n = glm::length(glm::cross(normal, to_centre)) / d;
-  return std::max(kMinCosine, cos_n * cos_b + sin_n * sin_b);
+  // The sphere's bound and the projection's (light_bounds.h), the smaller: the projection is the
+  // sharper one for a flat box seen edge-on from close by.
+  const float by_projection = cos_angle_bound_by_projection(-normal, -to_centre, half);
+  return std::max(kMinCosine, std::min(cos_n * cos_b + sin_n * sin_b, by_projection));
 }
 
 // pbrt-v4's importance of an aggregate (header comment), zero exactly where irradiance_bound is

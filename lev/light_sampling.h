@@ -12,9 +12,11 @@
 // distance is measured to the centre of the box of light positions, clamped below at half its
 // diagonal (so a point inside the box gets a finite importance instead of irradiance_bound's
 // infinity), and with a surface normal the bound of cos(theta) between the normal and the
-// directions to the box multiplies it. A single light's importance is its exact irradiance times
-// that cosine, with a small share of its bound where the exact value is zero, so rounding at the
-// edge of a spot cone or of the surface plane never makes a contributing light unreachable.
+// directions to the box multiplies it (the smaller of the sphere's bound and the projection's of
+// light_bounds.h, which sees a layer of lights in a ceiling arrive at grazing angles). A single
+// light's importance is its exact irradiance times that cosine, with a small share of its bound
+// where the exact value is zero, so rounding at the edge of a spot cone or of the surface plane
+// never makes a contributing light unreachable.
 #pragma once
 
 #include <cstdint>

@@ -193,3 +193,39 @@ TEST(LightSampling, WalkLightsAndCulledPartsAreEveryContributingLightOnce) {
 }
 
 }  // namespace
+
+namespace {
+
+// A layer of point lights on a ceiling (the building's rooms, the hall's rig) seen from a point
+// of the ceiling beside it, whose normal faces down: every light arrives at a grazing angle. The
+// importance of the layer stays within a small factor of its lights' own (the bound of cos(theta)
+// by projection; the sphere around the layer's box would allow cos = 1, hundreds of times too
+// much), and every light still has a non-zero probability.
+TEST(LightSampling, ALayerSeenEdgeOnWeighsLikeItsLights) {
+  std::vector<lev::LightTreeNode> layer;
+  for (int i = 0; i < 16; ++i) {
+    const glm::vec3 p(static_cast<float>(i % 4), static_cast<float>(i / 4), -0.01f);
+    layer.push_back(lev::light_node(lev::make_point_light(p, glm::vec3(1.0f))));
+  }
+  lev::LightTree tree;
+  tree.root = lev::union_node(std::move(layer));
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const glm::vec3 normal(0.0f, 0.0f, -1.0f);
+  const glm::vec3 beside[] = {{5.0f, 1.5f, 0.0f}, {-2.0f, -2.0f, 0.0f}, {1.5f, 6.0f, 0.0f}};
+  for (const glm::vec3& x : beside) {
+    const lev::FramePoint at = lev::world_frame_point(x);
+    double lights = 0.0;
+    std::vector<lev::SampledLight> enumerated;
+    lev::light_probabilities(h, lev::whole_hierarchy(h, x), {x, normal}, enumerated);
+    ASSERT_EQ(enumerated.size(), 16u);
+    for (const lev::SampledLight& l : enumerated) {
+      EXPECT_GT(l.probability, 0.0);
+      lights += lev::light_importance(l.light, at, normal);
+    }
+    const double layer_importance = lev::subtree_importance(h, h.root, at, normal);
+    EXPECT_GT(layer_importance, 0.0);
+    EXPECT_LT(layer_importance, 8.0 * lights) << "at " << x.x << " " << x.y;
+  }
+}
+
+}  // namespace
