@@ -233,10 +233,41 @@ void light_probabilities(const LightHierarchy& hierarchy, const SubtreeRef& star
   enumerate(hierarchy, start.node, start_frame(start, point), 1.0, lights);
 }
 
-glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, const CulledParts& parts, int k,
-                           ShadingPoint& point, RandomStream& random,
-                           std::vector<double>& part_weights, std::vector<double>& weights,
+void open_wide_parts(const LightHierarchy& h, CulledParts& parts, std::size_t max_parts,
+                     std::vector<SubtreeRef>& queue) {
+  static const float cos_wide = std::cos(kWideAxisSpread);
+  queue.clear();
+  queue.swap(parts.subtrees);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    std::uint32_t node = queue[head].node;
+    DescentFrame frame{queue[head].world_from_local, queue[head].point, glm::vec3(0.0f)};
+    pass_through(h, node, frame);
+    const HierarchyNode& n = h.nodes[node];
+    bool open = false;
+    if (n.kind == NodeKind::set_union) {
+      const LightAggregate& a = kept_aggregate(h, node);
+      // The parts if this one opened: those kept, those still queued, the lights, its children.
+      const std::size_t parts_after = parts.subtrees.size() + (queue.size() - head - 1) +
+                                      parts.lights.size() + h.union_children[n.payload];
+      open = !shines_everywhere(a) && a.cos_axis_spread < cos_wide && parts_after <= max_parts;
+    }
+    if (!open) {
+      parts.subtrees.push_back(queue[head]);
+      continue;
+    }
+    const std::uint32_t* children = &h.union_children[n.payload];
+    for (std::uint32_t c = 1; c <= children[0]; ++c)
+      queue.push_back({children[c], frame.world_from_local, frame.point});
+  }
+}
+
+glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
+                           RandomStream& random, SamplingScratch& scratch,
                            SelectionCounters& counters) {
+  open_wide_parts(hierarchy, scratch.parts, sampled_parts_budget(k), scratch.queue);
+  const CulledParts& parts = scratch.parts;
+  std::vector<double>& part_weights = scratch.part_weights;
+  std::vector<double>& weights = scratch.weights;
   const SamplingPoint at{point.position(), point.normal()};
   const FramePoint world_point = world_frame_point(at.position);
   part_weights.clear();

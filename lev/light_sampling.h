@@ -19,6 +19,8 @@
 // never makes a contributing light unreachable.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -72,21 +74,43 @@ void sample_light(const LightHierarchy& hierarchy, const SubtreeRef& start,
 void light_probabilities(const LightHierarchy& hierarchy, const SubtreeRef& start,
                          const SamplingPoint& point, std::vector<SampledLight>& lights);
 
-// The estimator both sampling methods use: k draws, each choosing one of the parts (a subtree or
-// a single world light) with probability proportional to its importance and then, for a
-// subtree, a light by sample_light; one shadow ray per draw, its radiance weighed by
-// 1/probability, the mean of the k returned. Its expected value is the summed unshadowed-and-
-// visible radiance of every light in the parts. part_weights and weights are scratch.
-glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, const CulledParts& parts, int k,
-                           ShadingPoint& point, RandomStream& random,
-                           std::vector<double>& part_weights, std::vector<double>& weights,
-                           SelectionCounters& counters);
+// How many parts open_wide_parts may leave for k draws: the opening costs an importance per
+// part once per point, and pays back in every draw (on the hall, 64 parts halve the variance of
+// a draw and cost about as much as two draws), so the budget grows with k.
+inline constexpr std::size_t kPartsPerDraw = 16;
+inline constexpr std::size_t kMaxSampledParts = 256;
+inline std::size_t sampled_parts_budget(int k) {
+  return std::min(kMaxSampledParts, kPartsPerDraw * static_cast<std::size_t>(std::max(k, 1)));
+}
+
+// Spots of one subtree whose aims lie more than this apart (radians) make its importance weak.
+inline constexpr float kWideAxisSpread = 0.1f;
+
+// Opens, breadth first, every subtree part whose spots aim more than kWideAxisSpread apart into
+// its children, as long as the parts (subtrees and lights) stay within max_parts. The importance
+// of such a subtree bounds its spot cone by the widest of its aims, and so weighs alike the lights
+// that shine at the point and those that shine away (the hall's rig: a quadrant of fixtures aimed
+// at the stage from every side); its children, each aimed one way, are weighed apart. The parts
+// keep the same lights, each once, so an estimator over them stays unbiased. `queue` is scratch.
+void open_wide_parts(const LightHierarchy& hierarchy, CulledParts& parts, std::size_t max_parts,
+                     std::vector<SubtreeRef>& queue);
 
 // The per-thread buffers of a sampling method (its MethodScratch).
 struct SamplingScratch final : MethodScratch {
   CulledParts parts;
+  std::vector<SubtreeRef> queue;
   std::vector<double> part_weights;
   std::vector<double> weights;
 };
+
+// The estimator both sampling methods use on scratch.parts: first opened (open_wide_parts, within
+// sampled_parts_budget(k)), then k draws, each choosing one of the parts (a subtree or a single
+// world light) with probability proportional to its importance and then, for a subtree, a light
+// by sample_light; one shadow ray per draw, its radiance weighed by 1/probability, the mean of
+// the k returned. Its expected value is the summed unshadowed-and-visible radiance of every
+// light in the parts.
+glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
+                           RandomStream& random, SamplingScratch& scratch,
+                           SelectionCounters& counters);
 
 }  // namespace lev
