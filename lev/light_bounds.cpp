@@ -116,23 +116,35 @@ glm::vec3 round_up_sum(const glm::dvec3& sum) {
 
 float spot_cone_factor(const LightAggregate& a, const FramePoint& x) {
   const glm::vec3 centre = 0.5f * (a.positions.lo + a.positions.hi);
-  const float radius = 0.5f * glm::length(a.positions.hi - a.positions.lo) + x.rounding;
+  const glm::vec3 half = 0.5f * (a.positions.hi - a.positions.lo) + x.rounding;
   const glm::vec3 to_x = x.point - centre;
-  const float distance = glm::length(to_x);
-  if (!(distance > radius)) return 1.0f;
-  const float sin_b = radius / distance;
-  const float cos_b = std::sqrt((1.0f - sin_b) * (1.0f + sin_b));
-  const float cos_w = glm::dot(a.axis, to_x) / distance;
-  const float sin_w = glm::length(glm::cross(a.axis, to_x)) / distance;
   const float cos_o = a.cos_axis_spread;
   const float sin_o = std::sqrt(std::max(0.0f, (1.0f - cos_o) * (1.0f + cos_o)));
-  // theta_x = max(0, theta_w - theta_o), then theta_y = max(0, theta_x - theta_b).
-  float cos_x = 1.0f, sin_x = 0.0f;
-  if (cos_w < cos_o) {
-    cos_x = cos_w * cos_o + sin_w * sin_o;
-    sin_x = std::max(0.0f, sin_w * cos_o - cos_w * sin_o);
+  // Two lower bounds of theta_w - theta_b, the smallest angle from the cone's axis to x - p over
+  // the box; the larger one counts. The sphere's (pbrt-v4) is sharp far from a compact box; the
+  // projection's below is sharp near a box and beside a flat one (a row of ceiling spots seen
+  // from their own height), where the sphere around the box holds x and says nothing.
+  float cos_w = 1.0f, sin_w = 0.0f;
+  const float radius = glm::length(half);
+  const float distance = glm::length(to_x);
+  if (distance > radius) {
+    const float sin_b = radius / distance;
+    const float cos_b = std::sqrt((1.0f - sin_b) * (1.0f + sin_b));
+    const float cos_c = glm::dot(a.axis, to_x) / distance;
+    const float sin_c = glm::length(glm::cross(a.axis, to_x)) / distance;
+    if (cos_c < cos_b) {
+      cos_w = cos_c * cos_b + sin_c * sin_b;
+      sin_w = std::max(0.0f, sin_c * cos_b - cos_c * sin_b);
+    }
   }
-  const float cos_y = cos_x < cos_b ? cos_x * cos_b + sin_x * sin_b : 1.0f;
+  const float cos_p = cos_angle_bound_by_projection(a.axis, to_x, half) + kCosSlack;
+  if (cos_p < cos_w) {
+    cos_w = std::max(-1.0f, cos_p);
+    sin_w = std::sqrt((1.0f - cos_w) * (1.0f + cos_w));
+  }
+  // theta_y = max(0, theta_w - theta_o): the smallest angle from a light's own axis to x - p.
+  float cos_y = 1.0f;
+  if (cos_w < cos_o) cos_y = cos_w * cos_o + sin_w * sin_o;
   if (cos_y + kCosSlack < a.cos_emission) return 0.0f;
   if (a.min_dropoff > 0.0f) {
     // Every spot has a dropoff: dark from 90 degrees on; with P >= 1, cos^P <= cos.
@@ -140,6 +152,22 @@ float spot_cone_factor(const LightAggregate& a, const FramePoint& x) {
     if (a.min_dropoff >= 1.0f) return std::min(1.0f, cos_y + kCosSlack);
   }
   return 1.0f;
+}
+
+float cos_angle_bound_by_projection(const glm::vec3& axis, const glm::vec3& to_x,
+                                    const glm::vec3& half) {
+  // Over the box, axis . (x - p) is at most `along`, and |x - p| lies between the distance to the
+  // box and the distance to its farthest corner: cos = along / |x - p| is at most along over the
+  // smaller one when along is positive, over the larger one when it is not.
+  // The float arithmetic of the dot products and the distances rounds by a few 1e-7 of the
+  // magnitudes involved; `slack` covers far more, on the safe side of both.
+  const float slack = 1e-5f * (max_abs(to_x) + max_abs(half));
+  const float along = glm::dot(axis, to_x) + glm::dot(glm::abs(axis), half) + slack;
+  if (along > 0.0f) {
+    const float nearest = glm::length(glm::max(glm::abs(to_x) - half, glm::vec3(0.0f))) - slack;
+    return along < nearest ? along / nearest : 1.0f;
+  }
+  return std::max(-1.0f, along / glm::length(glm::abs(to_x) + half));
 }
 
 }  // namespace lev

@@ -95,7 +95,16 @@ glm::vec3 round_up_sum(const glm::dvec3& sum);
 // to x - c (box centre), less the spread of the axes, less the angle the box subtends from x.
 // Cosines and sines are combined without acos (as pbrt-v4's LightBounds::Importance), the sines
 // from cross products so they stay accurate near 0 and pi.
+// The bound of the sphere around the box is joined by a second one, by projection on the axis
+// (cos_angle_bound_by_projection), which stays sharp where x is near the box or beside a flat one.
 float spot_cone_factor(const LightAggregate& a, const FramePoint& x);
+
+// An upper bound of cos(angle from the unit `axis` to x - p) over every p of the box with centre
+// x - to_x and half extent `half`: the largest axis . (x - p) over the box, divided by the
+// smallest |x - p| when it is positive and by the largest when it is not. 1 when x may lie in the
+// box.
+float cos_angle_bound_by_projection(const glm::vec3& axis, const glm::vec3& to_x,
+                                    const glm::vec3& half);
 
 inline bool shines_everywhere(const LightAggregate& a) {
   return a.cos_emission <= -1.0f;

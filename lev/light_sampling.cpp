@@ -15,6 +15,9 @@ namespace {
 constexpr double kEdgeShare = 1e-3;
 // The cosine factor never drops below this where the box may still lie in front of the surface.
 constexpr float kMinCosine = 1e-3f;
+// Where the ball around a box subtends less than this sine (beyond 4 radii), its bound of the
+// cosine is sharp enough and the projection's is skipped.
+constexpr float kSphereIsSharp = 0.25f;
 // Squared distances below this are clamped, as irradiance clamps at kMinLightDistance.
 constexpr double kMinDistance2 = 1e-36;
 
@@ -38,7 +41,12 @@ float cosine_factor(const glm::vec3& normal, const glm::vec3& to_centre, const g
   const float cos_n = glm::dot(normal, to_centre) / d;
   if (cos_n >= cos_b) return 1.0f;
   const float sin_n = glm::length(glm::cross(normal, to_centre)) / d;
-  return std::max(kMinCosine, cos_n * cos_b + sin_n * sin_b);
+  const float by_sphere = cos_n * cos_b + sin_n * sin_b;
+  // The sphere's bound and, near the box, the projection's (light_bounds.h), the smaller: the
+  // projection is the sharper one for a flat box seen edge-on from close by.
+  if (sin_b < kSphereIsSharp) return std::max(kMinCosine, by_sphere);
+  const float by_projection = cos_angle_bound_by_projection(-normal, -to_centre, half);
+  return std::max(kMinCosine, std::min(by_sphere, by_projection));
 }
 
 // pbrt-v4's importance of an aggregate (header comment), zero exactly where irradiance_bound is
@@ -67,16 +75,22 @@ struct DescentFrame {
 };
 
 // Moves node and frame through the transform into an affine node's child.
-void enter_affine(const LightHierarchy& h, std::uint32_t& node, DescentFrame& frame) {
+// Moves point and normal through the affine node's transform into its child.
+void move_into_affine(const LightHierarchy& h, std::uint32_t node, FramePoint& point,
+                      glm::vec3& normal) {
   const HierarchyNode& n = h.nodes[node];
   const Similarity& xf = h.transforms[n.payload];
-  frame.world_from_local = compose(frame.world_from_local, xf);
   if ((n.flags & kTranslationOnly) != 0) {
-    frame.point = to_translated_frame(frame.point, xf.translation);
+    point = to_translated_frame(point, xf.translation);
   } else {
-    frame.point = to_node_frame(frame.point, xf);
-    frame.normal = glm::transpose(xf.rotation) * frame.normal;
+    point = to_node_frame(point, xf);
+    normal = glm::transpose(xf.rotation) * normal;
   }
+}
+
+void enter_affine(const LightHierarchy& h, std::uint32_t& node, DescentFrame& frame) {
+  frame.world_from_local = compose(frame.world_from_local, h.transforms[h.nodes[node].payload]);
+  move_into_affine(h, node, frame.point, frame.normal);
   node += 1;
 }
 
@@ -168,13 +182,15 @@ double light_importance(const Light& light, const FramePoint& x, const glm::vec3
 
 double subtree_importance(const LightHierarchy& h, std::uint32_t node, const FramePoint& local,
                           const glm::vec3& local_normal) {
-  DescentFrame frame{Similarity{}, local, local_normal};
-  while (h.nodes[node].kind == NodeKind::affine) enter_affine(h, node, frame);
+  // Point and normal only, as enter_affine moves them: the importance needs no world_from_local.
+  FramePoint point = local;
+  glm::vec3 normal = local_normal;
+  for (; h.nodes[node].kind == NodeKind::affine; ++node) move_into_affine(h, node, point, normal);
   const HierarchyNode& n = h.nodes[node];
   if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
-    return light_importance(h.lights[n.payload], frame.point, frame.normal);
+    return light_importance(h.lights[n.payload], point, normal);
   }
-  return aggregate_importance(kept_aggregate(h, node), frame.point, frame.normal);
+  return aggregate_importance(kept_aggregate(h, node), point, normal);
 }
 
 std::size_t choose_weighted(const std::vector<double>& weights, double total, float u) {
@@ -217,10 +233,41 @@ void light_probabilities(const LightHierarchy& hierarchy, const SubtreeRef& star
   enumerate(hierarchy, start.node, start_frame(start, point), 1.0, lights);
 }
 
-glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, const CulledParts& parts, int k,
-                           ShadingPoint& point, RandomStream& random,
-                           std::vector<double>& part_weights, std::vector<double>& weights,
+void open_wide_parts(const LightHierarchy& h, CulledParts& parts, std::size_t max_parts,
+                     std::vector<SubtreeRef>& queue) {
+  static const float cos_wide = std::cos(kWideAxisSpread);
+  queue.clear();
+  queue.swap(parts.subtrees);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    std::uint32_t node = queue[head].node;
+    DescentFrame frame{queue[head].world_from_local, queue[head].point, glm::vec3(0.0f)};
+    pass_through(h, node, frame);
+    const HierarchyNode& n = h.nodes[node];
+    bool open = false;
+    if (n.kind == NodeKind::set_union) {
+      const LightAggregate& a = kept_aggregate(h, node);
+      // The parts if this one opened: those kept, those still queued, the lights, its children.
+      const std::size_t parts_after = parts.subtrees.size() + (queue.size() - head - 1) +
+                                      parts.lights.size() + h.union_children[n.payload];
+      open = !shines_everywhere(a) && a.cos_axis_spread < cos_wide && parts_after <= max_parts;
+    }
+    if (!open) {
+      parts.subtrees.push_back(queue[head]);
+      continue;
+    }
+    const std::uint32_t* children = &h.union_children[n.payload];
+    for (std::uint32_t c = 1; c <= children[0]; ++c)
+      queue.push_back({children[c], frame.world_from_local, frame.point});
+  }
+}
+
+glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
+                           RandomStream& random, SamplingScratch& scratch,
                            SelectionCounters& counters) {
+  open_wide_parts(hierarchy, scratch.parts, sampled_parts_budget(k), scratch.queue);
+  const CulledParts& parts = scratch.parts;
+  std::vector<double>& part_weights = scratch.part_weights;
+  std::vector<double>& weights = scratch.weights;
   const SamplingPoint at{point.position(), point.normal()};
   const FramePoint world_point = world_frame_point(at.position);
   part_weights.clear();

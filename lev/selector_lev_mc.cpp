@@ -23,8 +23,7 @@ glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& s
   const glm::vec3 tested = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
   if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) return tested;
-  return tested + sampled_radiance(hierarchy_, sampling.parts, samples_per_point_, point,
-                                   scratch.random, sampling.part_weights, sampling.weights,
+  return tested + sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling,
                                    counters);
 }
 

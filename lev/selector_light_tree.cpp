@@ -8,8 +8,8 @@ glm::vec3 LightTreeSelector::direct_radiance(ShadingPoint& point, SelectorScratc
   SamplingScratch& sampling = begin_point(scratch, culled_irradiance_bound);
   sampling.parts.clear();
   sampling.parts.subtrees.push_back(whole_hierarchy(hierarchy_, point.position()));
-  return sampled_radiance(hierarchy_, sampling.parts, samples_per_point_, point, scratch.random,
-                          sampling.part_weights, sampling.weights, counters);
+  return sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling,
+                          counters);
 }
 
 }  // namespace lev

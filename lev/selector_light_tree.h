@@ -3,6 +3,8 @@
 // point by the importance descent (light_sampling.h, the same importance pbrt-v4 uses: the
 // aggregate's intensity over the clamped distance, its spot cones and the cosine at the surface
 // normal), one shadow ray each, weighed by 1/probability. Unbiased: passes converge to `rt`.
+// Like lev_mc's culled parts, the hierarchy is first opened where its spots aim apart
+// (open_wide_parts), so that both methods draw through the same importance.
 #pragma once
 
 #include "lev/light_hierarchy.h"

@@ -234,6 +234,71 @@ TEST(LightBounds, SmoothSpotsAndRangesStayBelowTheBound) {
   }
 }
 
+// The projection bound of the angle from an axis to a box (spot_cone_factor's second bound) never
+// falls below the true cosine, for points far from, near, on and inside random boxes, flat ones
+// included, with p at the box's corners, faces and inside.
+TEST(LightBounds, ProjectionBoundsTheCosineToEveryPointOfTheBox) {
+  Random r(17);
+  for (int trial = 0; trial < 400; ++trial) {
+    const glm::vec3 axis = r.direction();
+    const glm::vec3 centre(r.uniform(-20, 20), r.uniform(-20, 20), r.uniform(-20, 20));
+    glm::vec3 half(std::pow(10.0f, r.uniform(-3, 1)), std::pow(10.0f, r.uniform(-3, 1)),
+                   std::pow(10.0f, r.uniform(-3, 1)));
+    if (trial % 4 == 0) half[trial % 3] = 0.0f;  // a flat box (a row of lights)
+    for (int k = 0; k < 40; ++k) {
+      const float reach = std::pow(10.0f, r.uniform(-2, 2)) * (1.0f + glm::length(half));
+      const glm::vec3 inside(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
+      const glm::vec3 x = k % 8 == 0 ? centre + half * inside : centre + reach * r.direction();
+      const float bound = lev::cos_angle_bound_by_projection(axis, x - centre, half);
+      for (int j = 0; j < 60; ++j) {
+        glm::vec3 u(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
+        if (j < 8) u = glm::vec3((j & 1) ? 1 : -1, (j & 2) ? 1 : -1, (j & 4) ? 1 : -1);
+        if (j >= 8 && j < 14) u[j % 3] = j < 11 ? -1.0f : 1.0f;
+        const glm::dvec3 p = glm::dvec3(centre) + glm::dvec3(half) * glm::dvec3(u);
+        const glm::dvec3 to = glm::dvec3(x) - p;
+        const double length = glm::length(to);
+        if (!(length > 0.0)) continue;
+        const double cosine = glm::dot(glm::dvec3(axis), to) / length;
+        ASSERT_GE(static_cast<double>(bound) + 1e-6, cosine)
+            << "trial " << trial << " k " << k << " j " << j;
+      }
+    }
+  }
+}
+
+// A flat row of spots shining down: beside the row, at its own height or just above it, no spot
+// reaches the point, and the bound says so although the point lies in the sphere around the
+// row's box (which alone would allow everything); below the row the bound still holds, near and
+// far, inside and around the box.
+TEST(LightBounds, FlatRowOfDownwardSpotsIsDarkBesideItAndBoundedBelow) {
+  Random r(23);
+  for (const float dropoff : {0.0f, 1.0f, 7.5f}) {
+    std::vector<lev::Light> lights;
+    lev::LightAggregate a;
+    for (int i = 0; i < 16; ++i) {
+      const glm::vec3 p(static_cast<float>(i % 4), static_cast<float>(i / 4),
+                        0.01f * r.uniform(-1, 1));
+      const glm::vec3 aim =
+          glm::normalize(glm::vec3(0.05f * r.uniform(-1, 1), 0.05f * r.uniform(-1, 1), -1.0f));
+      lights.push_back(lev::make_spot_light(p, aim, glm::vec3(1.0f), 1.0f, dropoff));
+      a = lev::merge_aggregates(a, lev::light_aggregate(lights.back()));
+    }
+    for (const glm::vec3& beside : {glm::vec3(4.5f, 1.5f, 0.02f), glm::vec3(1.5f, -0.7f, 0.3f),
+                                    glm::vec3(1.5f, 1.5f, 0.5f)}) {
+      EXPECT_EQ(lev::irradiance_bound(a, lev::world_frame_point(beside)), glm::vec3(0.0f))
+          << "dropoff " << dropoff << " at " << beside.x << " " << beside.y << " " << beside.z;
+    }
+    for (int k = 0; k < 2000; ++k) {
+      const float z = k % 2 == 0 ? r.uniform(-1, 0.1f) : r.uniform(-30, 30);
+      const glm::vec3 x(r.uniform(-3, 6), r.uniform(-3, 6), z);
+      expect_bound_holds(lev::irradiance_bound(a, lev::world_frame_point(x)),
+                         brute_force_irradiance(lights, x),
+                         "dropoff " + std::to_string(dropoff) + " k " + std::to_string(k));
+      if (HasFatalFailure()) return;
+    }
+  }
+}
+
 TEST(LightBounds, TightForOnePointLightAndForADistantCluster) {
   const lev::Light l = lev::make_point_light({1.0f, 2.0f, 3.0f}, {4.0f, 2.0f, 1.0f});
   const glm::vec3 x(1.0f, 2.0f, 13.0f);

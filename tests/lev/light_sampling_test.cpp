@@ -193,3 +193,129 @@ TEST(LightSampling, WalkLightsAndCulledPartsAreEveryContributingLightOnce) {
 }
 
 }  // namespace
+
+namespace {
+
+// A layer of point lights on a ceiling (the building's rooms, the hall's rig) seen from a point
+// of the ceiling beside it, whose normal faces down: every light arrives at a grazing angle. The
+// importance of the layer stays within a small factor of its lights' own (the bound of cos(theta)
+// by projection; the sphere around the layer's box would allow cos = 1, hundreds of times too
+// much), and every light still has a non-zero probability.
+TEST(LightSampling, ALayerSeenEdgeOnWeighsLikeItsLights) {
+  std::vector<lev::LightTreeNode> layer;
+  for (int i = 0; i < 16; ++i) {
+    const glm::vec3 p(static_cast<float>(i % 4), static_cast<float>(i / 4), -0.01f);
+    layer.push_back(lev::light_node(lev::make_point_light(p, glm::vec3(1.0f))));
+  }
+  lev::LightTree tree;
+  tree.root = lev::union_node(std::move(layer));
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const glm::vec3 normal(0.0f, 0.0f, -1.0f);
+  const glm::vec3 beside[] = {{5.0f, 1.5f, 0.0f}, {-2.0f, -2.0f, 0.0f}, {1.5f, 6.0f, 0.0f}};
+  for (const glm::vec3& x : beside) {
+    const lev::FramePoint at = lev::world_frame_point(x);
+    double lights = 0.0;
+    std::vector<lev::SampledLight> enumerated;
+    lev::light_probabilities(h, lev::whole_hierarchy(h, x), {x, normal}, enumerated);
+    ASSERT_EQ(enumerated.size(), 16u);
+    for (const lev::SampledLight& l : enumerated) {
+      EXPECT_GT(l.probability, 0.0);
+      lights += lev::light_importance(l.light, at, normal);
+    }
+    const double layer_importance = lev::subtree_importance(h, h.root, at, normal);
+    EXPECT_GT(layer_importance, 0.0);
+    EXPECT_LT(layer_importance, 8.0 * lights) << "at " << x.x << " " << x.y;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Every light of the parts, subtrees enumerated, with its probability of being drawn when the
+// parts are chosen by importance at x (as sampled_radiance chooses them).
+std::vector<lev::SampledLight> lights_of_parts(const lev::LightHierarchy& h,
+                                               const lev::CulledParts& parts, const glm::vec3& x,
+                                               const glm::vec3& normal) {
+  std::vector<double> weights;
+  double total = 0.0;
+  for (const lev::SubtreeRef& s : parts.subtrees) {
+    weights.push_back(lev::subtree_importance(
+        h, s.node, s.point, glm::transpose(s.world_from_local.rotation) * normal));
+    total += weights.back();
+  }
+  for (const lev::Light& l : parts.lights) {
+    weights.push_back(lev::light_importance(l, lev::world_frame_point(x), normal));
+    total += weights.back();
+  }
+  std::vector<lev::SampledLight> out, in_part;
+  for (std::size_t i = 0; i < parts.subtrees.size(); ++i) {
+    lev::light_probabilities(h, parts.subtrees[i], {x, normal}, in_part);
+    for (lev::SampledLight l : in_part) {
+      l.probability *= total > 0.0 ? weights[i] / total : 0.0;
+      out.push_back(l);
+    }
+  }
+  for (std::size_t i = 0; i < parts.lights.size(); ++i) {
+    const double share = total > 0.0 ? weights[parts.subtrees.size() + i] / total : 0.0;
+    out.push_back({parts.lights[i], share});
+  }
+  return out;
+}
+
+// Opening the parts whose spots aim apart (the first step of sampled_radiance) keeps every light
+// once, stays within its budget, and leaves every light that can light the point drawable, the
+// probabilities summing to 1; on scenes whose spots aim every way it does open parts.
+TEST(LightSampling, OpeningWidePartsKeepsEveryLightOnceWithinTheBudget) {
+  Random r(4242);
+  int opened = 0;
+  for (int scene = 0; scene < 60; ++scene) {
+    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const std::vector<lev::Light> flat = lev::flatten_lights(h);
+    const float tolerance = std::pow(10.0f, r.uniform(-4.0f, 1.0f));
+    const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
+    for (const glm::vec3& x : hard_points(r, flat)) {
+      const glm::vec3 normal = scene % 3 == 0 ? glm::vec3(0.0f) : r.direction();
+      lev::CulledParts parts;
+      if (scene % 2 == 0) {
+        parts.subtrees.push_back(lev::whole_hierarchy(h, x));
+      } else {
+        std::vector<lev::Light> important;
+        lev::WalkScratch walk;
+        lev::WalkCounters counters;
+        lev::find_important_and_culled(h, volumes, tolerance, x, walk, important, counters, parts);
+      }
+      const std::vector<lev::SampledLight> before = lights_of_parts(h, parts, x, normal);
+      const std::size_t parts_before = parts.subtrees.size() + parts.lights.size();
+      const std::size_t budget = static_cast<std::size_t>(1) << r.integer(0, 6);
+      std::vector<lev::SubtreeRef> queue;
+      lev::open_wide_parts(h, parts, budget, queue);
+      const std::size_t parts_after = parts.subtrees.size() + parts.lights.size();
+      EXPECT_GE(parts_after, parts_before);
+      if (parts_before <= budget) {
+        EXPECT_LE(parts_after, budget);
+      }
+      if (parts_after > parts_before) ++opened;
+      const std::vector<lev::SampledLight> after = lights_of_parts(h, parts, x, normal);
+      ASSERT_EQ(after.size(), before.size()) << "scene " << scene;
+      double total = 0.0;
+      for (const lev::SampledLight& l : after) {
+        int in_before = 0, in_after = 0;
+        for (const lev::SampledLight& b : before) in_before += same_light(b.light, l.light) ? 1 : 0;
+        for (const lev::SampledLight& a : after) in_after += same_light(a.light, l.light) ? 1 : 0;
+        EXPECT_EQ(in_after, in_before) << "scene " << scene;
+        if (contribution(l.light, x, normal) > 0.0) {
+          EXPECT_GT(l.probability, 0.0) << "scene " << scene << ": lights the point, no chance";
+        }
+        total += l.probability;
+      }
+      if (total > 0.0) {
+        EXPECT_NEAR(total, 1.0, 1e-9) << "scene " << scene;
+      }
+      if (HasFailure()) return;
+    }
+  }
+  EXPECT_GT(opened, 20);
+}
+
+}  // namespace
