@@ -135,9 +135,9 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
     const lev::Method rt = lev::reference_method();
     const MeasureRequest rt_request{scene, level, rt, 0.0, stride, c.runs};
     std::vector<MeasureRequest> requests;
-    for (const std::string& name : c.converge_methods) {
+    for (const auto& [name, tolerance] : c.converge_methods) {
       if (const std::optional<lev::Method> m = lev::parse_method(name))
-        requests.push_back({scene, level, *m, c.tolerance, stride, 1});
+        requests.push_back({scene, level, *m, tolerance, stride, 1});
     }
     const Measurement& reference = run.measure(rt_request);
     // A deterministic method stops once its passes cost more than rt's one.
@@ -168,11 +168,14 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
     double lowest_max = 100.0, highest_max = kErrorFloorPct;
 
     std::map<lev::Method, double> avg_at_ratio_budget;
+    double best_mc_speedup = kNaN;  // lev_mc's, at its best tolerance, reaching the targets
     for (const Curve& curve : curves) {
       const ProgressMeasurement& p = *curve.measured;
       const lev::MethodInfo& info = *curve.method;
       const std::string tolerance = info.uses_tolerance ? tolerance_text(p.request.tolerance) : "-";
-      Series avg_series{info.name, {}, {}}, max_series{info.name, {}, {}};
+      const std::string label =
+          info.uses_tolerance ? std::string(info.name) + " " + tolerance : std::string(info.name);
+      Series avg_series{label, {}, {}}, max_series{label, {}, {}};
       for (std::size_t i = 0; i < p.snapshots.size(); ++i) {
         const PassSnapshot& s = p.snapshots[i];
         const PixelErrors& e = curve.errors[i];
@@ -209,7 +212,12 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
                                    p.snapshots[static_cast<std::size_t>(at)].passes)));
         row.push_back(number_cell(e.average_pct, 4));
         row.push_back(number_cell(e.max_pct, 3));
-        if (share == ratio_budget) avg_at_ratio_budget[info.id] = e.average_pct;
+        // A method at several tolerances counts with its best: a user picks the tolerance.
+        if (share == ratio_budget) {
+          const auto [at_budget, first] = avg_at_ratio_budget.emplace(info.id, e.average_pct);
+          if (!first && (std::isnan(at_budget->second) || e.average_pct < at_budget->second))
+            at_budget->second = e.average_pct;
+        }
       }
       const PixelErrors last = curve.errors.empty() ? PixelErrors{} : curve.errors.back();
       row.push_back(count_cell(
@@ -233,18 +241,21 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
         worst_unbiased_pct =
             std::max(worst_unbiased_pct, std::isnan(last.average_pct) ? 100.0 : last.average_pct);
       }
-      if (info.id == lev::Method::lev_mc && scene == "hall") {
-        hall_target_measured = true;
-        if (met < 0) {
-          hall_target_all_met = false;
-        } else {
-          slowest_hall_target = std::isnan(slowest_hall_target)
-                                    ? met_speedup
-                                    : std::min(slowest_hall_target, met_speedup);
-        }
+      if (info.id == lev::Method::lev_mc && met >= 0)
+        best_mc_speedup =
+            std::isnan(best_mc_speedup) ? met_speedup : std::max(best_mc_speedup, met_speedup);
+    }
+    if (scene == "hall" && !reference.planned_only) {
+      hall_target_measured = true;
+      if (std::isnan(best_mc_speedup)) {
+        hall_target_all_met = false;
+      } else {
+        slowest_hall_target = std::isnan(slowest_hall_target)
+                                  ? best_mc_speedup
+                                  : std::min(slowest_hall_target, best_mc_speedup);
       }
     }
-    // lev_mc against light_tree at the largest budget.
+    // lev_mc (at its better tolerance) against light_tree at the largest budget.
     const auto mc = avg_at_ratio_budget.find(lev::Method::lev_mc);
     const auto tree = avg_at_ratio_budget.find(lev::Method::light_tree);
     if (!reference.planned_only && mc != avg_at_ratio_budget.end() &&
@@ -276,8 +287,10 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
   SectionText text;
   text.heading = "converge: error against time as passes accumulate, per method (new)";
   text.intro =
-      "lev, lev_est, lev_mc and light_tree each render up to " + last_text +
-      " passes at the default tolerance, every pass at the pixel centres (no antialiasing "
+      "lev, lev_est, lev_mc (at the default tolerance and at 0.1) and light_tree each render up "
+      "to " +
+      last_text +
+      " passes, every pass at the pixel centres (no antialiasing "
       "jitter), so that the error against rt's one-pass image is the methods' own: a "
       "deterministic method (lev, lev_est) repeats its image and keeps its bias (so it stops "
       "once its passes cost more than rt), a sampling method (lev_mc, light_tree) draws other "
@@ -296,13 +309,16 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
        "<= 0.5%", "-",
        unbiased_measured ? format_fixed(worst_unbiased_pct, 3) + "% (largest)" : "n/a",
        status(unbiased_measured && !c.quick, worst_unbiased_pct <= 0.5)},
-      {"converge: lev_mc's avg error over light_tree's at " + ratio_name + ", building and maze",
+      {"converge: lev_mc's avg error (its better tolerance) over light_tree's at " + ratio_name +
+           ", building and maze",
        "<= 0.25", "-", ratio_lit_measured ? format_fixed(worst_ratio_lit, 2) + " (largest)" : "n/a",
        status(ratio_lit_measured && !c.quick, worst_ratio_lit <= 0.25)},
-      {"converge: lev_mc's avg error over light_tree's at " + ratio_name + ", hall", "<= 1", "-",
-       ratio_hall_measured ? format_fixed(worst_ratio_hall, 2) + " (largest)" : "n/a",
+      {"converge: lev_mc's avg error (its better tolerance) over light_tree's at " + ratio_name +
+           ", hall",
+       "<= 1", "-", ratio_hall_measured ? format_fixed(worst_ratio_hall, 2) + " (largest)" : "n/a",
        status(ratio_hall_measured && !c.quick, worst_ratio_hall <= 1.0)},
-      {"converge: hall, lev_mc reaches " + target_text + ", speedup over rt", ">= 10x", "-",
+      {"converge: hall, lev_mc (its better tolerance) reaches " + target_text + ", speedup over rt",
+       ">= 10x", "-",
        !hall_target_measured  ? "n/a"
        : !hall_target_all_met ? "not within " + last_text + " passes"
                               : format_ratio(slowest_hall_target) + " (slowest)",

@@ -201,22 +201,23 @@ TEST_F(Bench, ConvergeFollowsEachMethodPassByPass) {
   const std::size_t scene = column("scene"), lights = column("lights"), method = column("method"),
                     passes = column("passes"), time = column("time_cpu_s"),
                     error = column("pixel_error_avg_pct"), noise = column("std_error_avg_pct"),
-                    speedup = column("speedup_over_rt");
+                    speedup = column("speedup_over_rt"), tolerance = column("tolerance");
   struct Point {
     int passes;
     double seconds, error, noise, speedup;
   };
-  std::map<std::string, std::vector<Point>> curves;  // "hall 256 lev_mc" -> its snapshots
+  // "hall 256 lev_mc 0.1" -> its snapshots (a method that ignores the tolerance shows "-")
+  std::map<std::string, std::vector<Point>> curves;
   while (std::getline(csv, line)) {
     const std::vector<std::string> cells = split_csv_line(line);
     ASSERT_EQ(cells.size(), header.size()) << line;
-    curves[cells[scene] + " " + cells[lights] + " " + cells[method]].push_back(
-        {std::stoi(cells[passes]), std::stod(cells[time]), std::stod(cells[error]),
-         std::stod(cells[noise]), std::stod(cells[speedup])});
+    curves[cells[scene] + " " + cells[lights] + " " + cells[method] + " " + cells[tolerance]]
+        .push_back({std::stoi(cells[passes]), std::stod(cells[time]), std::stod(cells[error]),
+                    std::stod(cells[noise]), std::stod(cells[speedup])});
   }
   int sampled_curves = 0, converging = 0;
   for (const auto& [what, points] : curves) {
-    const bool lev = what.size() > 4 && what.substr(what.size() - 4) == " lev";
+    const bool lev = what.find(" lev ") != std::string::npos;
     const bool sampled =
         what.find(" lev_mc") != std::string::npos || what.find(" light_tree") != std::string::npos;
     // A sampling method makes every pass; a deterministic one stops early only once its passes
@@ -247,10 +248,12 @@ TEST_F(Bench, ConvergeFollowsEachMethodPassByPass) {
       EXPECT_GT(points.back().noise, 0.0) << what;
     }
   }
-  EXPECT_EQ(curves.count("hall 256 lev"), 1u);
-  EXPECT_EQ(curves.count("hall 256 lev_mc"), 1u);
-  EXPECT_EQ(curves.count("hall 256 light_tree"), 1u);
-  EXPECT_EQ(curves.count("hall 256 rt"), 0u) << "rt is the reference, not a curve";
+  EXPECT_EQ(curves.count("hall 256 lev 0.01"), 1u);
+  EXPECT_EQ(curves.count("hall 256 lev_mc 0.01"), 1u);
+  EXPECT_EQ(curves.count("hall 256 lev_mc 0.1"), 1u);
+  EXPECT_EQ(curves.count("hall 256 light_tree -"), 1u);
+  for (const auto& [what, points] : curves)
+    EXPECT_EQ(what.find(" rt "), std::string::npos) << "rt is the reference, not a curve";
   ASSERT_GT(sampled_curves, 0);
   EXPECT_EQ(converging, sampled_curves) << "every sampled curve ends nearer rt than it starts";
   EXPECT_NE(read_file(out / "results.md").find("## converge:"), std::string::npos);
