@@ -4,6 +4,7 @@
 // stochastic LEV, LEV + AST) plug in here and get a per-sample random stream for free.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -104,11 +105,13 @@ class LightSelector {
 // within one float rounding of the exact sum. Clamped to the largest float on the way back, as
 // irradiance() clamps each term, so that huge lights never overflow the conversion.
 // cancel (may be null) is read every kCancelCheckLights lights; once raised the sum so far is
-// returned, which the caller discards.
+// returned, which the caller discards. visible_irradiance (may be null) gains the brightest
+// channel of irradiance() of each light found visible.
 inline constexpr std::size_t kCancelCheckLights = 4096;
 template <typename LightRange, typename Filter>
 glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
-                             SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr) {
+                             SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr,
+                             float* visible_irradiance = nullptr) {
   glm::dvec3 sum(0.0);
   std::size_t seen = 0;
   for (const Light& light : lights) {
@@ -118,7 +121,12 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
     const glm::vec3 radiance = point.unshadowed_radiance(light);
     if (radiance == glm::vec3(0.0f)) continue;
     ++counters.shadow_rays;
-    if (point.visible(light)) sum += glm::dvec3(radiance);
+    if (!point.visible(light)) continue;
+    sum += glm::dvec3(radiance);
+    if (visible_irradiance) {
+      const glm::vec3 e = irradiance(light, point.position());
+      *visible_irradiance += std::max(std::max(e.x, e.y), e.z);
+    }
   }
   return glm::vec3(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
 }

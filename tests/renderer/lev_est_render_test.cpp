@@ -4,6 +4,8 @@
 // keeps the image close to rt's where lev, which drops that rest, is far off.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "renderer/pixel_error.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
@@ -36,11 +38,16 @@ TEST(LevEstRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
   EXPECT_EQ(rt.shadow_rays, exact.shadow_rays);
 }
 
-TEST(LevEstRender, HallDeterministicAndFarCloserToRtThanLev) {
-  const renderer::Scene scene =
-      scenes::build_hall(6);  // 4,096 spotlights, all below 0.01 on the stage
+// The hall at 1,024 lights (where about 15 % of the lights pass the tolerance, so many points
+// test some) and at 4,096 (where none does on the stage). The thresholds are those a tight
+// bound must still meet: a gate that skipped the estimate wherever the culled bound was below
+// ten times the tested irradiance left hall points at half their light (max error 20 to 47 %).
+class LevEstHall : public ::testing::TestWithParam<int> {};
+
+TEST_P(LevEstHall, DeterministicAndFarCloserToRtThanLev) {
+  const renderer::Scene scene = scenes::build_hall(GetParam());
   const renderer::RayScene rays(scene.geometry);
-  constexpr int kWidth = 40, kHeight = 30;  // rt shoots about 2,400 shadow rays per pixel here
+  constexpr int kWidth = 40, kHeight = 30;  // rt shoots hundreds to thousands of rays per pixel
   const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2, kWidth, kHeight);
   const renderer::Framebuffer one =
       render(scene, rays, lev::Method::lev_est, 0.01f, 1, kWidth, kHeight);
@@ -52,14 +59,21 @@ TEST(LevEstRender, HallDeterministicAndFarCloserToRtThanLev) {
       render(scene, rays, lev::Method::lev, 0.01f, 2, kWidth, kHeight);
   const renderer::PixelErrorStats est = error_against(one, rt);
   const renderer::PixelErrorStats dropped = error_against(plain, rt);
-  // The culled rest matters here (lev is visibly off), and the estimate recovers most of it.
+  // The culled rest matters here (lev is visibly off), and the estimate recovers almost all of
+  // it: avg within 1 % and max within 10 %, the targets of the converge experiment.
   EXPECT_GT(dropped.average_pct, 1.0);
-  EXPECT_LT(est.average_pct, 0.2 * dropped.average_pct);
-  EXPECT_LT(est.max_pct, 0.5 * dropped.max_pct);
-  // An estimate, not rt under another name: far fewer shadow rays.
+  EXPECT_LT(est.average_pct, 1.0);
+  EXPECT_LT(est.average_pct, 0.1 * dropped.average_pct);
+  EXPECT_LT(est.max_pct, 10.0);
+  // An estimate, not rt under another name: fewer shadow rays.
   const renderer::FramebufferTotals est_totals = renderer::sum_framebuffer(one);
   const renderer::FramebufferTotals rt_totals = renderer::sum_framebuffer(rt);
-  EXPECT_LT(est_totals.shadow_rays * 2, rt_totals.shadow_rays);
+  EXPECT_LT(est_totals.shadow_rays * 3, rt_totals.shadow_rays * 2);
 }
+
+INSTANTIATE_TEST_SUITE_P(HallLevels, LevEstHall, ::testing::Values(5, 6),
+                         [](const ::testing::TestParamInfo<int>& level) {
+                           return "Level" + std::to_string(level.param);
+                         });
 
 }  // namespace
