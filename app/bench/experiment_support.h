@@ -97,5 +97,7 @@ Section run_trade(BenchRun& run, const std::string& out_dir);
 Section run_limit(BenchRun& run, const std::string& out_dir);
 Section run_control(BenchRun& run, const std::string& out_dir);
 Section run_converge(BenchRun& run, const std::string& out_dir);
+// The pass counts converge snapshots: 1, 2, 3, 4, 6, 8, 12, ... up to `last`.
+std::vector<int> snapshot_pass_counts(int last);
 
 }  // namespace app::bench
