@@ -69,10 +69,6 @@ struct CulledSoFar {
   CulledParts* parts = nullptr;
 };
 
-inline float brightest(const glm::dvec3& v) {
-  return static_cast<float>(std::max(std::max(v.x, v.y), v.z));
-}
-
 // The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
 // of the per-light test, the brightest channel (DESIGN.md), with the tolerance, less room for
 // round_up_sum's final rounding so that the float bound returned is within it too.

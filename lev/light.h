@@ -62,9 +62,18 @@ inline Light transform_light(const Light& light, const Similarity& xf) {
   return l;
 }
 
+// The brightest channel: the scale on which the per-light test, the culled bounds and the
+// tolerance are compared (docs/design.md). The double one (a sum) is rounded to float.
+inline float brightest(const glm::vec3& v) {
+  return glm::max(glm::max(v.x, v.y), v.z);
+}
+inline float brightest(const glm::dvec3& v) {
+  return static_cast<float>(glm::max(glm::max(v.x, v.y), v.z));
+}
+
 // Scalar strength used for culling: the brightest channel (docs/design.md).
 inline float strength(const Light& light) {
-  return glm::max(glm::max(light.intensity.x, light.intensity.y), light.intensity.z);
+  return brightest(light.intensity);
 }
 
 // The geometric factor of eq. 1/5: cos(gamma)^P / d^2 (spot) or 1 / d^2 (point), zero outside

@@ -4,7 +4,6 @@
 // stochastic LEV, LEV + AST) plug in here and get a per-sample random stream for free.
 #pragma once
 
-#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -123,10 +122,7 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
     ++counters.shadow_rays;
     if (!point.visible(light)) continue;
     sum += glm::dvec3(radiance);
-    if (visible_irradiance) {
-      const glm::vec3 e = irradiance(light, point.position());
-      *visible_irradiance += std::max(std::max(e.x, e.y), e.z);
-    }
+    if (visible_irradiance) *visible_irradiance += brightest(irradiance(light, point.position()));
   }
   return glm::vec3(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
 }

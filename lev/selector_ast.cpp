@@ -43,7 +43,7 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
     const Light& light = world_lights_[i];
     if (!is_important(light, x, 0.0f)) continue;
     const glm::vec3 radiance = point.unshadowed_radiance(light);
-    const float potential = glm::max(glm::max(radiance.x, radiance.y), radiance.z);
+    const float potential = brightest(radiance);
     if (potential <= 0.0f) continue;
     heap.push_back({potential, i, radiance});
     untested += potential;

@@ -33,10 +33,6 @@ ClusterCut cut_for(float tolerance) {
   return cut;
 }
 
-float brightest(const glm::vec3& v) {
-  return glm::max(glm::max(v.x, v.y), v.z);
-}
-
 }  // namespace
 
 LevEstSelector::LevEstSelector(const LightHierarchy& hierarchy, float tolerance)

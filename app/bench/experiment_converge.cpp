@@ -80,6 +80,24 @@ std::string budget_name(double share) {
   return "rt/" + std::to_string(std::lround(1.0 / share));
 }
 
+// A method followed at a tolerance, as the plots' legends and the intro name it.
+std::string curve_label(const lev::MethodInfo& info, double tolerance) {
+  return info.uses_tolerance ? std::string(info.name) + " " + tolerance_text(tolerance)
+                             : std::string(info.name);
+}
+
+// "lev 0.01, lev_mc 0.1 and light_tree": the methods this build follows, from the config.
+std::string followed_methods_text(const SuiteConfig& c) {
+  std::vector<std::string> labels;
+  for (const auto& [name, tolerance] : c.converge_methods)
+    if (const std::optional<lev::Method> m = lev::parse_method(name))
+      labels.push_back(curve_label(lev::method_info(*m), tolerance));
+  std::string text;
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == labels.size() ? " and " : ", ") + labels[i];
+  return text;
+}
+
 std::string budget_csv(double share) {
   return "rt_over_" + std::to_string(std::lround(1.0 / share));
 }
@@ -188,8 +206,7 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
       const ProgressMeasurement& p = *curve.measured;
       const lev::MethodInfo& info = *curve.method;
       const std::string tolerance = info.uses_tolerance ? tolerance_text(p.request.tolerance) : "-";
-      const std::string label =
-          info.uses_tolerance ? std::string(info.name) + " " + tolerance : std::string(info.name);
+      const std::string label = curve_label(info, p.request.tolerance);
       Series avg_series{label, {}, {}}, max_series{label, {}, {}};
       for (std::size_t i = 0; i < p.snapshots.size(); ++i) {
         const PassSnapshot& s = p.snapshots[i];
@@ -302,9 +319,7 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
   SectionText text;
   text.heading = "converge: error against time as passes accumulate, per method (new)";
   text.intro =
-      "lev, lev_est, lev_mc (at the default tolerance and at 0.1) and light_tree each render up "
-      "to " +
-      last_text +
+      followed_methods_text(c) + " each render up to " + last_text +
       " passes, every pass at the pixel centres (no antialiasing "
       "jitter), so that the error against rt's one-pass image is the methods' own: a "
       "deterministic method (lev, lev_est) repeats its image and keeps its bias (so it stops "

@@ -65,8 +65,9 @@ struct SuiteConfig {
       {"building", 4096}, {"maze", 3069}, {"hall", 4096}, {"hall", 16384}};
   std::uint64_t scaling_base_lights = 1024;  // the scaling target compares with this count
   // converge (issue 10): the renders where the methods' passes are followed to this many, their
-  // errors taken after 1, 2, 4, ... passes; the equal-time comparison at these shares of rt's
-  // time, and the error a method must reach (avg and max) to count as converged.
+  // errors taken after 1, 2, 3, 4, 6, 8, ... passes (snapshot_pass_counts); the equal-time
+  // comparison at these shares of rt's time, and the error a method must reach (avg and max) to
+  // count as converged.
   std::vector<std::pair<std::string, std::uint64_t>> converge_renders{
       {"building", 4096}, {"maze", 3069}, {"hall", 4096}, {"hall", 16384}};
   // The methods followed, with their tolerances: the deterministic ones a user would otherwise
