@@ -174,25 +174,37 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tile_count, 1),
         [&](const tbb::blocked_range<int>& range) {
-          annotate_acquire(&state.pass_start_edge);
-          for (int tile = range.begin(); tile != range.end(); ++tile) {
-            if (cancel && cancel->load(std::memory_order_relaxed)) {
-              cancelled.store(true, std::memory_order_relaxed);
+          // What the body needs, read from its task once, before the tiles' long work: the task
+          // lives in TBB's memory, handed between threads where ThreadSanitizer cannot see it,
+          // and a read after a long tile finds the task's write too old for TSan to restore its
+          // stack and match it to tsan.supp's TBB rules. The locals are the thread's own.
+          // The render's own state comes after the acquire, which orders it after its writes.
+          RenderState& st = state;
+          annotate_acquire(&st.pass_start_edge);
+          const std::atomic<bool>* const stop = cancel;
+          std::atomic<bool>& stopped = cancelled;
+          const TileDoneCallback& tile_done = on_tile_done;
+          const int step = preview_step;
+          const bool is_preview = preview;
+          const int first = range.begin(), last = range.end();
+          for (int tile = first; tile != last; ++tile) {
+            if (stop && stop->load(std::memory_order_relaxed)) {
+              stopped.store(true, std::memory_order_relaxed);
               break;
             }
-            int& passes = state.tile_passes[static_cast<std::size_t>(tile)];
-            if (!preview && passes > state.passes_done) continue;
-            state.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
-            if (!render_tile(state, tile, state.scratch.local(), cancel, preview_step)) {
-              state.tiles[tile].store(TileStatus::waiting, std::memory_order_release);
-              cancelled.store(true, std::memory_order_relaxed);
+            int& passes = st.tile_passes[static_cast<std::size_t>(tile)];
+            if (!is_preview && passes > st.passes_done) continue;
+            st.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
+            if (!render_tile(st, tile, st.scratch.local(), stop, step)) {
+              st.tiles[tile].store(TileStatus::waiting, std::memory_order_release);
+              stopped.store(true, std::memory_order_relaxed);
               break;
             }
-            if (!preview) passes += 1;
-            if (on_tile_done) on_tile_done(tile);
-            state.tiles[tile].store(TileStatus::done, std::memory_order_release);
+            if (!is_preview) passes += 1;
+            if (tile_done) tile_done(tile);
+            st.tiles[tile].store(TileStatus::done, std::memory_order_release);
           }
-          annotate_release(&state.pass_end_edge);
+          annotate_release(&st.pass_end_edge);
         },
         tbb::simple_partitioner());
   });
