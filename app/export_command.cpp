@@ -3,18 +3,18 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "app/render_command.h"
-#include "app/scene_loading.h"
 #include "app/output_files.h"
+#include "app/scene_loading.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_inputs.h"
 
 namespace app {
 
 void add_export_flags(CLI::App& command, ExportFlags& flags) {
   flags.scene_option = command.add_option("--scene", flags.scene, find_setting("scene")->help);
   flags.level_option = command.add_option("--level", flags.level, find_setting("level")->help);
-  flags.lights_option =
-      command.add_option("--lights", flags.lights, "light count (selects the level with that many lights)");
+  flags.lights_option = command.add_option("--lights", flags.lights,
+                                           "light count (selects the level with that many lights)");
   flags.out_option = command.add_option("--out", flags.out, "scene file to write (JSON)");
 }
 
@@ -23,15 +23,18 @@ int run_export(const ExportFlags& flags) {
   if (flags.scene_option->count() > 0) set_setting(settings, *find_setting("scene"), flags.scene);
   if (flags.level_option->count() > 0) set_setting(settings, *find_setting("level"), flags.level);
   if (flags.lights_option->count() > 0) {
-    if (flags.level_option->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
+    if (flags.level_option->count() > 0)
+      throw UsageError("--lights: give --level or --lights, not both");
     apply_light_count_flag(settings, flags.lights);
   }
   if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
-  check_output_paths({{"--out", flags.out, ".json", "a scene file"}});
+  check_output_paths({{"--out", flags.out, ".json", "a scene file"}},
+                     scenes::scene_input_files(settings.scene));
   const scenes::SceneDescription description = describe_scene(settings);
   app::write_text_file(flags.out, scenes::scene_file_json(description));
   // With --out - the scene file is standard output, so the note goes to stderr.
-  std::fprintf(flags.out == app::kStandardOutputName ? stderr : stdout, "wrote %s: %s level %d, %zu masters\n",
+  std::fprintf(flags.out == app::kStandardOutputName ? stderr : stdout,
+               "wrote %s: %s level %d, %zu masters\n",
                scenes::escape_control_characters(flags.out).c_str(),
                scenes::escape_control_characters(description.name).c_str(), description.level,
                description.masters.size());

@@ -5,23 +5,29 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <csignal>
-
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <functional>
+#include <set>
+#include <sstream>
 #include <stdexcept>
-#include <thread>
 #include <system_error>
+#include <thread>
 
 #include <stb/stb_image_write.h>
 
+#include "app/settings.h"
+
 namespace app {
+namespace fs = std::filesystem;
+
 namespace {
 
-// Blocks the termination signals while the temporary exists, so Ctrl-C cannot leave it behind;
-// a signal that arrives meanwhile is delivered when the file is complete and renamed.
+// Blocks the termination signals while temporaries exist, so Ctrl-C cannot leave one behind; a
+// signal that arrives meanwhile is delivered when the files are complete and renamed.
 class TerminationSignalsBlocked {
  public:
   TerminationSignalsBlocked() {
@@ -40,6 +46,20 @@ class TerminationSignalsBlocked {
 
 [[noreturn]] void throw_errno(const std::string& path, const char* what, int error) {
   throw std::runtime_error(path + ": " + what + " (" + std::strerror(error) + ")");
+}
+
+// A symlink whose chain never ends in a file (a loop, or longer than the kernel follows).
+bool is_symlink_loop(const std::string& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return false;
+  return ::stat(path.c_str(), &st) != 0 && errno == ELOOP;
+}
+
+// An existing file that is neither a regular file nor a folder: a pipe, device or socket.
+bool is_existing_special_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);  // follows symlinks
+  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
 }
 
 // write() until done; returns 0 or the errno of the failure. SIGXFSZ is ignored from the first
@@ -79,65 +99,177 @@ void write_to_standard_output(const std::string& bytes) {
   if (error != 0) throw_errno("-", "write to standard output failed", error);
 }
 
-// A regular file or a new name: the bytes go to a temporary in the target's own folder (so the
-// rename is atomic) and are renamed onto it when complete. A symlink is followed, never
-// replaced: the rename lands on the file it points to.
-void write_by_rename(const std::string& path, const std::filesystem::path& target, const std::string& bytes) {
-  const TerminationSignalsBlocked blocked;
-  const std::filesystem::path folder = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
-  // A short name (a target name near the 255-byte limit must not overflow the temporary's),
-  // unique per process and thread; O_EXCL never reuses an existing file, and the mode 0666 goes
-  // through the umask like any new file's.
-  const std::string stem = ".levrt-" + std::to_string(static_cast<long>(::getpid())) + "-" +
-                           std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 1000000);
-  std::string tmp;
-  int fd = -1;
-  constexpr int kMaxNameAttempts = 100;
-  for (int attempt = 0; fd < 0 && attempt < kMaxNameAttempts; ++attempt) {
-    tmp = (folder / (stem + "-" + std::to_string(attempt) + ".tmp")).string();
-    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0 && errno != EEXIST) break;
+fs::path folder_of(const fs::path& target) {
+  return target.parent_path().empty() ? fs::path(".") : target.parent_path();
+}
+
+// Creates a new, empty file with a short unique name in `folder` (a target name near the
+// 255-byte limit must not overflow the temporary's), unique per process and thread; O_EXCL never
+// reuses an existing file, and the mode 0666 goes through the umask like any new file's. Returns
+// the descriptor, or -1 with errno set.
+int create_temporary(const fs::path& folder, std::string& name) {
+  const std::string stem =
+      ".levrt-" + std::to_string(static_cast<long>(::getpid())) + "-" +
+      std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 1000000);
+  constexpr int kMaxNameAttempts = 1000;
+  for (int attempt = 0; attempt < kMaxNameAttempts; ++attempt) {
+    name = (folder / (stem + "-" + std::to_string(attempt) + ".tmp")).string();
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
   }
+  return -1;
+}
+
+// A complete file waiting to be renamed onto its target, and the backup (a hard link to the old
+// target, empty when there was none) that puts the old file back if a later rename fails.
+struct StagedFile {
+  std::string path;  // as the user named it, for messages
+  fs::path target;
+  std::string temporary;
+  std::string backup;
+  bool renamed = false;
+};
+
+// Writes the bytes to a temporary in the target's folder. A symlink is followed, never replaced:
+// the rename lands on the file it points to.
+StagedFile stage(const std::string& path, const std::string& bytes) {
+  StagedFile staged{path, output_target(path), "", "", false};
+  const int fd = create_temporary(folder_of(staged.target), staged.temporary);
   if (fd < 0) throw_errno(path, "cannot write", errno);
   const int error = write_all(fd, bytes);
   const int close_error = ::close(fd) != 0 ? errno : 0;
   if (error != 0 || close_error != 0) {
-    ::unlink(tmp.c_str());
+    ::unlink(staged.temporary.c_str());
     throw_errno(path, "write failed", error != 0 ? error : close_error);
   }
-  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
-    const int rename_error = errno;
-    ::unlink(tmp.c_str());
-    throw_errno(path, "cannot rename into place", rename_error);
+  return staged;
+}
+
+// Removes what is left of staged files that were not committed: temporaries and backups.
+void discard(std::vector<StagedFile>& staged) noexcept {
+  for (StagedFile& s : staged) {
+    if (!s.renamed && !s.temporary.empty()) ::unlink(s.temporary.c_str());
+    if (!s.backup.empty()) ::unlink(s.backup.c_str());
   }
 }
 
-void write_output_bytes(const std::string& path, const std::string& bytes) {
-  namespace fs = std::filesystem;
-  if (path == kStandardOutputName) {
-    write_to_standard_output(bytes);
-    return;
+// Renames every temporary onto its target. The old targets are first hard-linked to backups
+// (where the file system allows), so a rename that fails (a rare event: the temporaries are
+// complete and in their targets' folders) puts the files renamed before it back as they were.
+void commit(std::vector<StagedFile>& staged) {
+  for (StagedFile& s : staged) {
+    struct stat st {};
+    if (::lstat(s.target.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    const int fd = create_temporary(folder_of(s.target), s.backup);
+    if (fd < 0) {
+      s.backup.clear();
+      continue;
+    }
+    ::close(fd);
+    ::unlink(s.backup.c_str());
+    if (::link(s.target.c_str(), s.backup.c_str()) != 0) s.backup.clear();
   }
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);  // follows symlinks
-  if (!ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status)) {
-    write_in_place(path, bytes);
-    return;
+  for (std::size_t i = 0; i < staged.size(); ++i) {
+    if (std::rename(staged[i].temporary.c_str(), staged[i].target.c_str()) == 0) {
+      staged[i].renamed = true;
+      continue;
+    }
+    const int error = errno;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!staged[j].backup.empty()) {
+        if (std::rename(staged[j].backup.c_str(), staged[j].target.c_str()) == 0)
+          staged[j].backup.clear();
+      } else {
+        ::unlink(staged[j].target.c_str());
+      }
+    }
+    discard(staged);
+    throw_errno(staged[i].path, "cannot rename into place", error);
   }
-  write_by_rename(path, output_target(path), bytes);
+  discard(staged);  // the backups
 }
 
 void append_to_string(void* context, void* data, int size) {
-  static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                             static_cast<std::size_t>(size));
+}
+
+// The bytes that name a file in `folder` may have (255 on the usual file systems).
+std::size_t name_max_bytes(const fs::path& folder) {
+  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  return limit > 0 ? static_cast<std::size_t>(limit) : 255;
+}
+
+// Device and inode of an existing file (symlinks followed), so hard links and symlinks match.
+bool file_identity(const std::string& path, std::string& identity) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return false;
+  identity = "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  return true;
+}
+
+// The identity of an output for the same-file check: its file's, or for a new name the absolute
+// path with symlinks and ".." resolved.
+std::string output_identity(const std::string& path) {
+  std::string identity;
+  if (file_identity(path, identity)) return identity;
+  std::error_code ec;
+  const fs::path target = output_target(path);
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  return "path " + (ec ? target.string() : resolved.string());
+}
+
+void check_output_path(const OutputPath& output, const std::set<std::string>& inputs,
+                       std::set<std::string>& seen) {
+  const std::string& path = output.path;
+  const std::string& flag = output.flag;
+  if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
+  if (path == kStandardOutputName) {
+    if (!seen.insert(path).second)
+      throw UsageError(flag + ": standard output is written by another output too, got '-'");
+    return;
+  }
+  if (is_symlink_loop(path)) throw UsageError(flag + ": is a symlink loop, got '" + path + "'");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw UsageError(flag + ": is a folder, got '" + path + "'");
+  const std::string identity = output_identity(path);
+  if (inputs.count(identity) != 0) {
+    throw UsageError(flag + ": names a file this command reads (an input), got '" + path + "'");
+  }
+  if (is_existing_special_file(path)) {
+    // A pipe or device is written in place: it needs no folder, extension or rename.
+    if (::access(path.c_str(), W_OK) != 0)
+      throw UsageError(flag + ": is not writable, got '" + path + "'");
+  } else {
+    if (fs::path(path).extension() != output.extension) {
+      throw UsageError(flag + ": must end in " + output.extension + " (" + output.format +
+                       "), got '" + path + "'");
+    }
+    // A symlink is followed: the rename happens in its target's folder.
+    const fs::path target = output_target(path);
+    const fs::path parent = folder_of(target);
+    if (!fs::is_directory(parent, ec))
+      throw UsageError(flag + ": folder does not exist, got '" + path + "'");
+    if (::access(parent.c_str(), W_OK) != 0)
+      throw UsageError(flag + ": folder is not writable, got '" + path + "'");
+    const std::size_t name_bytes = target.filename().string().size();
+    if (name_bytes > name_max_bytes(parent)) {
+      throw UsageError(flag + ": file name of " + std::to_string(name_bytes) +
+                       " bytes, more than the " + std::to_string(name_max_bytes(parent)) +
+                       " its folder allows, got '" + path + "'");
+    }
+  }
+  if (!seen.insert(identity).second) {
+    throw UsageError(flag + ": names a file another output also writes, got '" + path + "'");
+  }
 }
 
 }  // namespace
 
-std::filesystem::path output_target(const std::string& path) {
-  namespace fs = std::filesystem;
+fs::path output_target(const std::string& path) {
   fs::path target(path);
-  // The kernel's own bound on a chain of links (MAXSYMLINKS); a longer chain or a loop is left
-  // as it is and fails when opened.
+  // The kernel's own bound on a chain of links (MAXSYMLINKS); a longer chain or a loop is
+  // refused by check_output_paths and write_output_files.
   constexpr int kMaxSymlinkHops = 40;
   for (int hop = 0; hop < kMaxSymlinkHops; ++hop) {
     std::error_code ec;
@@ -149,37 +281,99 @@ std::filesystem::path output_target(const std::string& path) {
   return target;
 }
 
-void write_png_rgb8(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgb) {
-  if (rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {
-    throw std::invalid_argument(path + ": image size does not match its pixels");
+void check_output_paths(const std::vector<OutputPath>& outputs,
+                        const std::vector<std::string>& inputs) {
+  std::set<std::string> input_identities;
+  for (const std::string& input : inputs) {
+    std::string identity;
+    if (file_identity(input, identity)) input_identities.insert(identity);
+  }
+  std::set<std::string> seen;
+  for (const OutputPath& output : outputs) {
+    if (!output.path.empty()) check_output_path(output, input_identities, seen);
+  }
+}
+
+void write_output_files(const std::vector<OutputFile>& files) {
+  // Pipes, devices and standard output are written after every temporary is complete (a full
+  // disk stops the command before anything reached them), then the temporaries are renamed.
+  std::vector<std::pair<std::string, std::string>> in_place;
+  std::vector<StagedFile> staged;
+  const TerminationSignalsBlocked blocked;
+  try {
+    for (const OutputFile& file : files) {
+      std::string bytes = file.bytes();
+      if (file.path != kStandardOutputName && is_symlink_loop(file.path)) {
+        throw std::runtime_error(file.path + ": cannot write (is a symlink loop)");
+      }
+      if (file.path == kStandardOutputName || is_existing_special_file(file.path)) {
+        in_place.emplace_back(file.path, std::move(bytes));
+      } else {
+        staged.push_back(stage(file.path, bytes));
+      }
+    }
+    for (const auto& [path, bytes] : in_place) {
+      if (path == kStandardOutputName) {
+        write_to_standard_output(bytes);
+      } else {
+        write_in_place(path, bytes);
+      }
+    }
+    commit(staged);
+  } catch (...) {
+    discard(staged);
+    throw;
+  }
+}
+
+std::string png_rgb8_bytes(int width, int height, const std::vector<std::uint8_t>& rgb) {
+  if (width <= 0 || height <= 0 ||
+      rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {
+    throw std::invalid_argument("image size does not match its pixels");
   }
   std::string png;
   if (!stbi_write_png_to_func(append_to_string, &png, width, height, 3, rgb.data(), width * 3)) {
-    throw std::runtime_error(path + ": PNG encoding failed");
+    throw std::runtime_error("PNG encoding failed");
   }
-  write_output_bytes(path, png);
+  return png;
+}
+
+void write_png_rgb8(const std::string& path, int width, int height,
+                    const std::vector<std::uint8_t>& rgb) {
+  try {
+    const std::string png = png_rgb8_bytes(width, height, rgb);
+    write_output_files({{path, [&png] { return png; }}});
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(path + ": " + e.what());
+  }
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  write_output_bytes(path, text);
+  write_output_files({{path, [&text] { return text; }}});
 }
 
 void publish_staging_folder(const std::string& staging, const std::string& destination) {
-  namespace fs = std::filesystem;
-  const TerminationSignalsBlocked blocked;
+  // Each staged file is copied to its destination through write_output_files, so the results obey
+  // the outputs' rule too: all or none, symlinks followed, a pipe or device written in place.
+  std::vector<OutputFile> files;
   for (const fs::directory_entry& entry : fs::directory_iterator(staging)) {
-    const fs::path target = fs::path(destination) / entry.path().filename();
-    std::error_code ec;
-    fs::rename(entry.path(), target, ec);
-    if (ec) throw std::runtime_error(target.string() + ": cannot move into place (" + ec.message() + ")");
+    const std::string source = entry.path().string();
+    files.push_back({(fs::path(destination) / entry.path().filename()).string(), [source] {
+                       std::ifstream in(source, std::ios::binary);
+                       std::ostringstream bytes;
+                       bytes << in.rdbuf();
+                       if (!in && !in.eof()) throw std::runtime_error(source + ": cannot read");
+                       return bytes.str();
+                     }});
   }
+  write_output_files(files);
   std::error_code ec;
-  fs::remove(staging, ec);
+  fs::remove_all(staging, ec);
 }
 
 void discard_staging_folder(const std::string& staging) noexcept {
   std::error_code ec;
-  std::filesystem::remove_all(staging, ec);
+  fs::remove_all(staging, ec);
 }
 
 }  // namespace app

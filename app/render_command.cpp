@@ -1,87 +1,31 @@
 #include "app/render_command.h"
 
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <set>
+#include <functional>
 
 #include "app/interrupt.h"
+#include "app/output_files.h"
 #include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
 #include "renderer/error_bound.h"
 #include "renderer/heatmap.h"
-#include "app/output_files.h"
 #include "renderer/pixel_error.h"
 #include "renderer/pixel_noise.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_inputs.h"
 
 namespace app {
 namespace fs = std::filesystem;
 
 namespace {
 
-// The bytes that name a file in `folder` may have (255 on the usual file systems).
-std::size_t name_max_bytes(const fs::path& folder) {
-  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
-  return limit > 0 ? static_cast<std::size_t>(limit) : 255;
-}
-
-bool is_existing_special_file(const fs::path& p) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(p, ec);  // follows symlinks
-  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
-}
-
-// The identity of an output for the same-file check: device and inode for an existing file (so
-// hard links and symlinks match), else the absolute path with symlinks and ".." resolved.
-std::string output_identity(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
-  std::error_code ec;
-  const fs::path target = app::output_target(path);
-  const fs::path resolved = fs::weakly_canonical(fs::absolute(target, ec), ec);
-  return "path " + (ec ? target.string() : resolved.string());
-}
-
-void check_output_path(const OutputPath& output, std::set<std::string>& seen) {
-  const std::string& path = output.path;
-  const std::string flag = output.flag;
-  if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
-  if (path == app::kStandardOutputName) {
-    if (!seen.insert(path).second) throw UsageError(flag + ": standard output is written by another output too, got '-'");
-    return;
-  }
-  const fs::path p(path);
-  std::error_code ec;
-  if (fs::is_directory(p, ec)) throw UsageError(flag + ": is a folder, got '" + path + "'");
-  if (is_existing_special_file(p)) {
-    // A pipe or device is written in place: it needs no folder, extension or rename.
-    if (::access(p.c_str(), W_OK) != 0) throw UsageError(flag + ": is not writable, got '" + path + "'");
-  } else {
-    if (p.extension() != output.extension) {
-      throw UsageError(flag + ": must end in " + output.extension + " (" + output.format + "), got '" + path + "'");
-    }
-    // A symlink is followed: the rename happens in its target's folder.
-    const fs::path target = app::output_target(path);
-    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    if (!fs::is_directory(parent, ec)) throw UsageError(flag + ": folder does not exist, got '" + path + "'");
-    if (::access(parent.c_str(), W_OK) != 0) throw UsageError(flag + ": folder is not writable, got '" + path + "'");
-    const std::size_t name_bytes = target.filename().string().size();
-    if (name_bytes > name_max_bytes(parent)) {
-      throw UsageError(flag + ": file name of " + std::to_string(name_bytes) + " bytes, more than the " +
-                       std::to_string(name_max_bytes(parent)) + " its folder allows, got '" + path + "'");
-    }
-  }
-  if (!seen.insert(output_identity(path)).second) {
-    throw UsageError(flag + ": names a file another output also writes, got '" + path + "'");
-  }
-}
-
 // Per-pixel mean of a counter over its samples, for the heatmaps.
-std::vector<double> per_sample(const renderer::Framebuffer& fb, const std::vector<std::uint64_t>& counter) {
+std::vector<double> per_sample(const renderer::Framebuffer& fb,
+                               const std::vector<std::uint64_t>& counter) {
   std::vector<double> v(counter.size(), 0.0);
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (fb.samples[i] > 0) v[i] = static_cast<double>(counter[i]) / fb.samples[i];
@@ -90,13 +34,6 @@ std::vector<double> per_sample(const renderer::Framebuffer& fb, const std::vecto
 }
 
 }  // namespace
-
-void check_output_paths(const std::vector<OutputPath>& outputs) {
-  std::set<std::string> seen;
-  for (const OutputPath& output : outputs) {
-    if (!output.path.empty()) check_output_path(output, seen);
-  }
-}
 
 std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
   return {{"--out", o.image, ".png", "PNG"},
@@ -108,35 +45,38 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
-  const std::uint64_t pixels = static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+  const std::uint64_t pixels =
+      static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
   const std::uint64_t per_pixel = reference ? kReferenceRenderBytesPerPixel : kRenderBytesPerPixel;
   if (pixels * per_pixel > kRenderMemoryBudgetBytes) {
-    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                     (reference ? " with --reference" : "") + " needs about " +
-                     std::to_string((pixels * per_pixel) >> 20) + " MiB (" + std::to_string(per_pixel) +
+    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height) + (reference ? " with --reference" : "") +
+                     " needs about " + std::to_string((pixels * per_pixel) >> 20) + " MiB (" +
+                     std::to_string(per_pixel) +
                      " bytes per pixel, subsampled or not), more than the " +
                      std::to_string(kRenderMemoryBudgetBytes >> 20) + " MiB budget");
   }
 }
 
-renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, lev::Method method,
-                                    const std::atomic<bool>* cancel, bool show_progress) {
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings,
+                                    lev::Method method, const std::atomic<bool>* cancel,
+                                    bool show_progress) {
   Settings s = settings;
   s.method = method;
   bool progress_shown = false;
   const auto on_pass_done = [&](int passes_done, double elapsed_s) {
     if (show_progress && elapsed_s >= 1.0 && passes_done < settings.spp) {
       const double left_s = elapsed_s / passes_done * (settings.spp - passes_done);
-      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ", lev::method_info(method).name, passes_done,
-                   settings.spp, left_s);
+      std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ",
+                   lev::method_info(method).name, passes_done, settings.spp, left_s);
       progress_shown = true;
     }
   };
   renderer::RenderSettings render_settings = render_settings_from(s);
   render_settings.compute_error_bound = true;  // every render reports its certified bound
   renderer::RenderResult result;
-  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings, settings.spp, result,
-                                            cancel, on_pass_done);
+  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings,
+                                            settings.spp, result, cancel, on_pass_done);
   if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
   if (!done) throw Interrupted();
   return result;
@@ -146,7 +86,8 @@ namespace {
 
 // The statistics of a finished render (reference may be null); the heatmap ranges are filled by
 // the caller, which draws the heatmaps.
-RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, const renderer::RenderResult& result,
+RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
+                         const renderer::RenderResult& result,
                          const renderer::RenderResult* reference) {
   RenderStats s;
   s.scene = loaded.scene.name;
@@ -171,8 +112,8 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
   if (reference) {
-    const auto error =
-        renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
+    const auto error = renderer::summarize_pixel_error(
+        renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
     s.error = RenderPixelError{error.average_pct, error.max_pct, result.rendered_pixels,
                                "every pass against the rt reference's, the rendered pixels",
                                reference->render_seconds};
@@ -185,45 +126,56 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
   render_settings_from(settings);  // validates the combination of settings before any work
   check_memory_budget(settings, outputs.reference_rt);
-  check_output_paths(render_output_paths(outputs));
+  check_output_paths(render_output_paths(outputs), scenes::scene_input_files(settings.scene));
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   InterruptScope::throw_if_interrupted();
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
-  const renderer::RenderResult result = render_image(*loaded, settings, settings.method, cancel, show_progress);
+  const renderer::RenderResult result =
+      render_image(*loaded, settings, settings.method, cancel, show_progress);
   renderer::RenderResult reference;
   if (outputs.reference_rt) {
     const lev::Method rt = lev::reference_method();
-    reference = settings.method == rt ? result : render_image(*loaded, settings, rt, cancel, show_progress);
+    reference =
+        settings.method == rt ? result : render_image(*loaded, settings, rt, cancel, show_progress);
   }
-  RenderStats stats = render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
+  RenderStats stats =
+      render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
-  if (!outputs.image.empty()) {
-    app::write_png_rgb8(outputs.image, fb.width, fb.height, renderer::framebuffer_rgb8(fb));
-  }
-  const struct {
-    const std::string* path;
-    const std::vector<std::uint64_t>* counter;
-    renderer::HeatmapRange* range;
-  } heatmaps[] = {{&outputs.heatmap_lights, &fb.lights_tested, &stats.heatmap_lights_range},
-                  {&outputs.heatmap_nodes, &fb.nodes_visited, &stats.heatmap_nodes_range}};
-  for (const auto& heatmap : heatmaps) {
-    const std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(per_sample(fb, *heatmap.counter), *heatmap.range);
-    if (!heatmap.path->empty()) app::write_png_rgb8(*heatmap.path, fb.width, fb.height, rgb);
-  }
-  const std::vector<std::uint8_t> bound_rgb =
-      renderer::heatmap_rgb8(renderer::error_bound_pct_image(fb), stats.heatmap_bound_range);
-  if (!outputs.heatmap_bound.empty()) app::write_png_rgb8(outputs.heatmap_bound, fb.width, fb.height, bound_rgb);
-  {
-    const std::vector<std::uint8_t> rgb =
-        renderer::heatmap_rgb8(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range);
-    if (!outputs.heatmap_noise.empty()) app::write_png_rgb8(outputs.heatmap_noise, fb.width, fb.height, rgb);
-  }
+  // The heatmaps' ranges go into the statistics, so every heatmap is drawn before the statistics
+  // are encoded; only the pixels of those asked for are kept.
+  const auto heatmap = [](const std::vector<double>& values, renderer::HeatmapRange& range,
+                          const std::string& path) {
+    std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(values, range);
+    return path.empty() ? std::vector<std::uint8_t>{} : rgb;
+  };
+  const std::vector<std::uint8_t> lights_rgb =
+      heatmap(per_sample(fb, fb.lights_tested), stats.heatmap_lights_range, outputs.heatmap_lights);
+  const std::vector<std::uint8_t> nodes_rgb =
+      heatmap(per_sample(fb, fb.nodes_visited), stats.heatmap_nodes_range, outputs.heatmap_nodes);
+  const std::vector<std::uint8_t> bound_rgb = heatmap(
+      renderer::error_bound_pct_image(fb), stats.heatmap_bound_range, outputs.heatmap_bound);
+  const std::vector<std::uint8_t> noise_rgb =
+      heatmap(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range, outputs.heatmap_noise);
   const nlohmann::ordered_json json = render_stats_json(stats);
-  if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
+  std::vector<OutputFile> files;
+  const auto add = [&files](const std::string& path, std::function<std::string()> bytes) {
+    if (!path.empty()) files.push_back({path, std::move(bytes)});
+  };
+  add(outputs.image,
+      [&fb] { return png_rgb8_bytes(fb.width, fb.height, renderer::framebuffer_rgb8(fb)); });
+  const auto png_of = [&fb](const std::vector<std::uint8_t>& rgb) {
+    return [&fb, &rgb] { return png_rgb8_bytes(fb.width, fb.height, rgb); };
+  };
+  add(outputs.heatmap_lights, png_of(lights_rgb));
+  add(outputs.heatmap_nodes, png_of(nodes_rgb));
+  add(outputs.heatmap_bound, png_of(bound_rgb));
+  add(outputs.heatmap_noise, png_of(noise_rgb));
+  add(outputs.stats, [&json] { return json.dump(2) + "\n"; });
+  write_output_files(files);
 
   if (outputs.quiet) return 0;
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
@@ -231,26 +183,32 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
-  std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
-               "%.2f nodes visited/point",
-               scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
-               static_cast<unsigned long long>(loaded->scene.lights.light_count), lev::method_info(settings.method).name,
-               settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
-               json["nodes_visited_avg"].get<double>());
-  std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%", json["error_bound_avg_pct"].get<double>(),
+  std::fprintf(
+      summary,
+      "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
+      "%.2f nodes visited/point",
+      scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
+      static_cast<unsigned long long>(loaded->scene.lights.light_count),
+      lev::method_info(settings.method).name, settings.tolerance, result.render_seconds,
+      json["lights_tested_avg"].get<double>(), json["nodes_visited_avg"].get<double>());
+  std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%",
+               json["error_bound_avg_pct"].get<double>(),
                json["error_bound_max_pct"].get<double>());
   if (outputs.reference_rt) {
-    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%", json["pixel_error_avg_pct"].get<double>(),
+    std::fprintf(summary, ", pixel error avg %.4f%% max %.4f%%",
+                 json["pixel_error_avg_pct"].get<double>(),
                  json["pixel_error_max_pct"].get<double>());
   }
-  if (stats.std_error_avg_pct) std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
+  if (stats.std_error_avg_pct)
+    std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (!output.path.empty()) {
-      written += (written.empty() ? "" : ", ") +
-                 (output.path == app::kStandardOutputName ? std::string("standard output")
-                                                               : scenes::escape_control_characters(output.path));
+      written +=
+          (written.empty() ? "" : ", ") + (output.path == app::kStandardOutputName
+                                               ? std::string("standard output")
+                                               : scenes::escape_control_characters(output.path));
     }
   }
   if (!written.empty()) std::fprintf(stderr, "wrote %s\n", written.c_str());

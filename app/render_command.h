@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "app/settings.h"
 #include "renderer/render_service.h"
@@ -24,19 +25,7 @@ struct RenderOutputs {
   bool quiet = false;  // no progress, no summary, no "wrote" line
 };
 
-// One output file of a command: the flag that names it, and the extension its format needs.
-struct OutputPath {
-  const char* flag;
-  std::string path;       // empty: not written
-  const char* extension;  // ".png", ".json"
-  const char* format;     // for the message
-};
-
-// Throws UsageError, before any work, for a path that could not be written: empty, a folder, a
-// missing or unwritable folder, a name longer than the folder allows, the wrong extension (not
-// checked for an existing pipe or device, which is written in place, nor for "-", standard
-// output), or two outputs naming the same file however spelled (resolved paths, device+inode).
-void check_output_paths(const std::vector<OutputPath>& outputs);
+// The outputs render writes, in the order of the "wrote" line.
 std::vector<OutputPath> render_output_paths(const RenderOutputs& outputs);
 
 // Peak memory of `levrt render` per image pixel (framebuffer, counters, heatmaps; the reference
@@ -58,8 +47,9 @@ void check_memory_budget(const Settings& settings, bool reference);
 // Throws Interrupted when *cancel is raised (Ctrl-C) before the last pass completes.
 // show_progress: after each pass, once the render has run a second, a line on stderr with the
 // passes done and an estimate of the time left (rewritten in place; for a terminal).
-renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings, lev::Method method,
-                                    const std::atomic<bool>* cancel = nullptr, bool show_progress = false);
+renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings,
+                                    lev::Method method, const std::atomic<bool>* cancel = nullptr,
+                                    bool show_progress = false);
 
 int run_render(const Settings& settings, const RenderOutputs& outputs);
 

@@ -17,8 +17,8 @@
 #include "app/bench/experiments.h"
 #include "app/bench/runner.h"
 #include "app/interrupt.h"
-#include "app/settings.h"
 #include "app/output_files.h"
+#include "app/settings.h"
 
 namespace app {
 namespace fs = std::filesystem;
@@ -57,6 +57,9 @@ BenchOptions parse_options(const BenchFlags& flags) {
   if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
     throw UsageError("--out: is not a folder, got '" + flags.out + "'");
   }
+  // A symlink loop, or a component that is not a folder.
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw UsageError("--out: cannot be a folder (" + ec.message() + "), got '" + flags.out + "'");
   fs::path existing = fs::absolute(out, ec);
   while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
   if (existing.empty() || ::access(existing.c_str(), W_OK) != 0) {
@@ -240,7 +243,8 @@ int run_bench(const BenchFlags& flags) {
   std::error_code ec;
   const bool out_existed = fs::exists(options.out, ec);
   fs::create_directories(options.out);
-  const std::string staging = options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid()));
+  const std::string staging =
+      options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid()));
   std::size_t experiments = 0;
   try {
     fs::create_directories(staging);

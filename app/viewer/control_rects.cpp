@@ -1,9 +1,5 @@
 #include "app/viewer/control_rects.h"
 
-#include <cstdio>
-#include <fstream>
-#include <stdexcept>
-
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
@@ -37,17 +33,6 @@ std::string controls_json(const ControlRects& rects, const Settings& settings, V
   out["view"] = view_mode_info(view).name;
   out["mouse_busy"] = mouse_busy;
   return out.dump(1) + "\n";
-}
-
-void write_controls_file(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file << text;
-    if (!file.flush()) throw std::runtime_error("--controls: cannot write '" + temporary + "'");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    throw std::runtime_error("--controls: cannot rename '" + temporary + "' to '" + path + "'");
 }
 
 }  // namespace app::viewer

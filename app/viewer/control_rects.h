@@ -16,7 +16,7 @@ namespace app::viewer {
 struct ControlRect {
   std::string name;
   float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;  // window pixels, x1/y1 exclusive
-  bool hovered = false;  // under the mouse pointer in this frame
+  bool hovered = false;                              // under the mouse pointer in this frame
 };
 
 // Null when the viewer records nothing (the panel's calls are then no-ops).
@@ -36,8 +36,5 @@ void record_rect(ControlRects* rects, const std::string& name, float x0, float y
 // before its next click, so a release and the next press never reach ImGui in one frame.
 std::string controls_json(const ControlRects& rects, const Settings& settings, ViewMode view,
                           bool mouse_busy);
-
-// Writes through a temporary name and a rename, so a reader never sees half a file.
-void write_controls_file(const std::string& path, const std::string& text);
 
 }  // namespace app::viewer

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <utility>
 
+#include "app/render_command.h"
 #include "app/scene_loading.h"
 #include "app/viewer/reference_render.h"
 #include "lev/light_hierarchy.h"
@@ -55,8 +56,8 @@ struct ViewKey {
 constexpr int kFinestPreviewStep = 2;
 constexpr int kCoarsePreviewStep = 8;
 constexpr int kMaxPreviewStep = 128;
-constexpr long long kCoarsestPreviewSamples =
-    (renderer::kDefaultImageWidth / kCoarsePreviewStep) * (renderer::kDefaultImageHeight / kCoarsePreviewStep);
+constexpr long long kCoarsestPreviewSamples = (renderer::kDefaultImageWidth / kCoarsePreviewStep) *
+                                              (renderer::kDefaultImageHeight / kCoarsePreviewStep);
 
 std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
   const auto samples_at = [&](int step) {
@@ -207,7 +208,12 @@ struct Worker {
   void apply(const ViewRequest& request, std::uint64_t serial) {
     const Settings& s = request.settings;
     last_serial = serial;
-    update_status([](WorkerStatus& st) { st.error.clear(); });
+    update_status([](WorkerStatus& st) {
+      st.error.clear();
+      st.bad_input = false;
+    });
+    // A size over the budget is refused before the scene is built or a framebuffer allocated.
+    check_memory_budget(s, request.want_reference);
     // The light scale and camera index are read with a glTF file: they reload it.
     const bool scene_changed = !loaded || s.scene != scene || s.level != level ||
                                s.light_scale != light_scale || s.camera != camera_index;
@@ -225,7 +231,8 @@ struct Worker {
     const bool light_samples_matter =
         rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              tolerance_matters || light_samples_matter || rs.threads != main_settings.threads;
+                              tolerance_matters || light_samples_matter ||
+                              rs.threads != main_settings.threads;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
@@ -351,13 +358,14 @@ struct Worker {
     });
   }
 
-  void fail(const std::string& message, std::uint64_t serial) {
+  void fail(const std::string& message, bool bad_input, std::uint64_t serial) {
     drop_reference(serial);
     drop_main(serial);
     view.reset();
     update_status([&](WorkerStatus& st) {
       st.phase = WorkerPhase::failed;
       st.error = message;
+      st.bad_input = bad_input;
       st.generation = 0;
     });
   }
@@ -403,7 +411,10 @@ void run_worker(WorkerShared& shared) {
         if (request) st.request_serial = serial;
       });
     } catch (const std::exception& e) {
-      w.fail(e.what(), w.last_serial + 1);
+      // UsageError and std::invalid_argument are the input's fault (as levrt's exit code 2 says).
+      const bool bad_input = dynamic_cast<const UsageError*>(&e) != nullptr ||
+                             dynamic_cast<const std::invalid_argument*>(&e) != nullptr;
+      w.fail(e.what(), bad_input, w.last_serial + 1);
       if (request) w.update_status([&](WorkerStatus& st) { st.request_serial = serial; });
     }
   }

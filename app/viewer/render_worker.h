@@ -1,14 +1,15 @@
 // The viewer's background side. One worker thread owns the scene: it loads (rebuilds) it, sets
 // the camera, makes the render jobs (renderer/render_service.h: each fits its own extent volumes
-// for its tolerance) and runs their passes one after another, posting every finished tile to a DisplayBuffer from the
-// tile-done callback. The UI thread only posts requests (the whole view it wants), reads a status
-// snapshot and takes tiles; posting sets the cancel flag, so the pass in flight stops between
-// tiles and the worker picks the request up at once. A render state whose settings did not change
-// is kept, and its interrupted pass resumes. The `rt` reference of the same view renders on a
-// second thread (ReferenceRender); it keeps rendering through method and tolerance changes (the
-// scene is only read) and is dropped when the view (camera, size, depth, subsample) changes. Every new render state starts with
-// preview passes (pixel steps 8, 4, 2: renderer::render_pass's preview_step) posted to a display
-// buffer of their own, so preview samples never mix with the render's tiles.
+// for its tolerance) and runs their passes one after another, posting every finished tile to a
+// DisplayBuffer from the tile-done callback. The UI thread only posts requests (the whole view it
+// wants), reads a status snapshot and takes tiles; posting sets the cancel flag, so the pass in
+// flight stops between tiles and the worker picks the request up at once. A render state whose
+// settings did not change is kept, and its interrupted pass resumes. The `rt` reference of the same
+// view renders on a second thread (ReferenceRender); it keeps rendering through method and
+// tolerance changes (the scene is only read) and is dropped when the view (camera, size, depth,
+// subsample) changes. Every new render state starts with preview passes (pixel steps 8, 4, 2:
+// renderer::render_pass's preview_step) posted to a display buffer of their own, so preview samples
+// never mix with the render's tiles.
 #pragma once
 
 #include <chrono>
@@ -40,6 +41,7 @@ enum class ReferencePhase { none, rendering, done, failed };
 struct WorkerStatus {
   WorkerPhase phase = WorkerPhase::idle;
   std::string error;
+  bool bad_input = false;            // the failure was the request's (a scene or size it refused)
   std::uint64_t request_serial = 0;  // the latest request the worker has fully applied
 
   // The loaded scene.
@@ -71,8 +73,8 @@ struct WorkerStatus {
   double first_pass_seconds = -1.0;  // pass 0's time once it is complete
   int preview_levels = 0;            // preview passes this render starts with
   int preview_levels_done = 0;
-  int preview_step = 0;              // pixel step of the preview level rendering now
-  bool first_pass_shared = false;    // the reference rendered while pass 0 did
+  int preview_step = 0;            // pixel step of the preview level rendering now
+  bool first_pass_shared = false;  // the reference rendered while pass 0 did
 
   // The rt reference of the same view.
   ReferencePhase reference = ReferencePhase::none;

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include "app/scene_loading.h"
@@ -119,10 +120,27 @@ std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string
 }
 
 std::vector<std::string> read_script_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw UsageError("--script: cannot read '" + path + "'");
+  if (!fs::is_regular_file(status))
+    throw UsageError("--script: is not a regular file, got '" + path + "'");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec || size > kMaxScriptFileBytes) {
+    throw UsageError("--script: file of " + std::to_string(size) + " bytes, more than the " +
+                     std::to_string(kMaxScriptFileBytes >> 20) + " MiB a script may have, got '" +
+                     path + "'");
+  }
   std::ifstream in(path);
   if (!in) throw UsageError("--script: cannot read '" + path + "'");
   std::vector<std::string> lines;
+  std::uintmax_t bytes = 0;
   for (std::string line; std::getline(in, line);) {
+    // A file that grew since it was measured stops at the limit too.
+    bytes += line.size() + 1;
+    if (bytes > kMaxScriptFileBytes + 1)
+      throw UsageError("--script: the file changed while it was read, got '" + path + "'");
     if (!line.empty()) lines.push_back(line);
   }
   if (in.bad()) throw UsageError("--script: cannot read '" + path + "'");

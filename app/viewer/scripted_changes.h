@@ -34,7 +34,12 @@ bool parse_window_size(const std::string& text, int& width, int& height);
 ScriptedChange parse_scripted_change(const std::string& text);
 std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string>& texts);
 
-// The lines of a --script file, empty lines skipped; throws UsageError when it cannot be read.
+// A --script file's limit, checked before it is read (a million changes' worth of lines).
+inline constexpr std::uintmax_t kMaxScriptFileBytes = std::uintmax_t{16} << 20;
+
+// The lines of a --script file, empty lines skipped; throws UsageError when it cannot be read,
+// is not a regular file (a pipe or device is refused before it is opened) or is larger than
+// kMaxScriptFileBytes.
 std::vector<std::string> read_script_file(const std::string& path);
 
 // Resident memory now (not the peak: /proc/self/statm), 0 where /proc is not mounted.

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "app/viewer/live_stats.h"
+#include "scenes/scene_inputs.h"
 
 namespace app::viewer {
 
@@ -14,15 +15,16 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.folder = state.snapshot_folder;
   char base[160];
   std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.c_str(),
-                static_cast<unsigned long long>(st.light_count), lev::method_info(st.method).name, st.tolerance);
+                static_cast<unsigned long long>(st.light_count), lev::method_info(st.method).name,
+                st.tolerance);
   job.base = base;
   for (char& c : job.base) {
     if (c == '/' || c == '\\' || c == ' ') c = '_';
   }
   job.width = state.image.width;
   job.height = state.image.height;
-  RenderStats stats =
-      snapshot_stats(collect_live_stats(state.image, st, state.error, now), st, state.settings, current_camera(state));
+  RenderStats stats = snapshot_stats(collect_live_stats(state.image, st, state.error, now), st,
+                                     state.settings, current_camera(state));
   renderer::HeatmapRange range;
   job.image_rgb = view_rgb8(state.image, state.error, ViewMode::image, range);
   // The ranges of both counters' heatmaps, as `levrt render` reports them; the file holds the
@@ -35,6 +37,9 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.heatmap_name = view_mode_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
   job.stats_json = render_stats_json(stats).dump(2) + "\n";
+  job.inputs = scenes::scene_input_files(state.settings.scene);
+  job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
+  job.other_outputs = state.other_outputs;
   return job;
 }
 

@@ -1,6 +1,8 @@
 // Saving a snapshot from the panel: the image, the current heatmap and the stats JSON, written on
 // a thread of its own (PNG encoding of a large image takes a while) with a progress fraction the
-// panel shows. The job carries copies of the pixels, so the UI keeps drawing meanwhile.
+// panel shows. The job carries copies of the pixels, so the UI keeps drawing meanwhile. The three
+// files obey the outputs' rule (app/output_files.h): checked against the viewer's inputs and its
+// other outputs, then written all or none.
 #pragma once
 
 #include <atomic>
@@ -9,6 +11,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "app/output_files.h"
 
 namespace app::viewer {
 
@@ -21,6 +25,8 @@ struct SnapshotJob {
   std::string heatmap_name;  // file name suffix (view name)
   std::vector<std::uint8_t> heatmap_rgb;
   std::string stats_json;
+  std::vector<std::string> inputs;        // the files the viewer reads (scene, script)
+  std::vector<OutputPath> other_outputs;  // the viewer's other outputs (screenshot, controls)
 };
 
 class SnapshotWriter {
@@ -34,8 +40,9 @@ class SnapshotWriter {
   bool start(SnapshotJob job);
   bool busy() const { return busy_.load(); }
   float progress() const;
-  // The last job's outcome: the files written, or the error.
+  // The last job's outcome: the files written, or the error (then failed() is true).
   std::string message() const;
+  bool failed() const;
   // Waits for the job in progress (scripted mode, exit).
   void wait();
 
@@ -47,6 +54,7 @@ class SnapshotWriter {
   std::atomic<int> steps_done_{0};
   mutable std::mutex mutex_;
   std::string message_;
+  bool failed_ = false;
 };
 
 }  // namespace app::viewer

@@ -14,10 +14,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "app/interrupt.h"
+#include "app/output_files.h"
+#include "app/render_command.h"
 #include "app/viewer/frame_log.h"
 #include "app/viewer/gl_texture.h"
 #include "app/viewer/image_view.h"
@@ -30,7 +33,8 @@
 #include "app/viewer/trade_plot.h"
 #include "app/viewer/view_panel.h"
 #include "app/viewer/viewer_state.h"
-#include "app/output_files.h"
+#include "scenes/scene_file.h"
+#include "scenes/scene_inputs.h"
 
 namespace app::viewer {
 namespace {
@@ -61,21 +65,6 @@ WindowSize parse_window_flag(const std::string& text) {
   if (!parse_window_size(text, size.width, size.height))
     throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
   return size;
-}
-
-void check_output_path(const char* flag, const std::string& path) {
-  namespace fs = std::filesystem;
-  if (path.empty()) throw UsageError(std::string(flag) + ": needs a file name, got ''");
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    throw UsageError(std::string(flag) + ": is a folder, got '" + path + "'");
-  const fs::path parent =
-      fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
-  if (!fs::is_directory(parent, ec))
-    throw UsageError(std::string(flag) + ": folder does not exist, got '" + path + "'");
-  if (::access(parent.c_str(), W_OK) != 0) {
-    throw UsageError(std::string(flag) + ": folder is not writable, got '" + path + "'");
-  }
 }
 
 // GLFW for the lifetime of the viewer. Without a display it throws NoDisplayError, whose one
@@ -426,13 +415,26 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   const WindowSize window_size = parse_window_flag(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
   check_hover_pixels(script, settings);
-  if (!flags.screenshot.empty()) check_output_path("--screenshot", flags.screenshot);
-  if (!flags.controls.empty()) check_output_path("--controls", flags.controls);
   if (!flags.screenshot.empty() && flags.frames == 0)
     throw UsageError("--screenshot: needs --frames N");
+  if (settings.resolution == "typed") check_memory_budget(settings, false);
+  // The outputs' rule, before the window opens: no output is an input or another output.
+  std::vector<std::string> inputs;
+  std::vector<OutputPath> outputs;
+  if (!flags.script.empty()) inputs.push_back(flags.script);
+  if (!flags.screenshot.empty())
+    outputs.push_back({"--screenshot", flags.screenshot, ".png", "PNG"});
+  if (!flags.controls.empty()) outputs.push_back({"--controls", flags.controls, ".json", "JSON"});
+  std::vector<std::string> scenes_read = {settings.scene};
   for (const ScriptedChange& c : script) {
-    if (c.key == "screenshot") check_output_path("--set screenshot", c.value);
+    if (c.key == "screenshot") outputs.push_back({"--set screenshot", c.value, ".png", "PNG"});
+    if (c.key == "scene") scenes_read.push_back(c.value);
   }
+  std::vector<std::string> all_inputs = inputs;
+  for (const std::string& scene : scenes_read) {
+    for (const std::string& file : scenes::scene_input_files(scene)) all_inputs.push_back(file);
+  }
+  check_output_paths(outputs, all_inputs);
 
   // Ctrl-C, SIGTERM and SIGHUP close the window like its close button (exit 130).
   const InterruptScope interrupt_scope;
@@ -444,6 +446,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   state.settings = settings;
   state.mouse_input = flags.frames == 0 || flags.real_input;
   state.record_controls = !flags.controls.empty();
+  state.other_inputs = inputs;
+  state.other_outputs = outputs;
   std::string controls_written;
   FrameLog log;
   log.enabled = flags.report_fps;
@@ -451,6 +455,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   ErrorClock error_clock;
   SnapshotWriter snapshots;
   int exit_code = 0;
+  std::string bad_input_error;  // the first scene's
+  std::string snapshot_error;   // the first scripted snapshot that failed
   {
     RenderWorker worker;
     std::uint64_t last_posted = 0;
@@ -463,6 +469,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     float results_content_height = 0.0f;
     FitTracker fit;
     ImVec2 layout_display(0.0f, 0.0f);
+    // A scripted snapshot waits for the render (and the reference, if asked for) to complete.
+    std::optional<std::string> pending_snapshot;
 
     while (!glfwWindowShouldClose(window.get()) && !InterruptScope::flag().load()) {
       for (Clock::time_point t = Clock::now(); t < next_frame; t = Clock::now()) {
@@ -476,8 +484,15 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       previous_start = now;
 
       std::vector<std::string> screenshots;
-      bool snapshot_now = false;
-      if (awaiting == Await::nothing) {
+      // No file is written before the first scene has loaded: a bad scene writes nothing. A frame
+      // with a screenshot or snapshot holds until then (as the frame count does for an await).
+      const bool first_load_pending =
+          state.status.scene_serial == 0 && state.status.phase != WorkerPhase::failed;
+      const bool frame_writes = std::any_of(script.begin(), script.end(), [&](const auto& c) {
+        return c.frame == script_frame && (c.key == "screenshot" || c.key == "snapshot");
+      });
+      const bool hold_frame = pending_snapshot || (first_load_pending && frame_writes);
+      if (awaiting == Await::nothing && !hold_frame) {
         for (const ScriptedChange& c : script) {
           if (c.frame != script_frame) continue;
           switch (apply_scripted_change(state, c)) {
@@ -489,8 +504,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
               awaiting = Await::resize;
               break;
             case ScriptAction::snapshot:
-              state.snapshot_folder = c.value;
-              snapshot_now = true;
+              pending_snapshot = c.value;
               break;
             case ScriptAction::screenshot:
               screenshots.push_back(c.value);
@@ -506,9 +520,22 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       }
 
       take_worker_results(state, worker, log, now);
+      // A first scene that cannot be read (or a size over the memory budget) is bad input.
+      if (state.status.phase == WorkerPhase::failed && state.status.bad_input &&
+          state.status.scene_serial == 0) {
+        bad_input_error = state.status.error;
+        break;
+      }
       update_error(state, error_clock, now, false);
       add_trade_point_when_ready(state, error_clock, now);
-      if (snapshot_now) snapshots.start(make_snapshot_job(state, now));
+      if (pending_snapshot && render_settled(state, last_posted)) {
+        state.snapshot_folder = *pending_snapshot;
+        pending_snapshot.reset();
+        snapshots.wait();
+        snapshots.start(make_snapshot_job(state, now));
+        snapshots.wait();  // scripted: its outcome decides the exit code
+        if (snapshots.failed() && snapshot_error.empty()) snapshot_error = snapshots.message();
+      }
       int window_width = 0, window_height = 0;
       glfwGetWindowSize(window.get(), &window_width, &window_height);
       if ((awaiting == Await::idle && render_settled(state, last_posted)) ||
@@ -517,8 +544,11 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
            window_height == resize_height)) {
         awaiting = Await::nothing;
       }
-      const bool last_frame =
-          flags.frames > 0 && awaiting == Await::nothing && script_frame + 1 >= flags.frames;
+      // A scripted session ends once its first scene has loaded (or failed), so its outputs and
+      // exit code are of that scene.
+      const bool last_frame = flags.frames > 0 && awaiting == Await::nothing && !hold_frame &&
+                              !pending_snapshot && !first_load_pending &&
+                              script_frame + 1 >= flags.frames;
       const bool screenshot_now = !screenshots.empty() || (last_frame && !flags.screenshot.empty());
 
       ImGui_ImplOpenGL3_NewFrame();
@@ -541,11 +571,11 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       draw_picture_window(state, picture, layout);
       follow_image_area(state, fit, now);
       ImGui::Render();
-      if (state.record_controls) {
+      if (state.record_controls && !first_load_pending) {
         const std::string controls =
             controls_json(state.control_rects, state.settings, state.view,
                           ImGui::IsAnyItemActive() || ImGui::IsAnyMouseDown());
-        if (controls != controls_written) write_controls_file(flags.controls, controls);
+        if (controls != controls_written) write_text_file(flags.controls, controls);
         controls_written = controls;
       }
 
@@ -577,19 +607,21 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
                                            : 0.95 * state.ui_fps + 0.05 * 1000.0 / frame_ms;
       }
       first = false;
-      if (awaiting == Await::nothing) script_frame += 1;
+      if (awaiting == Await::nothing && !hold_frame) script_frame += 1;
       if (last_frame) break;
     }
-    if (state.status.phase == WorkerPhase::failed && flags.frames > 0) {
+    if (bad_input_error.empty() && state.status.phase == WorkerPhase::failed && flags.frames > 0) {
       std::fprintf(stderr, "levrt: view: the render failed: %s\n", state.status.error.c_str());
       exit_code = 1;
     }
   }
   snapshots.wait();
+  destroy_texture(picture.texture);
   InterruptScope::throw_if_interrupted();
+  if (!bad_input_error.empty()) throw UsageError(bad_input_error);
+  if (!snapshot_error.empty()) throw std::runtime_error("view: " + snapshot_error);
   if (!snapshots.message().empty() && flags.frames > 0)
     std::printf("levrt view: %s\n", snapshots.message().c_str());
-  destroy_texture(picture.texture);
   if (flags.report_fps) std::fputs(frame_report(log).c_str(), stdout);
   if (!flags.screenshot.empty()) {
     int width = 0, height = 0;

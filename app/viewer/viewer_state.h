@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/output_files.h"
 #include "app/settings.h"
 #include "app/viewer/control_rects.h"
 #include "app/viewer/display_image.h"
@@ -43,6 +44,10 @@ struct ViewerState {
   int image_area_height = 0;
   bool fit_pending = false;
   std::string snapshot_folder = "out";
+  // The outputs' rule (app/output_files.h) for snapshots: the files the viewer reads besides the
+  // scene the settings name (the script), and its other outputs (screenshots, controls).
+  std::vector<std::string> other_inputs;
+  std::vector<OutputPath> other_outputs;
 
   // Scripted mode ignores the real mouse over the picture (tests must not depend on where the
   // pointer happens to be) and can hover a pixel instead.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -125,7 +126,8 @@ TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
 
 TEST_F(Outputs, DashWritesThePngToStandardOutput) {
   // Parenthesised: run_shell appends 2>&1, which must not send stderr into the file.
-  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) + " render --width 8 --height 8 --out - 2>/dev/null > " +
+  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) +
+                                 " render --width 8 --height 8 --out - 2>/dev/null > " +
                                  shell_quote(path("stdout.bin")) + ")");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   const std::string bytes = read_bytes(path("stdout.bin"));
@@ -136,7 +138,8 @@ TEST_F(Outputs, DashWritesThePngToStandardOutput) {
 }
 
 TEST_F(Outputs, ExportToDashWritesOnlyTheSceneFileToStandardOutput) {
-  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) + " export --scene maze --level 1 --out - 2>/dev/null > " +
+  const CommandRun r = run_shell("(" + shell_quote(LEVRT_BINARY) +
+                                 " export --scene maze --level 1 --out - 2>/dev/null > " +
                                  shell_quote(path("maze.json")) + ")");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   const CommandRun rendered = run_levrt(render_args({"--scene", path("maze.json")}));
@@ -334,6 +337,141 @@ TEST_F(Outputs, TooManyJsonValuesAreRefusedWhileParsing) {
                                  " render --scene " + shell_quote(scene) + " --width 8 --height 8");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("more than 1000000 JSON values"), std::string::npos) << r.output;
+}
+
+// A scene file small enough to render in a blink.
+const char* const kSceneText =
+    R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
+    "root": {"type": "union", "children": [{"type": "point_light", "intensity": [1, 1, 1]}]}})";
+
+// Every file in the folder with its bytes, to show that nothing changed.
+std::map<std::string, std::string> snapshot_of(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string name = fs::relative(e.path(), dir).string();
+    files[name] = e.is_symlink()        ? "-> " + fs::read_symlink(e.path()).string()
+                  : e.is_regular_file() ? read_bytes(e.path())
+                                        : "(other)";
+  }
+  return files;
+}
+
+TEST_F(Outputs, AnOutputThatIsTheSceneFileIsRefusedHoweverSpelled) {
+  std::ofstream(path("in.json")) << kSceneText;
+  fs::create_symlink("in.json", path("link.json"));
+  fs::create_directories(dir_ / "sub");
+  const auto before = snapshot_of(dir_);
+  for (const char* spelled : {"in.json", "./in.json", "sub/../in.json", "link.json"}) {
+    const CommandRun r = run_here(render_args({"--scene", "in.json", "--stats", spelled}));
+    EXPECT_EQ(r.exit_code, 2) << spelled << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find("--stats: names a file this command reads"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(snapshot_of(dir_), before) << spelled;
+  }
+  const CommandRun exported = run_here({"export", "--scene", "in.json", "--out", "sub/../in.json"});
+  EXPECT_EQ(exported.exit_code, 2) << exported.output;
+  EXPECT_EQ(line_count(exported.output), 1) << exported.output;
+  EXPECT_EQ(snapshot_of(dir_), before);
+}
+
+// The check reads the glTF's URIs before any work, so the file need not even be a valid glTF.
+TEST_F(Outputs, AnOutputThatIsAGltfBufferOrTextureIsRefused) {
+  fs::create_directories(dir_ / "model");
+  std::ofstream(dir_ / "model" / "scene.gltf")
+      << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "geometry.png", "byteLength": 4}],
+             "images": [{"uri": "base%20colour.png"}, {"uri": "data:image/png;base64,AAAA"}]})";
+  std::ofstream(dir_ / "model" / "geometry.png") << "buffer bytes";
+  std::ofstream(dir_ / "model" / "base colour.png") << "texture bytes";
+  const auto before = snapshot_of(dir_);
+  for (const auto& [flag, name] : std::vector<std::pair<std::string, std::string>>{
+           {"--out", "model/base colour.png"},
+           {"--heatmap-lights", "model/geometry.png"},
+           {"--heatmap-noise", "model/../model/base colour.png"}}) {
+    const CommandRun r = run_here(render_args({"--scene", "model/scene.gltf", flag, name}));
+    EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find(flag + ": names a file this command reads"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(snapshot_of(dir_), before) << name;
+  }
+}
+
+TEST_F(Outputs, AnOutputThatIsAGlbTextureIsRefused) {
+  const std::string json = R"({"asset": {"version": "2.0"}, "images": [{"uri": "t.png"}]} )";
+  std::string glb = "glTF";
+  const auto u32 = [&glb](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) glb += static_cast<char>((v >> (8 * i)) & 0xff);
+  };
+  u32(2);
+  u32(static_cast<std::uint32_t>(12 + 8 + json.size()));
+  u32(static_cast<std::uint32_t>(json.size()));
+  u32(0x4E4F534A);
+  glb += json;
+  std::ofstream(path("scene.glb"), std::ios::binary) << glb;
+  std::ofstream(path("t.png")) << "texture bytes";
+  const auto before = snapshot_of(dir_);
+  const CommandRun r = run_here(render_args({"--scene", "scene.glb", "--out", "t.png"}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_EQ(snapshot_of(dir_), before);
+}
+
+TEST_F(Outputs, ASymlinkLoopIsRefusedWithOneLineAndStaysALink) {
+  fs::create_symlink("loop.png", path("loop.png"));
+  const CommandRun r = run_here(render_args({"--out", "loop.png"}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--out: is a symlink loop"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_symlink(path("loop.png")));
+  EXPECT_EQ(entries(), std::vector<std::string>{"loop.png"});
+  fs::create_symlink("loop", path("loop"));
+  const CommandRun bench = run_here({"bench", "--suite", "thesis", "--quick", "--out", "loop"});
+  EXPECT_EQ(bench.exit_code, 2) << bench.output;
+  EXPECT_EQ(line_count(bench.output), 1) << bench.output;
+  EXPECT_EQ(entries(), (std::vector<std::string>{"loop", "loop.png"}));
+}
+
+// A 64 KiB tmpfs holds the first outputs but not all: the render fails with one line, every old
+// file stays as it was and no temporary is left. Mounting needs root (or a user namespace).
+TEST_F(Outputs, AFullFileSystemWritesNoOutputAndKeepsTheOldFiles) {
+  const fs::path full = dir_ / "full";
+  fs::create_directories(full);
+  const CommandRun mounted =
+      run_shell("mount -t tmpfs -o size=64k levrt_outputs_test " + shell_quote(full.string()));
+  if (mounted.exit_code != 0) {
+    GTEST_SKIP() << "cannot mount a tmpfs here (needs root): " << mounted.output;
+  }
+  struct Unmount {
+    fs::path at;
+    ~Unmount() { run_shell("umount " + shell_quote(at.string())); }
+  } unmount{full};
+  std::ofstream(full / "image.png") << "old image";
+  std::ofstream(full / "stats.json") << "old stats";
+  const auto before = snapshot_of(full);
+  const CommandRun r =
+      run_levrt({"render", "--width", "192", "--height", "144", "--quiet", "--out",
+                 (full / "image.png").string(), "--heatmap-lights", (full / "lights.png").string(),
+                 "--heatmap-nodes", (full / "nodes.png").string(), "--heatmap-bound",
+                 (full / "bound.png").string(), "--heatmap-noise", (full / "noise.png").string(),
+                 "--stats", (full / "stats.json").string()});
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+  EXPECT_EQ(snapshot_of(full), before);
+  // The same render fits on a roomy file system: the failure was the space, not the outputs.
+  const CommandRun roomy =
+      run_levrt({"render", "--width", "192", "--height", "144", "--quiet", "--out",
+                 path("image.png"), "--heatmap-lights", path("lights.png"), "--heatmap-nodes",
+                 path("nodes.png"), "--heatmap-bound", path("bound.png"), "--heatmap-noise",
+                 path("noise.png"), "--stats", path("stats.json")});
+  EXPECT_EQ(roomy.exit_code, 0) << roomy.output;
+  std::uintmax_t total = 0;
+  for (const char* f :
+       {"image.png", "lights.png", "nodes.png", "bound.png", "noise.png", "stats.json"})
+    total += fs::file_size(path(f));
+  EXPECT_GT(total, 64u * 1024u) << "the outputs must overflow the 64 KiB file system";
+  EXPECT_LT(fs::file_size(path("image.png")), 48u * 1024u) << "the first output must fit";
 }
 
 TEST_F(Outputs, HelpListsEverySettingsDefaultAndRange) {

@@ -4,6 +4,7 @@
 // snapshot, and the fit resolution follows the window. Skipped only when xvfb-run is missing.
 // Labelled "threads": under the tsan preset the UI thread, the tile workers and the reference
 // thread share the display buffers and the cancel flag.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <sstream>
@@ -19,8 +22,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/run_command.h"
 #include <stb/stb_image.h>
+#include "tests/support/run_command.h"
 
 namespace {
 
@@ -143,8 +146,164 @@ TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
     EXPECT_EQ(r.exit_code, 2) << change << ": " << r.output;
     EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
   }
-  const CommandRun r = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view --window 10x10");
+  const CommandRun r =
+      run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view --window 10x10");
   EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+long line_count(const std::string& text) {
+  return std::count(text.begin(), text.end(), '\n');
+}
+
+// Every file in the folder with its bytes (or its kind), to show that nothing changed.
+std::map<std::string, std::string> files_in(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    files[fs::relative(e.path(), dir).string()] =
+        e.is_regular_file() ? read_file_bytes(e.path()) : "(not a regular file)";
+  }
+  return files;
+}
+
+// The device node stays the same device: never replaced by a regular file.
+void expect_same_device(const char* device, const struct stat& before) {
+  struct stat after {};
+  ASSERT_EQ(::stat(device, &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode)) << device;
+  EXPECT_EQ(after.st_rdev, before.st_rdev) << device;
+  EXPECT_EQ(after.st_ino, before.st_ino) << device;
+}
+
+TEST_F(ViewerWindow, AScriptThatIsNotASmallRegularFileIsRefusedBeforeItIsRead) {
+  const CommandRun device = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
+                                      " view --frames 1 --script /dev/zero");
+  EXPECT_EQ(device.exit_code, 2) << device.output;
+  EXPECT_EQ(line_count(device.output), 1) << device.output;
+  EXPECT_NE(device.output.find("--script: is not a regular file"), std::string::npos)
+      << device.output;
+  const std::string big = path("big.txt");
+  fs::resize_file((std::ofstream(big), big), (std::uintmax_t{16} << 20) + 1);
+  const CommandRun large = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
+                                     " view --frames 1 --script " + shell_quote(big));
+  EXPECT_EQ(large.exit_code, 2) << large.output;
+  EXPECT_EQ(line_count(large.output), 1) << large.output;
+  EXPECT_NE(large.output.find("more than the 16 MiB a script may have"), std::string::npos)
+      << large.output;
+}
+
+TEST_F(ViewerWindow, AnOutputThatIsAnInputOrAnotherOutputIsRefusedBeforeTheWindowOpens) {
+  std::ofstream(path("script.txt")) << "await=idle@0\n";
+  std::ofstream(path("scene.json")) << "{}";
+  const auto before = files_in(dir_);
+  const std::vector<std::vector<std::string>> cases = {
+      {"--script", path("script.txt"), "--controls", path("script.txt")},
+      {"--scene", path("scene.json"), "--controls", path("scene.json")},
+      {"--screenshot", path("a.png"), "--set", "screenshot=" + dir_.string() + "/./a.png@1"},
+      {"--controls", path("c.json"), "--screenshot", path("c.json")},
+  };
+  for (const auto& args : cases) {
+    std::vector<std::string> all = {"--frames", "2"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::string command = "env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view";
+    for (const std::string& a : all) command += " " + shell_quote(a);
+    const CommandRun r = run_shell(command);
+    EXPECT_EQ(r.exit_code, 2) << args[1] << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_EQ(files_in(dir_), before) << args[1];
+  }
+}
+
+TEST_F(ViewerWindow, EveryWriterWritesADeviceInPlace) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  struct stat null_before {
+  }, zero_before{};
+  ASSERT_EQ(::stat("/dev/null", &null_before), 0);
+  ASSERT_EQ(::stat("/dev/zero", &zero_before), 0);
+  // The snapshot's image file is a pipe that a reader drains: written in place, still a pipe.
+  fs::create_directories(dir_ / "snap");
+  const fs::path pipe = dir_ / "snap" / "view_building_64_lev_0.01.png";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const fs::path received = dir_ / "received.png";
+  std::thread reader([&] {
+    run_shell("timeout 120 cat " + shell_quote(pipe.string()) + " > " +
+              shell_quote(received.string()));
+  });
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--window", "800x600",
+      "--frames", "3", "--screenshot", "/dev/zero", "--controls", "/dev/null",
+      "--set", "snapshot=" + path("snap") + "@1",
+  });
+  // clang-format on
+  reader.join();
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  expect_same_device("/dev/null", null_before);
+  expect_same_device("/dev/zero", zero_before);
+  EXPECT_TRUE(fs::is_fifo(pipe));
+  EXPECT_TRUE(read_png(received).ok()) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "snap" / "view_building_64_lev_0.01_stats.json")) << r.output;
+  if (::geteuid() != 0 || !fs::is_character_file("/dev/full")) return;
+  // As root a rename would replace the machine's /dev/full; written in place it reports ENOSPC.
+  struct stat full_before {};
+  ASSERT_EQ(::stat("/dev/full", &full_before), 0);
+  const CommandRun full = run_viewer({"--lights", "64", "--width", "64", "--height", "48",
+                                      "--frames", "3", "--controls", "/dev/full"});
+  EXPECT_EQ(full.exit_code, 1) << full.output;
+  EXPECT_NE(full.output.find("No space left on device"), std::string::npos) << full.output;
+  expect_same_device("/dev/full", full_before);
+}
+
+TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  std::ofstream(path("broken.json")) << R"({"levrt_scene": 1, "camera": 5})";
+  const std::vector<std::vector<std::string>> cases = {
+      {"--scene", path("missing.json")},
+      {"--scene", path("broken.json")},
+      {"--scene", "building", "--level", "99"},
+      {"--width", "16384", "--height", "16384"},
+  };
+  const auto before = files_in(dir_);
+  for (const auto& scene : cases) {
+    std::vector<std::string> args = scene;
+    for (const std::string& a : std::vector<std::string>{
+             "--frames", "3", "--window", "800x600", "--screenshot", path("shot.png"), "--controls",
+             path("controls.json"), "--set", "snapshot=" + path("snap") + "@1", "--set",
+             "screenshot=" + path("early.png") + "@0"}) {
+      args.push_back(a);
+    }
+    const CommandRun r = run_viewer(args);
+    EXPECT_EQ(r.exit_code, 2) << scene[1] << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_EQ(files_in(dir_), before) << scene[1] << ": " << r.output;
+  }
+}
+
+TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  std::ofstream(path("file.txt")) << "a file, not a folder";
+  const auto before = files_in(dir_);
+  const CommandRun r = run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--frames",
+                                   "3", "--set", "snapshot=" + path("file.txt") + "/snap@1"});
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("snapshot failed"), std::string::npos) << r.output;
+  EXPECT_EQ(files_in(dir_), before);
+}
+
+// Without await=idle the snapshot waits for the render: all passes of it, not the preview.
+TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+  const CommandRun r =
+      run_viewer({"--lights", "256", "--width", "96", "--height", "64", "--spp", "3", "--window",
+                  "800x600", "--frames", "1", "--set", "snapshot=" + path("snap") + "@0"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json stats = read_json(dir_ / "snap" / "view_building_256_lev_0.01_stats.json");
+  ASSERT_TRUE(stats.is_object()) << r.output;
+  EXPECT_EQ(stats["spp"], 3);
 }
 
 TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
@@ -302,8 +461,8 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
 TEST_F(ViewerWindow, TheErrorBoundViewShowsTheBoundWithoutTheReference) {
   if (!have_xvfb())
     GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
-  const std::vector<std::string> settings = {"--scene", "hall", "--lights", "256", "--width",
-                                             "128",     "--height", "96", "--spp",    "1"};
+  const std::vector<std::string> settings = {"--scene", "hall",     "--lights", "256",   "--width",
+                                             "128",     "--height", "96",       "--spp", "1"};
   std::vector<std::string> view_args = settings;
   // clang-format off
   for (const std::string& a : std::vector<std::string>{
@@ -347,7 +506,8 @@ TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
     GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
   // One function writes both files (app/render_stats.h): the keys cannot drift, and threads 0
   // is resolved to the core count in both.
-  const std::vector<std::string> settings = {"--lights", "64", "--width", "48", "--height", "32", "--threads", "0"};
+  const std::vector<std::string> settings = {"--lights", "64", "--width",   "48",
+                                             "--height", "32", "--threads", "0"};
   std::vector<std::string> view_args = settings;
   for (const char* a : {"--window", "800x600", "--frames", "3", "--set", "await=idle@0", "--set"})
     view_args.emplace_back(a);
@@ -363,7 +523,8 @@ TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
   nlohmann::json snapshot;
   for (const auto& entry : fs::directory_iterator(dir_ / "keys")) {
     const std::string name = entry.path().filename().string();
-    if (name.size() > 11 && name.compare(name.size() - 11, 11, "_stats.json") == 0) snapshot = read_json(entry.path());
+    if (name.size() > 11 && name.compare(name.size() - 11, 11, "_stats.json") == 0)
+      snapshot = read_json(entry.path());
   }
   const nlohmann::json rendered = read_json(path("render_stats.json"));
   ASSERT_TRUE(snapshot.is_object() && rendered.is_object()) << view.output;
