@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <optional>
 
 #include "app/interrupt.h"
 #include "app/output_files.h"
@@ -129,8 +130,16 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   check_output_paths(render_output_paths(outputs), scenes::scene_input_files(settings.scene));
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
-  std::unique_ptr<LoadedScene> loaded = load_scene(settings);
-  InterruptScope::throw_if_interrupted();
+  // Until the outputs are written nothing is, so Ctrl-C may end the process outright.
+  std::optional<InterruptWatchdog> watchdog(std::in_place);
+  std::unique_ptr<LoadedScene> loaded;
+  try {
+    loaded = load_scene(settings, cancel);
+  } catch (...) {
+    // Cancelled, or a read the signal broke off (EINTR): the interrupt, not the file, ended it.
+    InterruptScope::throw_if_interrupted();
+    throw;
+  }
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
   const renderer::RenderResult result =
       render_image(*loaded, settings, settings.method, cancel, show_progress);
@@ -143,6 +152,7 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   RenderStats stats =
       render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 
+  watchdog.reset();
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
   // The heatmaps' ranges go into the statistics, so every heatmap is drawn before the statistics

@@ -24,7 +24,9 @@ const scenes::SceneModel& model_for(const Settings& settings) {
 
 }  // namespace
 
-bool is_scene_file(const Settings& settings) { return scenes::is_scene_file_name(settings.scene); }
+bool is_scene_file(const Settings& settings) {
+  return scenes::is_scene_file_name(settings.scene);
+}
 
 namespace {
 
@@ -36,8 +38,8 @@ void apply_light_count_typed(Settings& settings, std::uint64_t lights, const std
   const scenes::SceneModel& model = model_for(settings);
   const int level = scenes::level_for_light_count(model, lights);
   if (level < 0) {
-    throw UsageError("--lights: " + std::string(model.name) + " has " + scenes::light_counts_text(model) +
-                     " lights, got '" + typed + "'");
+    throw UsageError("--lights: " + std::string(model.name) + " has " +
+                     scenes::light_counts_text(model) + " lights, got '" + typed + "'");
   }
   settings.level = level;
 }
@@ -76,13 +78,21 @@ scenes::SceneDescription describe_scene(const Settings& settings) {
   return model.describe(settings.level);
 }
 
-std::unique_ptr<LoadedScene> load_scene(const Settings& settings) {
+std::unique_ptr<LoadedScene> load_scene(const Settings& settings, const std::atomic<bool>* cancel) {
+  const auto poll = [cancel] {
+    if (cancel && cancel->load()) throw LoadCancelled();
+  };
   const auto start = std::chrono::steady_clock::now();
+  poll();
   const scenes::SceneDescription description = describe_scene(settings);
+  poll();
   auto loaded = std::make_unique<LoadedScene>();
   loaded->scene = scenes::instantiate_scene(description);
+  poll();
   loaded->rays = std::make_unique<renderer::RayScene>(loaded->scene.geometry);
-  loaded->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  poll();
+  loaded->build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return loaded;
 }
 

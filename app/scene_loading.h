@@ -2,9 +2,11 @@
 // requested light count) or a scene file, its Embree scene, and how long building them took.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "app/settings.h"
@@ -32,6 +34,12 @@ void apply_light_count_flag(Settings& settings, const std::string& text);
 // std::invalid_argument "FILE: /json/path: problem" for a bad file).
 scenes::SceneDescription describe_scene(const Settings& settings);
 
-std::unique_ptr<LoadedScene> load_scene(const Settings& settings);
+// Reads (or describes), instantiates and builds the scene. cancel (may be null) is polled
+// between the steps; once it is raised the load throws LoadCancelled.
+struct LoadCancelled : std::runtime_error {
+  LoadCancelled() : std::runtime_error("the scene load was cancelled") {}
+};
+std::unique_ptr<LoadedScene> load_scene(const Settings& settings,
+                                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace app

@@ -29,7 +29,8 @@ struct WorkerShared {
   std::uint64_t last_serial = 0;
   bool quit = false;
   WorkerStatus status;
-  std::atomic<bool> cancel{false};  // the main render's pass in flight
+  std::atomic<bool> cancel{false};    // the main render's pass in flight
+  std::atomic<bool> quitting{false};  // the scene load in flight (only quitting stops a load)
 
   DisplayBuffer tiles;
   DisplayBuffer preview_tiles;
@@ -192,7 +193,7 @@ struct Worker {
       st.level = s.level;
       st.generation = 0;
     });
-    loaded = load_scene(s);
+    loaded = load_scene(s, &shared.quitting);
     preset = loaded->scene.camera;
     update_status([&](WorkerStatus& st) {
       st.scene_serial += 1;
@@ -457,6 +458,7 @@ RenderWorker::~RenderWorker() {
     const std::lock_guard<std::mutex> lock(shared_->mutex);
     shared_->quit = true;
     shared_->cancel.store(true);
+    shared_->quitting.store(true);
   }
   shared_->wake.notify_all();
   thread_.join();

@@ -457,6 +457,10 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   int exit_code = 0;
   std::string bad_input_error;  // the first scene's
   std::string snapshot_error;   // the first scripted snapshot that failed
+  // After Ctrl-C the worker's scene load stops at its next step; one stuck in a step that cannot
+  // stop (a large glTF's parse) is cut short by this watchdog, so the viewer exits within a
+  // second. It outlives the worker, whose destructor waits for the load.
+  std::optional<InterruptWatchdog> shutdown_watchdog;
   {
     RenderWorker worker;
     std::uint64_t last_posted = 0;
@@ -609,6 +613,10 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       first = false;
       if (awaiting == Await::nothing && !hold_frame) script_frame += 1;
       if (last_frame) break;
+    }
+    if (InterruptScope::flag().load()) {
+      snapshots.wait();  // no snapshot temporary is left behind if the watchdog ends the process
+      shutdown_watchdog.emplace();
     }
     if (bad_input_error.empty() && state.status.phase == WorkerPhase::failed && flags.frames > 0) {
       std::fprintf(stderr, "levrt: view: the render failed: %s\n", state.status.error.c_str());

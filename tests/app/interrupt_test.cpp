@@ -13,72 +13,29 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/signal_process.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
 namespace fs = std::filesystem;
 
-// True once the process catches SIGINT and SIGTERM (its handlers are installed), read from
-// /proc/PID/status: signalling earlier would test the kernel's default action, not levrt.
-bool catches_termination_signals(pid_t pid) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  std::string line;
-  while (std::getline(status, line)) {
-    if (line.rfind("SigCgt:", 0) == 0) {
-      const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
-      const unsigned long long wanted = (1ull << (SIGINT - 1)) | (1ull << (SIGTERM - 1));
-      return (mask & wanted) == wanted;
-    }
-  }
-  return false;
-}
+using levrt_test::interrupt_after;
+using levrt_test::kIgnoredSignal;
 
-// Exit code of a process that did not exit within the bound after the signal (it is then killed).
-constexpr int kIgnoredSignal = 2000;
-
-// Runs levrt with args, signals it `delay` after its handlers are installed, and returns its
-// exit code (1000 + the signal when the signal killed it, so that is never mistaken for 130;
-// kIgnoredSignal when it was still running `exit_bound` after the signal).
-int interrupt_after(const std::vector<std::string>& args, int signal_number, std::chrono::milliseconds delay,
-                    std::chrono::milliseconds exit_bound = std::chrono::seconds(60)) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!catches_termination_signals(pid) && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  std::this_thread::sleep_for(delay);
-  kill(pid, signal_number);
-  const auto exit_deadline = std::chrono::steady_clock::now() + exit_bound;
-  int status = 0;
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > exit_deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      return kIgnoredSignal;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
-}
-
-int interrupt_render_after(int signal_number, std::chrono::milliseconds delay, const fs::path& dir) {
-  return interrupt_after({LEVRT_BINARY, "render", "--lights", "16384", "--method", "rt", "--width", "640",
-                          "--height", "480", "--spp", "4", "--out", (dir / "i.png").string(), "--stats",
-                          (dir / "s.json").string(), "--heatmap-lights", (dir / "l.png").string()},
-                         signal_number, delay);
+int interrupt_render_after(int signal_number, std::chrono::milliseconds delay,
+                           const fs::path& dir) {
+  return interrupt_after(
+      {LEVRT_BINARY, "render", "--lights", "16384", "--method", "rt", "--width", "640", "--height",
+       "480", "--spp", "4", "--out", (dir / "i.png").string(), "--stats", (dir / "s.json").string(),
+       "--heatmap-lights", (dir / "l.png").string()},
+      signal_number, delay);
 }
 
 TEST(Interrupt, SignalDuringRenderLeavesNoOutput) {
   for (int sig : {SIGINT, SIGTERM}) {
     for (int delay_ms : {0, 600}) {  // as the scene build starts, during the render
-      const levrt_test::TempDir temp("levrt_interrupt_" + std::to_string(sig) + "_" + std::to_string(delay_ms) + "_");
+      const levrt_test::TempDir temp("levrt_interrupt_" + std::to_string(sig) + "_" +
+                                     std::to_string(delay_ms) + "_");
       const fs::path& dir = temp.path();
       EXPECT_EQ(interrupt_render_after(sig, std::chrono::milliseconds(delay_ms), dir), 130)
           << "signal " << sig << " after " << delay_ms << " ms";
@@ -95,15 +52,17 @@ TEST(Interrupt, SignalDuringADepthBombExitsPromptly) {
   const fs::path& dir = temp.path();
   fs::create_directories(dir / "out");
   const fs::path scene = dir / "bomb.json";
-  std::ofstream(scene) << R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0]},
+  std::ofstream(scene)
+      << R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0]},
     "materials": [{"name": "bomb", "kd": 0.1, "kr": 1, "kt": 1, "ior": 1.5}],
     "root": {"type": "union", "children": [
       {"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]},
       {"type": "affine", "translate": [1, -2, 6], "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
   for (int sig : {SIGINT, SIGTERM}) {
-    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", scene.string(), "--depth", "64", "--width", "64",
-                               "--height", "48", "--out", (dir / "out" / "i.png").string()},
-                              sig, std::chrono::seconds(1), std::chrono::seconds(2)),
+    EXPECT_EQ(interrupt_after(
+                  {LEVRT_BINARY, "render", "--scene", scene.string(), "--depth", "64", "--width",
+                   "64", "--height", "48", "--out", (dir / "out" / "i.png").string()},
+                  sig, std::chrono::seconds(1), std::chrono::seconds(2)),
               130)
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir / "out")) << "signal " << sig;
@@ -117,13 +76,30 @@ TEST(Interrupt, SignalDuringAMillionLightRenderExitsPromptly) {
   const levrt_test::TempDir temp("levrt_interrupt_million_lights_");
   const fs::path& dir = temp.path();
   for (const char* method : {"lev", "ast"}) {
-    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", "building", "--lights", "1048576", "--method",
-                               method, "--tolerance", "0", "--width", "320", "--height", "240", "--out",
-                               (dir / "i.png").string()},
+    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", "building", "--lights", "1048576",
+                               "--method", method, "--tolerance", "0", "--width", "320", "--height",
+                               "240", "--out", (dir / "i.png").string()},
                               SIGINT, std::chrono::seconds(1), std::chrono::seconds(2)),
               130)
         << method;
     EXPECT_TRUE(fs::is_empty(dir)) << method;
+  }
+}
+
+// Building level 10 (a million lights) takes seconds to build its model and light hierarchy: a
+// signal during the load ends it (between its steps, or by the load watchdog within
+// kLoadGraceSeconds of a step that cannot stop) with 130 and nothing written.
+TEST(Interrupt, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
+  const levrt_test::TempDir temp("levrt_interrupt_load_");
+  const fs::path& dir = temp.path();
+  for (int sig : {SIGINT, SIGTERM}) {
+    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", "building", "--lights", "1048576",
+                               "--width", "32", "--height", "24", "--out", (dir / "i.png").string(),
+                               "--stats", (dir / "s.json").string()},
+                              sig, std::chrono::milliseconds(300), std::chrono::seconds(2)),
+              130)
+        << "signal " << sig;
+    EXPECT_TRUE(fs::is_empty(dir)) << "signal " << sig;
   }
 }
 
@@ -135,14 +111,16 @@ TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
   for (int delay_ms : {0, 1500}) {  // while the scenes are planned, and during the renders
     for (const char* out : {"new", "kept"}) {
       const fs::path out_dir = dir / out;
-      EXPECT_EQ(interrupt_after({LEVRT_BINARY, "bench", "--suite", "thesis", "--quick", "--out", out_dir.string()},
+      EXPECT_EQ(interrupt_after({LEVRT_BINARY, "bench", "--suite", "thesis", "--quick", "--out",
+                                 out_dir.string()},
                                 SIGINT, std::chrono::milliseconds(delay_ms)),
                 130)
           << out << " after " << delay_ms << " ms";
     }
     EXPECT_FALSE(fs::exists(dir / "new")) << "after " << delay_ms << " ms";
     std::vector<fs::path> kept;
-    for (const fs::directory_entry& e : fs::directory_iterator(dir / "kept")) kept.push_back(e.path().filename());
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "kept"))
+      kept.push_back(e.path().filename());
     ASSERT_EQ(kept.size(), 1u) << "after " << delay_ms << " ms";
     std::ifstream in(dir / "kept" / "results.md");
     std::string text;

@@ -474,6 +474,21 @@ TEST_F(Outputs, AFullFileSystemWritesNoOutputAndKeepsTheOldFiles) {
   EXPECT_LT(fs::file_size(path("image.png")), 48u * 1024u) << "the first output must fit";
 }
 
+// A render the budget allows but the address space does not: one line and exit 1, not an abort.
+TEST_F(Outputs, OutOfMemoryIsOneLineAndExitOne) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no ulimit -v under it";
+#endif
+  const CommandRun r =
+      run_shell(address_space_limit(786432) + shell_quote(LEVRT_BINARY) +
+                " render --width 4096 --height 4096 --subsample 64 --quiet --out " +
+                shell_quote(path("i.png")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("levrt: error: out of memory"), std::string::npos) << r.output;
+  EXPECT_TRUE(entries().empty());
+}
+
 TEST_F(Outputs, HelpListsEverySettingsDefaultAndRange) {
   const CommandRun r = run_levrt({"render", "--help"});
   EXPECT_EQ(r.exit_code, 0);

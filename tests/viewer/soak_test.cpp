@@ -50,9 +50,10 @@ std::vector<SceneLights> soak_scenes() {
   return scenes;
 }
 
-// The seeded change list. Waits for a finished render (await=idle) now and then, but only where
-// the render is cheap: never while an rt image, an rt reference, or a tolerance under 0.01 (which
-// tests nearly every light) over more than 4,096 lights is due, which would take seconds each.
+// The seeded change list. Waits for a finished render (await=idle, and a snapshot, which waits
+// for it too) now and then, but only where the render is cheap: never while an rt image, an rt
+// reference, or a tolerance under 0.01 (which tests nearly every light) over more than 4,096
+// lights is due, which would take seconds each.
 class SoakScript {
  public:
   SoakScript(int changes, const std::string& snapshot_folder) : snapshot_folder_(snapshot_folder) {
@@ -97,11 +98,17 @@ class SoakScript {
           add(std::string("reference=") + (reference_ ? "on" : "off"));
           break;
         case 6:
-          add("snapshot=" + snapshot_folder_);
+          // A snapshot waits for the render to complete, as await=idle does.
+          if (render_is_cheap())
+            add("snapshot=" + snapshot_folder_);
+          else
+            add("tolerance=0.1");
           break;
         default:
-          if (render_is_cheap()) add("await=idle");
-          else add("tolerance=0.1");
+          if (render_is_cheap())
+            add("await=idle");
+          else
+            add("tolerance=0.1");
           break;
       }
       frame_ += 1;
@@ -114,8 +121,7 @@ class SoakScript {
 
  private:
   bool render_is_cheap() const {
-    return lights_ <= 4096 ||
-           (method_ != "rt" && !reference_ && std::stod(tolerance_) >= 0.01);
+    return lights_ <= 4096 || (method_ != "rt" && !reference_ && std::stod(tolerance_) >= 0.01);
   }
 
   void add(const std::string& change) { lines_.push_back(change + "@" + std::to_string(frame_)); }
@@ -187,8 +193,8 @@ TEST(ViewerSoak, ScriptedChangesKeepResidentMemoryFlat) {
   ASSERT_EQ(memory.size(), 2u) << r.output;
   ASSERT_GT(memory[0], 0u) << r.output;
   EXPECT_LE(static_cast<double>(memory[1]), kAllowedMemoryGrowth * static_cast<double>(memory[0]))
-      << "resident memory after " << kWarmUpChanges << " changes: " << memory[0]
-      << " bytes, after " << LEVRT_SOAK_CHANGES << ": " << memory[1] << " bytes";
+      << "resident memory after " << kWarmUpChanges << " changes: " << memory[0] << " bytes, after "
+      << LEVRT_SOAK_CHANGES << ": " << memory[1] << " bytes";
   std::printf("resident memory after %d changes: %llu bytes, after %d: %llu bytes\n",
               kWarmUpChanges, static_cast<unsigned long long>(memory[0]), LEVRT_SOAK_CHANGES,
               static_cast<unsigned long long>(memory[1]));

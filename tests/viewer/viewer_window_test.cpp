@@ -4,10 +4,13 @@
 // snapshot, and the fit resolution follows the window. Skipped only when xvfb-run is missing.
 // Labelled "threads": under the tsan preset the UI thread, the tile workers and the reference
 // thread share the display buffers and the cancel flag.
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +27,7 @@
 
 #include <stb/stb_image.h>
 #include "tests/support/run_command.h"
+#include "tests/support/signal_process.h"
 
 namespace {
 
@@ -304,6 +308,62 @@ TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
   const nlohmann::json stats = read_json(dir_ / "snap" / "view_building_256_lev_0.01_stats.json");
   ASSERT_TRUE(stats.is_object()) << r.output;
   EXPECT_EQ(stats["spp"], 3);
+}
+
+// An Xvfb server of its own (-displayfd picks a free display), so that a test can signal the
+// levrt process itself rather than xvfb-run's shell. display() is empty when it did not start.
+class XvfbServer {
+ public:
+  XvfbServer() {
+    int fds[2];
+    if (::pipe(fds) != 0) return;
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::dup2(fds[1], STDOUT_FILENO);
+      ::close(fds[0]);
+      ::execlp("Xvfb", "Xvfb", "-displayfd", "1", "-screen", "0", "1024x768x24", "-nolisten", "tcp",
+               static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    ::close(fds[1]);
+    std::string number;
+    char c = 0;
+    while (::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    ::close(fds[0]);
+    if (!number.empty()) display_ = ":" + number;
+  }
+  ~XvfbServer() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  XvfbServer(const XvfbServer&) = delete;
+  XvfbServer& operator=(const XvfbServer&) = delete;
+  const std::string& display() const { return display_; }
+
+ private:
+  pid_t pid_ = -1;
+  std::string display_;
+};
+
+// Ctrl-C while the viewer's worker builds a million-light scene: the viewer exits 130 promptly
+// (the load stops at its next step, or the load watchdog ends it), with no screenshot written.
+TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
+  if (std::system("command -v Xvfb > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const XvfbServer xvfb;
+  ASSERT_FALSE(xvfb.display().empty());
+  ::setenv("DISPLAY", xvfb.display().c_str(), 1);
+  for (int sig : {SIGINT, SIGTERM}) {
+    EXPECT_EQ(levrt_test::interrupt_after(
+                  {LEVRT_BINARY, "view", "--scene", "building", "--lights", "1048576", "--window",
+                   "800x600", "--frames", "5", "--screenshot", path("shot.png")},
+                  sig, std::chrono::milliseconds(800), std::chrono::seconds(2)),
+              130)
+        << "signal " << sig;
+    EXPECT_TRUE(fs::is_empty(dir_)) << "signal " << sig;
+  }
 }
 
 TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
