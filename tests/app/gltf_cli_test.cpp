@@ -102,7 +102,7 @@ void expect_refused_without_output(const CommandRun& r, const std::string& file,
   EXPECT_FALSE(fs::exists(folder / "s.json")) << file;
 }
 
-// The bad inputs of issue 13 through the binary: each is one line naming the file, exit 2, and
+// Broken glTF files through the binary: each is one line naming the file, exit 2, and
 // no image.
 TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
   const std::string triangle = floats_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
@@ -184,8 +184,8 @@ std::map<std::string, std::pair<std::uintmax_t, fs::file_time_type>> folder_stat
   return state;
 }
 
-// Issue 22's hostile glTF classes through `render`: each file is refused with one line naming it
-// and the limit or the glTF path, exit 2, under 256 MB of peak memory (measured by
+// The hostile glTF classes (docs/extremes.md) through `render`: each file is refused with one line
+// naming it and the limit or the glTF path, exit 2, under 256 MB of peak memory (measured by
 // /usr/bin/time), within 20 s (a FIFO that blocked would be killed by timeout, exit 124), and
 // nothing is written or changed.
 TEST_F(GltfCli, HostileFilesExitTwoWithOneLineInLittleMemoryAndChangeNothing) {

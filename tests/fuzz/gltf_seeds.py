@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the glTF fuzzer's seed corpus into OUT_DIR: a small street (tools/make_gltf_street.py,
 self-contained: its buffer is a data URI) as .gltf, and the same scene packed as .glb; then one
-seed per hostile class of issue 22, each near a limit, so that mutations cross it: deep JSON
+seed per hostile class of docs/extremes.md (glTF files), each near a limit, so that mutations cross it: deep JSON
 nesting, a deep node chain, URIs leading out of the folder (.., percent-encoded, absolute,
 file://, '.'), huge counts (a zero accessor of millions of vertices, one reused by many
 primitives, a texture reused), wrapping and negative indices, and GLB chunk layouts (no BIN chunk,
@@ -56,7 +56,7 @@ def glb(text, blob, json_length=None, total_delta=0):
 
 
 def hostile_seeds():
-    """(name, bytes with the format byte in front) for every class of issue 22."""
+    """(name, bytes with the format byte in front) for every hostile class."""
     dump = lambda doc: json.dumps(doc, separators=(",", ":")).encode()
     seeds = {}
     seeds["deep_extras.gltf"] = dump(document(extras=0)).replace(
