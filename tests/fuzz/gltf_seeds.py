@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Writes the glTF fuzzer's seed corpus into OUT_DIR: a small street (tools/make_gltf_street.py,
 self-contained: its buffer is a data URI) as .gltf, and the same scene packed as .glb; then one
-seed per hostile class of docs/extremes.md (glTF files), each near a limit, so that mutations cross it: deep JSON
-nesting, a deep node chain, URIs leading out of the folder (.., percent-encoded, absolute,
-file://, '.'), huge counts (a zero accessor of millions of vertices, one reused by many
-primitives, a texture reused), wrapping and negative indices, and GLB chunk layouts (no BIN chunk,
+seed per hostile class of docs/extremes.md (glTF files), each near a limit, so that mutations
+cross it: deep JSON nesting, a deep node chain, URIs leading out of the folder (.., percent-
+encoded, absolute, file://, '.'), huge counts (a zero accessor of millions of vertices, one
+reused by many primitives), wrapping and negative indices, and GLB chunk layouts (no BIN chunk,
 a short BIN chunk, a chunk length past the end). Each seed starts with the byte that
 gltf_scene_fuzz.cpp reads as the format (even: .gltf, odd: .glb). The dictionary beside this
 script (gltf.dict) gives the fuzzer glTF's keys and these values. Usage: gltf_seeds.py OUT_DIR.
