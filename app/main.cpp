@@ -1,10 +1,8 @@
 // levrt's entry point: runs the command line and turns failures into one line and an exit code.
 // Every message is escaped here, so a newline or terminal escape in a flag value, file name or
-// scene name cannot split it or drive the terminal. Running out of memory anywhere is one line
-// and exit 1, never an abort: std::bad_alloc is caught at this boundary, and one that escapes a
-// thread or a noexcept function (which would call std::terminate) ends the process the same way.
-#include <unistd.h>
-
+// scene name cannot split it or drive the terminal. Running out of memory is one line and exit 1,
+// never an abort: std::bad_alloc is caught at this boundary, and the terminate handler below
+// covers one that escapes a thread or a noexcept function.
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -18,27 +16,26 @@
 
 namespace {
 
-constexpr const char* kOutOfMemory = "levrt: error: out of memory\n";
-
-[[noreturn]] void terminate_out_of_memory_cleanly() {
+// An exception escaping where none may (a noexcept function, a thread of a library), most likely
+// std::bad_alloc under a memory limit: one line and exit 1, as main's own handler gives, rather
+// than abort's two lines and exit 134.
+[[noreturn]] void exit_on_uncaught_exception() {
+  std::string what = "an exception escaped";
   try {
-    if (const std::exception_ptr current = std::current_exception())
-      std::rethrow_exception(current);
-  } catch (const std::bad_alloc&) {
-    // Async-signal-safe output: the heap may be exhausted, and stdio may hold a lock.
-    const ssize_t ignored =
-        ::write(STDERR_FILENO, kOutOfMemory, std::char_traits<char>::length(kOutOfMemory));
-    (void)ignored;
-    std::_Exit(1);
+    if (const std::exception_ptr escaped = std::current_exception())
+      std::rethrow_exception(escaped);
+  } catch (const std::exception& e) {
+    what = e.what();
   } catch (...) {
   }
-  std::abort();
+  std::fprintf(stderr, "levrt: error: %s\n", scenes::escape_control_characters(what).c_str());
+  std::_Exit(1);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::set_terminate(terminate_out_of_memory_cleanly);
+  std::set_terminate(exit_on_uncaught_exception);
   try {
     return app::run_cli(argc, argv);
   } catch (const app::Interrupted& e) {
@@ -51,7 +48,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "levrt: %s\n", scenes::escape_control_characters(e.what()).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
-    std::fputs(kOutOfMemory, stderr);
+    std::fputs("levrt: error: out of memory\n", stderr);
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "levrt: error: %s\n", scenes::escape_control_characters(e.what()).c_str());
