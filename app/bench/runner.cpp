@@ -40,6 +40,8 @@ SuiteConfig thesis_suite(bool quick) {
   c.control_renders = {{"building", 64}, {"maze", 45}, {"hall", 64}, {"hall", 256}};
   c.converge_renders = c.control_renders;
   c.converge_passes = 8;
+  c.target_renders = {{"building", 64}, {"hall", 64},   {"stage", 72},
+                      {"carpark", 64},  {"street", 64}, {"street_bare", 64}};
   return c;
 }
 
@@ -172,8 +174,10 @@ std::uint64_t BenchRun::light_count(const std::string& scene, int level) const {
   return model ? model->light_count(level) : 0;
 }
 
-int BenchRun::stride_for(const std::string& scene, int level, lev::Method method, double tolerance) {
-  if (lev::method_info(method).scans_every_light && light_count(scene, level) > config_.subsample_above)
+int BenchRun::stride_for(const std::string& scene, int level, lev::Method method,
+                         double tolerance) {
+  if (lev::method_info(method).scans_every_light &&
+      light_count(scene, level) > config_.subsample_above)
     return config_.subsample_stride;
   return probe(scene, level, method, tolerance).full_frame_seconds() >
                  config_.max_full_frame_seconds
@@ -185,7 +189,8 @@ double BenchRun::lev_tests_per_point(const std::string& scene, int level, double
   return probe(scene, level, lev::Method::lev, tolerance).lights_tested_avg();
 }
 
-const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Method method, double tolerance) {
+const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Method method,
+                                   double tolerance) {
   const MeasureRequest request{scene, level, method, tolerance, kProbeStride, 1};
   const auto found = cache_.find(key_of(request));
   if (found != cache_.end()) return found->second;
@@ -341,8 +346,9 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
 
     char what[256];
     std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s",
-                  done.scene.c_str(), format_count(stored.lights).c_str(), lev::method_info(done.method).name,
-                  done.tolerance, pixels_text(done.stride).c_str(), stored.seconds,
+                  done.scene.c_str(), format_count(stored.lights).c_str(),
+                  lev::method_info(done.method).name, done.tolerance,
+                  pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
     if (!planning_) report(what, predicted_seconds(done));
   }
