@@ -5,16 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "scenes/generator_checks.h"
 #include "scenes/scene_instantiation.h"
 #include "scenes/seeded_random.h"
 
 namespace scenes {
 namespace {
 
-void check(bool ok, const std::string& what, double value) {
-  if (!ok)
-    throw std::invalid_argument("ceiling grid: " + what + " (" + std::to_string(value) + ")");
-}
+const char* const kClassName = "ceiling grid";
 
 }  // namespace
 
@@ -23,11 +21,8 @@ std::uint64_t ceiling_grid_light_count(int level) {
 }
 
 CeilingGridParams ceiling_grid_params(int level) {
-  if (level < kCeilingGridMinLevel || level > kCeilingGridMaxLevel) {
-    throw std::invalid_argument("carpark level must be " + std::to_string(kCeilingGridMinLevel) +
-                                ".." + std::to_string(kCeilingGridMaxLevel) + ", got " +
-                                std::to_string(level));
-  }
+  check_model_level("carpark", level, kCeilingGridMinLevel, kCeilingGridMaxLevel);
+
   CeilingGridParams p;
   p.columns = 1 << level;
   p.rows = 1 << level;
@@ -35,14 +30,17 @@ CeilingGridParams ceiling_grid_params(int level) {
 }
 
 SceneDescription describe_ceiling_grid_from(const CeilingGridParams& p) {
-  check(p.columns >= 1 && p.rows >= 1, "columns and rows must be >= 1",
-        std::min(p.columns, p.rows));
-  check(p.spacing_m > 0.0f, "spacing_m must be > 0", p.spacing_m);
-  check(p.ceiling_height_m > 1.0f, "ceiling_height_m must be > 1", p.ceiling_height_m);
-  check(p.bay_columns >= 1 && p.lane_rows >= 1, "bay_columns and lane_rows must be >= 1",
-        std::min(p.bay_columns, p.lane_rows));
-  check(p.intensity > 0.0f, "intensity must be > 0", p.intensity);
-  check(p.car_share >= 0.0f && p.car_share <= 1.0f, "car_share must lie in [0, 1]", p.car_share);
+  check_generator_parameter(p.columns >= 1 && p.rows >= 1, kClassName,
+                            "columns and rows must be >= 1", std::min(p.columns, p.rows));
+  check_generator_parameter(p.spacing_m > 0.0f, kClassName, "spacing_m must be > 0", p.spacing_m);
+  check_generator_parameter(p.ceiling_height_m > 1.0f, kClassName, "ceiling_height_m must be > 1",
+                            p.ceiling_height_m);
+  check_generator_parameter(p.bay_columns >= 1 && p.lane_rows >= 1, kClassName,
+                            "bay_columns and lane_rows must be >= 1",
+                            std::min(p.bay_columns, p.lane_rows));
+  check_generator_parameter(p.intensity > 0.0f, kClassName, "intensity must be > 0", p.intensity);
+  check_generator_parameter(p.car_share >= 0.0f && p.car_share <= 1.0f, kClassName,
+                            "car_share must lie in [0, 1]", p.car_share);
   SceneDescription scene;
   scene.name = "carpark";
   scene.ambient = glm::vec3(0.15f);

@@ -5,20 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "scenes/generator_checks.h"
 #include "scenes/scene_instantiation.h"
 #include "scenes/seeded_random.h"
 
 namespace scenes {
 namespace {
 
+const char* const kClassName = "lamp street";
 constexpr float kRoadHalfWidth = 5.0f;
 constexpr float kKerb = 5.5f;  // a lamp post's distance from the street's centre line
 constexpr float kArm = 1.5f;   // the arm reaches over the road
 constexpr float kHouseWidth = 6.0f, kHousePitch = 8.0f, kHouseDepth = 6.0f;
-
-void check(bool ok, const std::string& what, double value) {
-  if (!ok) throw std::invalid_argument("lamp street: " + what + " (" + std::to_string(value) + ")");
-}
 
 }  // namespace
 
@@ -27,11 +25,8 @@ std::uint64_t lamp_street_light_count(int level) {
 }
 
 LampStreetParams lamp_street_params(int level) {
-  if (level < kLampStreetMinLevel || level > kLampStreetMaxLevel) {
-    throw std::invalid_argument("street level must be " + std::to_string(kLampStreetMinLevel) +
-                                ".." + std::to_string(kLampStreetMaxLevel) + ", got " +
-                                std::to_string(level));
-  }
+  check_model_level("street", level, kLampStreetMinLevel, kLampStreetMaxLevel);
+
   LampStreetParams p;
   p.streets = 1 << (level - 2);
   p.lamps_per_side = 1 << (level + 1);
@@ -39,13 +34,17 @@ LampStreetParams lamp_street_params(int level) {
 }
 
 SceneDescription describe_lamp_street_from(const LampStreetParams& p) {
-  check(p.streets >= 1, "streets must be >= 1", p.streets);
-  check(p.lamps_per_side >= 1, "lamps_per_side must be >= 1", p.lamps_per_side);
-  check(p.lamp_spacing_m > 0.0f, "lamp_spacing_m must be > 0", p.lamp_spacing_m);
-  check(p.street_spacing_m > 2.0f * (kKerb + kHouseDepth),
-        "street_spacing_m must leave room for houses", p.street_spacing_m);
-  check(p.lamp_height_m > 0.5f, "lamp_height_m must be > 0.5", p.lamp_height_m);
-  check(p.lamp_intensity > 0.0f, "lamp_intensity must be > 0", p.lamp_intensity);
+  check_generator_parameter(p.streets >= 1, kClassName, "streets must be >= 1", p.streets);
+  check_generator_parameter(p.lamps_per_side >= 1, kClassName, "lamps_per_side must be >= 1",
+                            p.lamps_per_side);
+  check_generator_parameter(p.lamp_spacing_m > 0.0f, kClassName, "lamp_spacing_m must be > 0",
+                            p.lamp_spacing_m);
+  check_generator_parameter(p.street_spacing_m > 2.0f * (kKerb + kHouseDepth), kClassName,
+                            "street_spacing_m must leave room for houses", p.street_spacing_m);
+  check_generator_parameter(p.lamp_height_m > 0.5f, kClassName, "lamp_height_m must be > 0.5",
+                            p.lamp_height_m);
+  check_generator_parameter(p.lamp_intensity > 0.0f, kClassName, "lamp_intensity must be > 0",
+                            p.lamp_intensity);
   SceneDescription scene;
   scene.name = p.instanced ? "street" : "street_bare";
   scene.ambient = glm::vec3(0.3f);

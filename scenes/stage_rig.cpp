@@ -5,18 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "scenes/generator_checks.h"
 #include "scenes/scene_instantiation.h"
 #include "scenes/seeded_random.h"
 
 namespace scenes {
 namespace {
 
+const char* const kClassName = "stage rig";
 constexpr float kStageHeight = 1.0f;
 const glm::vec3 kStageCentre{0.0f, 4.0f, kStageHeight};
-
-void check(bool ok, const std::string& what, double value) {
-  if (!ok) throw std::invalid_argument("stage rig: " + what + " (" + std::to_string(value) + ")");
-}
 
 // A saturated colour of the given hue (0..1), brightest channel 1.
 glm::vec3 hue_colour(float hue) {
@@ -33,29 +31,29 @@ std::uint64_t stage_rig_light_count(int level) {
 }
 
 StageRigParams stage_rig_params(int level) {
-  if (level < kStageRigMinLevel || level > kStageRigMaxLevel) {
-    throw std::invalid_argument("stage level must be " + std::to_string(kStageRigMinLevel) + ".." +
-                                std::to_string(kStageRigMaxLevel) + ", got " +
-                                std::to_string(level));
-  }
+  check_model_level("stage", level, kStageRigMinLevel, kStageRigMaxLevel);
+
   StageRigParams p;
   p.spots = static_cast<int>(stage_rig_light_count(level));
   return p;
 }
 
 SceneDescription describe_stage_rig_from(const StageRigParams& p) {
-  check(p.spots >= 1, "spots must be >= 1", p.spots);
-  check(p.truss_width_m > 0.0f && p.truss_depth_m > 0.0f, "truss sizes must be > 0",
-        p.truss_width_m);
-  check(p.truss_height_m > kStageHeight + 1.0f, "truss_height_m must clear the stage",
-        p.truss_height_m);
-  check(p.aim_radius_m >= 0.0f, "aim_radius_m must be >= 0", p.aim_radius_m);
-  check(p.cone_min_degrees > 0.0f && p.cone_min_degrees <= p.cone_max_degrees &&
-            p.cone_max_degrees <= 90.0f,
-        "cones must satisfy 0 < min <= max <= 90", p.cone_min_degrees);
-  check(p.dropoff_min >= 0.0f && p.dropoff_min <= p.dropoff_max,
-        "dropoffs must satisfy 0 <= min <= max", p.dropoff_min);
-  check(p.total_intensity > 0.0f, "total_intensity must be > 0", p.total_intensity);
+  check_generator_parameter(p.spots >= 1, kClassName, "spots must be >= 1", p.spots);
+  check_generator_parameter(p.truss_width_m > 0.0f && p.truss_depth_m > 0.0f, kClassName,
+                            "truss sizes must be > 0", p.truss_width_m);
+  check_generator_parameter(p.truss_height_m > kStageHeight + 1.0f, kClassName,
+                            "truss_height_m must clear the stage", p.truss_height_m);
+  check_generator_parameter(p.aim_radius_m >= 0.0f, kClassName, "aim_radius_m must be >= 0",
+                            p.aim_radius_m);
+  check_generator_parameter(p.cone_min_degrees > 0.0f && p.cone_min_degrees <= p.cone_max_degrees &&
+                                p.cone_max_degrees <= 90.0f,
+                            kClassName, "cones must satisfy 0 < min <= max <= 90",
+                            p.cone_min_degrees);
+  check_generator_parameter(p.dropoff_min >= 0.0f && p.dropoff_min <= p.dropoff_max, kClassName,
+                            "dropoffs must satisfy 0 <= min <= max", p.dropoff_min);
+  check_generator_parameter(p.total_intensity > 0.0f, kClassName, "total_intensity must be > 0",
+                            p.total_intensity);
   SceneDescription scene;
   scene.name = "stage";
   scene.ambient = glm::vec3(0.2f);
