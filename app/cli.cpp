@@ -2,12 +2,12 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
-#include <sstream>
-#include <variant>
 #include <filesystem>
+#include <limits>
 #include <map>
+#include <sstream>
 #include <string>
+#include <variant>
 
 #include <CLI/CLI.hpp>
 
@@ -45,7 +45,8 @@ std::string setting_type_name(const SettingSpec& spec) {
   const auto& c = std::get<Choice>(spec.kind);
   std::string valid;
   for (const std::string& o : c.options()) valid += (valid.empty() ? "" : "|") + o;
-  return "{" + valid + "}" + (c.also_accepts_label ? std::string(" or ") + c.also_accepts_label : "");
+  return "{" + valid + "}" +
+         (c.also_accepts_label ? std::string(" or ") + c.also_accepts_label : "");
 }
 
 // The help line of a setting; a choice whose options carry summaries (the method table) lists them.
@@ -60,9 +61,11 @@ std::string setting_help(const SettingSpec& spec) {
 void add_setting_flags(CLI::App& command, SettingFlags& flags) {
   const Settings defaults;
   for (const SettingSpec& spec : setting_table()) {
-    flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], setting_help(spec))
-                                   ->type_name(setting_type_name(spec))
-                                   ->default_str(setting_text(defaults, spec));
+    flags.options[spec.name] =
+        command
+            .add_option(std::string("--") + spec.name, flags.text[spec.name], setting_help(spec))
+            ->type_name(setting_type_name(spec))
+            ->default_str(setting_text(defaults, spec));
   }
 }
 
@@ -77,10 +80,12 @@ void check_subcommand_name(const CLI::App& cli, int argc, char** argv) {
   throw UsageError("unknown command '" + std::string(argv[1]) + "'; the commands are " + names);
 }
 
-Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_option, const std::string& lights_text) {
+Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_option,
+                             const std::string& lights_text) {
   Settings settings;
   for (const SettingSpec& spec : setting_table()) {
-    if (flags.options.at(spec.name)->count() > 0) set_setting(settings, spec, flags.text.at(spec.name));
+    if (flags.options.at(spec.name)->count() > 0)
+      set_setting(settings, spec, flags.text.at(spec.name));
   }
   // A typed size is what the user wants to see, in the viewer too.
   const bool size_typed =
@@ -89,8 +94,15 @@ Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_opti
   if (flags.options.at("level")->count() > 0 && is_scene_file(settings)) {
     throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
   }
+  if (flags.options.at("relative-error")->count() > 0 &&
+      !lev::method_info(settings.method).uses_relative_error) {
+    throw UsageError("--relative-error: method " +
+                     std::string(lev::method_info(settings.method).name) + " ignores it, got '" +
+                     flags.text.at("relative-error") + "'");
+  }
   if (lights_option->count() > 0) {
-    if (flags.options.at("level")->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
+    if (flags.options.at("level")->count() > 0)
+      throw UsageError("--lights: give --level or --lights, not both");
     apply_light_count_flag(settings, lights_text);
   }
   return settings;
@@ -116,49 +128,64 @@ int run_cli(int argc, char** argv) {
   CLI::App cli{"levrt: ray tracing scenes with many lights through Light Extent Volumes"};
   cli.require_subcommand(0, 1);
 
-  CLI::App* render = cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
+  CLI::App* render =
+      cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
   SettingFlags render_flags;
   add_setting_flags(*render, render_flags);
   std::string lights_text;
   CLI::Option* lights_option =
-      render->add_option("--lights", lights_text, "light count (selects the level with that many lights)")
+      render
+          ->add_option("--lights", lights_text,
+                       "light count (selects the level with that many lights)")
           ->type_name("COUNT");
   RenderOutputs outputs;
   const std::vector<CLI::Option*> output_options = {
-      render->add_option("--out", outputs.image, "image PNG (- for standard output)")->type_name("FILE.png"),
-      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")->type_name("FILE.png"),
-      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")->type_name("FILE.png"),
-      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
-      render->add_option("--heatmap-bound", outputs.heatmap_bound, "certified error bound heatmap PNG (percent)")
+      render->add_option("--out", outputs.image, "image PNG (- for standard output)")
           ->type_name("FILE.png"),
-      render->add_option("--heatmap-noise", outputs.heatmap_noise,
-                         "estimated standard error per pixel (noise across passes) heatmap PNG")
+      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")
+          ->type_name("FILE.png"),
+      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")
+          ->type_name("FILE.png"),
+      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
+      render
+          ->add_option("--heatmap-bound", outputs.heatmap_bound,
+                       "certified error bound heatmap PNG (percent)")
+          ->type_name("FILE.png"),
+      render
+          ->add_option("--heatmap-noise", outputs.heatmap_noise,
+                       "estimated standard error per pixel (noise across passes) heatmap PNG")
           ->type_name("FILE.png")};
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   const std::string reference_name = lev::method_info(lev::reference_method()).name;
   CLI::Option* reference_option =
       render
-          ->add_option("--reference", reference,
-                       "also render this method's image and report pixel errors (" + reference_name + ")")
+          ->add_option(
+              "--reference", reference,
+              "also render this method's image and report pixel errors (" + reference_name + ")")
           ->type_name("{" + reference_name + "}");
 
-  CLI::App* export_command = cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
+  CLI::App* export_command =
+      cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
   ExportFlags export_flags;
   add_export_flags(*export_command, export_flags);
 
-  CLI::App* bench = cli.add_subcommand("bench", "the thesis' experiments: results.md, CSVs and plots");
+  CLI::App* bench =
+      cli.add_subcommand("bench", "the thesis' experiments: results.md, CSVs and plots");
   BenchFlags bench_flags;
   add_bench_flags(*bench, bench_flags);
 
-  CLI::App* snapshot = cli.add_subcommand("snapshot", "the default job headless: building snapshot into out/");
+  CLI::App* snapshot =
+      cli.add_subcommand("snapshot", "the default job headless: building snapshot into out/");
 
-  CLI::App* view = cli.add_subcommand("view", "the interactive viewer (the default when a display is available)");
+  CLI::App* view = cli.add_subcommand(
+      "view", "the interactive viewer (the default when a display is available)");
   SettingFlags view_flags;
   add_setting_flags(*view, view_flags);
   std::string view_lights_text;
   CLI::Option* view_lights_option =
-      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
+      view->add_option("--lights", view_lights_text,
+                       "light count (selects the level with that many lights)")
           ->type_name("COUNT");
   viewer::ViewFlags view_options;
   add_view_flags(*view, view_options);
@@ -206,8 +233,10 @@ int run_cli(int argc, char** argv) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }
   }
-  std::fprintf(stderr, "levrt: no display to open a window on; writing the headless snapshot into %s instead\n",
-               (std::filesystem::current_path() / "out").string().c_str());
+  std::fprintf(
+      stderr,
+      "levrt: no display to open a window on; writing the headless snapshot into %s instead\n",
+      (std::filesystem::current_path() / "out").string().c_str());
   return run_snapshot();
 }
 

@@ -29,11 +29,13 @@ struct Settings {
   std::string resolution = "fit";
   int width = renderer::kDefaultImageWidth;
   int height = renderer::kDefaultImageHeight;
-  int spp = 1;                  // passes (one sample per pixel each)
-  int samples = 1;              // lights lev_mc and light_tree draw per shading point and pass
-  int depth = 5;                // reflection/refraction depth
-  int threads = 0;              // 0 = all cores
-  int subsample = 1;            // render every n-th pixel in x and y (for slow references)
+  int spp = 1;      // passes (one sample per pixel each)
+  int samples = 1;  // lights lev_mc and light_tree draw per shading point and pass
+  double relative_error =
+      lev::kDefaultRelativeError;  // lightcuts: a cluster's bound / the point's total
+  int depth = 5;                   // reflection/refraction depth
+  int threads = 0;                 // 0 = all cores
+  int subsample = 1;               // render every n-th pixel in x and y (for slow references)
   // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
   double light_scale = scenes::kDefaultGltfLightScale;
   int camera = 0;  // a glTF file's perspective camera, in node order
@@ -59,7 +61,7 @@ struct RealRange {
 struct Choice {
   std::string (*get)(const Settings& settings);
   void (*set)(Settings& settings, const std::string& option);  // an option, or a value also_accepts
-  std::vector<std::string> (*options)();  // valid values
+  std::vector<std::string> (*options)();                       // valid values
   // What an option is, for the CLI help and the viewer's tooltip (null: the options say it).
   const char* (*option_label)(const std::string& option) = nullptr;
   const char* (*option_summary)(const std::string& option) = nullptr;

@@ -72,8 +72,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
   const std::size_t logged_before = ray_log ? ray_log->size() : 0;
   scratch.cancel = cancel;
   const lev::LightSelector& selector = preview ? *state.preview_selector : *state.selector;
-  TraceContext context{state.scene, state.rays, selector, scratch, rs.max_depth, ray_log, cancel,
-                       rs.compute_error_bound};
+  TraceContext context{state.scene,  state.rays, selector, scratch,
+                       rs.max_depth, ray_log,    cancel,   rs.compute_error_bound};
   struct PixelSample {
     std::size_t pixel;
     glm::vec3 radiance;
@@ -127,15 +127,25 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
 
 }  // namespace
 
+lev::MethodParams method_params(const RenderSettings& settings) {
+  lev::MethodParams params;
+  params.method = settings.method;
+  params.tolerance = settings.tolerance;
+  params.relative_error = settings.relative_error;
+  params.light_samples = settings.light_samples;
+  return params;
+}
+
 RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
                                  const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
-      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0 || settings.light_samples < 1 ||
-      settings.light_samples > lev::kMaxLightSamples) {
+      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0 ||
+      settings.light_samples < 1 || settings.light_samples > lev::kMaxLightSamples ||
+      !(settings.relative_error >= 0.0f && settings.relative_error <= 1.0f)) {
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
-  state->selector = lev::make_selector(settings.method, scene.lights, settings.tolerance, settings.light_samples);
+  state->selector = lev::make_selector(scene.lights, method_params(settings));
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
@@ -156,8 +166,7 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
   if (preview) {
     if (!state.preview_selector)
       state.preview_selector =
-          lev::make_selector(state.settings.method, state.scene.lights, state.settings.tolerance,
-                             state.settings.light_samples);
+          lev::make_selector(state.scene.lights, method_params(state.settings));
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
                                      (state.settings.height + preview_step - 1) / preview_step);
   }

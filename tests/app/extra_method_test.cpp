@@ -48,19 +48,20 @@ class EverySecondLightSelector final : public lev::LightSelector {
   std::vector<lev::Light> world_lights_;
 };
 
-const lev::Method kEverySecond = lev::register_method(
-    {lev::Method::rt,
-     "every2",
-     "Every second light",
-     "a shadow ray to every second light (a test's method)",
-     false,
-     false,
-     false,
-     true,
-     {0.1},
-     [](const lev::LightHierarchy& h, float) -> std::unique_ptr<lev::LightSelector> {
-       return std::make_unique<EverySecondLightSelector>(h);
-     }});
+const lev::Method kEverySecond =
+    lev::register_method({lev::Method::rt,
+                          "every2",
+                          "Every second light",
+                          "a shadow ray to every second light (a test's method)",
+                          false,
+                          false,
+                          false,
+                          true,
+                          {0.1},
+                          [](const lev::LightHierarchy& h,
+                             const lev::MethodParams&) -> std::unique_ptr<lev::LightSelector> {
+                            return std::make_unique<EverySecondLightSelector>(h);
+                          }});
 
 app::Settings small_settings() {
   app::Settings s;

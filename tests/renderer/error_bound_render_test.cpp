@@ -197,8 +197,8 @@ TEST(ErrorBoundRender, LevBoundedStaysWithinToleranceTimesTheMaterialResponse) {
     const renderer::Scene scene = scenes::find_scene_model(name)->build(4);
     const renderer::RayScene rays(scene.geometry);
     for (float tolerance : {0.1f, 0.01f}) {
-      const auto bounded = lev::make_selector(lev::Method::lev_bounded, scene.lights, tolerance);
-      const auto plain = lev::make_selector(lev::Method::lev, scene.lights, tolerance);
+      const auto bounded = lev::make_selector(scene.lights, {lev::Method::lev_bounded, tolerance});
+      const auto plain = lev::make_selector(scene.lights, {lev::Method::lev, tolerance});
       float bounded_largest = 0.0f, plain_excess = 0.0f;
       for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
