@@ -111,7 +111,8 @@ std::vector<MethodInfo>& table_rows() {
        "lightcuts",
        "Lightcuts (Walter 2005)",
        "a cut through a binary light tree, refined until every cluster's error bound is below "
-       "--relative-error times the point's estimate; one shadow ray per cluster's representative",
+       "the relative error (--relative-error) times the point's estimate; one shadow ray per "
+       "cluster's representative",
        false,
        false,
        false,
