@@ -104,7 +104,9 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
           {"--stats", o.stats, ".json", "JSON"},
           {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"},
-          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"}};
+          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"},
+          {"--heatmap-error", o.heatmap_error, ".png", "PNG"},
+          {"--reference-out", o.reference_image, ".png", "PNG"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -180,10 +182,24 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   return s;
 }
 
+// The summary line (stdout, or stderr when standard output carries an output) and the line naming
+// every file written.
+void print_render_summary(const LoadedScene& loaded, const Settings& settings,
+                          const RenderOutputs& outputs, const renderer::RenderResult& result,
+                          const RenderStats& stats, const nlohmann::ordered_json& json);
+
 }  // namespace
 
 int run_render(const Settings& settings, const RenderOutputs& outputs) {
   render_settings_from(settings);  // validates the combination of settings before any work
+  if (!outputs.reference_rt) {
+    const std::string rt = lev::method_info(lev::reference_method()).name;
+    if (!outputs.heatmap_error.empty())
+      throw UsageError("--heatmap-error: needs --reference " + rt);
+    if (!outputs.reference_image.empty())
+      throw UsageError("--reference-out: needs --reference " + rt);
+    if (outputs.fail_above) throw UsageError("--fail-above: needs --reference " + rt);
+  }
   check_memory_budget(settings, outputs.reference_rt);
   check_output_paths(render_output_paths(outputs));
   const InterruptScope interrupt_scope;
@@ -222,21 +238,52 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
         renderer::heatmap_rgb8(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range);
     if (!outputs.heatmap_noise.empty()) app::write_png_rgb8(outputs.heatmap_noise, fb.width, fb.height, rgb);
   }
+  if (outputs.reference_rt) {
+    const std::vector<std::uint8_t> reference_rgb =
+        renderer::framebuffer_rgb8(reference.framebuffer);
+    const std::vector<std::uint8_t> error_rgb = renderer::heatmap_rgb8(
+        renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), reference_rgb),
+        stats.heatmap_error_range);
+    if (!outputs.heatmap_error.empty())
+      app::write_png_rgb8(outputs.heatmap_error, fb.width, fb.height, error_rgb);
+    if (!outputs.reference_image.empty()) {
+      app::write_png_rgb8(outputs.reference_image, fb.width, fb.height, reference_rgb);
+    }
+  }
   const nlohmann::ordered_json json = render_stats_json(stats);
   if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
-  if (outputs.quiet) return 0;
+  const std::optional<std::string> gate_failure =
+      outputs.fail_above && stats.error
+          ? accuracy_gate_failure(*outputs.fail_above,
+                                  {stats.error->average_pct, stats.error->max_pct})
+          : std::nullopt;
+  if (!outputs.quiet) print_render_summary(*loaded, settings, outputs, result, stats, json);
+  if (gate_failure) {
+    std::fprintf(stderr, "levrt: %s\n", gate_failure->c_str());
+    return kAccuracyGateExitCode;
+  }
+  return 0;
+}
+
+namespace {
+
+void print_render_summary(const LoadedScene& loaded, const Settings& settings,
+                          const RenderOutputs& outputs, const renderer::RenderResult& result,
+                          const RenderStats& stats, const nlohmann::ordered_json& json) {
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
   std::FILE* summary = stdout;
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
-  std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
-               "%.2f nodes visited/point",
-               scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
-               static_cast<unsigned long long>(loaded->scene.lights.light_count), lev::method_info(settings.method).name,
-               settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
-               json["nodes_visited_avg"].get<double>());
+  std::fprintf(
+      summary,
+      "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
+      "%.2f nodes visited/point",
+      scenes::escape_control_characters(loaded.scene.name).c_str(), loaded.scene.level,
+      static_cast<unsigned long long>(loaded.scene.lights.light_count),
+      lev::method_info(settings.method).name, settings.tolerance, result.render_seconds,
+      json["lights_tested_avg"].get<double>(), json["nodes_visited_avg"].get<double>());
   std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%", json["error_bound_avg_pct"].get<double>(),
                json["error_bound_max_pct"].get<double>());
   if (outputs.reference_rt) {
@@ -254,7 +301,8 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     }
   }
   if (!written.empty()) std::fprintf(stderr, "wrote %s\n", written.c_str());
-  return 0;
 }
+
+}  // namespace
 
 }  // namespace app

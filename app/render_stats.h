@@ -56,6 +56,7 @@ struct RenderStats {
   int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
   renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
   renderer::HeatmapRange heatmap_bound_range;  // percent, the error scale
+  renderer::HeatmapRange heatmap_error_range;  // percent: the error against the reference
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), from two
   // passes on (null in the JSON before), and the range of its heatmap.
   std::optional<double> std_error_avg_pct;
