@@ -58,8 +58,8 @@ std::string setting_help(const SettingSpec& spec) {
   return help;
 }
 
-void add_setting_flags(CLI::App& command, SettingFlags& flags) {
-  const Settings defaults;
+// defaults: what the command uses for a flag not given (the viewer renders more passes).
+void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& defaults) {
   for (const SettingSpec& spec : setting_table()) {
     flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], setting_help(spec))
                                    ->type_name(setting_type_name(spec))
@@ -78,8 +78,9 @@ void check_subcommand_name(const CLI::App& cli, int argc, char** argv) {
   throw UsageError("unknown command '" + std::string(argv[1]) + "'; the commands are " + names);
 }
 
-Settings apply_setting_flags(const SettingFlags& flags, CLI::Option* lights_option, const std::string& lights_text) {
-  Settings settings;
+Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults, CLI::Option* lights_option,
+                             const std::string& lights_text) {
+  Settings settings = defaults;
   for (const SettingSpec& spec : setting_table()) {
     if (flags.options.at(spec.name)->count() > 0) set_setting(settings, spec, flags.text.at(spec.name));
   }
@@ -119,7 +120,7 @@ int run_cli(int argc, char** argv) {
 
   CLI::App* render = cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
   SettingFlags render_flags;
-  add_setting_flags(*render, render_flags);
+  add_setting_flags(*render, render_flags, Settings{});
   std::string lights_text;
   CLI::Option* lights_option =
       render->add_option("--lights", lights_text, "light count (selects the level with that many lights)")
@@ -179,7 +180,8 @@ int run_cli(int argc, char** argv) {
 
   CLI::App* view = cli.add_subcommand("view", "the interactive viewer (the default when a display is available)");
   SettingFlags view_flags;
-  add_setting_flags(*view, view_flags);
+  const Settings view_defaults = viewer_default_settings();
+  add_setting_flags(*view, view_flags, view_defaults);
   std::string view_lights_text;
   CLI::Option* view_lights_option =
       view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
@@ -199,7 +201,7 @@ int run_cli(int argc, char** argv) {
   }
 
   if (render->parsed()) {
-    const Settings settings = apply_setting_flags(render_flags, lights_option, lights_text);
+    const Settings settings = apply_setting_flags(render_flags, Settings{}, lights_option, lights_text);
     for (const CLI::Option* option : output_options) {
       if (option->count() > 0 && option->as<std::string>().empty()) {
         throw UsageError(option->get_name() + ": needs a file name, got ''");
@@ -218,15 +220,12 @@ int run_cli(int argc, char** argv) {
   if (bench->parsed()) return run_bench(bench_flags);
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
-    Settings settings = apply_setting_flags(view_flags, view_lights_option, view_lights_text);
-    if (view_flags.options.at("spp")->count() == 0) settings.spp = kViewerDefaultPasses;
+    const Settings settings = apply_setting_flags(view_flags, view_defaults, view_lights_option, view_lights_text);
     return run_view(settings, view_options);
   }
   if (viewer_display_available()) {
-    Settings settings;
-    settings.spp = kViewerDefaultPasses;
     try {
-      return run_view(settings, viewer::ViewFlags{});
+      return run_view(viewer_default_settings(), viewer::ViewFlags{});
     } catch (const viewer::NoDisplayError&) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }

@@ -13,6 +13,13 @@ namespace app {
 // Passes the viewer accumulates when --spp is not given (the CLI's default is one pass).
 inline constexpr int kViewerDefaultPasses = 64;
 
+// The settings the viewer starts from where a flag is not given (`view --help` shows them).
+inline Settings viewer_default_settings() {
+  Settings settings;
+  settings.spp = kViewerDefaultPasses;
+  return settings;
+}
+
 void add_view_flags(CLI::App& command, viewer::ViewFlags& flags);
 
 // True when levrt was built with the viewer and DISPLAY names a display.

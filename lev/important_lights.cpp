@@ -74,7 +74,7 @@ struct CulledSoFar {
 };
 
 // The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
-// of the per-light test, the brightest channel (DESIGN.md), with the tolerance, less room for
+// of the per-light test, the brightest channel (light.h), with the tolerance, less room for
 // round_up_sum's final rounding so that the float bound returned is within it too.
 inline bool fits_budget(const glm::dvec3& culled, const glm::dvec3& more, float budget) {
   const glm::dvec3 sum = culled + more;

@@ -1,7 +1,7 @@
 // The interface every many-light method implements: given a shading point, decide which lights
 // get a shadow ray and return the direct radiance (the sum term of eq. 7). The renderer supplies
-// the surface (ShadingPoint) and stays the same for every method; new methods (error-bounded or
-// stochastic LEV, LEV + AST) plug in here and get a per-sample random stream for free.
+// the surface (ShadingPoint) and stays the same for every method. Every row of the method table
+// (lev/methods.cpp) implements it; a sampling method gets a per-sample random stream for free.
 #pragma once
 
 #include <atomic>

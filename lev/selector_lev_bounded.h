@@ -1,6 +1,6 @@
 // `lev_bounded`: LEV with a guarantee. The walk culls a subtree (or a light below the tolerance)
 // only while the sum of the irradiance bounds of everything culled at this point stays within
-// the tolerance, compared on the per-light test's scale (the brightest channel, DESIGN.md); what
+// the tolerance, compared on the per-light test's scale (the brightest channel, lev/light.h); what
 // does not fit is walked, and its lights shadow-tested, as if their volumes held the point
 // (find_lights_within_budget). So the culled irradiance at every point is at most the tolerance,
 // where `lev` bounds only each culled light; the price is the shadow rays the guarantee needs.

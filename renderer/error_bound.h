@@ -1,4 +1,4 @@
-// The certified error bound (DESIGN.md "Error control"): how far a pixel of any method can be
+// The certified error bound (docs/design.md, "Methods"): how far a pixel of any method can be
 // from the `rt` pixel of the same view. Every selector reports, per shading point, an upper bound
 // of the unshadowed irradiance of the lights it neither shadow-tested nor accounted for
 // (LightSelector::direct_radiance); the shading recursion (shading.cpp) turns it into radiance
@@ -6,8 +6,9 @@
 // kr and kt) exactly as the radiance is weighed, so a sample's bound is at least
 // |sample - rt sample| per channel. Ambient, suns and the recursion's cut-off are the same for
 // every method, so they add nothing. A pixel's bound is the mean over its samples, put on the
-// DESIGN.md error scale like pixel_error.h's error: a clamped 8-bit channel cannot differ by more
-// than 255, and rounding to 8 bits adds at most one step per channel on top of the bound.
+// error scale of docs/design.md ("Metrics") like pixel_error.h's error: a clamped 8-bit channel
+// cannot differ by more than 255, and rounding to 8 bits adds at most one step per channel on top
+// of the bound.
 #pragma once
 
 #include <cstddef>
@@ -31,8 +32,8 @@ glm::vec3 largest_response(const Material& material);
 // reflect at all bounds nothing, even when the irradiance bound is infinite (never inf * 0).
 glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound);
 
-// A pixel's bound on the DESIGN.md error scale: sum over channels of min(bound_c, 1) * 255, as a
-// percentage of 765. mean_bound is the pixel's bound per sample (Framebuffer::error_bound_sum
+// A pixel's bound on the error scale (docs/design.md, "Metrics"): sum over channels of
+// min(bound_c, 1) * 255, as a percentage of 765. mean_bound is the pixel's bound per sample (Framebuffer::error_bound_sum
 // over its samples).
 double error_bound_pct(const glm::vec3& mean_bound);
 // Pixel i's bound in percent; 0 for a pixel without samples.

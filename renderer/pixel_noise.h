@@ -1,7 +1,7 @@
 // The noise of a progressive render, estimated from the framebuffer alone: per pixel the standard
 // error of the mean over its samples (the sample variance across passes over the sample count,
 // square-rooted), per channel, summed over the channels and put on the pixel error scale of
-// DESIGN.md (|dR|+|dG|+|dB| on 0..255, over 765, in percent). For an unbiased method it
+// docs/design.md (|dR|+|dG|+|dB| on 0..255, over 765, in percent). For an unbiased method it
 // estimates how far the image still is from the one its passes converge to; it also counts the
 // antialiasing jitter, which the rt reference of the same passes shares, so it is an upper
 // estimate of the error against that reference.

@@ -1,6 +1,5 @@
 #include "scenes/light_tree_conversion.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -13,24 +12,23 @@
 namespace scenes {
 namespace {
 
-bool is_light_leaf(const lev::LightTreeNode& n) {
-  return n.kind == lev::NodeKind::point_light || n.kind == lev::NodeKind::spot_light;
-}
-
 class LightTreeBuilder {
  public:
   // root: the scene's root, or its stand-in in render space.
-  LightTreeBuilder(const SceneDescription& scene, const SceneNode& root, const SceneAnalysis& analysis)
+  LightTreeBuilder(const SceneDescription& scene, const SceneNode& root,
+                   const SceneAnalysis& analysis)
       : light_master_(scene.masters.size(), kNone) {
     for (std::uint32_t m : analysis.order()) {
       if (analysis.master(m).lights == 0) continue;
       std::optional<lev::LightTreeNode> node = convert(scene.masters[m].node);
       light_master_[m] = static_cast<std::uint32_t>(tree_.masters.size());
-      tree_.masters.push_back(node ? std::move(*node) : lev::union_node({}));
+      tree_.masters.push_back(node ? hierarchy(std::move(*node)) : lev::union_node({}));
+      master_light_positions_.push_back(
+          lev::light_positions(tree_.masters.back(), master_light_positions_));
       tree_.master_names.push_back(scene.masters[m].name);
     }
     std::optional<lev::LightTreeNode> lights = convert(root);
-    tree_.root = lights ? std::move(*lights) : lev::union_node({});
+    tree_.root = lights ? hierarchy(std::move(*lights)) : lev::union_node({});
   }
 
   lev::LightTree take() { return std::move(tree_); }
@@ -38,30 +36,32 @@ class LightTreeBuilder {
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-  // The light part of a subtree, or nothing when it holds no light. A transform right above a
-  // light is folded into the light (thesis 4.2.2: transforms give a light its place, direction
-  // and intensity), so a light costs one node.
+  // The light part of a subtree, or nothing when it holds no light. Outside its masters a
+  // subtree comes out as its atoms, the lights and the placed instances: a transform is folded
+  // into the light below it (thesis 4.2.2: transforms give a light its place, direction and
+  // intensity), so a light costs one node, and handed down to each atom of a union below it; a
+  // union of unions is one union. A union has no box to cull with, so this loses no structure the
+  // walk could use, and hierarchy() then builds the one it needs.
   std::optional<lev::LightTreeNode> convert(const SceneNode& node) const {
     if (const auto* a = std::get_if<Affine>(&node.data)) {
       std::optional<lev::LightTreeNode> child = convert(node.children[0]);
       if (!child) return std::nullopt;
-      const lev::Similarity xf = affine_similarity(*a);
-      if (lev::is_identity(xf)) return child;
-      if (is_light_leaf(*child)) return lev::light_node(lev::transform_light(child->light, xf));
-      if (child->kind == lev::NodeKind::affine) {
-        return lev::affine_node(lev::compose(xf, child->transform), std::move(child->children[0]));
-      }
-      return lev::affine_node(xf, std::move(*child));
+      return place(affine_similarity(*a), std::move(*child));
     }
     if (std::holds_alternative<Union>(node.data)) {
-      std::vector<lev::LightTreeNode> children;
+      std::vector<lev::LightTreeNode> atoms;
       for (const SceneNode& c : node.children) {
-        if (std::optional<lev::LightTreeNode> n = convert(c)) children.push_back(std::move(*n));
+        std::optional<lev::LightTreeNode> n = convert(c);
+        if (!n) continue;
+        if (n->kind != lev::NodeKind::set_union) {
+          atoms.push_back(std::move(*n));
+          continue;
+        }
+        for (lev::LightTreeNode& atom : n->children) atoms.push_back(std::move(atom));
       }
-      gather_bare_lights(children);
-      if (children.empty()) return std::nullopt;
-      if (children.size() == 1) return std::move(children[0]);
-      return lev::union_node(std::move(children));
+      if (atoms.empty()) return std::nullopt;
+      if (atoms.size() == 1) return std::move(atoms[0]);
+      return lev::union_node(std::move(atoms));
     }
     if (const auto* in = std::get_if<Instance>(&node.data)) {
       if (light_master_[in->master] == kNone) return std::nullopt;
@@ -89,27 +89,44 @@ class LightTreeBuilder {
     return std::nullopt;
   }
 
-  // Many bare lights side by side: replace them by an automatic hierarchy, placed where the first
-  // of them was (the order of a union's children is the order lights are summed in).
-  static void gather_bare_lights(std::vector<lev::LightTreeNode>& children) {
-    const auto bare = static_cast<std::size_t>(std::count_if(children.begin(), children.end(), is_light_leaf));
-    if (bare <= kMaxUnstructuredLights) return;
-    std::vector<lev::Light> lights;
-    std::vector<lev::LightTreeNode> kept;
-    std::size_t bvh_at = 0;
-    for (lev::LightTreeNode& c : children) {
-      if (is_light_leaf(c)) {
-        if (lights.empty()) bvh_at = kept.size();
-        lights.push_back(c.light);
-      } else {
-        kept.push_back(std::move(c));
-      }
+  // An atom or a union of atoms seen through xf.
+  static lev::LightTreeNode place(const lev::Similarity& xf, lev::LightTreeNode node) {
+    if (lev::is_identity(xf)) return node;
+    switch (node.kind) {
+      case lev::NodeKind::point_light:
+      case lev::NodeKind::spot_light:
+        return lev::light_node(lev::transform_light(node.light, xf));
+      case lev::NodeKind::affine:
+        return lev::affine_node(lev::compose(xf, node.transform), std::move(node.children[0]));
+      case lev::NodeKind::set_union:
+        for (lev::LightTreeNode& atom : node.children) atom = place(xf, std::move(atom));
+        return node;
+      case lev::NodeKind::instance:
+      case lev::NodeKind::extent_volume:
+      case lev::NodeKind::master:
+        break;
     }
-    kept.insert(kept.begin() + static_cast<std::ptrdiff_t>(bvh_at), lev::build_light_bvh(lights));
-    children = std::move(kept);
+    return lev::affine_node(xf, std::move(node));
+  }
+
+  // A master's or the root's light part as the walk gets it: more than kMaxUnstructuredLights
+  // atoms (bare lights, instances of a lamp placed thousands of times, or both, whatever unions
+  // and transforms they came in) get the automatic hierarchy over the boxes of their light
+  // positions, instances kept as instances; fewer stay a union.
+  lev::LightTreeNode hierarchy(lev::LightTreeNode node) const {
+    if (node.kind != lev::NodeKind::set_union || node.children.size() <= kMaxUnstructuredLights)
+      return node;
+    std::vector<lev::BvhItem> items;
+    items.reserve(node.children.size());
+    for (lev::LightTreeNode& atom : node.children) {
+      const lev::Bounds box = lev::light_positions(atom, master_light_positions_);
+      items.push_back({std::move(atom), box});
+    }
+    return lev::build_bvh(std::move(items));
   }
 
   std::vector<std::uint32_t> light_master_;
+  std::vector<lev::Bounds> master_light_positions_;  // parallel to tree_.masters
   lev::LightTree tree_;
 };
 

@@ -1,7 +1,8 @@
 // The light part of a scene description as a lev::LightTree: masters stay masters (the
-// hierarchy grows with the distinct masters, not with the lights, thesis 3.5.3), a transform right
-// above a light is folded into it, and a union of many bare lights gets the automatic hierarchy
-// (lev::build_light_bvh).
+// hierarchy grows with the distinct masters, not with the lights, thesis 3.5.3), and within each
+// master and the root the lights and placed instances, whatever unions and transforms they came
+// in, get the automatic hierarchy (lev::build_bvh) once they are more than a few: a lamp placed
+// 16,000 times costs a walk of a few dozen nodes, like the same lights written bare.
 #pragma once
 
 #include "lev/light_tree.h"

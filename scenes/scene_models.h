@@ -1,6 +1,7 @@
 // The table of built-in scene models (thesis 5.3): name, levels and light counts, the function
 // that describes a level (what `levrt export` writes) and the one that builds it (the description
-// instantiated). The CLI, the viewer and the benchmarks all read this table.
+// instantiated). The CLI and the viewer list this table; the benchmarks name the scenes they
+// measure (app/bench/runner.h) and take their levels and builders from it.
 #pragma once
 
 #include <cstdint>

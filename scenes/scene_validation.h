@@ -16,15 +16,15 @@ namespace scenes {
 
 // Each breach of a limit is reported with its own message.
 inline constexpr std::size_t kMaxSceneNodes = std::size_t{1} << 22;
-inline constexpr int kMaxNodeDepth = 100;        // nodes nested inside one master or the root
-inline constexpr int kMaxInstanceDepth = 64;     // masters instancing masters
+inline constexpr int kMaxNodeDepth = 100;     // nodes nested inside one master or the root
+inline constexpr int kMaxInstanceDepth = 64;  // masters instancing masters
 inline constexpr std::size_t kMaxMasters = 65536;
 inline constexpr std::size_t kMaxMaterials = 65536;
 inline constexpr std::uint64_t kMaxSceneLights = std::uint64_t{1} << 24;
 inline constexpr std::uint64_t kMaxScenePlacements = std::uint64_t{1} << 22;  // Embree instances
 inline constexpr std::uint64_t kMaxPrototypeTriangles = std::uint64_t{1} << 25;
-inline constexpr float kMaxCoordinate = 1e6f;     // any position, length or radius
-inline constexpr float kMinScale = 1e-6f;         // one affine node's scale
+inline constexpr float kMaxCoordinate = 1e6f;  // any position, length or radius
+inline constexpr float kMinScale = 1e-6f;      // one affine node's scale
 inline constexpr float kMaxScale = 1e6f;
 inline constexpr double kMaxComposedScaleLog10 = 12.0;  // scales multiplied along any path
 inline constexpr float kMaxIntensity = 1e12f;
@@ -33,8 +33,9 @@ inline constexpr int kMaxCylinderSegments = 1024;
 // A master whose geometry, nested instances expanded, has at most this many triangles is baked
 // into one prototype: fewer Embree instances trace faster, and the copies stay small.
 inline constexpr std::uint64_t kBakeTriangleBudget = 16384;
-// A union with more bare lights than this (a light under nothing but affine nodes) replaces them
-// with an automatic hierarchy: a flat list has no volumes to cull with.
+// A master's or the root's light part with more atoms than this (its lights and placed
+// instances, through any unions and transforms) gets an automatic hierarchy over them: a union
+// has no volume to cull with.
 inline constexpr std::size_t kMaxUnstructuredLights = 8;
 
 // Throws std::invalid_argument "/json/path: problem (value)" for the first problem found: values

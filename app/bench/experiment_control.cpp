@@ -1,5 +1,5 @@
 // control: every method's pixel error against its certified error bound (renderer/error_bound.h),
-// with its time, per tolerance (issue 11, new). The bound is what a user sees without rendering
+// with its time, per tolerance. The bound is what a user sees without rendering
 // rt; this experiment renders rt to show how tight it is and that it holds on every pixel.
 #include "app/bench/experiment_support.h"
 

@@ -1,5 +1,5 @@
 // converge: how each method's image approaches the exact one as passes accumulate, against the
-// time they cost (issue 10, new). Every pass samples the pixel centres, so a deterministic method
+// time they cost. Every pass samples the pixel centres, so a deterministic method
 // (lev, lev_est) renders the same image each pass and keeps its bias, while a sampling method
 // (lev_mc, light_tree) draws other lights each pass and its mean converges to rt's one-pass
 // image, its error falling as 1/sqrt(passes) once the noise dominates.

@@ -59,12 +59,11 @@ struct SuiteConfig {
   // Each method's trade sweep is its row's bench_tolerances (lev::method_table); a quick run
   // takes the first, middle and last of them.
   // control: the (scene, light count) renders where every method's error is set against its
-  // certified bound (issue 11: where lev's per-light tolerance holds, and the hall, where it
-  // does not).
+  // certified bound: where lev's per-light tolerance holds, and the hall, where it does not.
   std::vector<std::pair<std::string, std::uint64_t>> control_renders{
       {"building", 4096}, {"maze", 3069}, {"hall", 4096}, {"hall", 16384}};
   std::uint64_t scaling_base_lights = 1024;  // the scaling target compares with this count
-  // converge (issue 10): the renders where the methods' passes are followed to this many, their
+  // converge: the renders where the methods' passes are followed to this many, their
   // errors taken after 1, 2, 3, 4, 6, 8, ... passes (snapshot_pass_counts); the equal-time
   // comparison at these shares of rt's time, and the error a method must reach (avg and max) to
   // count as converged.

@@ -118,6 +118,16 @@ TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
   EXPECT_EQ(run_levrt({"render", "--help"}).exit_code, 0);
 }
 
+// Each command's help shows the default that command uses: the viewer accumulates passes.
+TEST_F(Cli, HelpShowsEachCommandsOwnDefaults) {
+  const CommandRun render = run_levrt({"render", "--help"});
+  const CommandRun view = run_levrt({"view", "--help"});
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  ASSERT_EQ(view.exit_code, 0) << view.output;
+  EXPECT_NE(render.output.find("--spp INT in [1, 100000]=1 "), std::string::npos) << render.output;
+  EXPECT_NE(view.output.find("--spp INT in [1, 100000]=64 "), std::string::npos) << view.output;
+}
+
 TEST_F(Cli, RenderWritesEveryOutputWithTheDocumentedStats) {
   const CommandRun r = run_levrt({"render", "--scene", "building", "--lights", "64", "--method", "lev",
                            "--tolerance", "0.01", "--width", "40", "--height", "30", "--spp", "2",

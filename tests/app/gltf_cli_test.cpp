@@ -84,7 +84,7 @@ std::string floats_bytes(const std::vector<float>& values) {
   return bytes;
 }
 
-// The bad inputs of issue 13 through the binary: each is one line naming the file, exit 2, and
+// Broken glTF files through the binary: each is one line naming the file, exit 2, and
 // no image.
 TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
   const std::string triangle = floats_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
