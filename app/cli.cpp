@@ -148,6 +148,11 @@ int run_cli(int argc, char** argv) {
               "per-pixel error against the reference heatmap PNG (percent; needs --reference)")
           ->type_name("FILE.png"),
       render
+          ->add_option("--heatmap-missed", outputs.heatmap_missed,
+                       "missed-light estimate per pixel heatmap PNG (percent; turns the estimate "
+                       "on)")
+          ->type_name("FILE.png"),
+      render
           ->add_option("--reference-out", outputs.reference_image,
                        "the reference's image PNG (needs --reference)")
           ->type_name("FILE.png")};

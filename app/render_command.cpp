@@ -13,6 +13,7 @@
 #include "lev/light_hierarchy.h"
 #include "renderer/error_bound.h"
 #include "renderer/heatmap.h"
+#include "renderer/missed_light.h"
 #include "app/output_files.h"
 #include "renderer/pixel_error.h"
 #include "renderer/pixel_noise.h"
@@ -106,6 +107,7 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
           {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"},
           {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"},
           {"--heatmap-error", o.heatmap_error, ".png", "PNG"},
+          {"--heatmap-missed", o.heatmap_missed, ".png", "PNG"},
           {"--reference-out", o.reference_image, ".png", "PNG"}};
 }
 
@@ -172,6 +174,10 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
+  if (settings.missed_samples > 0) {
+    s.missed = renderer::missed_light_stats(result.framebuffer);
+    s.missed_samples = settings.missed_samples;
+  }
   if (reference) {
     const auto error =
         renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
@@ -190,7 +196,11 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
 
 }  // namespace
 
-int run_render(const Settings& settings, const RenderOutputs& outputs) {
+int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
+  Settings settings = typed_settings;
+  if (!outputs.heatmap_missed.empty() && settings.missed_samples == 0) {
+    settings.missed_samples = kDefaultMissedSamples;
+  }
   render_settings_from(settings);  // validates the combination of settings before any work
   if (!outputs.reference_rt) {
     const std::string rt = lev::method_info(lev::reference_method()).name;
@@ -250,6 +260,13 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
       app::write_png_rgb8(outputs.reference_image, fb.width, fb.height, reference_rgb);
     }
   }
+  if (stats.missed) {
+    const std::vector<std::uint8_t> rgb =
+        renderer::heatmap_rgb8(renderer::missed_pct_image(fb), stats.heatmap_missed_range);
+    if (!outputs.heatmap_missed.empty()) {
+      app::write_png_rgb8(outputs.heatmap_missed, fb.width, fb.height, rgb);
+    }
+  }
   const nlohmann::ordered_json json = render_stats_json(stats);
   if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
@@ -291,6 +308,10 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
                  json["pixel_error_max_pct"].get<double>());
   }
   if (stats.std_error_avg_pct) std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
+  if (stats.missed) {
+    std::fprintf(summary, ", missed estimate avg %.4f%% (std error %.4f%%) max %.4f%%",
+                 stats.missed->average_pct, stats.missed->std_error_avg_pct, stats.missed->max_pct);
+  }
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {

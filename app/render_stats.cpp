@@ -86,6 +86,13 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
     j["std_error_avg_pct"] = nullptr;
   }
   j["heatmap_noise_range"] = {s.heatmap_noise_range.min, s.heatmap_noise_range.max};
+  if (s.missed) {
+    j["missed_samples"] = s.missed_samples;
+    j["missed_estimate_avg_pct"] = s.missed->average_pct;
+    j["missed_estimate_max_pct"] = s.missed->max_pct;
+    j["missed_estimate_std_error_avg_pct"] = s.missed->std_error_avg_pct;
+    j["heatmap_missed_range"] = {s.heatmap_missed_range.min, s.heatmap_missed_range.max};
+  }
   return j;
 }
 

@@ -14,6 +14,7 @@
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/heatmap.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
 
 namespace app {
@@ -61,6 +62,11 @@ struct RenderStats {
   // passes on (null in the JSON before), and the range of its heatmap.
   std::optional<double> std_error_avg_pct;
   renderer::HeatmapRange heatmap_noise_range;
+  // The missed-light estimate (renderer/missed_light.h), when asked for, its draws per shading
+  // point and its heatmap's range.
+  std::optional<renderer::MissedLightStats> missed;
+  int missed_samples = 0;
+  renderer::HeatmapRange heatmap_missed_range;
 };
 
 // The thread count a setting of 0 (all cores) stands for.
