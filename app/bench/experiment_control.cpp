@@ -30,8 +30,8 @@ Section run_control(BenchRun& run, const std::string& out_dir) {
   table.columns = per_method_columns({{"error_bound_avg_pct", "avg bound (%)"},
                                       {"error_bound_max_pct", "max bound (%)"},
                                       {"bound_holds_pct", "bound holds (% of px)"},
-                                      {"bound_over_error", "avg bound / avg error"},
-                                      {"pixels", "px"}});
+                                      {"pixels", "px"},
+                                      {"bound_over_error", "avg bound / avg error"}});
   std::vector<NamedChart> charts;
   double fewest_held_pct = 100.0;
   bool measured = false;
@@ -75,8 +75,8 @@ Section run_control(BenchRun& run, const std::string& out_dir) {
                             ratio_cell(rt_seconds / seconds), number_cell(e.average_pct, 4),
                             number_cell(e.max_pct, 3), number_cell(bound.average_pct, 4),
                             number_cell(bound.max_pct, 3), number_cell(held, 2),
-                            bound_over_error_cell(bound.average_pct, e.average_pct),
-                            text_cell(pixels_text(stride))});
+                            text_cell(pixels_text(stride)),
+                            bound_over_error_cell(bound.average_pct, e.average_pct)});
       if (info.is_reference) {
         chart.series.push_back({info.name, {0.0}, {rt_seconds}, true});
         continue;

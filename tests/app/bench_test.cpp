@@ -85,8 +85,8 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "pixel_error_max_pct,lights_tested_avg"},
       {"control",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
-       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,bound_over_"
-       "error,pixels"},
+       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels,"
+       "bound_over_error"},
       {"converge",
        "scene,lights,method,tolerance,pass_cpu_s,passes_in_rt_over_100,"
        "pixel_error_avg_pct_at_rt_over_100,pixel_error_max_pct_at_rt_over_100,passes_in_rt_over_10,"

@@ -92,9 +92,10 @@ TEST(MissedLight, ItsMeanIsRtMinusTheMethodWithShadows) {
           const std::string context = std::string(lev::method_info(method).name) + " seed " +
                                       std::to_string(seed) + " tau " + std::to_string(tau);
           for (int c = 0; c < 3; ++c) {
-            // Five standard errors, and room for the float rounding of the two direct sums.
+            // Five standard errors, and room for the float rounding of the two direct sums (and
+            // for lights of ~1e-7 at a spot cone's edge, which the importance may not reach).
             const double allowed = 5.0 * std::sqrt(e.variance_of_mean[c]) +
-                                   1e-5 * (std::abs(all[c]) + std::abs(e.mean[c])) + 1e-30;
+                                   1e-5 * (std::abs(all[c]) + std::abs(e.mean[c])) + 1e-6;
             EXPECT_NEAR(e.mean[c], lost[c], allowed) << context << " channel " << c;
           }
           if (lost.x > 1e-6) ++compared;
