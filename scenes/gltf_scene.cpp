@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <limits>
 #include <map>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -21,6 +22,9 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "renderer/direction.h"
+#include "scenes/gltf_budget.h"
+#include "scenes/gltf_document.h"
+#include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
 
 namespace scenes {
@@ -52,6 +56,47 @@ bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::st
   return true;
 }
 
+// tinygltf's file access, confined to what check_gltf_document approved in the scene's folder.
+struct FolderReader {
+  std::string gltf_path;
+  std::string folder;
+  GltfExternalFiles files;
+  std::string error;  // the first refusal, one line, thrown once tinygltf returns
+};
+
+// Every name "exists": read_checked_file decides, with a reason (and tinygltf then never tries
+// the working folder as its second place to look).
+bool accept_any_name(const std::string&, void*) {
+  return true;
+}
+// No ~ or $VAR expansion (tinygltf's default runs wordexp on the name).
+std::string keep_name(const std::string& name, void*) {
+  return name;
+}
+
+bool read_checked_file(std::vector<unsigned char>* out, std::string* error, const std::string& name,
+                       void* context) {
+  auto& reader = *static_cast<FolderReader*>(context);
+  const auto found = reader.files.find(name);
+  try {
+    if (found == reader.files.end())
+      throw std::invalid_argument("'" + name + "': not a file the glTF's URIs name");
+    read_regular_file(found->second.canonical_path, found->second.bytes, "file the glTF names",
+                      *out);
+    return true;
+  } catch (const std::invalid_argument& e) {
+    if (reader.error.empty()) reader.error = reader.gltf_path + ": " + e.what();
+    if (error) *error = e.what();
+    return false;
+  }
+}
+
+bool write_nothing(std::string* error, const std::string&, const std::vector<unsigned char>&,
+                   void*) {
+  if (error) *error = "levrt never writes glTF files";
+  return false;
+}
+
 renderer::TextureWrap texture_wrap(int gltf_wrap) {
   switch (gltf_wrap) {
     case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
@@ -65,8 +110,13 @@ renderer::TextureWrap texture_wrap(int gltf_wrap) {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const std::string& path, float light_scale, int camera)
-      : model_(model), path_(path), light_scale_(light_scale), wanted_camera_(camera) {}
+  Importer(const tinygltf::Model& model, const std::string& path, float light_scale, int camera,
+           GltfBudget& budget)
+      : model_(model),
+        path_(path),
+        light_scale_(light_scale),
+        wanted_camera_(camera),
+        budget_(budget) {}
 
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -80,9 +130,10 @@ class Importer {
       fail(path_, "scene", std::to_string(scene_index));
     if (model_.nodes.size() > kMaxGltfNodes)
       fail(path_, "nodes", std::to_string(model_.nodes.size()));
+    const std::vector<int>& roots = model_.scenes[static_cast<std::size_t>(scene_index)].nodes;
+    charge_scene(roots);
     on_path_.assign(model_.nodes.size(), false);
-    for (const int node : model_.scenes[static_cast<std::size_t>(scene_index)].nodes)
-      visit(node, glm::dmat4(1.0));
+    for (const int node : roots) visit_tree(node);
     scene_.name = std::filesystem::path(path_).stem().string();
     scene_.ambient = glm::vec3(0.0f);
     if (lights_.empty() && mesh_nodes_.empty() && scene_.directional_lights.empty()) {
@@ -108,7 +159,7 @@ class Importer {
       const tinygltf::BufferView& view = model_.bufferViews[i];
       const std::string where = "bufferViews[" + std::to_string(i) + "]";
       if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size()) {
-        fail(path_, where + "/buffer", std::to_string(view.buffer));
+        fail(path_, where + ".buffer", std::to_string(view.buffer));
       }
       const std::size_t available =
           model_.buffers[static_cast<std::size_t>(view.buffer)].data.size();
@@ -122,7 +173,7 @@ class Importer {
       const tinygltf::Accessor& accessor = model_.accessors[i];
       const std::string where = "accessors[" + std::to_string(i) + "]";
       if (accessor.count > kMaxGltfAccessorElements)
-        fail(path_, where + "/count", std::to_string(accessor.count));
+        fail(path_, where + ".count", std::to_string(accessor.count));
       const int component_bytes =
           tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(accessor.componentType));
       const int components =
@@ -134,7 +185,7 @@ class Importer {
       if (accessor.sparse.isSparse) check_sparse(accessor, where, element_bytes);
       if (accessor.bufferView < 0) continue;  // all zeros (or sparse only): no bytes to check
       if (static_cast<std::size_t>(accessor.bufferView) >= model_.bufferViews.size()) {
-        fail(path_, where + "/bufferView", std::to_string(accessor.bufferView));
+        fail(path_, where + ".bufferView", std::to_string(accessor.bufferView));
       }
       const tinygltf::BufferView& view =
           model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)];
@@ -165,7 +216,7 @@ class Importer {
 
   const tinygltf::BufferView& view_at(int index, const std::string& where) const {
     if (index < 0 || static_cast<std::size_t>(index) >= model_.bufferViews.size())
-      fail(path_, where + "/bufferView", std::to_string(index));
+      fail(path_, where + ".bufferView", std::to_string(index));
     return model_.bufferViews[static_cast<std::size_t>(index)];
   }
 
@@ -173,23 +224,23 @@ class Importer {
                     std::size_t element_bytes) const {
     const int count = accessor.sparse.count;
     if (count <= 0 || static_cast<std::size_t>(count) > accessor.count)
-      fail(path_, where + "/sparse/count", std::to_string(count));
+      fail(path_, where + ".sparse.count", std::to_string(count));
     const int index_bytes = tinygltf::GetComponentSizeInBytes(
         static_cast<std::uint32_t>(accessor.sparse.indices.componentType));
     const int index_type = accessor.sparse.indices.componentType;
     if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
         index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-      fail(path_, where + "/sparse/indices/componentType", std::to_string(index_type));
+      fail(path_, where + ".sparse.indices.componentType", std::to_string(index_type));
     const auto sparse_count = static_cast<std::size_t>(count);
     const tinygltf::BufferView& indices =
-        view_at(accessor.sparse.indices.bufferView, where + "/sparse/indices");
-    check_span(where + "/sparse/indices", accessor.sparse.indices.byteOffset,
+        view_at(accessor.sparse.indices.bufferView, where + ".sparse.indices");
+    check_span(where + ".sparse.indices", accessor.sparse.indices.byteOffset,
                static_cast<std::size_t>(index_bytes), sparse_count,
                static_cast<std::size_t>(index_bytes), indices.byteLength);
     const tinygltf::BufferView& values =
-        view_at(accessor.sparse.values.bufferView, where + "/sparse/values");
-    check_span(where + "/sparse/values", accessor.sparse.values.byteOffset, element_bytes,
+        view_at(accessor.sparse.values.bufferView, where + ".sparse.values");
+    check_span(where + ".sparse.values", accessor.sparse.values.byteOffset, element_bytes,
                sparse_count, element_bytes, values.byteLength);
   }
 
@@ -198,28 +249,28 @@ class Importer {
       const tinygltf::Light& light = model_.lights[i];
       const std::string where = "lights[" + std::to_string(i) + "]";
       if (!std::isfinite(light.intensity) || light.intensity < 0.0) {
-        fail(path_, where + "/intensity", number_text(light.intensity));
+        fail(path_, where + ".intensity", number_text(light.intensity));
       }
       if (!std::isfinite(light.range) || light.range < 0.0)
-        fail(path_, where + "/range", number_text(light.range));
+        fail(path_, where + ".range", number_text(light.range));
       if (!light.color.empty() && light.color.size() != 3) {
-        fail(path_, where + "/color", std::to_string(light.color.size()) + " components");
+        fail(path_, where + ".color", std::to_string(light.color.size()) + " components");
       }
       for (const double c : light.color) {
-        if (!std::isfinite(c) || c < 0.0) fail(path_, where + "/color", number_text(c));
+        if (!std::isfinite(c) || c < 0.0) fail(path_, where + ".color", number_text(c));
       }
       if (light.type == "spot") {
         const double inner = light.spot.innerConeAngle;
         const double outer = light.spot.outerConeAngle;
         // The extension: 0 <= inner < outer <= PI/2.
         if (!std::isfinite(outer) || !(outer > 0.0) || outer > kPi / 2.0) {
-          fail(path_, where + "/spot/outerConeAngle", number_text(outer));
+          fail(path_, where + ".spot.outerConeAngle", number_text(outer));
         }
         if (!std::isfinite(inner) || inner < 0.0 || inner >= outer) {
-          fail(path_, where + "/spot/innerConeAngle", number_text(inner));
+          fail(path_, where + ".spot.innerConeAngle", number_text(inner));
         }
       } else if (light.type != "point" && light.type != "directional") {
-        fail(path_, where + "/type", "'" + light.type + "'");
+        fail(path_, where + ".type", "'" + light.type + "'");
       }
     }
   }
@@ -227,12 +278,12 @@ class Importer {
   glm::dmat4 local_matrix(const tinygltf::Node& node, const std::string& where) const {
     if (!node.matrix.empty()) {
       if (node.matrix.size() != 16)
-        fail(path_, where + "/matrix", std::to_string(node.matrix.size()) + " values");
+        fail(path_, where + ".matrix", std::to_string(node.matrix.size()) + " values");
       glm::dmat4 m(1.0);
       for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r) {
           const double v = node.matrix[static_cast<std::size_t>(4 * c + r)];
-          if (!std::isfinite(v)) fail(path_, where + "/matrix", number_text(v));
+          if (!std::isfinite(v)) fail(path_, where + ".matrix", number_text(v));
           m[c][r] = v;
         }
       }
@@ -242,9 +293,9 @@ class Importer {
     glm::dquat q(1.0, 0.0, 0.0, 0.0);
     auto read = [&](const std::vector<double>& values, std::size_t n, const char* key) {
       if (!values.empty() && values.size() != n)
-        fail(path_, where + "/" + key, std::to_string(values.size()) + " values");
+        fail(path_, where + "." + key, std::to_string(values.size()) + " values");
       for (const double v : values) {
-        if (!std::isfinite(v)) fail(path_, where + "/" + key, number_text(v));
+        if (!std::isfinite(v)) fail(path_, where + "." + key, number_text(v));
       }
       return !values.empty();
     };
@@ -255,7 +306,7 @@ class Importer {
       q = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1],
                      node.rotation[2]);  // glTF: x y z w
       const double length = glm::length(q);
-      if (!(length > 0.0)) fail(path_, where + "/rotation", "zero quaternion");
+      if (!(length > 0.0)) fail(path_, where + ".rotation", "zero quaternion");
       q = q / length;
     }
     return glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(q) * glm::scale(glm::dmat4(1.0), s);
@@ -265,11 +316,11 @@ class Importer {
     const auto ext = node.extensions.find("KHR_lights_punctual");
     if (ext == node.extensions.end()) return -1;
     const tinygltf::Value& index = ext->second.Get("light");
-    if (!index.IsNumber()) fail(path_, where + "/extensions/KHR_lights_punctual/light", "missing");
+    if (!index.IsNumber()) fail(path_, where + ".extensions.KHR_lights_punctual.light", "missing");
     const double value = index.GetNumberAsDouble();
     if (!(value >= 0.0) || value >= static_cast<double>(model_.lights.size()) ||
         value != std::floor(value)) {
-      fail(path_, where + "/extensions/KHR_lights_punctual/light", number_text(value));
+      fail(path_, where + ".extensions.KHR_lights_punctual.light", number_text(value));
     }
     return static_cast<int>(value);
   }
@@ -327,7 +378,7 @@ class Importer {
     const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(index)];
     const std::string accessor_where = "accessors[" + std::to_string(index) + "]";
     if (std::find(types.begin(), types.end(), accessor.type) == types.end())
-      fail(path_, accessor_where + "/type",
+      fail(path_, accessor_where + ".type",
            "type " + std::to_string(accessor.type) + " where " + where + " needs another");
     const auto components = static_cast<std::size_t>(
         tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
@@ -364,7 +415,7 @@ class Importer {
         const double target =
             raw_component(indices + k * index_bytes, sparse.indices.componentType);
         if (target >= static_cast<double>(accessor.count))
-          fail(path_, accessor_where + "/sparse/indices",
+          fail(path_, accessor_where + ".sparse.indices",
                number_text(target) + " beyond the count " + std::to_string(accessor.count));
         const auto e = static_cast<std::size_t>(target);
         for (std::size_t c = 0; c < components; ++c) {
@@ -383,11 +434,97 @@ class Importer {
     return value;
   }
 
+  // --- the memory budget (gltf_budget.h) ----------------------------------------------------
+
+  // Charges, before anything is built, every mesh the scene's nodes draw and every texture their
+  // materials sample. Nodes are walked with a stack of their own, each at most once.
+  void charge_scene(const std::vector<int>& roots) {
+    std::vector<bool> seen(model_.nodes.size(), false);
+    std::vector<int> pending(roots.rbegin(), roots.rend());
+    while (!pending.empty()) {
+      const int index = pending.back();
+      pending.pop_back();
+      if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size() ||
+          seen[static_cast<std::size_t>(index)])
+        continue;  // a bad index or a cycle is refused, by name, when the tree is visited
+      seen[static_cast<std::size_t>(index)] = true;
+      const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+      if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < model_.meshes.size())
+        charge_mesh(node.mesh);
+      pending.insert(pending.end(), node.children.rbegin(), node.children.rend());
+    }
+  }
+
+  std::uint64_t accessor_count(int index) const {
+    return index >= 0 && static_cast<std::size_t>(index) < model_.accessors.size()
+               ? model_.accessors[static_cast<std::size_t>(index)].count
+               : 0;
+  }
+
+  // Each triangle primitive as read_primitive builds it: its vertices read, the flat ones made
+  // when it has no normals, and its triangles; an accessor counted again by every primitive.
+  void charge_mesh(int index) {
+    if (charged_meshes_.empty()) charged_meshes_.assign(model_.meshes.size(), false);
+    if (charged_meshes_[static_cast<std::size_t>(index)]) return;
+    charged_meshes_[static_cast<std::size_t>(index)] = true;
+    const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(index)];
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = mesh.primitives[p];
+      if (primitive.mode >= 0 && primitive.mode < TINYGLTF_MODE_TRIANGLES) continue;
+      const auto position = primitive.attributes.find("POSITION");
+      const std::uint64_t vertices =
+          position == primitive.attributes.end() ? 0 : accessor_count(position->second);
+      const std::uint64_t corners =
+          primitive.indices >= 0 ? accessor_count(primitive.indices) : vertices;
+      const std::uint64_t triangles = primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+                                              primitive.mode == TINYGLTF_MODE_TRIANGLE_FAN
+                                          ? (corners >= 2 ? corners - 2 : 0)
+                                          : corners / 3;
+      const bool flat = primitive.attributes.count("NORMAL") == 0;
+      const std::uint64_t built = vertices + (flat ? 3 * triangles : 0);
+      const std::string where = "meshes[" + std::to_string(index) + "].primitives[" +
+                                std::to_string(p) + "] (" + std::to_string(built) +
+                                " vertices and " + std::to_string(triangles) +
+                                " triangles as built)";
+      budget_.charge(built, kGltfBytesPerVertex, where);
+      budget_.charge(triangles, kGltfBytesPerTriangle, where);
+      if (primitive.material >= 0 &&
+          static_cast<std::size_t>(primitive.material) < model_.materials.size()) {
+        const tinygltf::TextureInfo& info =
+            model_.materials[static_cast<std::size_t>(primitive.material)]
+                .pbrMetallicRoughness.baseColorTexture;
+        if (info.index >= 0 && info.texCoord == 0) charge_texture(info.index);
+      }
+    }
+  }
+
+  // A texture's texels as decoded, from its image's header (stb reads only the header): every
+  // texture that samples an image decodes it anew, so each is charged.
+  void charge_texture(int index) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.textures.size()) return;
+    if (charged_textures_.empty()) charged_textures_.assign(model_.textures.size(), false);
+    if (charged_textures_[static_cast<std::size_t>(index)]) return;
+    charged_textures_[static_cast<std::size_t>(index)] = true;
+    const int source = model_.textures[static_cast<std::size_t>(index)].source;
+    if (source < 0 || static_cast<std::size_t>(source) >= model_.images.size()) return;
+    const auto [bytes, size] = image_bytes(source);
+    int width = 0, height = 0, channels = 0;
+    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+        !stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
+      return;  // refused, by name, when the texture is decoded
+    const std::uint64_t texels =
+        static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+    budget_.charge(texels, kGltfBytesPerTexel,
+                   "textures[" + std::to_string(index) + "] (images[" + std::to_string(source) +
+                       "], " + std::to_string(width) + "x" + std::to_string(height) +
+                       " texels as decoded)");
+  }
+
   // --- meshes -----------------------------------------------------------------------------------
 
   std::uint32_t scene_material(int index, const std::string& where) {
     if (index >= static_cast<int>(model_.materials.size()))
-      fail(path_, where + "/material", std::to_string(index));
+      fail(path_, where + ".material", std::to_string(index));
     const std::size_t slot = static_cast<std::size_t>(index + 1);  // 0: the default material
     if (material_of_.empty()) material_of_.assign(model_.materials.size() + 1, kNoIndex);
     if (material_of_[slot] != kNoIndex) return material_of_[slot];
@@ -407,18 +544,18 @@ class Importer {
   renderer::Material phong_from_gltf(const tinygltf::Material& source, const std::string& where) {
     const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() != 4)
-      fail(path_, where + "/baseColorFactor",
+      fail(path_, where + ".baseColorFactor",
            std::to_string(pbr.baseColorFactor.size()) + " values");
     for (const double c : pbr.baseColorFactor) {
       if (!std::isfinite(c) || c < 0.0 || c > 1.0)
-        fail(path_, where + "/baseColorFactor", number_text(c));
+        fail(path_, where + ".baseColorFactor", number_text(c));
     }
     const double metallic = pbr.metallicFactor;
     const double roughness = pbr.roughnessFactor;
     if (!std::isfinite(metallic) || metallic < 0.0 || metallic > 1.0)
-      fail(path_, where + "/metallicFactor", number_text(metallic));
+      fail(path_, where + ".metallicFactor", number_text(metallic));
     if (!std::isfinite(roughness) || roughness < 0.0 || roughness > 1.0)
-      fail(path_, where + "/roughnessFactor", number_text(roughness));
+      fail(path_, where + ".roughnessFactor", number_text(roughness));
     const double gloss = 1.0 - roughness;
     renderer::Material m;
     m.colour = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]),
@@ -436,7 +573,7 @@ class Importer {
       const tinygltf::Value& factor = transmission->second.Get("transmissionFactor");
       const double kt = factor.IsNumber() ? factor.GetNumberAsDouble() : 0.0;
       if (!std::isfinite(kt) || kt < 0.0 || kt > 1.0)
-        fail(path_, where + "/KHR_materials_transmission/transmissionFactor", number_text(kt));
+        fail(path_, where + ".KHR_materials_transmission.transmissionFactor", number_text(kt));
       m.kt = static_cast<float>(kt);
       m.kd *= static_cast<float>(1.0 - kt);
     }
@@ -446,7 +583,7 @@ class Importer {
       if (value.IsNumber()) {
         const double v = value.GetNumberAsDouble();
         if (!std::isfinite(v) || v < 1.0 || v > 100.0)
-          fail(path_, where + "/KHR_materials_ior/ior", number_text(v));
+          fail(path_, where + ".KHR_materials_ior.ior", number_text(v));
         m.ior = static_cast<float>(v);
       }
     }
@@ -455,9 +592,9 @@ class Importer {
 
   // The scene texture of a material's base colour texture (each glTF texture decoded once).
   std::int32_t scene_texture(const tinygltf::TextureInfo& info, const std::string& where) {
-    const std::string info_where = where + "/baseColorTexture";
+    const std::string info_where = where + ".baseColorTexture";
     if (info.index >= static_cast<int>(model_.textures.size()))
-      fail(path_, info_where + "/index", std::to_string(info.index));
+      fail(path_, info_where + ".index", std::to_string(info.index));
     if (info.texCoord != 0) {
       warnings_.push_back(info_where + ": texCoord " + std::to_string(info.texCoord) +
                           " is not read; untextured");
@@ -469,11 +606,12 @@ class Importer {
     const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(info.index)];
     const std::string texture_where = "textures[" + std::to_string(info.index) + "]";
     if (texture.source < 0 || texture.source >= static_cast<int>(model_.images.size()))
-      fail(path_, texture_where + "/source", std::to_string(texture.source));
+      fail(path_, texture_where + ".source", std::to_string(texture.source));
+    charge_texture(info.index);
     renderer::Texture out = decode_image(texture.source);
     if (texture.sampler >= 0) {
       if (texture.sampler >= static_cast<int>(model_.samplers.size()))
-        fail(path_, texture_where + "/sampler", std::to_string(texture.sampler));
+        fail(path_, texture_where + ".sampler", std::to_string(texture.sampler));
       const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
       out.wrap_u = texture_wrap(sampler.wrapS);
       out.wrap_v = texture_wrap(sampler.wrapT);
@@ -484,27 +622,27 @@ class Importer {
   }
 
   // The image's bytes (its buffer view, or the file or data URI tinygltf read) through stb_image.
-  renderer::Texture decode_image(int index) const {
+  // An image's encoded bytes: its buffer view's, or those of the file or data URI tinygltf read.
+  std::pair<const unsigned char*, std::size_t> image_bytes(int index) const {
     const tinygltf::Image& image = model_.images[static_cast<std::size_t>(index)];
     const std::string where = "images[" + std::to_string(index) + "]";
-    const unsigned char* bytes = image.image.data();
-    std::size_t size = image.image.size();
     if (image.bufferView >= 0) {
       const tinygltf::BufferView& view = view_at(image.bufferView, where);
-      bytes = view_bytes(view);
-      size = view.byteLength;
+      return {view_bytes(view), view.byteLength};
     }
+    return {image.image.data(), image.image.size()};
+  }
+
+  renderer::Texture decode_image(int index) const {
+    const std::string where = "images[" + std::to_string(index) + "]";
+    const auto [bytes, size] = image_bytes(index);
     if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
       fail(path_, where, "no image data (" + std::to_string(size) + " bytes)");
     int width = 0, height = 0, channels = 0;
-    if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
-      fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
-    if (static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > kMaxGltfTexels)
-      fail(path_, where,
-           std::to_string(width) + "x" + std::to_string(height) + " texels, more than " +
-               std::to_string(kMaxGltfTexels));
     unsigned char* pixels =
         stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, 3);
+    // Out of memory is no fault of the file: exit 1 as everywhere, not 2.
+    if (!pixels && std::strcmp(stbi_failure_reason(), "outofmem") == 0) throw std::bad_alloc();
     if (!pixels) fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
     renderer::Texture texture;
     texture.width = width;
@@ -547,14 +685,14 @@ class Importer {
                                         const std::string& where) {
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end())
-      fail(path_, where + "/attributes/POSITION", "missing");
+      fail(path_, where + ".attributes.POSITION", "missing");
     renderer::TriangleMesh part;
     part.positions = as_vec3(
-        read_accessor(position->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/POSITION"));
+        read_accessor(position->second, {TINYGLTF_TYPE_VEC3}, where + ".attributes.POSITION"));
     const auto vertex_count = part.positions.size();
     std::vector<std::uint32_t> vertices;
     if (primitive.indices >= 0) {
-      const std::string indices_where = where + "/indices";
+      const std::string indices_where = where + ".indices";
       if (static_cast<std::size_t>(primitive.indices) < model_.accessors.size()) {
         const int type =
             model_.accessors[static_cast<std::size_t>(primitive.indices)].componentType;
@@ -579,9 +717,9 @@ class Importer {
     const auto uv = primitive.attributes.find("TEXCOORD_0");
     if (uv != primitive.attributes.end()) {
       const std::vector<double> values =
-          read_accessor(uv->second, {TINYGLTF_TYPE_VEC2}, where + "/attributes/TEXCOORD_0");
+          read_accessor(uv->second, {TINYGLTF_TYPE_VEC2}, where + ".attributes.TEXCOORD_0");
       if (values.size() != 2 * vertex_count)
-        fail(path_, where + "/attributes/TEXCOORD_0",
+        fail(path_, where + ".attributes.TEXCOORD_0",
              std::to_string(values.size() / 2) + " for " + std::to_string(vertex_count) +
                  " vertices");
       for (std::size_t i = 0; i < vertex_count; ++i)
@@ -590,9 +728,9 @@ class Importer {
     }
     if (normal != primitive.attributes.end()) {
       part.normals = as_vec3(
-          read_accessor(normal->second, {TINYGLTF_TYPE_VEC3}, where + "/attributes/NORMAL"));
+          read_accessor(normal->second, {TINYGLTF_TYPE_VEC3}, where + ".attributes.NORMAL"));
       if (part.normals.size() != vertex_count)
-        fail(path_, where + "/attributes/NORMAL",
+        fail(path_, where + ".attributes.NORMAL",
              std::to_string(part.normals.size()) + " for " + std::to_string(vertex_count) +
                  " vertices");
       return part;
@@ -616,10 +754,11 @@ class Importer {
   // The scene mesh of glTF mesh `index` (converted once), or kNoIndex when it has no triangles.
   std::uint32_t scene_mesh(int index, const std::string& where) {
     if (index >= static_cast<int>(model_.meshes.size()))
-      fail(path_, where + "/mesh", std::to_string(index));
+      fail(path_, where + ".mesh", std::to_string(index));
     if (mesh_of_.empty()) mesh_of_.assign(model_.meshes.size(), kUnconverted);
     std::uint32_t& slot = mesh_of_[static_cast<std::size_t>(index)];
     if (slot != kUnconverted) return slot;
+    charge_mesh(index);
     const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(index)];
     MeshData data;
     data.name = mesh.name;
@@ -627,9 +766,9 @@ class Importer {
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& primitive = mesh.primitives[p];
       const std::string primitive_where =
-          "meshes[" + std::to_string(index) + "]/primitives[" + std::to_string(p) + "]";
+          "meshes[" + std::to_string(index) + "].primitives[" + std::to_string(p) + "]";
       if (primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
-        fail(path_, primitive_where + "/mode", std::to_string(primitive.mode));
+        fail(path_, primitive_where + ".mode", std::to_string(primitive.mode));
       if (primitive.mode >= 0 && primitive.mode < TINYGLTF_MODE_TRIANGLES) {
         skipped_modes.push_back(primitive.mode);
         continue;
@@ -724,7 +863,33 @@ class Importer {
     return master;
   }
 
-  void visit(int index, const glm::dmat4& parent) {
+  // Depth first, in the file's order, with a stack of its own: a tree 10,000 nodes deep costs a
+  // vector, not the call stack.
+  void visit_tree(int root) {
+    struct Frame {
+      int node;
+      glm::dmat4 world;
+      std::size_t next_child;
+    };
+    std::vector<Frame> stack;
+    stack.push_back({root, enter_node(root, glm::dmat4(1.0)), 0});
+    while (!stack.empty()) {
+      Frame& top = stack.back();
+      const std::vector<int>& children = model_.nodes[static_cast<std::size_t>(top.node)].children;
+      if (top.next_child < children.size()) {
+        const int child = children[top.next_child++];
+        const glm::dmat4 world = enter_node(child, top.world);
+        stack.push_back({child, world, 0});
+      } else {
+        on_path_[static_cast<std::size_t>(top.node)] = false;
+        stack.pop_back();
+      }
+    }
+  }
+
+  // Reads one node under its parent's world matrix and returns its own; the node stays on the
+  // path (for the cycle check) until visit_tree has visited its children.
+  glm::dmat4 enter_node(int index, const glm::dmat4& parent) {
     if (index < 0 || index >= static_cast<int>(model_.nodes.size()))
       fail(path_, "node", std::to_string(index));
     const std::string where = "nodes[" + std::to_string(index) + "]";
@@ -742,8 +907,7 @@ class Importer {
       add_light(model_.lights[static_cast<std::size_t>(light)], position, forward, where);
     if (node.camera >= 0) add_camera(node, world, where);
     if (node.mesh >= 0) place_mesh(node.mesh, world, where);
-    for (const int child : node.children) visit(child, world);
-    on_path_[static_cast<std::size_t>(index)] = false;
+    return world;
   }
 
   void add_light(const tinygltf::Light& light, const glm::dvec3& position,
@@ -795,12 +959,12 @@ class Importer {
   void add_camera(const tinygltf::Node& node, const glm::dmat4& world, const std::string& where) {
     if (has_camera_) return;
     if (node.camera >= static_cast<int>(model_.cameras.size()))
-      fail(path_, where + "/camera", std::to_string(node.camera));
+      fail(path_, where + ".camera", std::to_string(node.camera));
     const tinygltf::Camera& camera = model_.cameras[static_cast<std::size_t>(node.camera)];
     if (camera.type != "perspective") return;
     const double yfov = camera.perspective.yfov;
     if (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)
-      fail(path_, where + "/camera/yfov", number_text(yfov));
+      fail(path_, where + ".camera.yfov", number_text(yfov));
     // --camera N: the N-th perspective camera met in the node tree, depth first.
     if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
@@ -838,6 +1002,7 @@ class Importer {
   const std::string& path_;
   float light_scale_;
   int wanted_camera_;
+  GltfBudget& budget_;
   int cameras_seen_ = 0;
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
@@ -850,6 +1015,8 @@ class Importer {
   std::vector<std::uint32_t> material_of_;  // [0]: the default material, [i + 1]: glTF material i
   std::vector<std::uint32_t> mesh_of_;      // per glTF mesh: its scene mesh
   std::vector<std::uint32_t> texture_of_;   // per glTF texture: its scene texture
+  std::vector<bool> charged_meshes_;        // per glTF mesh: charged to the budget
+  std::vector<bool> charged_textures_;      // per glTF texture: charged to the budget
   std::vector<std::pair<glm::vec3, glm::vec3>> mesh_bounds_;  // per scene mesh, in its frame
   std::map<std::pair<std::uint32_t, std::array<float, 9>>, std::uint32_t> master_of_;
   std::vector<SceneNode> mesh_nodes_;
@@ -872,22 +1039,33 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
                                   float light_scale, int camera) {
   if (!std::isfinite(light_scale) || light_scale < 0.0f)
     fail(path, "light scale", number_text(light_scale));
+  if (camera < 0) fail(path, "camera", std::to_string(camera));
+  GltfBudget budget(path, kMaxGltfSceneBytes);
+  const bool binary = ends_with(path, ".glb");
+  FolderReader reader;
+  reader.gltf_path = path;
+  reader.folder = std::filesystem::path(path).parent_path().string();
+  reader.files = check_gltf_document(bytes, binary, path, reader.folder, budget);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_encoded_image, nullptr);
+  loader.SetFsCallbacks({accept_any_name, keep_name, read_checked_file, write_nothing, &reader});
   tinygltf::Model model;
   std::string error, loader_warning;
-  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  // No base folder: tinygltf hands the decoded URI itself to read_checked_file, which reads it
+  // from reader.folder only if check_gltf_document approved it.
   const bool ok =
-      ends_with(path, ".glb")
-          ? loader.LoadBinaryFromMemory(&model, &error, &loader_warning,
-                                        reinterpret_cast<const unsigned char*>(bytes.data()),
-                                        static_cast<unsigned int>(bytes.size()), base_dir)
-          : loader.LoadASCIIFromString(&model, &error, &loader_warning, bytes.data(),
-                                       static_cast<unsigned int>(bytes.size()), base_dir);
+      binary ? loader.LoadBinaryFromMemory(&model, &error, &loader_warning,
+                                           reinterpret_cast<const unsigned char*>(bytes.data()),
+                                           static_cast<unsigned int>(bytes.size()), "")
+             : loader.LoadASCIIFromString(&model, &error, &loader_warning, bytes.data(),
+                                          static_cast<unsigned int>(bytes.size()), "");
+  if (!reader.error.empty()) throw std::invalid_argument(reader.error);
+  // tinygltf turns the exceptions of its JSON parser into an error text; running out of memory
+  // is no fault of the file (exit 1, not 2), so it goes on as what it was.
+  if (!ok && error == std::bad_alloc().what()) throw std::bad_alloc();
   if (!ok)
     fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
-  if (camera < 0) fail(path, "camera", std::to_string(camera));
-  Importer importer(model, path, light_scale, camera);
+  Importer importer(model, path, light_scale, camera, budget);
   SceneDescription scene = importer.run();
   // The limits every scene obeys (light count, intensities), with the file's name in front.
   try {

@@ -8,7 +8,10 @@
 // directional lights as suns outside the hierarchy; the chosen perspective camera, or else a
 // view framing the scene from the front and above. Points and lines are skipped with one warning
 // line naming the mesh, printed only once the file is accepted. Every problem in the file
-// becomes one line "FILE: what: value" in a std::invalid_argument.
+// becomes one line "FILE: glTF.path: value" in a std::invalid_argument. Before tinygltf sees
+// the text, gltf_document.h checks its JSON (nesting, indices, URIs inside the file's folder);
+// before anything is built, gltf_budget.h charges the whole scene's memory. The node tree is
+// walked with an explicit stack, so its depth is bounded only by kMaxGltfNodes.
 #pragma once
 
 #include <cstddef>
@@ -26,7 +29,6 @@ namespace scenes {
 inline constexpr float kDefaultGltfLightScale = 0.03f;
 inline constexpr std::size_t kMaxGltfNodes = std::size_t{1} << 20;
 inline constexpr std::size_t kMaxGltfAccessorElements = std::size_t{1} << 25;
-inline constexpr std::uint64_t kMaxGltfTexels = std::uint64_t{1} << 26;  // a base colour texture's
 
 // True for names ending in ".gltf" or ".glb".
 bool is_gltf_file_name(std::string_view name);

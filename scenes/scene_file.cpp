@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
 
 namespace scenes {
@@ -611,26 +612,8 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
 
 SceneDescription load_scene_file(const std::string& path, const SceneFileOptions& options) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) throw std::invalid_argument(path + ": cannot read the scene file (no such file)");
-  if (!fs::is_regular_file(status)) throw std::invalid_argument(path + ": cannot read the scene file (not a regular file)");
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec) throw std::invalid_argument(path + ": cannot read the scene file (" + ec.message() + ")");
-  if (size > kMaxSceneFileBytes) {
-    throw std::invalid_argument(path + ": file of " + std::to_string(size) + " bytes, more than the " +
-                                std::to_string(kMaxSceneFileBytes >> 20) + " MiB a scene file may have");
-  }
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw std::invalid_argument(path + ": cannot read the scene file (" + std::strerror(errno) + ")");
   std::string text;
-  text.resize(static_cast<std::size_t>(size));
-  // Read at most one byte more than the limit: a file that grew since it was measured fails too.
-  std::size_t got = std::fread(text.data(), 1, text.size(), f);
-  const bool more = std::fgetc(f) != EOF;
-  std::fclose(f);
-  if (more) throw std::invalid_argument(path + ": the scene file changed while it was read");
-  text.resize(got);
+  read_regular_file(path, kMaxSceneFileBytes, "scene file", text);
   if (is_gltf_file_name(path))
     return parse_gltf_scene(text, path, options.gltf_light_scale, options.camera);
   if (options.camera != 0) {

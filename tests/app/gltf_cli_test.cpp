@@ -1,18 +1,22 @@
 // `--scene FILE.gltf` through the binary: a light-only file renders; a bad file is one line and
 // exit code 2, with nothing written.
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "tests/support/gltf_files.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -25,7 +29,8 @@ class GltfCli : public ::testing::Test {
  protected:
   void SetUp() override {
     temp_ = std::make_unique<levrt_test::TempDir>(
-        "levrt_gltf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
+        "levrt_gltf_cli_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     dir_ = temp_->path();
   }
   void TearDown() override { temp_.reset(); }
@@ -84,6 +89,19 @@ std::string floats_bytes(const std::vector<float>& values) {
   return bytes;
 }
 
+// A render of `file` refused: exit 2, one line naming the file and `problem`, no x.png or
+// s.json.
+void expect_refused_without_output(const CommandRun& r, const std::string& file,
+                                   const std::string& problem) {
+  const fs::path folder = fs::path(file).parent_path();
+  EXPECT_EQ(r.exit_code, 2) << file << ": " << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: " + file + ": ", 0), 0u) << file << ": " << r.output;
+  EXPECT_NE(r.output.find(problem), std::string::npos) << file << ": " << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << file << ": " << r.output;
+  EXPECT_FALSE(fs::exists(folder / "x.png")) << file;
+  EXPECT_FALSE(fs::exists(folder / "s.json")) << file;
+}
+
 // Broken glTF files through the binary: each is one line naming the file, exit 2, and
 // no image.
 TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
@@ -131,12 +149,7 @@ TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
     }
     const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
                                     "--out", path("x.png"), "--stats", path("s.json")});
-    EXPECT_EQ(r.exit_code, 2) << c.name << ": " << r.output;
-    EXPECT_EQ(r.output.rfind("levrt: " + file + ": ", 0), 0u) << c.name << ": " << r.output;
-    EXPECT_NE(r.output.find(c.problem), std::string::npos) << c.name << ": " << r.output;
-    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << c.name << ": " << r.output;
-    EXPECT_FALSE(fs::exists(path("x.png"))) << c.name;
-    EXPECT_FALSE(fs::exists(path("s.json"))) << c.name;
+    expect_refused_without_output(r, file, c.problem);
   }
 }
 
@@ -156,6 +169,149 @@ TEST_F(GltfCli, AFileWithNothingToRenderShowsTheBackgroundWithOneWarning) {
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 3)
       << r.output;  // warning, wrote, summary
   EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+// Every file of a folder with its size and modification time: what "nothing changed" compares.
+std::map<std::string, std::pair<std::uintmax_t, fs::file_time_type>> folder_state(
+    const fs::path& folder) {
+  std::map<std::string, std::pair<std::uintmax_t, fs::file_time_type>> state;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
+    const fs::file_status status = fs::symlink_status(entry.path());
+    state[entry.path().filename().string()] = {
+        fs::is_regular_file(status) ? fs::file_size(entry.path()) : 0,
+        fs::is_regular_file(status) ? fs::last_write_time(entry.path()) : fs::file_time_type{}};
+  }
+  return state;
+}
+
+// The hostile glTF classes (docs/extremes.md) through `render`: each file is refused with one line
+// naming it and the limit or the glTF path, exit 2, under 256 MB of peak memory (measured by
+// /usr/bin/time), within 20 s (a FIFO that blocked would be killed by timeout, exit 124), and
+// nothing is written or changed.
+TEST_F(GltfCli, HostileFilesExitTwoWithOneLineInLittleMemoryAndChangeNothing) {
+  using levrt_test::gltf_document;
+  using levrt_test::triangle_buffers;
+  const std::string mesh = R"(, "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";
+  levrt_test::write_file(dir_ / "zeros.png", levrt_test::zero_png(8000, 8000));
+  levrt_test::write_file(dir_ / "big.bin", "");
+  fs::resize_file(dir_ / "big.bin", 1'500'000'000);  // sparse
+  ASSERT_EQ(::mkfifo(path("pipe.bin").c_str(), 0600), 0);
+  fs::create_directory(dir_ / "inner");
+  levrt_test::write_file(dir_ / "secret.bin", std::string(36, 'x'));
+  std::string textures, materials, primitives;
+  for (int i = 0; i < 16; ++i) {
+    const std::string n = std::to_string(i), comma = i > 0 ? ", " : "";
+    textures += comma + R"({"source": 0})";
+    materials += comma + R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": )" + n + "}}}";
+    primitives += comma + R"({"attributes": {"POSITION": 0}, "material": )" + n + "}";
+  }
+  struct Case {
+    std::string name, text, problem;
+  };
+  const std::vector<Case> cases = {
+      {"deep.gltf",
+       gltf_document(R"("extras": )" + std::string(30000, '[') + std::string(30000, ']') +
+                     R"(, "nodes": [{}])"),
+       "nested deeper than 256 levels"},
+      {"bomb.gltf",
+       gltf_document(triangle_buffers() + R"(, "images": [{"uri": "zeros.png"}], "textures": [)" +
+                     textures + R"(], "materials": [)" + materials +
+                     R"(], "meshes": [{"primitives": [)" + primitives +
+                     R"(]}], "nodes": [{"mesh": 0}])"),
+       "textures[0] (images[0], 8000x8000 texels as decoded)"},
+      {"zeros.gltf", gltf_document(R"("accessors": [{"componentType": 5126, "type": "VEC3",
+           "count": 30000000}])" + mesh),
+       "memory budget of 1024 MiB"},
+      {"big.gltf", gltf_document(triangle_buffers("big.bin", 1'500'000'000) + mesh),
+       "buffers[0].uri 'big.bin': 1500000000 bytes"},
+      {"escape.gltf", gltf_document(triangle_buffers("%2e%2e/secret.bin") + mesh),
+       "leads outside the scene's folder"},
+      {"inner/up.gltf", gltf_document(triangle_buffers("../secret.bin") + mesh),
+       "buffers[0].uri: '../secret.bin' (leads outside the scene's folder)"},
+      {"fifo.gltf", gltf_document(triangle_buffers("pipe.bin") + mesh), "not a regular file"},
+      {"dot.gltf", gltf_document(triangle_buffers(".") + mesh), "names a folder"},
+      {"wrap.gltf",
+       gltf_document(R"("extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}},
+           "nodes": [{"extensions": {"KHR_lights_punctual": {"light": 4294967296}}}])"),
+       "nodes[0].extensions.KHR_lights_punctual.light: 4294967296"},
+  };
+  for (const Case& c : cases) {
+    const std::string file = path(c.name);
+    levrt_test::write_file(file, c.text);
+    const auto before = folder_state(dir_);
+    const CommandRun r = levrt_test::run_shell(
+        "timeout 20 /usr/bin/time -f %M -o " + levrt_test::shell_quote(path("peak_kb")) + " " +
+        LEVRT_BINARY + " render --scene " + levrt_test::shell_quote(file) +
+        " --width 8 --height 8 --out " + levrt_test::shell_quote(path("x.png")) + " --stats " +
+        levrt_test::shell_quote(path("s.json")));
+    expect_refused_without_output(r, file, c.problem);
+    // GNU time writes "Command exited with non-zero status 2" first, then the figure.
+    std::ifstream peak(path("peak_kb"));
+    long peak_kb = 0;
+    for (std::string line; std::getline(peak, line);) {
+      if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos)
+        peak_kb = std::stol(line);
+    }
+    fs::remove(path("peak_kb"));
+    EXPECT_GT(peak_kb, 0) << c.name;
+#if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer's shadow memory is not the reader's
+    EXPECT_LT(peak_kb, 256 * 1024) << c.name << ": peak memory in KB";
+#endif
+    EXPECT_EQ(folder_state(dir_), before) << c.name;
+  }
+}
+
+// A chain of 10,000 nodes (the reader recursed per node and overflowed its stack) renders.
+TEST_F(GltfCli, TenThousandNestedNodesRender) {
+  std::string nodes;
+  for (int i = 0; i < 10000; ++i) {
+    nodes += std::string(i > 0 ? ", " : "") +
+             (i + 1 < 10000 ? R"({"children": [)" + std::to_string(i + 1) + "]}"
+                            : R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})");
+  }
+  const std::string file = path("tall.gltf");
+  levrt_test::write_file(file, levrt_test::gltf_document(
+                                   R"("extensions": {"KHR_lights_punctual": {"lights":
+                                       [{"type": "point"}]}}, "nodes": [)" +
+                                   nodes + "]"));
+  const CommandRun r = run_levrt(
+      {"render", "--scene", file, "--width", "8", "--height", "8", "--out", path("x.png")});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+// Out of memory while loading (here under `ulimit -v`, in tinygltf's JSON parser of a 40 MB data
+// URI and in the decoding of a 4096x4096 texture) is one line and exit 1: not abort's two lines
+// and exit 134, nor exit 2 as if the file were bad.
+TEST_F(GltfCli, OutOfMemoryWhileLoadingIsOneLineAndExitOne) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than any limit lets through";
+#else
+  const std::string buffer_uri =
+      "data:application/octet-stream;base64," + std::string(40'000'000, 'A');
+  levrt_test::write_file(dir_ / "embedded.gltf",
+                         levrt_test::gltf_document(levrt_test::triangle_buffers(buffer_uri, 36) +
+                                                   R"(, "nodes": [{"mesh": 0}], "meshes":
+                             [{"primitives": [{"attributes": {"POSITION": 0}}]}])"));
+  levrt_test::write_file(dir_ / "big.png", levrt_test::zero_png(4096, 4096));
+  levrt_test::write_file(dir_ / "textured.gltf",
+                         levrt_test::gltf_document(levrt_test::triangle_buffers() + R"(,
+      "images": [{"uri": "big.png"}], "textures": [{"source": 0}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+      "nodes": [{"mesh": 0}])"));
+  for (const std::string name : {"embedded.gltf", "textured.gltf"}) {
+    const CommandRun r = levrt_test::run_shell(
+        "ulimit -v 150000 && " + std::string(LEVRT_BINARY) + " render --scene " +
+        levrt_test::shell_quote(path(name)) + " --width 8 --height 8 --out " +
+        levrt_test::shell_quote(path("x.png")));
+    EXPECT_EQ(r.exit_code, 1) << name << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("levrt: error: ", 0), 0u) << name << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << name << ": " << r.output;
+    EXPECT_FALSE(fs::exists(path("x.png"))) << name;
+  }
+#endif
 }
 
 }  // namespace

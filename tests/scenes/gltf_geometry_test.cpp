@@ -273,7 +273,8 @@ TEST(GltfGeometry, PointsAndLinesAreSkippedWithOneWarningNamingTheMesh) {
       mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_POINTS, -1, "dots")));
   builder.add_node(
       mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_LINE, -1, "wires")));
-  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, -1, -1, -1, "triangle")));
+  builder.add_node(mesh_node(
+      builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_TRIANGLES, -1, "triangle")));
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene = parse(builder);
   const std::string warnings = testing::internal::GetCapturedStderr();
@@ -304,7 +305,7 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
         builder.add_accessor(builder.add_view(std::vector<std::uint8_t>{0, 1, 4}),
                              TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_SCALAR, 3);
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, indices)));
-    expect_refused(builder, "meshes[0]/primitives[0]/indices: vertex 4 of 4");
+    expect_refused(builder, "meshes[0].primitives[0].indices: vertex 4 of 4");
   }
   {
     GltfBuilder builder;
@@ -332,14 +333,14 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
     accessor.sparse.values.bufferView = builder.add_view(std::vector<float>{1, 2, 3});
     accessor.sparse.values.byteOffset = 0;
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
-    expect_refused(builder, "accessors[0]/sparse/indices: 7 beyond the count 4");
+    expect_refused(builder, "accessors[0].sparse.indices: 7 beyond the count 4");
   }
   {
     GltfBuilder builder;
     const int positions = builder.add_vec3s(kQuad);
     const int indices = builder.add_vec3s(kQuad);
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, indices)));
-    expect_refused(builder, "meshes[0]/primitives[0]/indices: component type 5126");
+    expect_refused(builder, "meshes[0].primitives[0].indices: component type 5126");
   }
   {
     GltfBuilder builder;

@@ -30,7 +30,8 @@ GltfBuilder textured_square(const tinygltf::Material& material) {
                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6);
   builder.model.materials.push_back(material);
   tinygltf::Node square;
-  square.mesh = builder.add_mesh({{"POSITION", positions}, {"TEXCOORD_0", uvs}}, indices, -1, 0);
+  square.mesh = builder.add_mesh({{"POSITION", positions}, {"TEXCOORD_0", uvs}}, indices,
+                                 TINYGLTF_MODE_TRIANGLES, 0);
   builder.add_node(square);
   tinygltf::Light sun;
   sun.type = "directional";

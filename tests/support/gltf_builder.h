@@ -62,8 +62,11 @@ class GltfBuilder {
   }
 
   // A mesh of one primitive; attributes name accessors ("POSITION", "NORMAL", "TEXCOORD_0").
-  int add_mesh(const std::map<std::string, int>& attributes, int indices = -1, int mode = -1,
-               int material = -1, const std::string& name = "") {
+  // tinygltf's writer puts `mode` in the file even when it is -1, which the spec forbids (the
+  // reader refuses it), so "no mode" is written as triangles, the spec's default.
+  int add_mesh(const std::map<std::string, int>& attributes, int indices = -1,
+               int mode = TINYGLTF_MODE_TRIANGLES, int material = -1,
+               const std::string& name = "") {
     tinygltf::Primitive primitive;
     primitive.attributes = attributes;
     primitive.indices = indices;
