@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/accuracy_gate.h"
 #include "app/bench/bench.h"
 #include "app/export_command.h"
 #include "app/render_command.h"
@@ -154,7 +155,29 @@ int run_cli(int argc, char** argv) {
       render
           ->add_option("--heatmap-noise", outputs.heatmap_noise,
                        "estimated standard error per pixel (noise across passes) heatmap PNG")
+          ->type_name("FILE.png"),
+      render
+          ->add_option(
+              "--heatmap-error", outputs.heatmap_error,
+              "per-pixel error against the reference heatmap PNG (percent; needs --reference)")
+          ->type_name("FILE.png"),
+      render
+          ->add_option("--heatmap-missed", outputs.heatmap_missed,
+                       "missed-light estimate per pixel heatmap PNG (percent; turns the estimate "
+                       "on)")
+          ->type_name("FILE.png"),
+      render
+          ->add_option("--reference-out", outputs.reference_image,
+                       "the reference's image PNG (needs --reference)")
           ->type_name("FILE.png")};
+  std::string fail_above;
+  CLI::Option* fail_above_option =
+      render
+          ->add_option("--fail-above", fail_above,
+                       "exit 3 when the pixel error against the reference exceeds either limit "
+                       "(percent; needs "
+                       "--reference)")
+          ->type_name("avg=A,max=M");
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   const std::string reference_name = lev::method_info(lev::reference_method()).name;
@@ -216,6 +239,7 @@ int run_cli(int argc, char** argv) {
       }
       outputs.reference_rt = true;
     }
+    if (fail_above_option->count() > 0) outputs.fail_above = parse_accuracy_gate(fail_above);
     return run_render(settings, outputs);
   }
   if (export_command->parsed()) return run_export(export_flags);

@@ -91,6 +91,11 @@ const std::vector<SettingSpec>& setting_table() {
        "view "
        "framing the scene when there is none)",
        IntRange{&Settings::camera, 0, 1000000}},
+      {"missed-samples", "Missed light",
+       "draws per shading point of the light a method left out, each with a shadow ray: the "
+       "missed-light estimate and its standard error (0: off; --heatmap-missed turns it on with "
+       "16; at least 2)",
+       IntRange{&Settings::missed_samples, 0, lev::kMaxLightSamples}},
   };
   return table;
 }
@@ -187,6 +192,12 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   rs.tolerance = static_cast<float>(settings.tolerance);
   rs.light_samples = settings.samples;
   rs.relative_error = static_cast<float>(settings.relative_error);
+  if (settings.missed_samples != 0 && settings.missed_samples < renderer::kMinMissedSamples) {
+    throw UsageError("--missed-samples: must be 0 (off) or at least " +
+                     std::to_string(renderer::kMinMissedSamples) + ", got '" +
+                     std::to_string(settings.missed_samples) + "'");
+  }
+  rs.missed_samples = settings.missed_samples;
   return rs;
 }
 

@@ -39,7 +39,12 @@ struct Settings {
   // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
   double light_scale = scenes::kDefaultGltfLightScale;
   int camera = 0;  // a glTF file's perspective camera, in node order
+  // Draws per shading point of the missed-light estimate (renderer/missed_light.h); 0: off.
+  int missed_samples = 0;
 };
+
+// The draws of the missed-light estimate when an output asks for it and none were given.
+inline constexpr int kDefaultMissedSamples = 16;
 
 // A command-line or input mistake: reported as one line, exit code 2.
 struct UsageError : std::runtime_error {

@@ -61,6 +61,19 @@ struct RandomStream {
   float next_float() { return static_cast<float>(next_u64() >> 40) * 0x1.0p-24f; }
 };
 
+// A request for the missed light at one shading point (lev/missed_light.h), set in
+// SelectorScratch::missed by the renderer when asked: a method that leaves light out estimates
+// (rt's direct radiance - its own) from `samples` draws of what it left out, with shadow rays,
+// and the variance of that estimate; rt and the sampling methods, which leave nothing out on
+// average, leave `estimated` false.
+struct MissedLight {
+  int samples = 0;                 // K >= 2 draws
+  RandomStream* random = nullptr;  // its own stream: the method's image never depends on it
+  bool estimated = false;          // out
+  glm::vec3 radiance{0.0f};        // out: negative where a method's stand-in overshoots
+  glm::vec3 variance{0.0f};        // out: of that estimate
+};
+
 // A method's own per-thread buffers (AST's candidate heap), made by its selector
 // (LightSelector::make_scratch) the first time a thread shades with it and reused after.
 class MethodScratch {
@@ -78,6 +91,10 @@ struct SelectorScratch {
   WalkScratch walk;           // for methods that walk the hierarchy
   RandomStream random;
   std::unique_ptr<MethodScratch> method;  // from the selector's make_scratch (null: none)
+  // Set by the caller for one call when it wants the missed light estimated (null: not asked),
+  // and the estimate's buffers (lev/missed_light.h), made on first use.
+  MissedLight* missed = nullptr;
+  std::unique_ptr<MethodScratch> missed_scratch;
 };
 
 class LightSelector {

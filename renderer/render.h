@@ -47,10 +47,17 @@ struct RenderSettings {
   // the pixel centres, so only a sampling method's light draws differ between passes and its
   // passes converge to the one-pass rt image (the bench's converge experiment).
   bool jitter_pixels = true;
+  // > 0: estimate the missed light (lev/missed_light.h) with this many draws per shading point
+  // into Framebuffer::missed_sum (renderer/missed_light.h), in [kMinMissedSamples,
+  // lev::kMaxLightSamples]; 0: off, and the selectors do none of that work.
+  int missed_samples = 0;
 };
 
 // The settings the method's selector is made with.
 lev::MethodParams method_params(const RenderSettings& settings);
+
+// The fewest draws the missed-light estimate takes: two, for the spread behind its standard error.
+inline constexpr int kMinMissedSamples = 2;
 
 enum class TileStatus : std::uint8_t { waiting, rendering, done };
 

@@ -121,6 +121,12 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
 
   glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
   SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
+  lev::MissedLight missed;
+  if (context.missed_samples > 0) {
+    missed.samples = context.missed_samples;
+    missed.random = &context.missed_random;
+    context.scratch.missed = &missed;
+  }
   if (context.compute_error_bound) {
     // The direct term is weighed by path_weight in the pixel, so is what it may miss.
     glm::vec3 culled_irradiance(0.0f);
@@ -129,6 +135,11 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
     counters.error_bound += path_weight * shading_error_bound(material, culled_irradiance);
   } else {
     radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+  }
+  context.scratch.missed = nullptr;
+  if (missed.estimated) {
+    counters.missed += path_weight * missed.radiance;
+    counters.missed_variance += path_weight * path_weight * missed.variance;
   }
   // Suns are outside every method's selection: all methods add them alike, after the rest.
   for (const DirectionalLight& sun : context.scene.directional_lights) {

@@ -88,7 +88,8 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "pixel_error_max_pct,lights_tested_avg"},
       {"control",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
-       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels"},
+       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels,"
+       "bound_over_error"},
       {"converge",
        "scene,lights,method,tolerance,pass_cpu_s,passes_in_rt_over_100,"
        "pixel_error_avg_pct_at_rt_over_100,pixel_error_max_pct_at_rt_over_100,passes_in_rt_over_10,"
@@ -178,6 +179,11 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
     largest_error = std::max(largest_error, std::stod(cells[error_max]));
     if (cells[method] == "rt") {
       EXPECT_EQ(std::stod(cells[bound_max]), 0.0) << line;
+      EXPECT_EQ(cells[column("bound_over_error")], "-") << line;
+    } else if (std::stod(cells[column("pixel_error_avg_pct")]) > 0.0) {
+      // A ratio wherever the method erred (the bound may be infinite: lev_mc, light_tree).
+      const std::string ratio = cells[column("bound_over_error")];
+      EXPECT_TRUE(ratio == "inf" || std::stod(ratio) > 0.0) << line;
     }
   }
   // building, maze and the hall at two light counts.
