@@ -13,6 +13,7 @@
 #include "lev/light_hierarchy.h"
 #include "renderer/error_bound.h"
 #include "renderer/heatmap.h"
+#include "renderer/missed_light.h"
 #include "app/output_files.h"
 #include "renderer/pixel_error.h"
 #include "renderer/pixel_noise.h"
@@ -104,7 +105,10 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
           {"--stats", o.stats, ".json", "JSON"},
           {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"},
-          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"}};
+          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"},
+          {"--heatmap-error", o.heatmap_error, ".png", "PNG"},
+          {"--heatmap-missed", o.heatmap_missed, ".png", "PNG"},
+          {"--reference-out", o.reference_image, ".png", "PNG"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -170,6 +174,10 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
+  if (settings.missed_samples > 0) {
+    s.missed = renderer::missed_light_stats(result.framebuffer);
+    s.missed_samples = settings.missed_samples;
+  }
   if (reference) {
     const auto error =
         renderer::summarize_pixel_error(renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
@@ -180,10 +188,28 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings, co
   return s;
 }
 
+// The summary line (stdout, or stderr when standard output carries an output) and the line naming
+// every file written.
+void print_render_summary(const LoadedScene& loaded, const Settings& settings,
+                          const RenderOutputs& outputs, const renderer::RenderResult& result,
+                          const RenderStats& stats, const nlohmann::ordered_json& json);
+
 }  // namespace
 
-int run_render(const Settings& settings, const RenderOutputs& outputs) {
+int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
+  Settings settings = typed_settings;
+  if (!outputs.heatmap_missed.empty() && settings.missed_samples == 0) {
+    settings.missed_samples = kDefaultMissedSamples;
+  }
   render_settings_from(settings);  // validates the combination of settings before any work
+  if (!outputs.reference_rt) {
+    const std::string rt = lev::method_info(lev::reference_method()).name;
+    if (!outputs.heatmap_error.empty())
+      throw UsageError("--heatmap-error: needs --reference " + rt);
+    if (!outputs.reference_image.empty())
+      throw UsageError("--reference-out: needs --reference " + rt);
+    if (outputs.fail_above) throw UsageError("--fail-above: needs --reference " + rt);
+  }
   check_memory_budget(settings, outputs.reference_rt);
   check_output_paths(render_output_paths(outputs));
   const InterruptScope interrupt_scope;
@@ -222,21 +248,59 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
         renderer::heatmap_rgb8(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range);
     if (!outputs.heatmap_noise.empty()) app::write_png_rgb8(outputs.heatmap_noise, fb.width, fb.height, rgb);
   }
+  if (outputs.reference_rt) {
+    const std::vector<std::uint8_t> reference_rgb =
+        renderer::framebuffer_rgb8(reference.framebuffer);
+    const std::vector<std::uint8_t> error_rgb = renderer::heatmap_rgb8(
+        renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), reference_rgb),
+        stats.heatmap_error_range);
+    if (!outputs.heatmap_error.empty())
+      app::write_png_rgb8(outputs.heatmap_error, fb.width, fb.height, error_rgb);
+    if (!outputs.reference_image.empty()) {
+      app::write_png_rgb8(outputs.reference_image, fb.width, fb.height, reference_rgb);
+    }
+  }
+  if (stats.missed) {
+    const std::vector<std::uint8_t> rgb =
+        renderer::heatmap_rgb8(renderer::missed_pct_image(fb), stats.heatmap_missed_range);
+    if (!outputs.heatmap_missed.empty()) {
+      app::write_png_rgb8(outputs.heatmap_missed, fb.width, fb.height, rgb);
+    }
+  }
   const nlohmann::ordered_json json = render_stats_json(stats);
   if (!outputs.stats.empty()) app::write_text_file(outputs.stats, json.dump(2) + "\n");
 
-  if (outputs.quiet) return 0;
+  const std::optional<std::string> gate_failure =
+      outputs.fail_above && stats.error
+          ? accuracy_gate_failure(*outputs.fail_above,
+                                  {stats.error->average_pct, stats.error->max_pct})
+          : std::nullopt;
+  if (!outputs.quiet) print_render_summary(*loaded, settings, outputs, result, stats, json);
+  if (gate_failure) {
+    std::fprintf(stderr, "levrt: %s\n", gate_failure->c_str());
+    return kAccuracyGateExitCode;
+  }
+  return 0;
+}
+
+namespace {
+
+void print_render_summary(const LoadedScene& loaded, const Settings& settings,
+                          const RenderOutputs& outputs, const renderer::RenderResult& result,
+                          const RenderStats& stats, const nlohmann::ordered_json& json) {
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
   std::FILE* summary = stdout;
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
-  std::fprintf(summary, "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
-               "%.2f nodes visited/point",
-               scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
-               static_cast<unsigned long long>(loaded->scene.lights.light_count), lev::method_info(settings.method).name,
-               settings.tolerance, result.render_seconds, json["lights_tested_avg"].get<double>(),
-               json["nodes_visited_avg"].get<double>());
+  std::fprintf(
+      summary,
+      "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
+      "%.2f nodes visited/point",
+      scenes::escape_control_characters(loaded.scene.name).c_str(), loaded.scene.level,
+      static_cast<unsigned long long>(loaded.scene.lights.light_count),
+      lev::method_info(settings.method).name, settings.tolerance, result.render_seconds,
+      json["lights_tested_avg"].get<double>(), json["nodes_visited_avg"].get<double>());
   std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%", json["error_bound_avg_pct"].get<double>(),
                json["error_bound_max_pct"].get<double>());
   if (outputs.reference_rt) {
@@ -244,6 +308,10 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
                  json["pixel_error_max_pct"].get<double>());
   }
   if (stats.std_error_avg_pct) std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
+  if (stats.missed) {
+    std::fprintf(summary, ", missed estimate avg %.4f%% (std error %.4f%%) max %.4f%%",
+                 stats.missed->average_pct, stats.missed->std_error_avg_pct, stats.missed->max_pct);
+  }
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {
@@ -254,7 +322,8 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     }
   }
   if (!written.empty()) std::fprintf(stderr, "wrote %s\n", written.c_str());
-  return 0;
 }
+
+}  // namespace
 
 }  // namespace app

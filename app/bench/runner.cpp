@@ -216,8 +216,10 @@ double BenchRun::predicted_seconds(const MeasureRequest& r) {
 }
 
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
-  // A method that ignores the tolerance (rt) is measured once for every tolerance.
-  const double tolerance = lev::method_info(r.method).uses_tolerance ? r.tolerance : 0.0;
+  // A method that ignores the tolerance (rt) is measured once for every tolerance; one that
+  // sweeps its relative error instead (lightcuts) takes the sweep's value there.
+  const lev::MethodInfo& info = lev::method_info(r.method);
+  const double tolerance = info.uses_tolerance || info.uses_relative_error ? r.tolerance : 0.0;
   return {r.scene, r.level, r.method, tolerance, r.stride, r.error_bound};
 }
 
@@ -226,7 +228,12 @@ renderer::RenderSettings BenchRun::render_settings_for(const MeasureRequest& r) 
   s.scene = r.scene;
   s.level = r.level;
   s.method = r.method;
-  s.tolerance = r.tolerance;
+  // The sweep's value goes to the setting the method is swept over (lev/methods.h).
+  if (lev::swept_setting(lev::method_info(r.method)) == &lev::MethodParams::relative_error) {
+    s.relative_error = r.tolerance;
+  } else {
+    s.tolerance = r.tolerance;
+  }
   s.width = config_.width;
   s.height = config_.height;
   s.threads = threads_;

@@ -55,8 +55,8 @@ struct ViewKey {
 constexpr int kFinestPreviewStep = 2;
 constexpr int kCoarsePreviewStep = 8;
 constexpr int kMaxPreviewStep = 128;
-constexpr long long kCoarsestPreviewSamples =
-    (renderer::kDefaultImageWidth / kCoarsePreviewStep) * (renderer::kDefaultImageHeight / kCoarsePreviewStep);
+constexpr long long kCoarsestPreviewSamples = (renderer::kDefaultImageWidth / kCoarsePreviewStep) *
+                                              (renderer::kDefaultImageHeight / kCoarsePreviewStep);
 
 std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
   const auto samples_at = [&](int step) {
@@ -224,8 +224,11 @@ struct Worker {
     // Only a sampling method draws light_samples lights per point.
     const bool light_samples_matter =
         rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
+    const bool relative_error_matters = rs.relative_error != main_settings.relative_error &&
+                                        lev::method_info(rs.method).uses_relative_error;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              tolerance_matters || light_samples_matter || rs.threads != main_settings.threads;
+                              tolerance_matters || light_samples_matter || relative_error_matters ||
+                              rs.threads != main_settings.threads;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing

@@ -58,12 +58,14 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "scene,lights,rt_cpu_s,rt_wall_s,rt_pixels,ast_cpu_s,ast_wall_s,ast_pixels,lev_cpu_s,"
        "lev_wall_s,lev_pixels,lev_bounded_cpu_s,lev_bounded_wall_s,lev_bounded_pixels,"
        "lev_est_cpu_s,lev_est_wall_s,lev_est_pixels,lev_mc_cpu_s,lev_mc_wall_s,lev_mc_pixels,"
-       "light_tree_cpu_s,light_tree_wall_s,light_tree_pixels,ast_over_rt_pct,lev_over_rt_pct,"
-       "lev_bounded_over_rt_pct,lev_est_over_rt_pct,lev_mc_over_rt_pct,light_tree_over_rt_pct,"
+       "light_tree_cpu_s,light_tree_wall_s,light_tree_pixels,lightcuts_cpu_s,lightcuts_wall_s,"
+       "lightcuts_pixels,ast_over_rt_pct,lev_over_rt_pct,lev_bounded_over_rt_pct,"
+       "lev_est_over_rt_pct,lev_mc_over_rt_pct,light_tree_over_rt_pct,lightcuts_over_rt_pct,"
        "rt_over_lev,ast_over_lev,lev_bounded_over_lev,lev_est_over_lev,lev_mc_over_lev,"
-       "light_tree_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,"
-       "ast_tests_per_point,lev_tests_per_point,lev_bounded_tests_per_point,"
-       "lev_est_tests_per_point,lev_mc_tests_per_point,light_tree_tests_per_point"},
+       "light_tree_over_lev,lightcuts_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,"
+       "rt_tests_per_point,ast_tests_per_point,lev_tests_per_point,"
+       "lev_bounded_tests_per_point,lev_est_tests_per_point,lev_mc_tests_per_point,"
+       "light_tree_tests_per_point,lightcuts_tests_per_point"},
       {"memory",
        "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
        "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"
@@ -86,7 +88,8 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "pixel_error_max_pct,lights_tested_avg"},
       {"control",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
-       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels"},
+       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels,"
+       "bound_over_error"},
       {"converge",
        "scene,lights,method,tolerance,pass_cpu_s,passes_in_rt_over_100,"
        "pixel_error_avg_pct_at_rt_over_100,pixel_error_max_pct_at_rt_over_100,passes_in_rt_over_10,"
@@ -182,6 +185,11 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
     largest_error = std::max(largest_error, std::stod(cells[error_max]));
     if (cells[method] == "rt") {
       EXPECT_EQ(std::stod(cells[bound_max]), 0.0) << line;
+      EXPECT_EQ(cells[column("bound_over_error")], "-") << line;
+    } else if (std::stod(cells[column("pixel_error_avg_pct")]) > 0.0) {
+      // A ratio wherever the method erred (the bound may be infinite: lev_mc, light_tree).
+      const std::string ratio = cells[column("bound_over_error")];
+      EXPECT_TRUE(ratio == "inf" || std::stod(ratio) > 0.0) << line;
     }
   }
   // building, maze and the hall at two light counts.
