@@ -2,15 +2,16 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
-#include <sstream>
-#include <variant>
 #include <filesystem>
+#include <limits>
 #include <map>
+#include <sstream>
 #include <string>
+#include <variant>
 
 #include <CLI/CLI.hpp>
 
+#include "app/accuracy_gate.h"
 #include "app/bench/bench.h"
 #include "app/export_command.h"
 #include "app/render_command.h"
@@ -45,7 +46,8 @@ std::string setting_type_name(const SettingSpec& spec) {
   const auto& c = std::get<Choice>(spec.kind);
   std::string valid;
   for (const std::string& o : c.options()) valid += (valid.empty() ? "" : "|") + o;
-  return "{" + valid + "}" + (c.also_accepts_label ? std::string(" or ") + c.also_accepts_label : "");
+  return "{" + valid + "}" +
+         (c.also_accepts_label ? std::string(" or ") + c.also_accepts_label : "");
 }
 
 // The help line of a setting; a choice whose options carry summaries (the method table) lists them.
@@ -60,9 +62,11 @@ std::string setting_help(const SettingSpec& spec) {
 // defaults: what the command uses for a flag not given (the viewer renders more passes).
 void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& defaults) {
   for (const SettingSpec& spec : setting_table()) {
-    flags.options[spec.name] = command.add_option(std::string("--") + spec.name, flags.text[spec.name], setting_help(spec))
-                                   ->type_name(setting_type_name(spec))
-                                   ->default_str(setting_text(defaults, spec));
+    flags.options[spec.name] =
+        command
+            .add_option(std::string("--") + spec.name, flags.text[spec.name], setting_help(spec))
+            ->type_name(setting_type_name(spec))
+            ->default_str(setting_text(defaults, spec));
   }
 }
 
@@ -77,11 +81,12 @@ void check_subcommand_name(const CLI::App& cli, int argc, char** argv) {
   throw UsageError("unknown command '" + std::string(argv[1]) + "'; the commands are " + names);
 }
 
-Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults, CLI::Option* lights_option,
-                             const std::string& lights_text) {
+Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults,
+                             CLI::Option* lights_option, const std::string& lights_text) {
   Settings settings = defaults;
   for (const SettingSpec& spec : setting_table()) {
-    if (flags.options.at(spec.name)->count() > 0) set_setting(settings, spec, flags.text.at(spec.name));
+    if (flags.options.at(spec.name)->count() > 0)
+      set_setting(settings, spec, flags.text.at(spec.name));
   }
   // A typed size is what the user wants to see, in the viewer too.
   const bool size_typed =
@@ -90,8 +95,15 @@ Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults
   if (flags.options.at("level")->count() > 0 && is_scene_file(settings)) {
     throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
   }
+  if (flags.options.at("relative-error")->count() > 0 &&
+      !lev::method_info(settings.method).uses_relative_error) {
+    throw UsageError("--relative-error: method " +
+                     std::string(lev::method_info(settings.method).name) + " ignores it, got '" +
+                     flags.text.at("relative-error") + "'");
+  }
   if (lights_option->count() > 0) {
-    if (flags.options.at("level")->count() > 0) throw UsageError("--lights: give --level or --lights, not both");
+    if (flags.options.at("level")->count() > 0)
+      throw UsageError("--lights: give --level or --lights, not both");
     apply_light_count_flag(settings, lights_text);
   }
   return settings;
@@ -117,50 +129,87 @@ int run_cli(int argc, char** argv) {
   CLI::App cli{"levrt: ray tracing scenes with many lights through Light Extent Volumes"};
   cli.require_subcommand(0, 1);
 
-  CLI::App* render = cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
+  CLI::App* render =
+      cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
   SettingFlags render_flags;
   add_setting_flags(*render, render_flags, Settings{});
   std::string lights_text;
   CLI::Option* lights_option =
-      render->add_option("--lights", lights_text, "light count (selects the level with that many lights)")
+      render
+          ->add_option("--lights", lights_text,
+                       "light count (selects the level with that many lights)")
           ->type_name("COUNT");
   RenderOutputs outputs;
   const std::vector<CLI::Option*> output_options = {
-      render->add_option("--out", outputs.image, "image PNG (- for standard output)")->type_name("FILE.png"),
-      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")->type_name("FILE.png"),
-      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")->type_name("FILE.png"),
-      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
-      render->add_option("--heatmap-bound", outputs.heatmap_bound, "certified error bound heatmap PNG (percent)")
+      render->add_option("--out", outputs.image, "image PNG (- for standard output)")
           ->type_name("FILE.png"),
-      render->add_option("--heatmap-noise", outputs.heatmap_noise,
-                         "estimated standard error per pixel (noise across passes) heatmap PNG")
+      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")
+          ->type_name("FILE.png"),
+      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")
+          ->type_name("FILE.png"),
+      render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
+      render
+          ->add_option("--heatmap-bound", outputs.heatmap_bound,
+                       "certified error bound heatmap PNG (percent)")
+          ->type_name("FILE.png"),
+      render
+          ->add_option("--heatmap-noise", outputs.heatmap_noise,
+                       "estimated standard error per pixel (noise across passes) heatmap PNG")
+          ->type_name("FILE.png"),
+      render
+          ->add_option(
+              "--heatmap-error", outputs.heatmap_error,
+              "per-pixel error against the reference heatmap PNG (percent; needs --reference)")
+          ->type_name("FILE.png"),
+      render
+          ->add_option("--heatmap-missed", outputs.heatmap_missed,
+                       "missed-light estimate per pixel heatmap PNG (percent; turns the estimate "
+                       "on)")
+          ->type_name("FILE.png"),
+      render
+          ->add_option("--reference-out", outputs.reference_image,
+                       "the reference's image PNG (needs --reference)")
           ->type_name("FILE.png")};
+  std::string fail_above;
+  CLI::Option* fail_above_option =
+      render
+          ->add_option("--fail-above", fail_above,
+                       "exit 3 when the pixel error against the reference exceeds either limit "
+                       "(percent; needs "
+                       "--reference)")
+          ->type_name("avg=A,max=M");
   render->add_flag("--quiet", outputs.quiet, "no progress, summary or 'wrote' line");
   std::string reference;
   const std::string reference_name = lev::method_info(lev::reference_method()).name;
   CLI::Option* reference_option =
       render
-          ->add_option("--reference", reference,
-                       "also render this method's image and report pixel errors (" + reference_name + ")")
+          ->add_option(
+              "--reference", reference,
+              "also render this method's image and report pixel errors (" + reference_name + ")")
           ->type_name("{" + reference_name + "}");
 
-  CLI::App* export_command = cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
+  CLI::App* export_command =
+      cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
   ExportFlags export_flags;
   add_export_flags(*export_command, export_flags);
 
-  CLI::App* bench = cli.add_subcommand("bench", "the thesis' experiments: results.md, CSVs and plots");
+  CLI::App* bench =
+      cli.add_subcommand("bench", "the thesis' experiments: results.md, CSVs and plots");
   BenchFlags bench_flags;
   add_bench_flags(*bench, bench_flags);
 
-  CLI::App* snapshot = cli.add_subcommand("snapshot", "the default job headless: building snapshot into out/");
+  CLI::App* snapshot =
+      cli.add_subcommand("snapshot", "the default job headless: building snapshot into out/");
 
-  CLI::App* view = cli.add_subcommand("view", "the interactive viewer (the default when a display is available)");
+  CLI::App* view = cli.add_subcommand(
+      "view", "the interactive viewer (the default when a display is available)");
   SettingFlags view_flags;
   const Settings view_defaults = viewer_default_settings();
   add_setting_flags(*view, view_flags, view_defaults);
   std::string view_lights_text;
   CLI::Option* view_lights_option =
-      view->add_option("--lights", view_lights_text, "light count (selects the level with that many lights)")
+      view->add_option("--lights", view_lights_text,
+                       "light count (selects the level with that many lights)")
           ->type_name("COUNT");
   viewer::ViewFlags view_options;
   add_view_flags(*view, view_options);
@@ -177,7 +226,8 @@ int run_cli(int argc, char** argv) {
   }
 
   if (render->parsed()) {
-    const Settings settings = apply_setting_flags(render_flags, Settings{}, lights_option, lights_text);
+    const Settings settings =
+        apply_setting_flags(render_flags, Settings{}, lights_option, lights_text);
     for (const CLI::Option* option : output_options) {
       if (option->count() > 0 && option->as<std::string>().empty()) {
         throw UsageError(option->get_name() + ": needs a file name, got ''");
@@ -189,13 +239,15 @@ int run_cli(int argc, char** argv) {
       }
       outputs.reference_rt = true;
     }
+    if (fail_above_option->count() > 0) outputs.fail_above = parse_accuracy_gate(fail_above);
     return run_render(settings, outputs);
   }
   if (export_command->parsed()) return run_export(export_flags);
   if (bench->parsed()) return run_bench(bench_flags);
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
-    const Settings settings = apply_setting_flags(view_flags, view_defaults, view_lights_option, view_lights_text);
+    const Settings settings =
+        apply_setting_flags(view_flags, view_defaults, view_lights_option, view_lights_text);
     return run_view(settings, view_options);
   }
   if (viewer_display_available()) {
@@ -205,8 +257,10 @@ int run_cli(int argc, char** argv) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }
   }
-  std::fprintf(stderr, "levrt: no display to open a window on; writing the headless snapshot into %s instead\n",
-               (std::filesystem::current_path() / "out").string().c_str());
+  std::fprintf(
+      stderr,
+      "levrt: no display to open a window on; writing the headless snapshot into %s instead\n",
+      (std::filesystem::current_path() / "out").string().c_str());
   return run_snapshot();
 }
 

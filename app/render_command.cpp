@@ -14,6 +14,7 @@
 #include "lev/light_hierarchy.h"
 #include "renderer/error_bound.h"
 #include "renderer/heatmap.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
 #include "renderer/pixel_noise.h"
 #include "scenes/scene_file.h"
@@ -42,7 +43,10 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
           {"--stats", o.stats, ".json", "JSON"},
           {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"},
-          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"}};
+          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"},
+          {"--heatmap-error", o.heatmap_error, ".png", "PNG"},
+          {"--heatmap-missed", o.heatmap_missed, ".png", "PNG"},
+          {"--reference-out", o.reference_image, ".png", "PNG"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -112,6 +116,10 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
+  if (settings.missed_samples > 0) {
+    s.missed = renderer::missed_light_stats(result.framebuffer);
+    s.missed_samples = settings.missed_samples;
+  }
   if (reference) {
     const auto error = renderer::summarize_pixel_error(
         renderer::pixel_error_pct(result.rendered_rgb, reference->rendered_rgb));
@@ -122,10 +130,28 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   return s;
 }
 
+// The summary line (stdout, or stderr when standard output carries an output) and the line naming
+// every file written.
+void print_render_summary(const LoadedScene& loaded, const Settings& settings,
+                          const RenderOutputs& outputs, const renderer::RenderResult& result,
+                          const RenderStats& stats, const nlohmann::ordered_json& json);
+
 }  // namespace
 
-int run_render(const Settings& settings, const RenderOutputs& outputs) {
+int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
+  Settings settings = typed_settings;
+  if (!outputs.heatmap_missed.empty() && settings.missed_samples == 0) {
+    settings.missed_samples = kDefaultMissedSamples;
+  }
   render_settings_from(settings);  // validates the combination of settings before any work
+  if (!outputs.reference_rt) {
+    const std::string rt = lev::method_info(lev::reference_method()).name;
+    if (!outputs.heatmap_error.empty())
+      throw UsageError("--heatmap-error: needs --reference " + rt);
+    if (!outputs.reference_image.empty())
+      throw UsageError("--reference-out: needs --reference " + rt);
+    if (outputs.fail_above) throw UsageError("--fail-above: needs --reference " + rt);
+  }
   check_memory_budget(settings, outputs.reference_rt);
   check_output_paths(render_output_paths(outputs), scenes::scene_input_files(settings.scene));
   const InterruptScope interrupt_scope;
@@ -170,6 +196,17 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
       renderer::error_bound_pct_image(fb), stats.heatmap_bound_range, outputs.heatmap_bound);
   const std::vector<std::uint8_t> noise_rgb =
       heatmap(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range, outputs.heatmap_noise);
+  std::vector<std::uint8_t> reference_rgb;
+  std::vector<std::uint8_t> error_rgb;
+  if (outputs.reference_rt) {
+    reference_rgb = renderer::framebuffer_rgb8(reference.framebuffer);
+    error_rgb = heatmap(renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), reference_rgb),
+                        stats.heatmap_error_range, outputs.heatmap_error);
+  }
+  const std::vector<std::uint8_t> missed_rgb =
+      stats.missed ? heatmap(renderer::missed_pct_image(fb), stats.heatmap_missed_range,
+                             outputs.heatmap_missed)
+                   : std::vector<std::uint8_t>{};
   const nlohmann::ordered_json json = render_stats_json(stats);
   std::vector<OutputFile> files;
   const auto add = [&files](const std::string& path, std::function<std::string()> bytes) {
@@ -184,10 +221,30 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   add(outputs.heatmap_nodes, png_of(nodes_rgb));
   add(outputs.heatmap_bound, png_of(bound_rgb));
   add(outputs.heatmap_noise, png_of(noise_rgb));
+  add(outputs.heatmap_error, png_of(error_rgb));
+  add(outputs.heatmap_missed, png_of(missed_rgb));
+  add(outputs.reference_image, png_of(reference_rgb));
   add(outputs.stats, [&json] { return json.dump(2) + "\n"; });
   write_output_files(files);
 
-  if (outputs.quiet) return 0;
+  const std::optional<std::string> gate_failure =
+      outputs.fail_above && stats.error
+          ? accuracy_gate_failure(*outputs.fail_above,
+                                  {stats.error->average_pct, stats.error->max_pct})
+          : std::nullopt;
+  if (!outputs.quiet) print_render_summary(*loaded, settings, outputs, result, stats, json);
+  if (gate_failure) {
+    std::fprintf(stderr, "levrt: %s\n", gate_failure->c_str());
+    return kAccuracyGateExitCode;
+  }
+  return 0;
+}
+
+namespace {
+
+void print_render_summary(const LoadedScene& loaded, const Settings& settings,
+                          const RenderOutputs& outputs, const renderer::RenderResult& result,
+                          const RenderStats& stats, const nlohmann::ordered_json& json) {
   // Standard output may carry an output file ("-"): the summary then goes to stderr.
   std::FILE* summary = stdout;
   for (const OutputPath& output : render_output_paths(outputs)) {
@@ -197,8 +254,8 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
       summary,
       "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
       "%.2f nodes visited/point",
-      scenes::escape_control_characters(loaded->scene.name).c_str(), loaded->scene.level,
-      static_cast<unsigned long long>(loaded->scene.lights.light_count),
+      scenes::escape_control_characters(loaded.scene.name).c_str(), loaded.scene.level,
+      static_cast<unsigned long long>(loaded.scene.lights.light_count),
       lev::method_info(settings.method).name, settings.tolerance, result.render_seconds,
       json["lights_tested_avg"].get<double>(), json["nodes_visited_avg"].get<double>());
   std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%",
@@ -211,6 +268,10 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
   }
   if (stats.std_error_avg_pct)
     std::fprintf(summary, ", std error avg %.4f%%", *stats.std_error_avg_pct);
+  if (stats.missed) {
+    std::fprintf(summary, ", missed estimate avg %.4f%% (std error %.4f%%) max %.4f%%",
+                 stats.missed->average_pct, stats.missed->std_error_avg_pct, stats.missed->max_pct);
+  }
   std::fprintf(summary, "\n");
   std::string written;
   for (const OutputPath& output : render_output_paths(outputs)) {
@@ -222,7 +283,8 @@ int run_render(const Settings& settings, const RenderOutputs& outputs) {
     }
   }
   if (!written.empty()) std::fprintf(stderr, "wrote %s\n", written.c_str());
-  return 0;
 }
+
+}  // namespace
 
 }  // namespace app

@@ -4,9 +4,11 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/accuracy_gate.h"
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "app/settings.h"
@@ -21,6 +23,14 @@ struct RenderOutputs {
   std::string heatmap_bound;   // PNG: the certified error bound per pixel (renderer/error_bound.h)
   std::string stats;           // JSON
   std::string heatmap_noise;   // PNG: the estimated standard error per pixel (pixel_noise.h)
+  // With reference_rt only: the per-pixel error against the reference (pixel_error.h) as a
+  // heatmap PNG, the reference's own image PNG, and the accuracy gate (exit 3 above it).
+  // The missed-light estimate per pixel (renderer/missed_light.h) as a heatmap PNG; turns the
+  // estimate on (kDefaultMissedSamples draws unless --missed-samples says).
+  std::string heatmap_missed;
+  std::string heatmap_error;
+  std::string reference_image;
+  std::optional<AccuracyGate> fail_above;
   bool reference_rt = false;
   bool quiet = false;  // no progress, no summary, no "wrote" line
 };

@@ -14,6 +14,7 @@
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/heatmap.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
 
 namespace app {
@@ -56,10 +57,16 @@ struct RenderStats {
   int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
   renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
   renderer::HeatmapRange heatmap_bound_range;  // percent, the error scale
+  renderer::HeatmapRange heatmap_error_range;  // percent: the error against the reference
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), from two
   // passes on (null in the JSON before), and the range of its heatmap.
   std::optional<double> std_error_avg_pct;
   renderer::HeatmapRange heatmap_noise_range;
+  // The missed-light estimate (renderer/missed_light.h), when asked for, its draws per shading
+  // point and its heatmap's range.
+  std::optional<renderer::MissedLightStats> missed;
+  int missed_samples = 0;
+  renderer::HeatmapRange heatmap_missed_range;
 };
 
 // The thread count a setting of 0 (all cores) stands for.

@@ -17,7 +17,9 @@ std::vector<std::string> method_options() {
   return names;
 }
 
-std::vector<std::string> resolution_options() { return {"fit", "fit/2", "fit/4", "typed"}; }
+std::vector<std::string> resolution_options() {
+  return {"fit", "fit/2", "fit/4", "typed"};
+}
 
 int fit_divisor(const std::string& resolution) {
   if (resolution == "fit") return 1;
@@ -28,9 +30,13 @@ int fit_divisor(const std::string& resolution) {
 
 namespace {
 
-bool is_scene_file_setting(const std::string& text) { return scenes::is_scene_file_name(text); }
+bool is_scene_file_setting(const std::string& text) {
+  return scenes::is_scene_file_name(text);
+}
 
-const lev::MethodInfo& method_option(const std::string& option) { return lev::method_info(*lev::parse_method(option)); }
+const lev::MethodInfo& method_option(const std::string& option) {
+  return lev::method_info(*lev::parse_method(option));
+}
 
 }  // namespace
 
@@ -43,13 +49,15 @@ std::vector<std::string> scene_options() {
 const std::vector<SettingSpec>& setting_table() {
   static const std::vector<SettingSpec> table = {
       {"scene", "Scene", "scene model, or a scene file FILE.json (scenes/README.md), .gltf or .glb",
-       Choice{[](const Settings& s) { return s.scene; }, [](Settings& s, const std::string& v) { s.scene = v; },
-              scene_options, nullptr, nullptr, is_scene_file_setting, "a .json/.gltf/.glb scene file"}},
-      {"level", "Level", "scene model level (light count grows with it)", IntRange{&Settings::level, 1, 10}},
+       Choice{[](const Settings& s) { return s.scene; },
+              [](Settings& s, const std::string& v) { s.scene = v; }, scene_options, nullptr,
+              nullptr, is_scene_file_setting, "a .json/.gltf/.glb scene file"}},
+      {"level", "Level", "scene model level (light count grows with it)",
+       IntRange{&Settings::level, 1, 10}},
       {"method", "Method", "many-light method",
        Choice{[](const Settings& s) { return std::string(lev::method_info(s.method).name); },
-              [](Settings& s, const std::string& v) { s.method = *lev::parse_method(v); }, method_options,
-              [](const std::string& o) { return method_option(o).label; },
+              [](Settings& s, const std::string& v) { s.method = *lev::parse_method(v); },
+              method_options, [](const std::string& o) { return method_option(o).label; },
               [](const std::string& o) { return method_option(o).summary; }}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
        RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0}},
@@ -64,6 +72,10 @@ const std::vector<SettingSpec>& setting_table() {
       {"samples", "Light samples",
        "lights lev_mc and light_tree draw per shading point and pass (each one shadow ray)",
        IntRange{&Settings::samples, 1, lev::kMaxLightSamples}},
+      {"relative-error", "Relative error",
+       "lightcuts: refine the cut until every cluster's error bound is below this share of the "
+       "point's estimated radiance (0 = exact)",
+       RealRange{&Settings::relative_error, 0.0, 1.0, true, 1e-4, 1.0}},
       {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
       {"threads", "Threads", "worker threads (0 = all cores)",
        IntRange{&Settings::threads, 0, 1024}},
@@ -79,6 +91,11 @@ const std::vector<SettingSpec>& setting_table() {
        "view "
        "framing the scene when there is none)",
        IntRange{&Settings::camera, 0, 1000000}},
+      {"missed-samples", "Missed light",
+       "draws per shading point of the light a method left out, each with a shadow ray: the "
+       "missed-light estimate and its standard error (0: off; --heatmap-missed turns it on with "
+       "16; at least 2)",
+       IntRange{&Settings::missed_samples, 0, lev::kMaxLightSamples}},
   };
   return table;
 }
@@ -92,7 +109,8 @@ const SettingSpec* find_setting(const std::string& name) {
 
 namespace {
 
-[[noreturn]] void reject(const SettingSpec& spec, const std::string& what, const std::string& text) {
+[[noreturn]] void reject(const SettingSpec& spec, const std::string& what,
+                         const std::string& text) {
   throw UsageError(std::string("--") + spec.name + ": " + what + ", got '" + text + "'");
 }
 
@@ -100,7 +118,8 @@ namespace {
 
 void set_setting(Settings& settings, const SettingSpec& spec, const std::string& text) {
   if (const auto* r = std::get_if<IntRange>(&spec.kind)) {
-    const std::string what = "must be an integer in [" + std::to_string(r->min) + ", " + std::to_string(r->max) + "]";
+    const std::string what =
+        "must be an integer in [" + std::to_string(r->min) + ", " + std::to_string(r->max) + "]";
     if (text.empty()) reject(spec, what, text);
     char* end = nullptr;
     errno = 0;
@@ -139,7 +158,8 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
 }
 
 std::string setting_text(const Settings& settings, const SettingSpec& spec) {
-  if (const auto* r = std::get_if<IntRange>(&spec.kind)) return std::to_string(settings.*(r->field));
+  if (const auto* r = std::get_if<IntRange>(&spec.kind))
+    return std::to_string(settings.*(r->field));
   if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
     std::ostringstream s;
     s << settings.*(d->field);
@@ -156,8 +176,9 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   // Each pixel costs about 50 bytes of framebuffer; cap the image well below the machine's memory.
   constexpr long long kMaxPixels = 8192LL * 8192LL;
   if (static_cast<long long>(settings.width) * settings.height > kMaxPixels) {
-    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                     " exceeds the " + std::to_string(kMaxPixels) + "-pixel limit");
+    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height) + " exceeds the " +
+                     std::to_string(kMaxPixels) + "-pixel limit");
   }
   renderer::RenderSettings rs;
   rs.width = settings.width;
@@ -170,6 +191,13 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   // +inf (everything culled): both are the limits the user asked for.
   rs.tolerance = static_cast<float>(settings.tolerance);
   rs.light_samples = settings.samples;
+  rs.relative_error = static_cast<float>(settings.relative_error);
+  if (settings.missed_samples != 0 && settings.missed_samples < renderer::kMinMissedSamples) {
+    throw UsageError("--missed-samples: must be 0 (off) or at least " +
+                     std::to_string(renderer::kMinMissedSamples) + ", got '" +
+                     std::to_string(settings.missed_samples) + "'");
+  }
+  rs.missed_samples = settings.missed_samples;
   return rs;
 }
 

@@ -29,15 +29,22 @@ struct Settings {
   std::string resolution = "fit";
   int width = renderer::kDefaultImageWidth;
   int height = renderer::kDefaultImageHeight;
-  int spp = 1;                  // passes (one sample per pixel each)
-  int samples = 1;              // lights lev_mc and light_tree draw per shading point and pass
-  int depth = 5;                // reflection/refraction depth
-  int threads = 0;              // 0 = all cores
-  int subsample = 1;            // render every n-th pixel in x and y (for slow references)
+  int spp = 1;      // passes (one sample per pixel each)
+  int samples = 1;  // lights lev_mc and light_tree draw per shading point and pass
+  double relative_error =
+      lev::kDefaultRelativeError;  // lightcuts: a cluster's bound / the point's total
+  int depth = 5;                   // reflection/refraction depth
+  int threads = 0;                 // 0 = all cores
+  int subsample = 1;               // render every n-th pixel in x and y (for slow references)
   // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
   double light_scale = scenes::kDefaultGltfLightScale;
   int camera = 0;  // a glTF file's perspective camera, in node order
+  // Draws per shading point of the missed-light estimate (renderer/missed_light.h); 0: off.
+  int missed_samples = 0;
 };
+
+// The draws of the missed-light estimate when an output asks for it and none were given.
+inline constexpr int kDefaultMissedSamples = 16;
 
 // A command-line or input mistake: reported as one line, exit code 2.
 struct UsageError : std::runtime_error {
@@ -59,7 +66,7 @@ struct RealRange {
 struct Choice {
   std::string (*get)(const Settings& settings);
   void (*set)(Settings& settings, const std::string& option);  // an option, or a value also_accepts
-  std::vector<std::string> (*options)();  // valid values
+  std::vector<std::string> (*options)();                       // valid values
   // What an option is, for the CLI help and the viewer's tooltip (null: the options say it).
   const char* (*option_label)(const std::string& option) = nullptr;
   const char* (*option_summary)(const std::string& option) = nullptr;

@@ -57,7 +57,8 @@ struct FittedNodes {
 // What the walk does with what it culls: drop it, also sum its irradiance bound, cull only
 // while that sum stays within the tolerance (find_lights_within_budget), also cut it into
 // clusters for an estimate (find_lights_and_clusters), or keep it (CulledParts, for sampling).
-enum class Culled { dropped, summed, budgeted, clustered, collected };
+// `tight` is summed with each culled subtree's bound tightened (tightened_irradiance_bound).
+enum class Culled { dropped, summed, tight, budgeted, clustered, collected };
 
 // What has been culled so far at this point: the summed bound and, when clustered, the cut;
 // when collected, the culled parts themselves.
@@ -67,6 +68,9 @@ struct CulledSoFar {
   ClusterCut cut;
   std::vector<Light>* clusters = nullptr;  // representatives
   CulledParts* parts = nullptr;
+  // When tight: the unions the point may still open, and their scratch.
+  int openings_left = 0;
+  std::vector<BoundPart>* bound_parts = nullptr;
 };
 
 // The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
@@ -208,8 +212,13 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
                                       walk_frame_point(local_point, point_magnitude, translation, linear.scale)});
     return true;
   }
-  const glm::dvec3 b(
-      irradiance_bound(h, node, walk_frame_point(local_point, point_magnitude, translation, linear.scale)));
+  const FramePoint x = walk_frame_point(local_point, point_magnitude, translation, linear.scale);
+  if constexpr (kCulled == Culled::tight) {
+    culled.sum += tightened_irradiance_bound(h, node, x, tolerance, culled.openings_left,
+                                             *culled.bound_parts);
+    return true;
+  }
+  const glm::dvec3 b(irradiance_bound(h, node, x));
   if (kCulled == Culled::budgeted && !fits_budget(culled.sum, b, tolerance)) return false;
   if constexpr (kCulled == Culled::clustered) {
     const float brightest_bound = brightest(b);
@@ -405,6 +414,72 @@ void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes&
   } else {
     walk<true, Culled::dropped>(hierarchy, nodes, tolerance, point, scratch, important_lights, counters, nullptr);
   }
+}
+
+void find_important_lights_tight_bound(const LightHierarchy& hierarchy,
+                                       const ExtentVolumes& volumes, float tolerance,
+                                       const glm::vec3& point, WalkScratch& scratch,
+                                       std::vector<Light>& important_lights, WalkCounters& counters,
+                                       glm::vec3* culled_irradiance_bound) {
+  if (!culled_irradiance_bound) {
+    find_important_lights(hierarchy, volumes, tolerance, point, scratch, important_lights,
+                          counters);
+    return;
+  }
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  CulledSoFar culled;
+  culled.openings_left = kBoundOpeningsPerPoint;
+  culled.bound_parts = &scratch.bound_parts;
+  walk<true, Culled::tight>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch,
+                            important_lights, counters, culled_irradiance_bound, culled);
+}
+
+glm::dvec3 tightened_irradiance_bound(const LightHierarchy& h, std::uint32_t node,
+                                      const FramePoint& x, float refine_above, int& openings_left,
+                                      std::vector<BoundPart>& parts) {
+  const glm::dvec3 whole(irradiance_bound(h, node, x));
+  if (brightest(whole) <= refine_above || openings_left <= 0) return whole;
+  glm::dvec3 sum(0.0);
+  parts.clear();
+  parts.push_back({node, x});
+  while (!parts.empty()) {
+    BoundPart part = parts.back();
+    parts.pop_back();
+    const glm::vec3 b = irradiance_bound(h, part.node, part.point);
+    // NaN-safe: only a bound known to be small enough is kept whole.
+    if (brightest(b) <= refine_above || openings_left <= 0) {
+      sum += glm::dvec3(b);
+      continue;
+    }
+    // Down to the next light or union, moving the point as irradiance_bound does.
+    for (;;) {
+      const HierarchyNode& n = h.nodes[part.node];
+      if (n.kind == NodeKind::affine) {
+        const Similarity& xf = h.transforms[n.payload];
+        part.point = (n.flags & kTranslationOnly) != 0
+                         ? to_translated_frame(part.point, xf.translation)
+                         : to_node_frame(part.point, xf);
+        part.node += 1;
+      } else if (n.kind == NodeKind::extent_volume || n.kind == NodeKind::master) {
+        part.node += 1;
+      } else if (n.kind == NodeKind::instance) {
+        part.node = n.payload;
+      } else {
+        break;
+      }
+    }
+    const HierarchyNode& n = h.nodes[part.node];
+    if (n.kind != NodeKind::set_union) {  // a light: its own bound is b
+      sum += glm::dvec3(b);
+      continue;
+    }
+    --openings_left;
+    const std::uint32_t* children = &h.union_children[n.payload];
+    for (std::uint32_t k = 1; k <= children[0]; ++k) parts.push_back({children[k], part.point});
+  }
+  // The parts' bounds need not sum below the whole's (each bounds its own cone and box).
+  return glm::min(sum, whole);
 }
 
 void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,

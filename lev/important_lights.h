@@ -39,10 +39,18 @@ struct WalkFrame {
   bool volume_tested = false;    // the subtree's box was tested by its parent (skip one test)
 };
 
+// A part of a culled subtree whose bound is being tightened (tightened_irradiance_bound): its
+// node and the query point in the frame the node is entered with.
+struct BoundPart {
+  std::uint32_t node = 0;
+  FramePoint point;
+};
+
 // Reused between queries so that a walk allocates nothing once warm.
 struct WalkScratch {
   std::vector<WalkFrame> stack;
   std::vector<WalkLinear> linear;
+  std::vector<BoundPart> bound_parts;
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point
@@ -76,6 +84,31 @@ struct CulledParts {
 void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
                            WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+
+// find_important_lights with a tighter culled_irradiance_bound (the same lights and counters):
+// a culled subtree whose aggregate bound exceeds the tolerance, as it does wherever the point lies
+// in or near the box of its light positions (irradiance_bound is +inf inside it), is bounded by
+// its parts instead (tightened_irradiance_bound), so the bound stays finite where LEV culls
+// lights that sit around the point. `lev` reports this bound; lev_est's gate keeps the cheaper one.
+void find_important_lights_tight_bound(const LightHierarchy& hierarchy,
+                                       const ExtentVolumes& volumes, float tolerance,
+                                       const glm::vec3& point, WalkScratch& scratch,
+                                       std::vector<Light>& important_lights, WalkCounters& counters,
+                                       glm::vec3* culled_irradiance_bound = nullptr);
+
+// How many unions one shading point may open to tighten its culled bound: the work stays a small
+// multiple of the walk's, and a part left unopened keeps its (certified) aggregate bound.
+inline constexpr int kBoundOpeningsPerPoint = 64;
+
+// An upper bound of the summed irradiance (RGB) of the lights of the subtree at `node` at x
+// (in the frame the node is entered with): the subtree's aggregate bound where that is at most
+// `refine_above` (brightest channel), else the sum of its children's bounds, opened the same way
+// depth first while *openings_left > 0 (each union opened takes one); a light is bounded by its
+// own aggregate. Never below irradiance_bound's sum over the same lights' exact irradiance, so it
+// stays certified; never above the subtree's aggregate bound. `parts` is scratch.
+glm::dvec3 tightened_irradiance_bound(const LightHierarchy& hierarchy, std::uint32_t node,
+                                      const FramePoint& x, float refine_above, int& openings_left,
+                                      std::vector<BoundPart>& parts);
 
 // find_important_lights, keeping in `culled` (cleared first) what it culls instead of dropping it.
 void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,

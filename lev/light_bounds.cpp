@@ -154,6 +154,43 @@ float spot_cone_factor(const LightAggregate& a, const FramePoint& x) {
   return 1.0f;
 }
 
+glm::vec3 largest_response(const SurfaceResponse& surface) {
+  return glm::abs(surface.diffuse) + glm::vec3(std::abs(surface.specular));
+}
+
+glm::vec3 response_bound(const SurfaceResponse& surface, const Bounds& box, const FramePoint& x) {
+  if (surface.normal == glm::vec3(0.0f)) return largest_response(surface);
+  const glm::vec3 centre = 0.5f * (box.lo + box.hi);
+  const glm::vec3 half = 0.5f * (box.hi - box.lo) + x.rounding;
+  const glm::vec3 to_x = x.point - centre;
+  // cos(theta) = n . l with l = (p - x) / |p - x|: the cosine from -n to x - p.
+  const float cos_theta = cos_angle_bound_by_projection(-surface.normal, to_x, half) + kCosSlack;
+  if (cos_theta <= 0.0f) return glm::vec3(0.0f);  // shading.cpp's response is zero there
+  glm::vec3 bound = glm::abs(surface.diffuse) * std::min(1.0f, cos_theta);
+  if (surface.specular != 0.0f) {
+    const float cos_alpha = std::min(
+        1.0f, cos_angle_bound_by_projection(-surface.mirrored_view, to_x, half) + kCosSlack);
+    // cos^n grows toward 1 as cos does for n >= 0; a negative n is bounded by nothing smaller.
+    const float lobe = surface.shininess < 0.0f ? std::numeric_limits<float>::infinity()
+                       : cos_alpha > 0.0f       ? std::pow(cos_alpha, surface.shininess)
+                                                : 0.0f;
+    bound += glm::vec3(std::abs(surface.specular) * lobe);
+  }
+  return bound;
+}
+
+glm::vec3 radiance_bound(const LightAggregate& a, const FramePoint& x,
+                         const SurfaceResponse& surface) {
+  const glm::vec3 irradiance = irradiance_bound(a, x);
+  if (irradiance == glm::vec3(0.0f)) return irradiance;
+  const glm::vec3 response = response_bound(surface, a.positions, x);
+  glm::vec3 bound(0.0f);
+  for (int c = 0; c < 3; ++c) {
+    if (irradiance[c] > 0.0f && response[c] > 0.0f) bound[c] = irradiance[c] * response[c];
+  }
+  return bound;
+}
+
 float cos_angle_bound_by_projection(const glm::vec3& axis, const glm::vec3& to_x,
                                     const glm::vec3& half) {
   // Over the box, axis . (x - p) is at most `along`, and |x - p| lies between the distance to the

@@ -140,4 +140,37 @@ inline glm::vec3 irradiance_bound(const LightAggregate& a, const FramePoint& x) 
   return a.intensity * falloff;
 }
 
+// The surface's side of a cluster's bound (Walter et al. 2005, sec. 4.1, the material term):
+// what the Phong response (thesis eq. 6 without the irradiance) of the shaded surface can be for
+// light arriving from a box of positions. A ShadingPoint gives it (light_selector.h).
+struct SurfaceResponse {
+  // The unit normal on the lit side; zero when unknown (every direction may then be lit).
+  glm::vec3 normal{0.0f};
+  // The direction to the viewer mirrored about the normal (unit): the specular lobe's axis, as
+  // Phong's cos(alpha) = mirror(l) . v = l . mirror(v).
+  glm::vec3 mirrored_view{0.0f};
+  glm::vec3 diffuse{0.0f};  // kd * colour
+  float specular = 0.0f;    // ks
+  float shininess = 1.0f;   // Phong exponent n
+};
+
+// The response to light from any direction toward any viewer: |kd * colour| + |ks| (cos(theta) and
+// cos(alpha)^n are at most 1). Absolute values, so a negative coefficient cannot shrink it.
+glm::vec3 largest_response(const SurfaceResponse& surface);
+
+// An upper bound of the response to light from any position in `box` (in x's frame) at x: the
+// diffuse term times the largest cos(theta) toward the box, the specular term times the largest
+// cos(alpha)^n, both bounded by projection (cos_angle_bound_by_projection); zero when the whole
+// box lies behind the surface. largest_response when the normal is unknown or x may lie in the box.
+glm::vec3 response_bound(const SurfaceResponse& surface, const Bounds& box, const FramePoint& x);
+
+// The bound of a cluster of lights at a surface point: the upper bound of the summed unshadowed
+// radiance (RGB) its lights can add there, visibility taken as 1 (Walter et al. 2005, eq. 3): the
+// aggregate's irradiance bound times the material's response bound over its box. One bound,
+// used by every method that clusters (lightcuts' cut); the certified error bound takes the
+// irradiance part and multiplies by largest_response. Never inf * 0: a channel without light or
+// without response bounds nothing.
+glm::vec3 radiance_bound(const LightAggregate& a, const FramePoint& x,
+                         const SurfaceResponse& surface);
+
 }  // namespace lev

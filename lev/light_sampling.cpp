@@ -263,7 +263,7 @@ void open_wide_parts(const LightHierarchy& h, CulledParts& parts, std::size_t ma
 
 glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
                            RandomStream& random, SamplingScratch& scratch,
-                           SelectionCounters& counters) {
+                           SelectionCounters& counters, glm::dvec3* draw_square_sum) {
   open_wide_parts(hierarchy, scratch.parts, sampled_parts_budget(k), scratch.queue);
   const CulledParts& parts = scratch.parts;
   std::vector<double>& part_weights = scratch.part_weights;
@@ -298,8 +298,10 @@ glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint&
     const glm::vec3 radiance = point.unshadowed_radiance(sampled.light);
     if (radiance == glm::vec3(0.0f)) continue;
     ++counters.shadow_rays;
-    if (point.visible(sampled.light))
-      sum += glm::dvec3(radiance) / (part_probability * sampled.probability);
+    if (!point.visible(sampled.light)) continue;
+    const glm::dvec3 weighed = glm::dvec3(radiance) / (part_probability * sampled.probability);
+    sum += weighed;
+    if (draw_square_sum) *draw_square_sum += weighed * weighed;
   }
   return glm::vec3(
       glm::min(sum / static_cast<double>(k), glm::dvec3(std::numeric_limits<float>::max())));

@@ -114,9 +114,10 @@ struct SamplingScratch final : MethodScratch {
 // world light) with probability proportional to its importance and then, for a subtree, a light
 // by sample_light; one shadow ray per draw, its radiance weighed by 1/probability, the mean of
 // the k returned. Its expected value is the summed unshadowed-and-visible radiance of every
-// light in the parts.
+// light in the parts. draw_square_sum (may be null) gains the sum over the k draws of each
+// draw's weighed radiance squared, for the estimate's variance (the missed light).
 glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
                            RandomStream& random, SamplingScratch& scratch,
-                           SelectionCounters& counters);
+                           SelectionCounters& counters, glm::dvec3* draw_square_sum = nullptr);
 
 }  // namespace lev

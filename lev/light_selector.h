@@ -31,12 +31,21 @@ class ShadingPoint {
   virtual glm::vec3 unshadowed_radiance(const Light& world_light) const = 0;
   // Casts one shadow ray; true when nothing blocks the light.
   virtual bool visible(const Light& world_light) = 0;
+  // The material's side of a cluster's bound (light_bounds.h): what unshadowed_radiance can
+  // be per unit irradiance from a box of positions. The default, for a point that does not say,
+  // bounds nothing (an infinite response): a method that clusters refines down to single lights.
+  virtual SurfaceResponse surface_response() const {
+    SurfaceResponse unknown;
+    unknown.diffuse = glm::vec3(std::numeric_limits<float>::infinity());
+    return unknown;
+  }
 };
 
 struct SelectionCounters {
   std::uint64_t lights_tested = 0;  // lights selected for a shadow test
   std::uint64_t nodes_visited = 0;  // extent volumes tested (LEV walks)
-  std::uint64_t shadow_rays = 0;    // rays actually cast (a selected light behind the surface needs none)
+  std::uint64_t shadow_rays =
+      0;  // rays actually cast (a selected light behind the surface needs none)
 };
 
 // A small random stream seeded per (pixel, sample) by the renderer, so that methods that sample
@@ -50,6 +59,19 @@ struct RandomStream {
     return z ^ (z >> 31);
   }
   float next_float() { return static_cast<float>(next_u64() >> 40) * 0x1.0p-24f; }
+};
+
+// A request for the missed light at one shading point (lev/missed_light.h), set in
+// SelectorScratch::missed by the renderer when asked: a method that leaves light out estimates
+// (rt's direct radiance - its own) from `samples` draws of what it left out, with shadow rays,
+// and the variance of that estimate; rt and the sampling methods, which leave nothing out on
+// average, leave `estimated` false.
+struct MissedLight {
+  int samples = 0;                 // K >= 2 draws
+  RandomStream* random = nullptr;  // its own stream: the method's image never depends on it
+  bool estimated = false;          // out
+  glm::vec3 radiance{0.0f};        // out: negative where a method's stand-in overshoots
+  glm::vec3 variance{0.0f};        // out: of that estimate
 };
 
 // A method's own per-thread buffers (AST's candidate heap), made by its selector
@@ -69,6 +91,10 @@ struct SelectorScratch {
   WalkScratch walk;           // for methods that walk the hierarchy
   RandomStream random;
   std::unique_ptr<MethodScratch> method;  // from the selector's make_scratch (null: none)
+  // Set by the caller for one call when it wants the missed light estimated (null: not asked),
+  // and the estimate's buffers (lev/missed_light.h), made on first use.
+  MissedLight* missed = nullptr;
+  std::unique_ptr<MethodScratch> missed_scratch;
 };
 
 class LightSelector {
@@ -79,7 +105,8 @@ class LightSelector {
   // method neither shadow-tested nor accounted for exactly: the error the method may make, before
   // the material. The default argument lets callers that do not want it (and skip its cost) keep
   // three arguments; every override repeats the same default, nullptr.
-  virtual glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+  virtual glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                                    SelectionCounters& counters,
                                     glm::vec3* culled_irradiance_bound = nullptr) const = 0;
   // Called by the renderer after every complete pass (never concurrently with direct_radiance).
   virtual void end_pass() {}
@@ -114,7 +141,8 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
   glm::dvec3 sum(0.0);
   std::size_t seen = 0;
   for (const Light& light : lights) {
-    if (cancel && ++seen % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed)) break;
+    if (cancel && ++seen % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed))
+      break;
     if (!selected(light)) continue;
     ++counters.lights_tested;
     const glm::vec3 radiance = point.unshadowed_radiance(light);

@@ -8,6 +8,7 @@
 #include "lev/selector_lev_est.h"
 #include "lev/selector_lev_mc.h"
 #include "lev/selector_light_tree.h"
+#include "lev/selector_lightcuts.h"
 #include "lev/selector_rt.h"
 
 namespace lev {
@@ -25,7 +26,7 @@ std::vector<MethodInfo>& table_rows() {
        false,
        true,
        {},
-       [](const LightHierarchy& h, float) -> std::unique_ptr<LightSelector> {
+       [](const LightHierarchy& h, const MethodParams&) -> std::unique_ptr<LightSelector> {
          return std::make_unique<RtSelector>(h);
        }},
       {Method::ast,
@@ -38,8 +39,8 @@ std::vector<MethodInfo>& table_rows() {
        false,
        true,
        {1.0, 0.3, 0.1, 0.03, 0.01},
-       [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<AstSelector>(h, tolerance);
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<AstSelector>(h, p.tolerance);
        }},
       {Method::lev,
        "lev",
@@ -50,8 +51,8 @@ std::vector<MethodInfo>& table_rows() {
        false,
        false,
        {0.1, 0.03, 0.01, 0.003, 0.001},
-       [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevSelector>(h, tolerance);
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevSelector>(h, p.tolerance);
        }},
       {Method::lev_bounded,
        "lev_bounded",
@@ -64,8 +65,8 @@ std::vector<MethodInfo>& table_rows() {
        // Where many lights add up it shadow-tests nearly all of them (building: 3,998 of 4,096).
        true,
        {0.1, 0.03, 0.01, 0.003, 0.001},
-       [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevBoundedSelector>(h, tolerance);
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevBoundedSelector>(h, p.tolerance);
        }},
       {Method::lev_est,
        "lev_est",
@@ -77,8 +78,8 @@ std::vector<MethodInfo>& table_rows() {
        false,
        false,
        {0.1, 0.03, 0.01, 0.003, 0.001},
-       [](const LightHierarchy& h, float tolerance) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevEstSelector>(h, tolerance);
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevEstSelector>(h, p.tolerance);
        }},
       {Method::lev_mc,
        "lev_mc",
@@ -90,9 +91,8 @@ std::vector<MethodInfo>& table_rows() {
        true,
        false,
        {0.1, 0.03, 0.01, 0.003, 0.001},
-       nullptr,
-       [](const LightHierarchy& h, float tolerance, int samples) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevMcSelector>(h, tolerance, samples);
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevMcSelector>(h, p.tolerance, p.light_samples);
        }},
       {Method::light_tree,
        "light_tree",
@@ -104,10 +104,24 @@ std::vector<MethodInfo>& table_rows() {
        true,
        false,
        {},
-       nullptr,
-       [](const LightHierarchy& h, float, int samples) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LightTreeSelector>(h, samples);
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LightTreeSelector>(h, p.light_samples);
        }},
+      {Method::lightcuts,
+       "lightcuts",
+       "Lightcuts (Walter 2005)",
+       "a cut through a binary light tree, refined until every cluster's error bound is below "
+       "the relative error (--relative-error) times the point's estimate; one shadow ray per "
+       "cluster's representative",
+       false,
+       false,
+       false,
+       false,
+       {0.1, 0.05, 0.02, 0.01, 0.005},
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LightcutsSelector>(h, p.relative_error);
+       },
+       true},
   };
   return table;
 }
@@ -159,15 +173,22 @@ Method register_method(MethodInfo row) {
   return table.back().id;
 }
 
-std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy,
-                                             float tolerance, int samples_per_point) {
-  if (samples_per_point < 1 || samples_per_point > kMaxLightSamples) {
-    throw std::invalid_argument("samples per point " + std::to_string(samples_per_point) + " outside [1, " +
-                                std::to_string(kMaxLightSamples) + "]");
+std::unique_ptr<LightSelector> make_selector(const LightHierarchy& hierarchy,
+                                             const MethodParams& params) {
+  if (params.light_samples < 1 || params.light_samples > kMaxLightSamples) {
+    throw std::invalid_argument("samples per point " + std::to_string(params.light_samples) +
+                                " outside [1, " + std::to_string(kMaxLightSamples) + "]");
   }
-  const MethodInfo& info = method_info(method);
-  if (info.make_sampling_selector) return info.make_sampling_selector(hierarchy, tolerance, samples_per_point);
-  return info.make_selector(hierarchy, tolerance);
+  if (!(params.relative_error >= 0.0f && params.relative_error <= 1.0f)) {
+    throw std::invalid_argument("relative error " + std::to_string(params.relative_error) +
+                                " outside [0, 1]");
+  }
+  return method_info(params.method).make_selector(hierarchy, params);
+}
+
+float MethodParams::*swept_setting(const MethodInfo& method) {
+  return method.uses_relative_error && !method.uses_tolerance ? &MethodParams::relative_error
+                                                              : &MethodParams::tolerance;
 }
 
 }  // namespace lev

@@ -6,8 +6,8 @@
 //   1. its selector, lev/selector_NAME.{h,cpp}: a LightSelector (with make_scratch when it keeps
 //      per-thread buffers, and reading SelectorScratch::random when it samples);
 //   2. one row in method_table() (lev/methods.cpp): name, label, summary, the flags below, the
-//      tolerances the bench's trade experiment sweeps, and the function that makes its selector
-//      (make_sampling_selector instead for a method that draws k lights per point).
+//      values the bench's trade experiment sweeps, and the function that makes its selector from
+//      the MethodParams (the settings it reads).
 // It then appears in `--method`, the viewer's method switch and trade plot, and the benchmarks
 // that compare methods (speed, trade); nothing else names methods. (A test binary may add a row
 // with register_method instead.)
@@ -30,16 +30,34 @@ inline constexpr double kDefaultTolerance = 0.01;
 
 // A row of method_table(), by position. The named values are the built-in rows; further rows
 // (register_method) take the next values.
-enum class Method : std::uint8_t { rt, ast, lev, lev_bounded, lev_est, lev_mc, light_tree };
-
-using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
-                                                        float tolerance);
+enum class Method : std::uint8_t {
+  rt,
+  ast,
+  lev,
+  lev_bounded,
+  lev_est,
+  lev_mc,
+  light_tree,
+  lightcuts
+};
 
 // The lights a sampling method draws per shading point (--samples): 1 by default, at most this.
 inline constexpr int kMaxLightSamples = 1024;
-// For methods that draw samples_per_point lights at each shading point (lev_mc, light_tree).
-using MakeSamplingSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy, float tolerance,
-                                                                int samples_per_point);
+// The relative error a render uses unless told otherwise (--relative-error): Walter et al.
+// 2005's 2 %, below which a change in the light of a point is not seen (Weber's law).
+inline constexpr double kDefaultRelativeError = 0.02;
+
+// What a selector is made with: the method and the settings methods read (each only those its
+// row says it uses).
+struct MethodParams {
+  Method method = Method::lev;
+  float tolerance = static_cast<float>(kDefaultTolerance);           // >= 0, colour units
+  float relative_error = static_cast<float>(kDefaultRelativeError);  // [0, 1]
+  int light_samples = 1;  // lights a sampling method draws per shading point, [1, kMaxLightSamples]
+};
+
+using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
+                                                        const MethodParams& params);
 
 struct MethodInfo {
   Method id;
@@ -50,9 +68,12 @@ struct MethodInfo {
   bool is_reference;    // exact: the images every other method's pixel errors are measured against
   bool samples;         // draws from the per-sample random stream (images depend on the passes)
   bool scans_every_light;  // its time per point grows with the light count: the bench subsamples it
-  std::vector<double> bench_tolerances;  // the trade experiment's sweep, largest first
-  MakeSelector make_selector;  // null when make_sampling_selector is given
-  MakeSamplingSelector make_sampling_selector = nullptr;
+  // The trade experiment's sweep, largest first: of the tolerance, or of the relative error for a
+  // method that uses that and not the tolerance (swept_setting).
+  std::vector<double> bench_tolerances;
+  MakeSelector make_selector;
+  // Reads MethodParams::relative_error (--relative-error); images then depend on it.
+  bool uses_relative_error = false;
 };
 
 const std::vector<MethodInfo>& method_table();
@@ -67,10 +88,14 @@ Method reference_method();
 // (the table is not guarded), typically from a static initialiser.
 Method register_method(MethodInfo row);
 
-// The selector for one render at one tolerance (and, for a sampling method, samples_per_point
-// lights drawn per shading point, in [1, kMaxLightSamples]). It reads the hierarchy (which it
-// never changes, so any number of selectors may share it) and must not outlive it.
-std::unique_ptr<LightSelector> make_selector(Method method, const LightHierarchy& hierarchy,
-                                             float tolerance, int samples_per_point = 1);
+// The selector for one render (params.light_samples in [1, kMaxLightSamples], the relative error
+// in [0, 1]; else std::invalid_argument). It reads the hierarchy (which it never changes, so any
+// number of selectors may share it) and must not outlive it.
+std::unique_ptr<LightSelector> make_selector(const LightHierarchy& hierarchy,
+                                             const MethodParams& params);
+
+// The setting the bench sweeps a method over (its row's bench_tolerances): the relative error
+// for a method that uses it and not the tolerance, else the tolerance.
+float MethodParams::*swept_setting(const MethodInfo& method);
 
 }  // namespace lev

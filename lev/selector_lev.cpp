@@ -1,6 +1,7 @@
 #include "lev/selector_lev.h"
 
 #include "lev/important_lights.h"
+#include "lev/missed_light.h"
 
 namespace lev {
 
@@ -12,8 +13,14 @@ glm::vec3 LevSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   walk_(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk, scratch.lights, walk_counters,
         culled_irradiance_bound);
   counters.nodes_visited += walk_counters.nodes_visited;
-  return sum_visible_lights(
+  const glm::vec3 radiance = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
+  if (scratch.missed) {
+    // lev's culled lights, less those a variant (lev_bounded) tested all the same.
+    estimate_missed_light(hierarchy_, volumes_, tolerance_, point, scratch,
+                          visible_radiance_below_tolerance(scratch.lights, tolerance_, point));
+  }
+  return radiance;
 }
 
 }  // namespace lev

@@ -11,8 +11,10 @@
 
 namespace lev {
 
-// The walk that picks the lights to shadow-test (important_lights.h): find_important_lights for
-// `lev`; variants of LEV (lev_bounded) derive from LevSelector with their own.
+// The walk that picks the lights to shadow-test (important_lights.h): for `lev`
+// find_important_lights_tight_bound (find_important_lights' lights, with its culled bound
+// tightened where the point lies near culled lights); variants of LEV (lev_bounded) derive from
+// LevSelector with their own.
 using LightWalk = void (*)(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                            const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
                            WalkCounters& counters, glm::vec3* culled_irradiance_bound);
@@ -20,7 +22,8 @@ using LightWalk = void (*)(const LightHierarchy& hierarchy, const ExtentVolumes&
 class LevSelector : public LightSelector {
  public:
   // Fits the hierarchy's extent volumes for `tolerance` (the hierarchy itself is not changed).
-  LevSelector(const LightHierarchy& hierarchy, float tolerance, LightWalk walk = find_important_lights)
+  LevSelector(const LightHierarchy& hierarchy, float tolerance,
+              LightWalk walk = find_important_lights_tight_bound)
       : hierarchy_(hierarchy),
         volumes_(fit_extent_volumes(hierarchy, tolerance)),
         tolerance_(tolerance),

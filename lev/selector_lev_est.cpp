@@ -1,5 +1,7 @@
 #include "lev/selector_lev_est.h"
 
+#include "lev/missed_light.h"
+
 namespace lev {
 
 namespace {
@@ -81,6 +83,8 @@ glm::vec3 LevEstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   if (culled_irradiance_bound) *culled_irradiance_bound = culled_bound;
   const glm::vec3 estimate = sum_visible_lights(
       clusters, [](const Light&) { return true; }, point, counters, scratch.cancel);
+  // What lev culls, less the clusters' estimate that stood in for it.
+  estimate_missed_light(hierarchy_, volumes_, tolerance_, point, scratch, estimate);
   return tested + estimate;
 }
 

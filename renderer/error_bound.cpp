@@ -3,10 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lev/light_bounds.h"
+
 namespace renderer {
 
 glm::vec3 largest_response(const Material& material) {
-  return glm::abs(material.kd * material.colour) + glm::vec3(std::abs(material.ks));
+  lev::SurfaceResponse surface;
+  surface.diffuse = material.kd * material.colour;
+  surface.specular = material.ks;
+  return lev::largest_response(surface);
 }
 
 glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound) {

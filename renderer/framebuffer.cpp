@@ -25,6 +25,13 @@ void clear_framebuffer(Framebuffer& f) {
   f.shadow_rays.assign(n, 0);
   f.error_bound_sum.assign(n, glm::vec3(0.0f));
   f.radiance_square_sum.assign(n, glm::vec3(0.0f));
+  if (!f.missed_sum.empty()) allocate_missed_light(f);
+}
+
+void allocate_missed_light(Framebuffer& f) {
+  const auto n = static_cast<std::size_t>(f.width) * static_cast<std::size_t>(f.height);
+  f.missed_sum.assign(n, glm::vec3(0.0f));
+  f.missed_variance_sum.assign(n, glm::vec3(0.0f));
 }
 
 std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& f) {

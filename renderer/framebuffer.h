@@ -25,10 +25,16 @@ struct Framebuffer {
   // Per pixel and channel, the sum of each sample's radiance squared: with radiance_sum and
   // samples, the variance across passes behind the noise estimate (pixel_noise.h).
   std::vector<glm::vec3> radiance_square_sum;
+  // Per pixel, summed over samples, when the render estimates the missed light (empty when not):
+  // the estimate (RGB radiance, renderer/missed_light.h) and its variance.
+  std::vector<glm::vec3> missed_sum;
+  std::vector<glm::vec3> missed_variance_sum;
 };
 
 Framebuffer make_framebuffer(int width, int height);
 void clear_framebuffer(Framebuffer& framebuffer);
+// Gives the framebuffer the missed-light sums (zero); clear_framebuffer keeps them.
+void allocate_missed_light(Framebuffer& framebuffer);
 
 // 8-bit RGB of the mean radiance, clamped to [0, 1] (1.0 = 255, the units of the tolerance).
 std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& framebuffer);

@@ -74,6 +74,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
   const lev::LightSelector& selector = preview ? *state.preview_selector : *state.selector;
   TraceContext context{state.scene, state.rays, selector, scratch, rs.max_depth, ray_log, cancel,
                        rs.compute_error_bound};
+  context.missed_samples = preview ? 0 : rs.missed_samples;
   struct PixelSample {
     std::size_t pixel;
     glm::vec3 radiance;
@@ -97,6 +98,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
         jy = random.next_float();
       }
       scratch.random.state = random.next_u64();
+      context.missed_random.state = random.next_u64();  // after the method's: it never moves it
       const Ray ray = primary_ray(state.scene.camera, rs.width, rs.height,
                                   static_cast<float>(x) + jx, static_cast<float>(y) + jy);
       PixelSample& sample = samples.emplace_back();
@@ -121,22 +123,39 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
     fb.shadow_rays[sample.pixel] += sample.counters.selection.shadow_rays;
     fb.error_bound_sum[sample.pixel] += sample.counters.error_bound;
     fb.radiance_square_sum[sample.pixel] += sample.radiance * sample.radiance;
+    if (!fb.missed_sum.empty()) {
+      fb.missed_sum[sample.pixel] += sample.counters.missed;
+      fb.missed_variance_sum[sample.pixel] += sample.counters.missed_variance;
+    }
   }
   return true;
 }
 
 }  // namespace
 
+lev::MethodParams method_params(const RenderSettings& settings) {
+  lev::MethodParams params;
+  params.method = settings.method;
+  params.tolerance = settings.tolerance;
+  params.relative_error = settings.relative_error;
+  params.light_samples = settings.light_samples;
+  return params;
+}
+
 RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
                                  const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
-      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0 || settings.light_samples < 1 ||
-      settings.light_samples > lev::kMaxLightSamples) {
+      settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0 ||
+      settings.light_samples < 1 || settings.light_samples > lev::kMaxLightSamples ||
+      !(settings.relative_error >= 0.0f && settings.relative_error <= 1.0f) ||
+      (settings.missed_samples != 0 && (settings.missed_samples < kMinMissedSamples ||
+                                        settings.missed_samples > lev::kMaxLightSamples))) {
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
-  state->selector = lev::make_selector(settings.method, scene.lights, settings.tolerance, settings.light_samples);
+  state->selector = lev::make_selector(scene.lights, method_params(settings));
   state->framebuffer = make_framebuffer(settings.width, settings.height);
+  if (settings.missed_samples > 0) allocate_missed_light(state->framebuffer);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
   const int tile_count = state->tiles_x * state->tiles_y;
@@ -156,8 +175,7 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
   if (preview) {
     if (!state.preview_selector)
       state.preview_selector =
-          lev::make_selector(state.settings.method, state.scene.lights, state.settings.tolerance,
-                             state.settings.light_samples);
+          lev::make_selector(state.scene.lights, method_params(state.settings));
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
                                      (state.settings.height + preview_step - 1) / preview_step);
   }

@@ -36,7 +36,9 @@ struct RenderSettings {
   int pixel_stride = 1;  // > 1: render only every stride-th pixel in x and y (a subsample)
   lev::Method method = lev::Method::lev;
   float tolerance = static_cast<float>(lev::kDefaultTolerance);
-  int light_samples = 1;  // lights a sampling method draws per shading point, [1, lev::kMaxLightSamples]
+  int light_samples =
+      1;  // lights a sampling method draws per shading point, [1, lev::kMaxLightSamples]
+  float relative_error = static_cast<float>(lev::kDefaultRelativeError);  // [0, 1] (lightcuts)
   std::uint64_t seed = 0;
   // Fill Framebuffer::error_bound_sum (error_bound.h). Off by default: the renders whose cost is
   // compared (the bench) skip the selectors' bound work; `levrt render` and the viewer ask for it.
@@ -45,7 +47,17 @@ struct RenderSettings {
   // the pixel centres, so only a sampling method's light draws differ between passes and its
   // passes converge to the one-pass rt image (the bench's converge experiment).
   bool jitter_pixels = true;
+  // > 0: estimate the missed light (lev/missed_light.h) with this many draws per shading point
+  // into Framebuffer::missed_sum (renderer/missed_light.h), in [kMinMissedSamples,
+  // lev::kMaxLightSamples]; 0: off, and the selectors do none of that work.
+  int missed_samples = 0;
 };
+
+// The settings the method's selector is made with.
+lev::MethodParams method_params(const RenderSettings& settings);
+
+// The fewest draws the missed-light estimate takes: two, for the spread behind its standard error.
+inline constexpr int kMinMissedSamples = 2;
 
 enum class TileStatus : std::uint8_t { waiting, rendering, done };
 
@@ -59,7 +71,8 @@ using RenderStatePtr = std::unique_ptr<RenderState, RenderStateDeleter>;
 // Makes the method's selector for settings.tolerance (a `lev` state fits its own extent volumes;
 // the scene is only read, so states with different tolerances and methods may render one scene
 // at the same time). The state refers to scene and rays; they must outlive it.
-RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays, const RenderSettings& settings);
+RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
+                                 const RenderSettings& settings);
 
 // Called on the worker thread right after a tile's pixels are final for this pass; it may read
 // that tile's framebuffer pixels (nothing else writes them until the next pass). The viewer

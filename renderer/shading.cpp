@@ -17,9 +17,13 @@ class SurfacePoint final : public lev::ShadingPoint {
   SurfacePoint(const RayScene& rays, const SurfaceHit& hit, const Material& material,
                const glm::vec3& normal, const glm::vec3& side, const glm::vec3& to_viewer,
                std::vector<LoggedRay>* ray_log)
-      : rays_(rays), material_(material), normal_(normal), to_viewer_(to_viewer),
+      : rays_(rays),
+        material_(material),
+        normal_(normal),
+        to_viewer_(to_viewer),
         position_(hit.position),
-        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance, rays.offset_floor())), ray_log_(ray_log) {}
+        shadow_origin_(offset_ray_origin(hit.position, side, hit.distance, rays.offset_floor())),
+        ray_log_(ray_log) {}
 
   glm::vec3 position() const override { return position_; }
   glm::vec3 normal() const override { return normal_; }
@@ -47,6 +51,17 @@ class SurfacePoint final : public lev::ShadingPoint {
     if (ray_log_) ray_log_->push_back({shadow_origin_, kToInfinity, l, RayKind::shadow});
     if (rays_.occluded(shadow_origin_, l, kToInfinity)) return glm::vec3(0.0f);
     return sun.irradiance * response(l, cos_theta);
+  }
+
+  lev::SurfaceResponse surface_response() const override {
+    lev::SurfaceResponse s;
+    s.normal = normal_;
+    s.mirrored_view = 2.0f * glm::dot(normal_, to_viewer_) * normal_ - to_viewer_;
+    s.diffuse = material_.kd * material_.colour;
+    // response() adds the specular lobe only for ks > 0.
+    s.specular = std::max(material_.ks, 0.0f);
+    s.shininess = material_.shininess;
+    return s;
   }
 
   bool visible(const lev::Light& light) override {
@@ -89,7 +104,8 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   if (!castable(ray.origin, ray.direction)) return glm::vec3(0.0f);
   if (context.cancel && context.cancel->load(std::memory_order_relaxed)) return glm::vec3(0.0f);
   SurfaceHit hit;
-  if (context.ray_log) context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
+  if (context.ray_log)
+    context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
   if (!context.rays.intersect(ray, hit)) return context.scene.background;
   ++counters.shading_points;
   Material material = context.scene.materials[hit.material];
@@ -105,13 +121,25 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
 
   glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
   SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
+  lev::MissedLight missed;
+  if (context.missed_samples > 0) {
+    missed.samples = context.missed_samples;
+    missed.random = &context.missed_random;
+    context.scratch.missed = &missed;
+  }
   if (context.compute_error_bound) {
     // The direct term is weighed by path_weight in the pixel, so is what it may miss.
     glm::vec3 culled_irradiance(0.0f);
-    radiance += context.selector.direct_radiance(point, context.scratch, counters.selection, &culled_irradiance);
+    radiance += context.selector.direct_radiance(point, context.scratch, counters.selection,
+                                                 &culled_irradiance);
     counters.error_bound += path_weight * shading_error_bound(material, culled_irradiance);
   } else {
     radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+  }
+  context.scratch.missed = nullptr;
+  if (missed.estimated) {
+    counters.missed += path_weight * missed.radiance;
+    counters.missed_variance += path_weight * path_weight * missed.variance;
   }
   // Suns are outside every method's selection: all methods add them alike, after the rest.
   for (const DirectionalLight& sun : context.scene.directional_lights) {
@@ -122,10 +150,12 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   const float cos_i = glm::dot(to_viewer, facing);
   const float reflected_weight = path_weight * material.kr;
   if (material.kr > 0.0f && reflected_weight >= kSmallestVisibleWeight) {
-    const Ray reflected{offset_ray_origin(hit.position, side, hit.distance, context.rays.offset_floor()),
-                        robust_normalize(2.0f * cos_i * facing - to_viewer)};
+    const Ray reflected{
+        offset_ray_origin(hit.position, side, hit.distance, context.rays.offset_floor()),
+        robust_normalize(2.0f * cos_i * facing - to_viewer)};
     if (castable(reflected.origin, reflected.direction)) {
-      radiance += material.kr * trace_radiance(context, reflected, depth + 1, counters, reflected_weight);
+      radiance +=
+          material.kr * trace_radiance(context, reflected, depth + 1, counters, reflected_weight);
     }
   }
   const float transmitted_weight = path_weight * material.kt;
@@ -134,14 +164,17 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
     const float k = 1.0f - eta * eta * (1.0f - cos_i * cos_i);
     Ray transmitted;
     if (k < 0.0f) {  // total internal reflection
-      transmitted = {offset_ray_origin(hit.position, side, hit.distance, context.rays.offset_floor()),
-                     robust_normalize(2.0f * cos_i * facing - to_viewer)};
+      transmitted = {
+          offset_ray_origin(hit.position, side, hit.distance, context.rays.offset_floor()),
+          robust_normalize(2.0f * cos_i * facing - to_viewer)};
     } else {
-      transmitted = {offset_ray_origin(hit.position, -side, hit.distance, context.rays.offset_floor()),
-                     robust_normalize(eta * ray.direction + (eta * cos_i - std::sqrt(k)) * facing)};
+      transmitted = {
+          offset_ray_origin(hit.position, -side, hit.distance, context.rays.offset_floor()),
+          robust_normalize(eta * ray.direction + (eta * cos_i - std::sqrt(k)) * facing)};
     }
     if (castable(transmitted.origin, transmitted.direction)) {
-      radiance += material.kt * trace_radiance(context, transmitted, depth + 1, counters, transmitted_weight);
+      radiance += material.kt *
+                  trace_radiance(context, transmitted, depth + 1, counters, transmitted_weight);
     }
   }
   return radiance;

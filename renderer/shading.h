@@ -21,6 +21,10 @@ struct PathCounters {
   // When TraceContext::compute_error_bound: an upper bound of |this radiance - rt's radiance|
   // per channel (error_bound.h), summed over the path's shading points as the radiance is.
   glm::vec3 error_bound{0.0f};
+  // When TraceContext::missed_samples > 0: the estimated missed light (lev/missed_light.h) and
+  // its variance, weighed by the path weight (squared for the variance) and summed as above.
+  glm::vec3 missed{0.0f};
+  glm::vec3 missed_variance{0.0f};
 };
 
 struct TraceContext {
@@ -35,6 +39,10 @@ struct TraceContext {
   // Asks the selector for its culled irradiance bound and carries it into PathCounters::error_bound
   // (off: the selector skips that work).
   bool compute_error_bound = false;
+  // > 0: asks the selector for the missed light with this many draws from missed_random (seeded
+  // per pixel and pass by the caller), into PathCounters::missed.
+  int missed_samples = 0;
+  lev::RandomStream missed_random{};
 };
 
 // Reflection and refraction stop where the path weight (the product of kr and kt along the path)

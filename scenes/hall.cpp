@@ -18,23 +18,11 @@ constexpr float kCeiling = 13.5f;
 constexpr float kStageHeight = 0.8f;
 const glm::vec3 kStageCentre{0.0f, 5.0f, kStageHeight};
 
-// The rotation that turns a spotlight's -z onto `direction`, as an axis and an angle.
-Affine aimed(const glm::vec3& position, const glm::vec3& direction) {
-  Affine a;
-  a.translate = position;
-  const glm::vec3 down(0.0f, 0.0f, -1.0f), d = glm::normalize(direction);
-  const glm::vec3 axis = glm::cross(down, d);
-  if (glm::length(axis) > 1e-6f) {
-    a.rotate_axis = glm::normalize(axis);
-    a.rotate_degrees = static_cast<float>(std::acos(std::clamp(static_cast<double>(glm::dot(down, d)), -1.0, 1.0)) *
-                                          180.0 / M_PI);
-  }
-  return a;
-}
-
 }  // namespace
 
-std::uint64_t hall_light_count(int level) { return 1ull << (2 * level); }
+std::uint64_t hall_light_count(int level) {
+  return 1ull << (2 * level);
+}
 
 SceneDescription describe_hall(int level) {
   if (level < kHallMinLevel || level > kHallMaxLevel) {
@@ -47,20 +35,31 @@ SceneDescription describe_hall(int level) {
   scene.ambient = glm::vec3(1.0f);
   scene.background = glm::vec3(0.0f);
 
-  const std::uint32_t stage = add_material(scene, "stage", {{0.55f, 0.4f, 0.28f}, 0.1f, 0.16f, 0.1f, 20.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t carpet = add_material(scene, "carpet", {{0.5f, 0.12f, 0.12f}, 0.1f, 0.25f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t wall = add_material(scene, "wall", {{0.35f, 0.3f, 0.32f}, 0.1f, 0.25f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t red = add_material(scene, "red", {{0.8f, 0.15f, 0.1f}, 0.1f, 0.18f, 0.3f, 40.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t green = add_material(scene, "green", {{0.15f, 0.7f, 0.2f}, 0.1f, 0.18f, 0.3f, 40.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t blue = add_material(scene, "blue", {{0.1f, 0.25f, 0.8f}, 0.1f, 0.18f, 0.3f, 40.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t chrome = add_material(scene, "chrome", {{0.9f, 0.9f, 0.9f}, 0.05f, 0.05f, 0.3f, 80.0f, 0.5f, 0.0f, 1.0f});
-  const std::uint32_t metal = add_material(scene, "metal", {{0.6f, 0.6f, 0.65f}, 0.1f, 0.12f, 0.3f, 30.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t tyre = add_material(scene, "tyre", {{0.12f, 0.12f, 0.12f}, 0.1f, 0.2f, 0.05f, 10.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t can = add_material(scene, "can", {{0.15f, 0.15f, 0.17f}, 0.3f, 0.5f, 0.6f, 30.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t stage = add_material(
+      scene, "stage", {{0.55f, 0.4f, 0.28f}, 0.1f, 0.16f, 0.1f, 20.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t carpet = add_material(
+      scene, "carpet", {{0.5f, 0.12f, 0.12f}, 0.1f, 0.25f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t wall = add_material(
+      scene, "wall", {{0.35f, 0.3f, 0.32f}, 0.1f, 0.25f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t red =
+      add_material(scene, "red", {{0.8f, 0.15f, 0.1f}, 0.1f, 0.18f, 0.3f, 40.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t green = add_material(
+      scene, "green", {{0.15f, 0.7f, 0.2f}, 0.1f, 0.18f, 0.3f, 40.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t blue = add_material(
+      scene, "blue", {{0.1f, 0.25f, 0.8f}, 0.1f, 0.18f, 0.3f, 40.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t chrome = add_material(
+      scene, "chrome", {{0.9f, 0.9f, 0.9f}, 0.05f, 0.05f, 0.3f, 80.0f, 0.5f, 0.0f, 1.0f});
+  const std::uint32_t metal = add_material(
+      scene, "metal", {{0.6f, 0.6f, 0.65f}, 0.1f, 0.12f, 0.3f, 30.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t tyre = add_material(
+      scene, "tyre", {{0.12f, 0.12f, 0.12f}, 0.1f, 0.2f, 0.05f, 10.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t can = add_material(
+      scene, "can", {{0.15f, 0.15f, 0.17f}, 0.3f, 0.5f, 0.6f, 30.0f, 0.0f, 0.0f, 1.0f});
 
-  const std::uint32_t robots[3] = {add_master(scene, "robot_red", robot_node({red, chrome, metal, tyre})),
-                                   add_master(scene, "robot_green", robot_node({green, chrome, metal, tyre})),
-                                   add_master(scene, "robot_blue", robot_node({blue, chrome, metal, tyre}))};
+  const std::uint32_t robots[3] = {
+      add_master(scene, "robot_red", robot_node({red, chrome, metal, tyre})),
+      add_master(scene, "robot_green", robot_node({green, chrome, metal, tyre})),
+      add_master(scene, "robot_blue", robot_node({blue, chrome, metal, tyre}))};
 
   // A spotlight and its can, the light at the can's mouth shining down (-z), at the size of the
   // level's smallest fixture: each split halves the scale and so quarters the intensity (thesis
@@ -70,8 +69,8 @@ SceneDescription describe_hall(int level) {
   shrink.scale = std::ldexp(1.0f, -splits);
   const SceneNode spot = affine_node(
       shrink, union_node({cylinder_node(can, {0.0f, 0.0f, 0.05f}, {0.0f, 0.0f, 0.9f}, 0.35f, 16),
-                          spot_light_node(kSpotIntensity * glm::vec3(1.0f, 0.95f, 0.85f), kSpotConeDegrees,
-                                          kSpotDropoff)}));
+                          spot_light_node(kSpotIntensity * glm::vec3(1.0f, 0.95f, 0.85f),
+                                          kSpotConeDegrees, kSpotDropoff)}));
   // Each level splits a spotlight into four, in the four quarters of its place in the grid, with
   // the same cone and the same aim. The fixtures are built from the smallest up at their final
   // size, so that every split is a pure translation: the walk then tests each quarter's box once,
@@ -95,14 +94,20 @@ SceneDescription describe_hall(int level) {
 
   std::vector<SceneNode> parts;
   // The hall: carpet, stage, walls and ceiling.
-  parts.push_back(quad_node(carpet, {-kHalfWidth, kFront, 0.0f}, {2.0f * kHalfWidth, 0.0f, 0.0f}, {0.0f, kBack - kFront, 0.0f}));
+  parts.push_back(quad_node(carpet, {-kHalfWidth, kFront, 0.0f}, {2.0f * kHalfWidth, 0.0f, 0.0f},
+                            {0.0f, kBack - kFront, 0.0f}));
   parts.push_back(box_node(stage, {-11.0f, -2.0f, 0.0f}, {11.0f, kBack, kStageHeight}));
-  parts.push_back(quad_node(wall, {-kHalfWidth, kBack, 0.0f}, {2.0f * kHalfWidth, 0.0f, 0.0f}, {0.0f, 0.0f, kCeiling}));
-  parts.push_back(quad_node(wall, {-kHalfWidth, kFront, 0.0f}, {0.0f, kBack - kFront, 0.0f}, {0.0f, 0.0f, kCeiling}));
-  parts.push_back(quad_node(wall, {kHalfWidth, kFront, 0.0f}, {0.0f, 0.0f, kCeiling}, {0.0f, kBack - kFront, 0.0f}));
-  parts.push_back(quad_node(wall, {-kHalfWidth, kFront, kCeiling}, {0.0f, kBack - kFront, 0.0f}, {2.0f * kHalfWidth, 0.0f, 0.0f}));
+  parts.push_back(quad_node(wall, {-kHalfWidth, kBack, 0.0f}, {2.0f * kHalfWidth, 0.0f, 0.0f},
+                            {0.0f, 0.0f, kCeiling}));
+  parts.push_back(quad_node(wall, {-kHalfWidth, kFront, 0.0f}, {0.0f, kBack - kFront, 0.0f},
+                            {0.0f, 0.0f, kCeiling}));
+  parts.push_back(quad_node(wall, {kHalfWidth, kFront, 0.0f}, {0.0f, 0.0f, kCeiling},
+                            {0.0f, kBack - kFront, 0.0f}));
+  parts.push_back(quad_node(wall, {-kHalfWidth, kFront, kCeiling}, {0.0f, kBack - kFront, 0.0f},
+                            {2.0f * kHalfWidth, 0.0f, 0.0f}));
   // Three robots facing the audience.
-  const glm::vec3 places[3] = {{-4.5f, 4.0f, kStageHeight}, {0.0f, 6.5f, kStageHeight}, {4.5f, 4.0f, kStageHeight}};
+  const glm::vec3 places[3] = {
+      {-4.5f, 4.0f, kStageHeight}, {0.0f, 6.5f, kStageHeight}, {4.5f, 4.0f, kStageHeight}};
   for (int r = 0; r < 3; ++r) {
     Affine a;
     a.translate = places[r];
@@ -117,7 +122,8 @@ SceneDescription describe_hall(int level) {
     const glm::vec3 at{kRigSpacing * (static_cast<float>(i) - 3.5f),
                        kStageCentre.y + kRigSpacing * (static_cast<float>(j) - 3.5f), kRigHeight};
     // Unsplit (level 3), the spot itself: its aim folds into the light, which needs no box.
-    return affine_node(aimed(at, kStageCentre - at), splits == 0 ? spot : instance_node(fixture));
+    return affine_node(aimed_affine(at, kStageCentre - at),
+                       splits == 0 ? spot : instance_node(fixture));
   };
   for (int qj = 0; qj < 2; ++qj) {
     for (int qi = 0; qi < 2; ++qi) {
@@ -146,6 +152,8 @@ SceneDescription describe_hall(int level) {
   return scene;
 }
 
-renderer::Scene build_hall(int level) { return instantiate_scene(describe_hall(level)); }
+renderer::Scene build_hall(int level) {
+  return instantiate_scene(describe_hall(level));
+}
 
 }  // namespace scenes

@@ -1,5 +1,6 @@
 #include "scenes/scene_description.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -43,8 +44,8 @@ SceneNode box_node(std::uint32_t material, const glm::vec3& lo, const glm::vec3&
   return n;
 }
 
-SceneNode cylinder_node(std::uint32_t material, const glm::vec3& a, const glm::vec3& b, float radius,
-                        int segments) {
+SceneNode cylinder_node(std::uint32_t material, const glm::vec3& a, const glm::vec3& b,
+                        float radius, int segments) {
   SceneNode n;
   n.data = CylinderShape{material, a, b, radius, segments};
   return n;
@@ -75,7 +76,8 @@ SceneNode spot_light_node(const glm::vec3& intensity, float cone_degrees, float 
   return n;
 }
 
-std::uint32_t add_material(SceneDescription& scene, const std::string& name, const renderer::Material& material) {
+std::uint32_t add_material(SceneDescription& scene, const std::string& name,
+                           const renderer::Material& material) {
   scene.materials.push_back({name, material});
   return static_cast<std::uint32_t>(scene.materials.size() - 1);
 }
@@ -83,6 +85,19 @@ std::uint32_t add_material(SceneDescription& scene, const std::string& name, con
 std::uint32_t add_master(SceneDescription& scene, const std::string& name, SceneNode node) {
   scene.masters.push_back({name, std::move(node)});
   return static_cast<std::uint32_t>(scene.masters.size() - 1);
+}
+
+Affine aimed_affine(const glm::vec3& position, const glm::vec3& direction) {
+  Affine a;
+  a.translate = position;
+  const glm::vec3 down(0.0f, 0.0f, -1.0f), d = glm::normalize(direction);
+  const glm::vec3 axis = glm::cross(down, d);
+  if (glm::length(axis) > 1e-6f) {
+    a.rotate_axis = glm::normalize(axis);
+    a.rotate_degrees = static_cast<float>(
+        std::acos(std::clamp(static_cast<double>(glm::dot(down, d)), -1.0, 1.0)) * 180.0 / M_PI);
+  }
+  return a;
 }
 
 lev::Similarity affine_similarity(const Affine& affine) {
@@ -103,9 +118,12 @@ lev::Similarity affine_similarity(const Affine& affine) {
     const double t = 1.0 - c;
     // Rodrigues' formula, column-major: rotation[col][row].
     lev::Similarity r;
-    r.rotation[0] = glm::vec3(glm::dvec3(t * a.x * a.x + c, t * a.x * a.y + s * a.z, t * a.x * a.z - s * a.y));
-    r.rotation[1] = glm::vec3(glm::dvec3(t * a.x * a.y - s * a.z, t * a.y * a.y + c, t * a.y * a.z + s * a.x));
-    r.rotation[2] = glm::vec3(glm::dvec3(t * a.x * a.z + s * a.y, t * a.y * a.z - s * a.x, t * a.z * a.z + c));
+    r.rotation[0] =
+        glm::vec3(glm::dvec3(t * a.x * a.x + c, t * a.x * a.y + s * a.z, t * a.x * a.z - s * a.y));
+    r.rotation[1] =
+        glm::vec3(glm::dvec3(t * a.x * a.y - s * a.z, t * a.y * a.y + c, t * a.y * a.z + s * a.x));
+    r.rotation[2] =
+        glm::vec3(glm::dvec3(t * a.x * a.z + s * a.y, t * a.y * a.z - s * a.x, t * a.z * a.z + c));
     xf = lev::compose(r, xf);
   }
   return lev::compose(lev::make_translation(affine.translate), xf);

@@ -120,7 +120,7 @@ struct SceneDescription {
   glm::vec3 ambient{1.0f};
   glm::vec3 background{0.0f};
   std::vector<NamedMaterial> materials;
-  std::vector<Master> masters;  // any order; instances refer by index, cycles are invalid
+  std::vector<Master> masters;   // any order; instances refer by index, cycles are invalid
   std::vector<MeshData> meshes;  // what mesh nodes draw; scene files have none
   std::vector<renderer::Texture>
       textures;  // what materials' colour_texture indexes; scene files have none
@@ -136,8 +136,8 @@ SceneNode union_node(std::vector<SceneNode> children);
 SceneNode instance_node(std::uint32_t master);
 SceneNode sphere_node(std::uint32_t material, const glm::vec3& centre, float radius);
 SceneNode box_node(std::uint32_t material, const glm::vec3& lo, const glm::vec3& hi);
-SceneNode cylinder_node(std::uint32_t material, const glm::vec3& a, const glm::vec3& b, float radius,
-                        int segments = 24);
+SceneNode cylinder_node(std::uint32_t material, const glm::vec3& a, const glm::vec3& b,
+                        float radius, int segments = 24);
 SceneNode quad_node(std::uint32_t material, const glm::vec3& corner, const glm::vec3& edge_u,
                     const glm::vec3& edge_v);
 SceneNode mesh_node(std::uint32_t mesh, const glm::mat3& linear);
@@ -145,8 +145,13 @@ SceneNode point_light_node(const glm::vec3& intensity);
 SceneNode spot_light_node(const glm::vec3& intensity, float cone_degrees, float dropoff);
 
 // Appends and returns the index.
-std::uint32_t add_material(SceneDescription& scene, const std::string& name, const renderer::Material& material);
+std::uint32_t add_material(SceneDescription& scene, const std::string& name,
+                           const renderer::Material& material);
 std::uint32_t add_master(SceneDescription& scene, const std::string& name, SceneNode node);
+
+// The placement of a light (which shines along -z) at `position`, turned to shine along
+// `direction` (any non-zero length).
+Affine aimed_affine(const glm::vec3& position, const glm::vec3& direction);
 
 // The transform an affine node stands for: translate * rotation * scale.
 lev::Similarity affine_similarity(const Affine& affine);

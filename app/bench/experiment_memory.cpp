@@ -61,7 +61,7 @@ Section run_memory(BenchRun& run, const std::string& out_dir) {
             lev::LightTree flat_tree;
             flat_tree.root = lev::build_light_bvh(lev::flatten_lights(s.lights));
             flat = lev::hierarchy_bytes(lev::build_hierarchy(flat_tree));
-            ast = lev::make_selector(lev::Method::ast, s.lights, static_cast<float>(c.tolerance))
+            ast = lev::make_selector(s.lights, {lev::Method::ast, static_cast<float>(c.tolerance)})
                       ->bookkeeping_bytes();
           });
       if (!ran) continue;

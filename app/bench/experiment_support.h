@@ -38,8 +38,8 @@ std::optional<ReferencedScene> referenced_scene(BenchRun& run, const std::string
                                                 std::uint64_t wanted_lights);
 
 // The tolerances a method is swept over (trade, control): its row's bench_tolerances, none for
-// the reference, the default alone for a method that ignores the tolerance and names none; a quick run
-// takes the first, middle and last.
+// the reference, the default alone for a method that ignores the tolerance and names none; a quick
+// run takes the first, middle and last.
 std::vector<double> swept_tolerances(const BenchRun& run, const lev::MethodInfo& method);
 
 // The columns of a table with one row per (scene, light count, method, tolerance) render: its
@@ -97,6 +97,7 @@ Section run_trade(BenchRun& run, const std::string& out_dir);
 Section run_limit(BenchRun& run, const std::string& out_dir);
 Section run_control(BenchRun& run, const std::string& out_dir);
 Section run_converge(BenchRun& run, const std::string& out_dir);
+Section run_targets(BenchRun& run, const std::string& out_dir);
 // The pass counts converge snapshots: 1, 2, 3, 4, 6, 8, 12, ... up to `last`.
 std::vector<int> snapshot_pass_counts(int last);
 

@@ -21,6 +21,9 @@ const std::vector<ExperimentInfo>& experiments() {
       {"converge", "new",
        "error against time as passes accumulate, per method; the equal-time comparison",
        run_converge},
+      {"targets", "new",
+       "per scene, the fastest method and setting that meets each error target, and its speedup",
+       run_targets},
       {"limit", "new", "levrt's render against a bare Embree loop on the same rays", run_limit},
   };
   return table;

@@ -40,6 +40,8 @@ SuiteConfig thesis_suite(bool quick) {
   c.control_renders = {{"building", 64}, {"maze", 45}, {"hall", 64}, {"hall", 256}};
   c.converge_renders = c.control_renders;
   c.converge_passes = 8;
+  c.target_renders = {{"building", 64}, {"hall", 64},   {"stage", 72},
+                      {"carpark", 64},  {"street", 64}, {"street_bare", 64}};
   return c;
 }
 
@@ -172,8 +174,10 @@ std::uint64_t BenchRun::light_count(const std::string& scene, int level) const {
   return model ? model->light_count(level) : 0;
 }
 
-int BenchRun::stride_for(const std::string& scene, int level, lev::Method method, double tolerance) {
-  if (lev::method_info(method).scans_every_light && light_count(scene, level) > config_.subsample_above)
+int BenchRun::stride_for(const std::string& scene, int level, lev::Method method,
+                         double tolerance) {
+  if (lev::method_info(method).scans_every_light &&
+      light_count(scene, level) > config_.subsample_above)
     return config_.subsample_stride;
   return probe(scene, level, method, tolerance).full_frame_seconds() >
                  config_.max_full_frame_seconds
@@ -185,7 +189,8 @@ double BenchRun::lev_tests_per_point(const std::string& scene, int level, double
   return probe(scene, level, lev::Method::lev, tolerance).lights_tested_avg();
 }
 
-const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Method method, double tolerance) {
+const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Method method,
+                                   double tolerance) {
   const MeasureRequest request{scene, level, method, tolerance, kProbeStride, 1};
   const auto found = cache_.find(key_of(request));
   if (found != cache_.end()) return found->second;
@@ -211,8 +216,10 @@ double BenchRun::predicted_seconds(const MeasureRequest& r) {
 }
 
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
-  // A method that ignores the tolerance (rt) is measured once for every tolerance.
-  const double tolerance = lev::method_info(r.method).uses_tolerance ? r.tolerance : 0.0;
+  // A method that ignores the tolerance (rt) is measured once for every tolerance; one that
+  // sweeps its relative error instead (lightcuts) takes the sweep's value there.
+  const lev::MethodInfo& info = lev::method_info(r.method);
+  const double tolerance = info.uses_tolerance || info.uses_relative_error ? r.tolerance : 0.0;
   return {r.scene, r.level, r.method, tolerance, r.stride, r.error_bound};
 }
 
@@ -221,7 +228,12 @@ renderer::RenderSettings BenchRun::render_settings_for(const MeasureRequest& r) 
   s.scene = r.scene;
   s.level = r.level;
   s.method = r.method;
-  s.tolerance = r.tolerance;
+  // The sweep's value goes to the setting the method is swept over (lev/methods.h).
+  if (lev::swept_setting(lev::method_info(r.method)) == &lev::MethodParams::relative_error) {
+    s.relative_error = r.tolerance;
+  } else {
+    s.tolerance = r.tolerance;
+  }
   s.width = config_.width;
   s.height = config_.height;
   s.threads = threads_;
@@ -341,8 +353,9 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
 
     char what[256];
     std::snprintf(what, sizeof what, "%s %s lights, %s, tol %g, %s px: %.3f s%s",
-                  done.scene.c_str(), format_count(stored.lights).c_str(), lev::method_info(done.method).name,
-                  done.tolerance, pixels_text(done.stride).c_str(), stored.seconds,
+                  done.scene.c_str(), format_count(stored.lights).c_str(),
+                  lev::method_info(done.method).name, done.tolerance,
+                  pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
     if (!planning_) report(what, predicted_seconds(done));
   }

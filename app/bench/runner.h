@@ -20,8 +20,8 @@
 
 #include "app/scene_loading.h"
 #include "lev/methods.h"
-#include "renderer/render.h"
 #include "renderer/framebuffer.h"
+#include "renderer/render.h"
 
 namespace app::bench {
 
@@ -76,6 +76,15 @@ struct SuiteConfig {
   // about as much as rt's.
   std::vector<std::pair<std::string, double>> converge_methods{
       {"lev", 0.01}, {"lev_est", 0.01}, {"lev_mc", 0.01}, {"lev_mc", 0.1}, {"light_tree", 0.01}};
+  // targets (issue 23): the (scene, light count) renders where each error target's fastest
+  // method and setting is found: the thesis scenes and the classes of many dim lights, the lamp
+  // street twice (instanced and bare, whose lev times the section compares).
+  std::vector<std::pair<std::string, std::uint64_t>> target_renders{
+      {"building", 16384}, {"maze", 12285},    {"hall", 4096},    {"hall", 16384},
+      {"stage", 4608},     {"carpark", 16384}, {"street", 16384}, {"street_bare", 16384}};
+  double target_max_pct = 2.0;      // first target: max pixel error below this
+  double target_avg_pct = 0.5;      // second target: average below this ...
+  double target_avg_max_pct = 5.0;  // ... and max below this
   int converge_passes = 256;
   std::vector<double> converge_budgets_of_rt{0.01, 0.1};
   double converge_target_avg_pct = 1.0;
@@ -190,9 +199,9 @@ class BenchRun {
   std::vector<int> levels(const std::string& scene, std::uint64_t lo, std::uint64_t hi) const;
   std::uint64_t light_count(const std::string& scene, int level) const;
   // The pixel stride a measurement uses: methods that look at every light (rt, ast) subsample
-  // above config.subsample_above lights (thesis sizes), and any method whose full frame would take more than
-  // config.max_full_frame_seconds (the maze and the hall, where rays are dearer or most lights
-  // reach every point; lev at tolerance 0). The probe render tells.
+  // above config.subsample_above lights (thesis sizes), and any method whose full frame would take
+  // more than config.max_full_frame_seconds (the maze and the hall, where rays are dearer or most
+  // lights reach every point; lev at tolerance 0). The probe render tells.
   int stride_for(const std::string& scene, int level, lev::Method method, double tolerance);
   // lev's lights tested per shading point, from the probe.
   double lev_tests_per_point(const std::string& scene, int level, double tolerance);
@@ -232,7 +241,8 @@ class BenchRun {
   renderer::RenderSettings render_settings_for(const MeasureRequest& request) const;
   // A render of one pixel in every kProbeStride^2, made once (also while planning): what the
   // plan, the subsample policy and lev_tests_per_point go by.
-  const Measurement& probe(const std::string& scene, int level, lev::Method method, double tolerance);
+  const Measurement& probe(const std::string& scene, int level, lev::Method method,
+                           double tolerance);
   // Renders what is not cached yet (in turns), whatever the pass.
   std::vector<const Measurement*> render(const std::vector<MeasureRequest>& requests);
   void report(const std::string& what, double predicted_seconds);

@@ -231,8 +231,10 @@ struct Worker {
     // Only a sampling method draws light_samples lights per point.
     const bool light_samples_matter =
         rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
+    const bool relative_error_matters = rs.relative_error != main_settings.relative_error &&
+                                        lev::method_info(rs.method).uses_relative_error;
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              tolerance_matters || light_samples_matter ||
+                              tolerance_matters || light_samples_matter || relative_error_matters ||
                               rs.threads != main_settings.threads;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its

@@ -132,7 +132,8 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
   const auto label = [&](const std::string& o) {
     return choice.option_label ? choice.option_label(o) : o.c_str();
   };
-  if (ImGui::BeginCombo(spec.label, label(current))) {
+  // Tall enough for every method of the table without a scrollbar (the default stops at 8).
+  if (ImGui::BeginCombo(spec.label, label(current), ImGuiComboFlags_HeightLarge)) {
     for (const std::string& o : options) {
       ImGui::PushID(o.c_str());
       if (ImGui::Selectable(label(o), o == current) && o != current) {

@@ -33,6 +33,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   view_rgb8(state.image, state.error, ViewMode::nodes, stats.heatmap_nodes_range);
   view_rgb8(state.image, state.error, ViewMode::bound, stats.heatmap_bound_range);
   view_rgb8(state.image, state.error, ViewMode::noise, stats.heatmap_noise_range);
+  if (stats.error) view_rgb8(state.image, state.error, ViewMode::error, stats.heatmap_error_range);
   const ViewMode heat = state.view == ViewMode::image ? ViewMode::lights : state.view;
   job.heatmap_name = view_mode_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);

@@ -14,9 +14,11 @@ const std::vector<ViewModeInfo>& view_mode_table() {
       {ViewMode::error, "error", "Error vs rt", "error per pixel, % of 765 (pass 0 against rt)",
        "the image equals rt"},
       {ViewMode::bound, "bound", "Error bound",
-       "certified bound of the error vs rt per pixel, % of 765 (no reference needed)",
+       "certified bound of the error vs rt per pixel, % of 765, assuming no shadows (every "
+       "culled light counted as seen; no reference needed)",
        "no light was left out: the image is rt's, up to 8-bit rounding"},
-      {ViewMode::noise, "noise", "Noise", "estimated standard error of the pixel mean over passes, % of 765",
+      {ViewMode::noise, "noise", "Noise",
+       "estimated standard error of the pixel mean over passes, % of 765",
        "the passes agree: no noise (or fewer than two passes yet)"},
   };
   return table;

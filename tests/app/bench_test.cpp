@@ -37,7 +37,8 @@ class Bench : public ::testing::Test {
  protected:
   void SetUp() override {
     temp_ = std::make_unique<levrt_test::TempDir>(
-        "levrt_bench_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
+        "levrt_bench_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     dir_ = temp_->path();
   }
   void TearDown() override { temp_.reset(); }
@@ -57,12 +58,14 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "scene,lights,rt_cpu_s,rt_wall_s,rt_pixels,ast_cpu_s,ast_wall_s,ast_pixels,lev_cpu_s,"
        "lev_wall_s,lev_pixels,lev_bounded_cpu_s,lev_bounded_wall_s,lev_bounded_pixels,"
        "lev_est_cpu_s,lev_est_wall_s,lev_est_pixels,lev_mc_cpu_s,lev_mc_wall_s,lev_mc_pixels,"
-       "light_tree_cpu_s,light_tree_wall_s,light_tree_pixels,ast_over_rt_pct,lev_over_rt_pct,"
-       "lev_bounded_over_rt_pct,lev_est_over_rt_pct,lev_mc_over_rt_pct,light_tree_over_rt_pct,"
+       "light_tree_cpu_s,light_tree_wall_s,light_tree_pixels,lightcuts_cpu_s,lightcuts_wall_s,"
+       "lightcuts_pixels,ast_over_rt_pct,lev_over_rt_pct,lev_bounded_over_rt_pct,"
+       "lev_est_over_rt_pct,lev_mc_over_rt_pct,light_tree_over_rt_pct,lightcuts_over_rt_pct,"
        "rt_over_lev,ast_over_lev,lev_bounded_over_lev,lev_est_over_lev,lev_mc_over_lev,"
-       "light_tree_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,rt_tests_per_point,"
-       "ast_tests_per_point,lev_tests_per_point,lev_bounded_tests_per_point,"
-       "lev_est_tests_per_point,lev_mc_tests_per_point,light_tree_tests_per_point"},
+       "light_tree_over_lev,lightcuts_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,"
+       "rt_tests_per_point,ast_tests_per_point,lev_tests_per_point,"
+       "lev_bounded_tests_per_point,lev_est_tests_per_point,lev_mc_tests_per_point,"
+       "light_tree_tests_per_point,lightcuts_tests_per_point"},
       {"memory",
        "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
        "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"
@@ -85,7 +88,8 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "pixel_error_max_pct,lights_tested_avg"},
       {"control",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
-       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels"},
+       "pixel_error_max_pct,error_bound_avg_pct,error_bound_max_pct,bound_holds_pct,pixels,"
+       "bound_over_error"},
       {"converge",
        "scene,lights,method,tolerance,pass_cpu_s,passes_in_rt_over_100,"
        "pixel_error_avg_pct_at_rt_over_100,pixel_error_max_pct_at_rt_over_100,passes_in_rt_over_10,"
@@ -95,6 +99,12 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
       {"converge_passes",
        "scene,lights,method,tolerance,passes,time_cpu_s,time_wall_s,speedup_over_rt,"
        "pixel_error_avg_pct,pixel_error_max_pct,std_error_avg_pct,pixels"},
+      {"targets",
+       "scene,lights,rt_seconds,target,method,tolerance,seconds,speedup,pixel_error_avg_pct,"
+       "pixel_error_max_pct,lights_tested_avg,pixels"},
+      {"targets_sweep",
+       "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
+       "pixel_error_max_pct,lights_tested_avg,pixels"},
       {"limit",
        "scene,lights,render_cpu_s,bare_cpu_s,render_over_bare,render_wall_s,bare_wall_s,"
        "closest_hit_rays,shadow_rays,bare_mrays_per_cpu_s"},
@@ -112,7 +122,7 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
         "fraction_building.png", "error_avg_building.png", "error_max_building.png",
         "work_lights_building.png", "work_volumes_building.png", "trade_avg.png", "trade_max.png",
         "control_building_64.png", "control_hall_256.png", "converge_avg_hall_256.png",
-        "converge_max_maze_45.png", "limit.png"}) {
+        "converge_max_maze_45.png", "targets_speedup.png", "limit.png"}) {
     const fs::path p = out / png;
     ASSERT_TRUE(fs::exists(p)) << png;
     EXPECT_EQ(read_file(p).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
@@ -120,7 +130,7 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
   const std::string md = read_file(out / "results.md");
   EXPECT_NE(md.find("## Headline"), std::string::npos);
   for (const auto& [name, header] : columns) {
-    if (name == "converge_passes") continue;  // a CSV beside converge's section
+    if (name == "converge_passes" || name == "targets_sweep") continue;  // CSVs beside a section
     EXPECT_NE(md.find("## " + name + ":"), std::string::npos) << name;
   }
   EXPECT_NE(md.find("(speed_building.png)"), std::string::npos);
@@ -175,6 +185,11 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
     largest_error = std::max(largest_error, std::stod(cells[error_max]));
     if (cells[method] == "rt") {
       EXPECT_EQ(std::stod(cells[bound_max]), 0.0) << line;
+      EXPECT_EQ(cells[column("bound_over_error")], "-") << line;
+    } else if (std::stod(cells[column("pixel_error_avg_pct")]) > 0.0) {
+      // A ratio wherever the method erred (the bound may be infinite: lev_mc, light_tree).
+      const std::string ratio = cells[column("bound_over_error")];
+      EXPECT_TRUE(ratio == "inf" || std::stod(ratio) > 0.0) << line;
     }
   }
   // building, maze and the hall at two light counts.
@@ -186,6 +201,73 @@ TEST_F(Bench, ControlBoundHoldsOnEveryPixelForEveryMethod) {
   EXPECT_GT(largest_error, 0.0) << "some method erred, so the check met real errors";
   EXPECT_NE(read_file(out / "results.md").find("| 100.00 |"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "control_maze_45.png"));
+}
+
+// A CSV as rows of named cells.
+std::vector<std::map<std::string, std::string>> read_csv_rows(const fs::path& path) {
+  std::istringstream csv(read_file(path));
+  std::string line;
+  std::vector<std::map<std::string, std::string>> rows;
+  if (!std::getline(csv, line)) return rows;
+  const std::vector<std::string> header = split_csv_line(line);
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> cells = split_csv_line(line);
+    EXPECT_EQ(cells.size(), header.size()) << line;
+    std::map<std::string, std::string>& row = rows.emplace_back();
+    for (std::size_t i = 0; i < cells.size() && i < header.size(); ++i) row[header[i]] = cells[i];
+  }
+  return rows;
+}
+
+// targets: per scene, one row per error target naming the fastest render of the sweep that meets
+// it (or "none" when none does), every method of the table swept on every scene.
+TEST_F(Bench, TargetsNamesTheFastestSettingThatMeetsEachTarget) {
+  const fs::path out = dir_ / "targets";
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "targets", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto sweep = read_csv_rows(out / "targets_sweep.csv");
+  const auto summary = read_csv_rows(out / "targets.csv");
+  std::map<std::string, std::set<std::string>> methods_per_scene;
+  for (const auto& row : sweep) methods_per_scene[row.at("scene")].insert(row.at("method"));
+  EXPECT_EQ(methods_per_scene.size(), 6u);  // the quick suite's six renders
+  for (const auto& [scene, methods] : methods_per_scene) {
+    for (const lev::MethodInfo& info : lev::method_table()) {
+      if (info.is_reference) continue;
+      EXPECT_EQ(methods.count(info.name), 1u) << scene << " " << info.name;
+    }
+  }
+  ASSERT_EQ(summary.size(), 2 * methods_per_scene.size());
+  int met = 0;
+  for (const auto& row : summary) {
+    const bool max_only = row.at("target").rfind("max", 0) == 0;
+    const std::map<std::string, std::string>* fastest = nullptr;
+    for (const auto& s : sweep) {
+      if (s.at("scene") != row.at("scene")) continue;
+      const double avg = std::stod(s.at("pixel_error_avg_pct")),
+                   max = std::stod(s.at("pixel_error_max_pct"));
+      const bool meets = max_only ? max < 2.0 : (avg < 0.5 && max < 5.0);
+      if (meets &&
+          (!fastest || std::stod(s.at("time_cpu_s")) < std::stod(fastest->at("time_cpu_s"))))
+        fastest = &s;
+    }
+    if (!fastest) {
+      EXPECT_EQ(row.at("method"), "none") << row.at("scene") << " " << row.at("target");
+      continue;
+    }
+    ++met;
+    EXPECT_EQ(row.at("method"), fastest->at("method"))
+        << row.at("scene") << " " << row.at("target");
+    EXPECT_EQ(row.at("tolerance"), fastest->at("tolerance"))
+        << row.at("scene") << " " << row.at("target");
+    EXPECT_EQ(row.at("seconds"), fastest->at("time_cpu_s"));
+    EXPECT_NEAR(std::stod(row.at("speedup")),
+                std::stod(row.at("rt_seconds")) / std::stod(row.at("seconds")),
+                1e-4 * std::stod(row.at("speedup")));
+  }
+  EXPECT_GT(met, 0) << "some setting met some target";
+  const std::string png = read_file(out / "targets_speedup.png");
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_NE(read_file(out / "results.md").find("## targets:"), std::string::npos);
 }
 
 // converge: every pass at the pixel centres, so lev repeats its image (its error never moves)

@@ -1,8 +1,8 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -24,7 +24,8 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("levrt_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+           ("levrt_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
             std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
@@ -54,7 +55,8 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
   const std::string out = path("image.png");
   for (const auto& [flag, values] : cases) {
     for (const std::string& value : values) {
-      const CommandRun r = run_levrt({"render", flag, value, "--width", "8", "--height", "8", "--out", out});
+      const CommandRun r =
+          run_levrt({"render", flag, value, "--width", "8", "--height", "8", "--out", out});
       const std::string label = flag + " '" + value + "': " + r.output;
       EXPECT_EQ(r.exit_code, 2) << label;
       EXPECT_NE(r.output.find(flag), std::string::npos) << label;
@@ -64,8 +66,34 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
   }
 }
 
+// --relative-error out of [0, 1] with the method that reads it, and any value with a method that
+// ignores it: one line naming the flag, exit 2, nothing written.
+TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {
+  const std::string out = path("image.png");
+  std::vector<std::vector<std::string>> cases;
+  for (const char* value : {"-0.01", "-1", "nan", "NaN", "1.0001", "2", "inf", "", "x"})
+    cases.push_back({"--method", "lightcuts", "--relative-error", value});
+  for (const char* method : {"rt", "lev", "lev_est", "ast", "light_tree"})
+    cases.push_back({"--method", method, "--relative-error", "0.02"});
+  for (std::vector<std::string> args : cases) {
+    const std::string label = args[1] + " " + args[3];
+    args.insert(args.begin(), "render");
+    for (const char* a : {"--width", "8", "--height", "8", "--out"}) args.emplace_back(a);
+    args.push_back(out);
+    const CommandRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 2) << label << ": " << r.output;
+    EXPECT_NE(r.output.find("--relative-error"), std::string::npos) << label << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << label << ": " << r.output;
+    EXPECT_TRUE(folder_is_empty()) << label;
+  }
+  const CommandRun ok = run_levrt({"render", "--method", "lightcuts", "--relative-error", "0.05",
+                                   "--width", "8", "--height", "8", "--out", out});
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
-  const CommandRun r = run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
+  const CommandRun r =
+      run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--width"), std::string::npos) << r.output;
   EXPECT_TRUE(folder_is_empty());
@@ -129,24 +157,62 @@ TEST_F(Cli, HelpShowsEachCommandsOwnDefaults) {
 }
 
 TEST_F(Cli, RenderWritesEveryOutputWithTheDocumentedStats) {
-  const CommandRun r = run_levrt({"render", "--scene", "building", "--lights", "64", "--method", "lev",
-                           "--tolerance", "0.01", "--width", "40", "--height", "30", "--spp", "2",
-                           "--out", path("i.png"), "--heatmap-lights", path("l.png"), "--heatmap-nodes",
-                           path("n.png"), "--heatmap-bound", path("b.png"), "--stats", path("s.json"),
-                           "--reference", "rt"});
+  const CommandRun r = run_levrt({"render",
+                                  "--scene",
+                                  "building",
+                                  "--lights",
+                                  "64",
+                                  "--method",
+                                  "lev",
+                                  "--tolerance",
+                                  "0.01",
+                                  "--width",
+                                  "40",
+                                  "--height",
+                                  "30",
+                                  "--spp",
+                                  "2",
+                                  "--out",
+                                  path("i.png"),
+                                  "--heatmap-lights",
+                                  path("l.png"),
+                                  "--heatmap-nodes",
+                                  path("n.png"),
+                                  "--heatmap-bound",
+                                  path("b.png"),
+                                  "--stats",
+                                  path("s.json"),
+                                  "--reference",
+                                  "rt"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* f : {"i.png", "l.png", "n.png", "b.png", "s.json"}) EXPECT_TRUE(fs::exists(path(f))) << f;
+  for (const char* f : {"i.png", "l.png", "n.png", "b.png", "s.json"})
+    EXPECT_TRUE(fs::exists(path(f))) << f;
   std::FILE* f = std::fopen(path("s.json").c_str(), "r");
   ASSERT_NE(f, nullptr);
   std::string json;
   std::array<char, 4096> buffer{};
   while (std::fgets(buffer.data(), buffer.size(), f)) json += buffer.data();
   std::fclose(f);
-  for (const char* key : {"\"scene\"", "\"level\"", "\"lights\": 64", "\"method\": \"lev\"", "\"tolerance\"",
-                          "\"width\": 40", "\"height\": 30", "\"spp\": 2", "\"threads\"", "\"time_build_s\"",
-                          "\"time_render_s\"", "\"shading_points\"", "\"shadow_rays\"", "\"lights_tested_avg\"",
-                          "\"nodes_visited_avg\"", "\"hierarchy_bytes\"", "\"pixel_error_avg_pct\"",
-                          "\"pixel_error_max_pct\"", "\"error_bound_avg_pct\"", "\"error_bound_max_pct\""}) {
+  for (const char* key : {"\"scene\"",
+                          "\"level\"",
+                          "\"lights\": 64",
+                          "\"method\": \"lev\"",
+                          "\"tolerance\"",
+                          "\"width\": 40",
+                          "\"height\": 30",
+                          "\"spp\": 2",
+                          "\"threads\"",
+                          "\"time_build_s\"",
+                          "\"time_render_s\"",
+                          "\"shading_points\"",
+                          "\"shadow_rays\"",
+                          "\"lights_tested_avg\"",
+                          "\"nodes_visited_avg\"",
+                          "\"hierarchy_bytes\"",
+                          "\"pixel_error_avg_pct\"",
+                          "\"pixel_error_max_pct\"",
+                          "\"error_bound_avg_pct\"",
+                          "\"error_bound_max_pct\""}) {
     EXPECT_NE(json.find(key), std::string::npos) << key;
   }
 }
@@ -161,7 +227,8 @@ TEST_F(Cli, HeatmapBoundIntoAMissingFolderOrOntoTheImageIsOneLineExitTwoAndNothi
       {"--heatmap-bound", path("b.json")},
   };
   for (const auto& c : cases) {
-    std::vector<std::string> args = {"render", "--width", "8", "--height", "8", "--stats", path("s.json")};
+    std::vector<std::string> args = {"render", "--width", "8",           "--height",
+                                     "8",      "--stats", path("s.json")};
     args.insert(args.end(), c.begin(), c.end());
     const CommandRun r = run_levrt(args);
     EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -173,8 +240,9 @@ TEST_F(Cli, HeatmapBoundIntoAMissingFolderOrOntoTheImageIsOneLineExitTwoAndNothi
 
 // The headless main job writes every output into out/, the error bound's heatmap among them.
 TEST_F(Cli, TheSnapshotWritesTheErrorBoundHeatmapBesideTheOthers) {
-  const CommandRun r = levrt_test::run_shell("cd " + levrt_test::shell_quote(dir_.string()) + " && " +
-                                             levrt_test::shell_quote(LEVRT_BINARY) + " snapshot");
+  const CommandRun r =
+      levrt_test::run_shell("cd " + levrt_test::shell_quote(dir_.string()) + " && " +
+                            levrt_test::shell_quote(LEVRT_BINARY) + " snapshot");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"building.png", "building_lights_tested.png", "building_nodes_visited.png",
                         "building_error_bound.png", "building_stats.json"}) {
@@ -186,18 +254,21 @@ TEST_F(Cli, TheSnapshotWritesTheErrorBoundHeatmapBesideTheOthers) {
 }
 
 // The stats report the certified bound without a reference: 0 for rt, which tests every light,
-// and above 0 for lev on the hall, where every point has lights below the tolerance.
+// and above 0 for lev on the hall at tolerance 0.1, where points have lights below the tolerance
+// that reach them (at 0.01 lev culls only lights that cannot, and its bound there is 0).
 TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
   const auto bound = [&](const std::string& method) {
-    const CommandRun r = run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method, "--width", "16",
-                                    "--height", "12", "--stats", path(method + ".json"), "--heatmap-bound",
-                                    path(method + ".png"), "--quiet"});
+    const CommandRun r =
+        run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method,
+                   "--tolerance", "0.1", "--width", "16", "--height", "12", "--stats",
+                   path(method + ".json"), "--heatmap-bound", path(method + ".png"), "--quiet"});
     EXPECT_EQ(r.exit_code, 0) << r.output;
     std::ifstream in(path(method + ".json"));
     const nlohmann::json stats = nlohmann::json::parse(in);
     EXPECT_FALSE(stats.contains("pixel_error_avg_pct"));
     EXPECT_TRUE(fs::exists(path(method + ".png")));
-    EXPECT_LE(stats.at("error_bound_avg_pct").get<double>(), stats.at("error_bound_max_pct").get<double>());
+    EXPECT_LE(stats.at("error_bound_avg_pct").get<double>(),
+              stats.at("error_bound_max_pct").get<double>());
     return stats.at("error_bound_max_pct").get<double>();
   };
   EXPECT_EQ(bound("rt"), 0.0);
@@ -208,9 +279,11 @@ TEST_F(Cli, SamplingMethodsWriteTheNoiseHeatmapAndItsEstimate) {
   for (const char* method : {"lev_mc", "light_tree"}) {
     const std::string stats = path(std::string(method) + ".json");
     const std::string noise = path(std::string(method) + "_noise.png");
-    const CommandRun r = run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method,
-                                    "--tolerance", "0.3", "--width", "32", "--height", "24", "--spp", "4",
-                                    "--samples", "2", "--heatmap-noise", noise, "--stats", stats, "--reference", "rt"});
+    const CommandRun r =
+        run_levrt({"render", "--scene",     "hall", "--lights",    "64", "--method",
+                   method,   "--tolerance", "0.3",  "--width",     "32", "--height",
+                   "24",     "--spp",       "4",    "--samples",   "2",  "--heatmap-noise",
+                   noise,    "--stats",     stats,  "--reference", "rt"});
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("std error avg"), std::string::npos) << r.output;
     const std::string png = read_file(noise);
@@ -222,7 +295,8 @@ TEST_F(Cli, SamplingMethodsWriteTheNoiseHeatmapAndItsEstimate) {
     EXPECT_TRUE(j["heatmap_noise_range"].is_array()) << method;
   }
   // One pass has no spread: no estimate is claimed.
-  const CommandRun one = run_levrt({"render", "--lights", "64", "--width", "8", "--height", "8", "--stats", path("one.json")});
+  const CommandRun one = run_levrt(
+      {"render", "--lights", "64", "--width", "8", "--height", "8", "--stats", path("one.json")});
   ASSERT_EQ(one.exit_code, 0) << one.output;
   EXPECT_TRUE(nlohmann::json::parse(read_file(path("one.json")))["std_error_avg_pct"].is_null());
 }

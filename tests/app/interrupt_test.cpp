@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/signal_process.h"
+#include "tests/support/slow_gltf.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
@@ -86,17 +87,19 @@ TEST(Interrupt, SignalDuringAMillionLightRenderExitsPromptly) {
   }
 }
 
-// Building level 10 (a million lights) takes seconds to build its model and light hierarchy: a
-// signal during the load ends it (between its steps, or by the load watchdog within
-// kLoadGraceSeconds of a step that cannot stop) with 130 and nothing written.
+// A scene that takes seconds to load (tests/support/slow_gltf.h): a signal during the load ends
+// it (between its steps, or by the load watchdog within kLoadGraceSeconds of a step that cannot
+// stop) with 130 and nothing written.
 TEST(Interrupt, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
   const levrt_test::TempDir temp("levrt_interrupt_load_");
-  const fs::path& dir = temp.path();
+  const fs::path scene = levrt_test::write_slow_loading_gltf(temp.path());
+  const fs::path dir = temp.path() / "out";
+  fs::create_directories(dir);
   for (int sig : {SIGINT, SIGTERM}) {
-    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "render", "--scene", "building", "--lights", "1048576",
-                               "--width", "32", "--height", "24", "--out", (dir / "i.png").string(),
-                               "--stats", (dir / "s.json").string()},
-                              sig, std::chrono::milliseconds(300), std::chrono::seconds(2)),
+    EXPECT_EQ(interrupt_after(
+                  {LEVRT_BINARY, "render", "--scene", scene.string(), "--width", "32", "--height",
+                   "24", "--out", (dir / "i.png").string(), "--stats", (dir / "s.json").string()},
+                  sig, std::chrono::milliseconds(300), std::chrono::seconds(2)),
               130)
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir)) << "signal " << sig;

@@ -49,7 +49,7 @@ std::vector<glm::vec3> query_points(Random& r, const std::vector<lev::Light>& wo
 }
 
 TEST(CulledBound, NeverBelowTheIrradianceOfTheLightsNotReturned) {
-  std::uint64_t culled_points = 0, finite_points = 0;
+  std::uint64_t culled_points = 0, finite_points = 0, tightened_points = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     Random r(seed);
     const lev::LightTree tree = lev_test::random_instanced_tree(r);
@@ -62,22 +62,34 @@ TEST(CulledBound, NeverBelowTheIrradianceOfTheLightsNotReturned) {
       for (const glm::vec3& x : points) {
         std::vector<lev::Light> found, found_without;
         lev::WalkCounters counters, counters_without;
-        glm::vec3 bound(-1.0f);
+        glm::vec3 bound(-1.0f), tight(-1.0f);
         lev::find_important_lights(h, volumes, tau, x, scratch, found, counters, &bound);
         lev::find_important_lights(h, volumes, tau, x, scratch, found_without, counters_without);
+        std::vector<lev::Light> found_tight;
+        lev::WalkCounters counters_tight;
+        lev::find_important_lights_tight_bound(h, volumes, tau, x, scratch, found_tight,
+                                               counters_tight, &tight);
         const std::string context = "seed " + std::to_string(seed) + " tau " + std::to_string(tau) +
                                     " x (" + std::to_string(x.x) + ", " + std::to_string(x.y) +
                                     ", " + std::to_string(x.z) + ")";
         // The bound is a by-product: the same lights, the same counters.
         lev_test::expect_same_lights(found, found_without, context);
         ASSERT_EQ(counters.nodes_visited, counters_without.nodes_visited) << context;
+        lev_test::expect_same_lights(found, found_tight, context);
+        ASSERT_EQ(counters.nodes_visited, counters_tight.nodes_visited) << context;
         const glm::dvec3 exact = brute_force_culled(world_lights, x, tau);
         for (int c = 0; c < 3; ++c) {
           ASSERT_FALSE(std::isnan(bound[c])) << context;
           ASSERT_GE(static_cast<double>(bound[c]), exact[c]) << context << ", channel " << c;
+          // The tightened bound: still above the exact sum, never above the walk's own.
+          ASSERT_FALSE(std::isnan(tight[c])) << context;
+          ASSERT_GE(static_cast<double>(tight[c]), exact[c]) << context << ", channel " << c;
+          ASSERT_LE(tight[c], bound[c]) << context << ", channel " << c;
         }
+        if (std::isinf(bound.x) && std::isfinite(tight.x)) ++tightened_points;
         if (tau == 0.0f) {
           ASSERT_EQ(bound, glm::vec3(0.0f)) << context;
+          ASSERT_EQ(tight, glm::vec3(0.0f)) << context;
         }
         if (found.size() < world_lights.size()) ++culled_points;
         if (std::isfinite(bound.x) && exact.x > 0.0) ++finite_points;
@@ -87,6 +99,51 @@ TEST(CulledBound, NeverBelowTheIrradianceOfTheLightsNotReturned) {
   // The property was exercised where lights were culled and the bound said something.
   EXPECT_GT(culled_points, 4000u);
   EXPECT_GT(finite_points, 3000u);
+  // Where the walk's bound saturated, the tightened one often says something.
+  EXPECT_GT(tightened_points, 20u);
+}
+
+// A point beside two lights far apart whose range (1) ends before it: their extent volumes miss
+// it, so the subtree holding both is culled, while the box of their positions passes 1.5 from it,
+// so the subtree's aggregate bound (which ignores ranges) counts their summed intensity at 1.5:
+// the saturation that made pixels read 100 %. The tightened bound opens the subtree and bounds
+// each light at its own distance.
+TEST(CulledBound, APointBesideACulledSubtreesLightsGetsATightBound) {
+  lev::Light left = lev::make_point_light({-10.0f, 0.0f, 0.0f}, glm::vec3(0.5f, 0.5f, 0.0f));
+  lev::Light right = lev::make_point_light({10.0f, 0.0f, 0.0f}, glm::vec3(0.5f, 0.25f, 0.0f));
+  left.range = right.range = 1.0f;
+  lev::LightTree tree;
+  tree.masters.push_back(lev::union_node({lev::light_node(left), lev::light_node(right)}));
+  tree.root = lev::union_node(
+      {lev::affine_node(lev::make_translation(glm::vec3(0.0f)), lev::instance_node(0)),
+       lev::light_node(lev::make_point_light({0.0f, 50.0f, 0.0f}, glm::vec3(0.01f)))});
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const float tau = 0.01f;
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+  const glm::vec3 x(0.0f, 0.0f, 1.5f);
+  lev::WalkScratch scratch;
+  lev::WalkCounters counters;
+  std::vector<lev::Light> found;
+  glm::vec3 coarse, tight;
+  lev::find_important_lights(h, volumes, tau, x, scratch, found, counters, &coarse);
+  EXPECT_TRUE(found.empty());
+  lev::find_important_lights_tight_bound(h, volumes, tau, x, scratch, found, counters, &tight);
+  EXPECT_TRUE(found.empty());
+  // Each light bounded by its intensity over its own distance squared (its aggregate ignores
+  // the range), plus the far light's exact irradiance.
+  const glm::vec3 each =
+      (left.intensity + right.intensity) / 102.25f + glm::vec3(0.01f / (48.5f * 48.5f));
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_LE(tight[c], each[c] * 1.01f) << c;
+    EXPECT_GT(coarse[c], 20.0f * tight[c]) << c;
+  }
+  // The selector `lev` reports the tightened bound.
+  OpenPoint point(x);
+  lev::SelectorScratch selector_scratch;
+  lev::SelectionCounters selection;
+  glm::vec3 reported;
+  lev::LevSelector(h, tau).direct_radiance(point, selector_scratch, selection, &reported);
+  EXPECT_EQ(reported, tight);
 }
 
 TEST(CulledBound, SelectorsReportWhatTheyLeftOut) {
@@ -107,14 +164,15 @@ TEST(CulledBound, SelectorsReportWhatTheyLeftOut) {
       glm::vec3 bound(-1.0f);
       rt.direct_radiance(point, scratch, counters, &bound);
       EXPECT_EQ(bound, glm::vec3(0.0f));
-      // lev: the walk's bound, and the radiance is the same with or without asking for it.
+      // lev: the walk's tightened bound, and the radiance is the same with or without asking for
+      // it.
       const glm::vec3 radiance = lev_selector.direct_radiance(point, scratch, counters, &bound);
       EXPECT_EQ(radiance, lev_selector.direct_radiance(point, scratch, counters));
       std::vector<lev::Light> found;
       lev::WalkCounters walk_counters;
       glm::vec3 walk_bound;
-      lev::find_important_lights(h, volumes, tau, x, scratch.walk, found, walk_counters,
-                                 &walk_bound);
+      lev::find_important_lights_tight_bound(h, volumes, tau, x, scratch.walk, found, walk_counters,
+                                             &walk_bound);
       EXPECT_EQ(bound, walk_bound);
       // ast: what it estimated instead of testing; everything at tolerance 0, nothing at a huge
       // one.

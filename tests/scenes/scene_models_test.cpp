@@ -41,19 +41,21 @@ TEST(SceneModels, ExportedFileRendersTheSameImageAndHierarchy) {
       EXPECT_EQ(loaded.name, built.name);
       EXPECT_EQ(loaded.level, level);
       EXPECT_EQ(loaded.lights.light_count, model.light_count(level));
-      EXPECT_EQ(lev::hierarchy_bytes(loaded.lights), lev::hierarchy_bytes(built.lights)) << model.name << " " << level;
+      EXPECT_EQ(lev::hierarchy_bytes(loaded.lights), lev::hierarchy_bytes(built.lights))
+          << model.name << " " << level;
       EXPECT_EQ(loaded.lights.nodes.size(), built.lights.nodes.size());
       EXPECT_EQ(loaded.geometry.instances.size(), built.geometry.instances.size());
       const renderer::Framebuffer a = render(built, lev::Method::lev, 0.01f);
       const renderer::Framebuffer b = render(loaded, lev::Method::lev, 0.01f);
       EXPECT_TRUE(bitwise_equal(a, b)) << model.name << " " << level;
-      EXPECT_EQ(renderer::framebuffer_rgb8(a), renderer::framebuffer_rgb8(b)) << model.name << " " << level;
+      EXPECT_EQ(renderer::framebuffer_rgb8(a), renderer::framebuffer_rgb8(b))
+          << model.name << " " << level;
     }
   }
 }
 
 TEST(SceneModels, LevAtToleranceZeroEqualsRtBitForBit) {
-  for (const char* name : {"maze", "hall"}) {
+  for (const char* name : {"maze", "hall", "stage", "carpark", "street"}) {
     const scenes::SceneModel* model = scenes::find_scene_model(name);
     ASSERT_NE(model, nullptr);
     for (int level : {model->min_level, model->min_level + 1}) {
@@ -73,7 +75,8 @@ TEST(SceneModels, LevAtToleranceZeroEqualsRtBitForBit) {
 
 TEST(SceneModels, EveryModelDescribesAValidScene) {
   for (const scenes::SceneModel& model : scenes::scene_models()) {
-    EXPECT_NO_THROW(scenes::validate_description(model.describe(model.default_level))) << model.name;
+    EXPECT_NO_THROW(scenes::validate_description(model.describe(model.default_level)))
+        << model.name;
     EXPECT_EQ(model.describe(model.default_level).name, model.name);
   }
 }

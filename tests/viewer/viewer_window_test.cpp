@@ -28,6 +28,7 @@
 #include <stb/stb_image.h>
 #include "tests/support/run_command.h"
 #include "tests/support/signal_process.h"
+#include "tests/support/slow_gltf.h"
 
 namespace {
 
@@ -347,22 +348,25 @@ class XvfbServer {
   std::string display_;
 };
 
-// Ctrl-C while the viewer's worker builds a million-light scene: the viewer exits 130 promptly
-// (the load stops at its next step, or the load watchdog ends it), with no screenshot written.
+// Ctrl-C while the viewer's worker loads a scene that takes seconds (tests/support/slow_gltf.h):
+// the viewer exits 130 promptly (the load stops at its next step, or the load watchdog ends it),
+// with no screenshot written.
 TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
   if (std::system("command -v Xvfb > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const XvfbServer xvfb;
   ASSERT_FALSE(xvfb.display().empty());
   ::setenv("DISPLAY", xvfb.display().c_str(), 1);
+  const fs::path scene = levrt_test::write_slow_loading_gltf(dir_);
+  fs::create_directories(dir_ / "out");
   for (int sig : {SIGINT, SIGTERM}) {
     EXPECT_EQ(levrt_test::interrupt_after(
-                  {LEVRT_BINARY, "view", "--scene", "building", "--lights", "1048576", "--window",
-                   "800x600", "--frames", "5", "--screenshot", path("shot.png")},
+                  {LEVRT_BINARY, "view", "--scene", scene.string(), "--window", "800x600",
+                   "--frames", "5", "--screenshot", path("out/shot.png")},
                   sig, std::chrono::milliseconds(800), std::chrono::seconds(2)),
               130)
         << "signal " << sig;
-    EXPECT_TRUE(fs::is_empty(dir_)) << "signal " << sig;
+    EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "signal " << sig;
   }
 }
 

@@ -1,0 +1,171 @@
+// targets (issue 23, new): per scene, rt's time and, for two error targets, the fastest method
+// and setting of the method table that meets it: its speedup over rt and its lights tested per
+// point. Every row of the table is swept over its bench tolerances, in turns with rt on the same
+// pixels, as control does; the whole sweep is written beside the summary.
+#include "app/bench/experiment_support.h"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lev/methods.h"
+
+namespace app::bench {
+namespace {
+
+struct ErrorTarget {
+  std::string name;  // in the table
+  double max_pct;    // the largest pixel error allowed
+  double avg_pct;    // the average allowed (infinite: no bound)
+};
+
+bool meets(const ErrorTarget& target, const PixelErrors& e) {
+  return e.max_pct < target.max_pct && e.average_pct < target.avg_pct;
+}
+
+// One render of the sweep, as the summary and the plot read it.
+struct SweptRender {
+  const lev::MethodInfo* method = nullptr;
+  double tolerance = 0.0;
+  double seconds = kNaN;
+  PixelErrors errors;
+  double lights_tested = kNaN;
+};
+
+}  // namespace
+
+Section run_targets(BenchRun& run, const std::string& out_dir) {
+  const SuiteConfig& c = run.config();
+  const std::vector<ErrorTarget> targets{
+      {"max < " + tolerance_text(c.target_max_pct) + " %", c.target_max_pct,
+       std::numeric_limits<double>::infinity()},
+      {"avg < " + tolerance_text(c.target_avg_pct) + " % and max < " +
+           tolerance_text(c.target_avg_max_pct) + " %",
+       c.target_avg_max_pct, c.target_avg_pct}};
+  Table summary;
+  summary.columns = {{"scene", "scene"},
+                     {"lights", "lights"},
+                     {"rt_seconds", "rt CPU s"},
+                     {"target", "target"},
+                     {"method", "fastest method"},
+                     {"tolerance", "setting"},
+                     {"seconds", "CPU s"},
+                     {"speedup", "speedup over rt"},
+                     {"pixel_error_avg_pct", "avg error (%)"},
+                     {"pixel_error_max_pct", "max error (%)"},
+                     {"lights_tested_avg", "lights tested/pt"},
+                     {"pixels", "px"}};
+  Table sweep;
+  sweep.columns = per_method_columns({{"lights_tested_avg", "lights tested/pt"}, {"pixels", "px"}});
+  Chart chart;
+  chart.title = "Speedup over rt of each method's fastest setting with max error < " +
+                tolerance_text(c.target_max_pct) + " %";
+  chart.y_label = "speedup over rt (CPU time)";
+  chart.log_y = true;
+  std::vector<Series> per_method;
+  for (const lev::MethodInfo& m : lev::method_table()) {
+    if (!m.is_reference) per_method.push_back({m.name, {}, {}});
+  }
+  std::string scene_keys;
+  std::vector<HeadlineRow> headline;
+  std::optional<double> street_lev_seconds, bare_street_lev_seconds;
+  int scene_index = 0;
+  for (const auto& [scene, wanted_lights] : c.target_renders) {
+    const std::optional<ReferencedScene> where = referenced_scene(run, scene, wanted_lights);
+    if (!where) continue;
+    const auto [level, lights, stride] = *where;
+    ++scene_index;
+    scene_keys += (scene_keys.empty() ? "" : ", ") + std::to_string(scene_index) + " " + scene +
+                  " " + format_count(lights);
+    const lev::Method rt = lev::reference_method();
+    std::vector<MeasureRequest> requests{{scene, level, rt, 0.0, stride, c.runs}};
+    for (const lev::MethodInfo& m : lev::method_table()) {
+      for (double t : swept_tolerances(run, m))
+        requests.push_back({scene, level, m.id, t, stride, c.runs});
+    }
+    const std::vector<const Measurement*> done = run.measure_together(requests);
+    const Measurement& reference = *done.front();
+    const double rt_seconds = reference.full_frame_cpu_seconds();
+    std::vector<SweptRender> renders;
+    for (std::size_t i = 1; i < requests.size(); ++i) {
+      const Measurement& m = *done[i];
+      const lev::MethodInfo& info = lev::method_info(requests[i].method);
+      SweptRender r{&info, requests[i].tolerance, m.full_frame_cpu_seconds(),
+                    pixel_errors(m, reference), m.lights_tested_avg()};
+      renders.push_back(r);
+      sweep.rows.push_back({text_cell(scene), count_cell(lights), text_cell(info.name),
+                            text_cell(info.uses_tolerance ? tolerance_text(r.tolerance) : "-"),
+                            number_cell(r.seconds, 3), number_cell(m.full_frame_seconds(), 3),
+                            ratio_cell(rt_seconds / r.seconds),
+                            number_cell(r.errors.average_pct, 4), number_cell(r.errors.max_pct, 3),
+                            number_cell(r.lights_tested, 1), text_cell(pixels_text(stride))});
+      if (info.id == lev::Method::lev && r.tolerance == c.tolerance) {
+        if (scene == "street") street_lev_seconds = r.seconds;
+        if (scene == "street_bare") bare_street_lev_seconds = r.seconds;
+      }
+    }
+    for (const ErrorTarget& target : targets) {
+      const SweptRender* best = nullptr;
+      for (const SweptRender& r : renders) {
+        if (meets(target, r.errors) && (!best || r.seconds < best->seconds)) best = &r;
+      }
+      if (!best) {
+        summary.rows.push_back({text_cell(scene), count_cell(lights), number_cell(rt_seconds, 3),
+                                text_cell(target.name), text_cell("none"), text_cell("-"),
+                                number_cell(kNaN, 3), ratio_cell(kNaN), number_cell(kNaN, 4),
+                                number_cell(kNaN, 3), number_cell(kNaN, 1),
+                                text_cell(pixels_text(stride))});
+        continue;
+      }
+      summary.rows.push_back(
+          {text_cell(scene), count_cell(lights), number_cell(rt_seconds, 3), text_cell(target.name),
+           text_cell(best->method->name),
+           text_cell(best->method->uses_tolerance ? tolerance_text(best->tolerance) : "-"),
+           number_cell(best->seconds, 3), ratio_cell(rt_seconds / best->seconds),
+           number_cell(best->errors.average_pct, 4), number_cell(best->errors.max_pct, 3),
+           number_cell(best->lights_tested, 1), text_cell(pixels_text(stride))});
+    }
+    // The plot: each method's fastest setting under the first target, at this scene's place.
+    for (Series& s : per_method) {
+      double fastest = kNaN;
+      for (const SweptRender& r : renders) {
+        if (s.label == r.method->name && meets(targets.front(), r.errors) &&
+            !(r.seconds >= fastest)) {
+          fastest = r.seconds;
+        }
+      }
+      if (std::isnan(fastest)) continue;
+      s.x.push_back(scene_index);
+      s.y.push_back(rt_seconds / fastest);
+    }
+  }
+  chart.x_label = "scene: " + scene_keys;
+  chart.series = per_method;
+  if (street_lev_seconds && bare_street_lev_seconds) {
+    const double ratio = *street_lev_seconds / *bare_street_lev_seconds;
+    headline.push_back(
+        {"lamp street: lev's time, lamps instanced over the same lights written bare", "<= 1.2x",
+         "-", format_ratio(ratio), status(!c.quick, ratio <= 1.2)});
+  }
+  write_table(run, out_dir, "targets_sweep", sweep);
+  SectionText text;
+  text.heading = "targets: the fastest setting that meets an error target, per scene (new)";
+  text.intro =
+      "Per scene, rt's time and, for two error targets against rt on the same pixels (max < " +
+      tolerance_text(c.target_max_pct) + " %; avg < " + tolerance_text(c.target_avg_pct) +
+      " % with max < " + tolerance_text(c.target_avg_max_pct) +
+      " %), the fastest method and setting of the method table that meets it: every row swept over "
+      "its bench tolerances, CPU seconds per full frame, median of at least " +
+      std::to_string(c.runs) +
+      " runs made in turns with rt. \"none\": no setting met the target. The whole sweep is in "
+      "targets_sweep.csv. lights tested/pt counts the shadow-tested lights per shading point (a "
+      "cut's size for a method that shades clusters). street and street_bare are the same town, "
+      "its "
+      "lamps placed as instances of one master or written bare.\n\n";
+  return write_section(run, out_dir, "targets", text, summary, {{"targets_speedup.png", chart}},
+                       headline);
+}
+
+}  // namespace app::bench

@@ -1,0 +1,19 @@
+#include "lev/selector_lightcuts.h"
+
+namespace lev {
+
+LightcutsSelector::LightcutsSelector(const LightHierarchy& hierarchy, float relative_error)
+    : tree_(build_light_cut_tree(hierarchy)), settings_{relative_error, kDefaultMaxCutSize} {}
+
+glm::vec3 LightcutsSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                                             SelectionCounters& counters,
+                                             glm::vec3* culled_irradiance_bound) const {
+  return shade_light_cut(tree_, settings_, point, method_scratch<CutScratch>(scratch), counters,
+                         culled_irradiance_bound, scratch.cancel);
+}
+
+std::size_t LightcutsSelector::bookkeeping_bytes() const {
+  return tree_.nodes.size() * sizeof(CutTreeNode) + tree_.lights.size() * sizeof(Light);
+}
+
+}  // namespace lev

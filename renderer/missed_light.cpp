@@ -1,0 +1,47 @@
+#include "renderer/missed_light.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/error_bound.h"
+
+namespace renderer {
+
+double pixel_missed_pct(const Framebuffer& f, std::size_t i) {
+  if (f.missed_sum.empty() || f.samples[i] == 0) return 0.0;
+  // The error scale's arithmetic is the bound's: |value| per channel, clamped at 1.
+  return error_bound_pct(glm::abs(f.missed_sum[i] / static_cast<float>(f.samples[i])));
+}
+
+double pixel_missed_std_error_pct(const Framebuffer& f, std::size_t i) {
+  if (f.missed_variance_sum.empty() || f.samples[i] == 0) return 0.0;
+  // The mean of n independent samples: the variances summed, over n^2.
+  const auto n = static_cast<float>(f.samples[i]);
+  return error_bound_pct(glm::sqrt(f.missed_variance_sum[i]) / n);
+}
+
+std::vector<double> missed_pct_image(const Framebuffer& f) {
+  std::vector<double> pct(f.samples.size());
+  for (std::size_t i = 0; i < pct.size(); ++i) pct[i] = pixel_missed_pct(f, i);
+  return pct;
+}
+
+MissedLightStats missed_light_stats(const Framebuffer& f) {
+  MissedLightStats s;
+  std::size_t pixels = 0;
+  for (std::size_t i = 0; i < f.samples.size(); ++i) {
+    if (f.samples[i] == 0) continue;
+    const double pct = pixel_missed_pct(f, i);
+    ++pixels;
+    s.average_pct += pct;
+    s.max_pct = std::max(s.max_pct, pct);
+    s.std_error_avg_pct += pixel_missed_std_error_pct(f, i);
+  }
+  if (pixels > 0) {
+    s.average_pct /= static_cast<double>(pixels);
+    s.std_error_avg_pct /= static_cast<double>(pixels);
+  }
+  return s;
+}
+
+}  // namespace renderer
