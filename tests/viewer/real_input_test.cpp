@@ -133,7 +133,10 @@ class RealInput : public ::testing::Test {
     xdotool("mousemove " + point(rect, fx, 0.5));
     const Json c =
         wait_for_controls([&](const Json& j) { return setting(j, "hovered") == control; });
-    EXPECT_EQ(setting(c, "hovered"), control);
+    // On failure: whether the viewer still runs (its exit code once it ended) and what it said.
+    EXPECT_EQ(setting(c, "hovered"), control)
+        << "viewer exit code: '" << read_text(path("viewer.rc"))
+        << "', output: " << read_text(path("viewer.rc.log"));
     return setting(c, "hovered") == control;
   }
 
@@ -195,9 +198,8 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
   // The pauses let the viewer draw frames between the steps (ImGui reads the pointer once a
   // frame), as a hand would; the result is checked by value, not by time.
   ASSERT_TRUE(hover("tolerance_slider", 0.9));
-  xdotool("sleep 0.2 mousedown 1 sleep 0.2 mousemove " +
-          point(slider, 0.6, 0.5) + " sleep 0.2 mousemove " + point(slider, 0.2, 0.5) +
-          " sleep 0.2 mouseup 1");
+  xdotool("sleep 0.2 mousedown 1 sleep 0.2 mousemove " + point(slider, 0.6, 0.5) +
+          " sleep 0.2 mousemove " + point(slider, 0.2, 0.5) + " sleep 0.2 mouseup 1");
   c = wait_for_controls([&](const Json& j) {
     const std::string t = setting(j, "tolerance");
     return !t.empty() && std::stod(t) < clicked[2];
