@@ -24,6 +24,8 @@
 #include "renderer/direction.h"
 #include "scenes/gltf_budget.h"
 #include "scenes/gltf_document.h"
+#include "scenes/gltf_schema.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
 
@@ -1041,11 +1043,12 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
     fail(path, "light scale", number_text(light_scale));
   if (camera < 0) fail(path, "camera", std::to_string(camera));
   GltfBudget budget(path, kMaxGltfSceneBytes);
-  const bool binary = ends_with(path, ".glb");
+  const bool binary = is_glb(bytes);
   FolderReader reader;
   reader.gltf_path = path;
   reader.folder = std::filesystem::path(path).parent_path().string();
-  reader.files = check_gltf_document(bytes, binary, path, reader.folder, budget);
+  GltfDocumentFacts document = check_gltf_document(bytes, binary, path, reader.folder, budget);
+  reader.files = std::move(document.files);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_encoded_image, nullptr);
   loader.SetFsCallbacks({accept_any_name, keep_name, read_checked_file, write_nothing, &reader});
@@ -1073,7 +1076,15 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   } catch (const std::invalid_argument& e) {
     fail(path, "scene", e.what());
   }
-  for (const std::string& warning : importer.warnings()) {
+  std::vector<std::string> warnings = importer.warnings();
+  if (!document.ignored_extensions.empty()) {
+    std::string names;
+    for (const std::string& name : document.ignored_extensions)
+      names += (names.empty() ? "" : ", ") + escape_control_characters(name);
+    warnings.insert(warnings.begin(), "extensionsUsed: " + names + " ignored (levrt honours " +
+                                          honoured_gltf_extensions_text() + ")");
+  }
+  for (const std::string& warning : warnings) {
     std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), warning.c_str());
   }
   return scene;
