@@ -1,5 +1,6 @@
 #include "scenes/gltf_document.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -113,8 +114,14 @@ class DocumentCheck {
     return true;
   }
 
-  // Every index the document holds points into its array (counted as the arrays closed).
+  // Every index the document holds points into its array (counted as the arrays closed), and
+  // every extension required is used too (the spec: extensionsRequired is a subset).
   void check_references() const {
+    for (const auto& [where, name] : required_extensions_) {
+      if (std::find(used_extensions_.begin(), used_extensions_.end(), name) ==
+          used_extensions_.end())
+        fail_at(where, "'" + shortened(name, 100) + "'", "required but not in extensionsUsed");
+    }
     for (const Reference& reference : references_) {
       const auto found = lengths_.find(reference.target);
       const std::size_t length = found == lengths_.end() ? 0 : found->second;
@@ -213,9 +220,12 @@ class DocumentCheck {
     }
     if (!rule->indexes.empty())
       references_.push_back({where(), static_cast<std::uint64_t>(value.number), rule->indexes});
-    if (rule->special == GltfSpecialCheck::used_extension &&
-        !is_honoured_gltf_extension(value.text))
-      ignored_extensions_.emplace_back(value.text);
+    if (rule->special == GltfSpecialCheck::used_extension) {
+      used_extensions_.emplace_back(value.text);
+      if (!is_honoured_gltf_extension(value.text)) ignored_extensions_.emplace_back(value.text);
+    }
+    if (rule->special == GltfSpecialCheck::required_extension)
+      required_extensions_.emplace_back(where(), value.text);
     return rule;
   }
 
@@ -356,6 +366,8 @@ class DocumentCheck {
   std::vector<Reference> references_;
   std::map<std::string, std::size_t, std::less<>> lengths_;  // index targets by pattern
   std::vector<std::string> ignored_extensions_;
+  std::vector<std::string> used_extensions_;
+  std::vector<std::pair<std::string, std::string>> required_extensions_;  // where, name
   std::vector<std::pair<std::string, std::uintmax_t>> reads_;  // every URI read, with its bytes
 };
 

@@ -15,8 +15,8 @@
 #include "renderer/render.h"
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_instantiation.h"
-#include "tests/support/gltf_builder.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/gltf_builder.h"
 #include "tests/support/test_render.h"
 
 namespace {

@@ -48,6 +48,9 @@ TEST(GltfSchema, HonouredRequiredExtensionsAreRead) {
   const std::string top =
       R"(, "extensionsUsed": ["KHR_lights_punctual"], "extensionsRequired": ["KHR_lights_punctual"])";
   EXPECT_EQ(warnings_of(gltf(top)), "");
+  levrt_test::expect_gltf_refused(
+      gltf(R"(, "extensionsRequired": ["KHR_lights_punctual"])"), kPath,
+      "extensionsRequired[0]: 'KHR_lights_punctual' (required but not in extensionsUsed)");
   EXPECT_TRUE(scenes::is_honoured_gltf_extension("KHR_lights_punctual"));
   EXPECT_FALSE(scenes::is_honoured_gltf_extension("KHR_draco_mesh_compression"));
 }
