@@ -125,14 +125,27 @@ class RealInput : public ::testing::Test {
   }
 
   // Moves the pointer onto a named control and waits until the viewer sees it there, so the
-  // click that follows reaches the window whatever the load.
+  // click that follows reaches the window whatever the load. The rectangle is read again while
+  // waiting and the pointer follows it: a popup (the method combo's list) lays its items out in
+  // the frame it opens, before ImGui has sized and placed it, so its first rectangles can be stale.
   bool hover(const std::string& control, double fx) {
-    const Json rect = controls()["controls"][control];
-    EXPECT_TRUE(rect.is_array()) << control;
-    if (!rect.is_array()) return false;
-    xdotool("mousemove " + point(rect, fx, 0.5));
-    const Json c =
-        wait_for_controls([&](const Json& j) { return setting(j, "hovered") == control; });
+    std::string moved_to;
+    Json c;
+    wait_for([&] {
+      c = controls();
+      if (c.is_discarded() || !c.is_object() || !c.contains("controls") ||
+          !c["controls"].contains(control) || !c["controls"][control].is_array())
+        return false;
+      const std::string target = point(c["controls"][control], fx, 0.5);
+      if (target != moved_to) {
+        xdotool("mousemove " + target);
+        moved_to = target;
+        return false;
+      }
+      return c.contains("mouse_busy") && !c["mouse_busy"].get<bool>() &&
+             setting(c, "hovered") == control;
+    });
+    EXPECT_FALSE(moved_to.empty()) << control << " is not among the recorded controls";
     // On failure: whether the viewer still runs (its exit code once it ended) and what it said.
     EXPECT_EQ(setting(c, "hovered"), control)
         << "viewer exit code: '" << read_text(path("viewer.rc"))
