@@ -1,0 +1,61 @@
+// `lev_cut` in the renderer: at relative error 0 its image equals rt's bit for bit (the
+// building, with point lights behind walls, and the hall's spots); at the default relative
+// error the image is the same for one and two threads, close to rt's on the hall, where every
+// light adds a little, with far fewer shadow rays than rt.
+#include <gtest/gtest.h>
+
+#include "renderer/pixel_error.h"
+#include "renderer/ray_scene.h"
+#include "renderer/render.h"
+#include "scenes/building.h"
+#include "scenes/hall.h"
+#include "tests/support/framebuffer_compare.h"
+
+namespace {
+
+renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
+                             lev::Method method, float relative_error, int threads) {
+  renderer::RenderSettings rs;
+  rs.width = 48;
+  rs.height = 36;
+  rs.method = method;
+  rs.relative_error = relative_error;
+  rs.threads = threads;
+  rs.tile_size = 8;
+  auto state = renderer::make_render_state(scene, rays, rs);
+  EXPECT_TRUE(renderer::render_pass(*state));
+  return renderer::render_framebuffer(*state);
+}
+
+TEST(LevCutRender, EqualsRtAtRelativeErrorZero) {
+  for (const bool hall : {false, true}) {
+    const renderer::Scene scene = hall ? scenes::build_hall(4) : scenes::build_building(3);
+    const renderer::RayScene rays(scene.geometry);
+    const renderer::Framebuffer exact = render(scene, rays, lev::Method::lev_cut, 0.0f, 2);
+    const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
+    EXPECT_TRUE(bitwise_equal(rt, exact)) << (hall ? "hall" : "building");
+    EXPECT_EQ(renderer::sum_framebuffer(rt).shadow_rays,
+              renderer::sum_framebuffer(exact).shadow_rays);
+  }
+}
+
+TEST(LevCutRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
+  const renderer::Scene scene = scenes::build_hall(5);
+  const renderer::RayScene rays(scene.geometry);
+  const auto default_error = static_cast<float>(lev::kDefaultRelativeError);
+  const renderer::Framebuffer one = render(scene, rays, lev::Method::lev_cut, default_error, 1);
+  const renderer::Framebuffer two = render(scene, rays, lev::Method::lev_cut, default_error, 2);
+  EXPECT_TRUE(bitwise_equal(one, two));
+  EXPECT_EQ(one.shadow_rays, two.shadow_rays);
+  EXPECT_EQ(one.lights_tested, two.lights_tested);
+  EXPECT_EQ(one.nodes_visited, two.nodes_visited);
+  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
+  const renderer::PixelErrorStats error = renderer::summarize_pixel_error(
+      renderer::pixel_error_pct(renderer::framebuffer_rgb8(one), renderer::framebuffer_rgb8(rt)));
+  EXPECT_LT(error.average_pct, 0.5);
+  EXPECT_LT(error.max_pct, 5.0);
+  EXPECT_LT(renderer::sum_framebuffer(one).shadow_rays * 2,
+            renderer::sum_framebuffer(rt).shadow_rays);
+}
+
+}  // namespace
