@@ -1,15 +1,11 @@
 #include "app/render_stats.h"
 
-#include <tbb/info.h>
+#include "renderer/tile_workers.h"
 
 namespace app {
 
-int resolved_threads(int threads) {
-  return threads > 0 ? threads : tbb::info::default_concurrency();
-}
-
 void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
-  stats.threads = resolved_threads(settings.threads);
+  stats.threads = renderer::worker_count(settings.threads);
   stats.depth = settings.depth;
   stats.subsample = settings.subsample;
   stats.light_scale = settings.light_scale;
@@ -77,7 +73,8 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["heatmap_lights_range"] = {s.heatmap_lights_range.min, s.heatmap_lights_range.max};
   j["heatmap_nodes_range"] = {s.heatmap_nodes_range.min, s.heatmap_nodes_range.max};
   if (s.error) j["heatmap_error_range"] = {s.heatmap_error_range.min, s.heatmap_error_range.max};
-  if (s.error_bound) j["heatmap_bound_range"] = {s.heatmap_bound_range.min, s.heatmap_bound_range.max};
+  if (s.error_bound)
+    j["heatmap_bound_range"] = {s.heatmap_bound_range.min, s.heatmap_bound_range.max};
   j["heatmap_scale"] = "log(1 + value per sample), viridis";
   // null before a second pass: no spread between passes is known yet.
   if (s.std_error_avg_pct) {

@@ -39,7 +39,7 @@ struct RenderStats {
   int threads = 0;  // resolved: never 0
   int depth = 0;
   int subsample = 1;
-  double light_scale = 1.0;         // glTF light exposure (Settings::light_scale)
+  double light_scale = 1.0;            // glTF light exposure (Settings::light_scale)
   std::size_t directional_lights = 0;  // suns, shadow-tested at every point outside the hierarchy
   double build_seconds = 0.0;
   double setup_seconds = 0.0;  // the render state: selector and extent volumes
@@ -68,9 +68,6 @@ struct RenderStats {
   int missed_samples = 0;
   renderer::HeatmapRange heatmap_missed_range;
 };
-
-// The thread count a setting of 0 (all cores) stands for.
-int resolved_threads(int threads);
 
 // The fields the settings decide alone, the same for `render` and a viewer snapshot: threads
 // (resolved), depth, subsample, light scale and camera index.

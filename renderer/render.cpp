@@ -5,14 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include "renderer/denormal_mode.h"
 #include "renderer/shading.h"
-#include "renderer/thread_annotations.h"
+#include "renderer/tile_workers.h"
 
 namespace renderer {
 
@@ -33,11 +28,9 @@ struct RenderState {
   // Passes each tile has completed: a pass resumed after a cancel skips the tiles it already
   // finished, so no pixel gets the same sample twice.
   std::vector<int> tile_passes;
-  std::unique_ptr<tbb::task_arena> arena;
-  tbb::enumerable_thread_specific<lev::SelectorScratch> scratch;
+  // One scratch per worker thread of a pass (tile_workers.h), kept from pass to pass.
+  std::vector<lev::SelectorScratch> scratch;
   RayLog* ray_log = nullptr;
-  // Addresses that only name the two edges of a pass for ThreadSanitizer (thread_annotations.h).
-  char pass_start_edge = 0, pass_end_edge = 0;
 
   RenderState(const Scene& s, const RayScene& r, const RenderSettings& settings_in)
       : scene(s), rays(r), settings(settings_in) {}
@@ -72,8 +65,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
   const std::size_t logged_before = ray_log ? ray_log->size() : 0;
   scratch.cancel = cancel;
   const lev::LightSelector& selector = preview ? *state.preview_selector : *state.selector;
-  TraceContext context{state.scene, state.rays, selector, scratch, rs.max_depth, ray_log, cancel,
-                       rs.compute_error_bound};
+  TraceContext context{state.scene,  state.rays, selector, scratch,
+                       rs.max_depth, ray_log,    cancel,   rs.compute_error_bound};
   context.missed_samples = preview ? 0 : rs.missed_samples;
   struct PixelSample {
     std::size_t pixel;
@@ -162,8 +155,7 @@ RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
   state->tiles.reset(new std::atomic<TileStatus>[static_cast<std::size_t>(tile_count)]);
   for (int i = 0; i < tile_count; ++i) state->tiles[i].store(TileStatus::waiting);
   state->tile_passes.assign(static_cast<std::size_t>(tile_count), 0);
-  state->arena = settings.threads > 0 ? std::make_unique<tbb::task_arena>(settings.threads)
-                                      : std::make_unique<tbb::task_arena>();
+  state->scratch.resize(static_cast<std::size_t>(worker_count(settings.threads)));
   return state;
 }
 
@@ -187,46 +179,25 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
   }
   const auto start = std::chrono::steady_clock::now();
   std::atomic<bool> cancelled{false};
-  annotate_release(&state.pass_start_edge);
-  state.arena->execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, tile_count, 1),
-        [&](const tbb::blocked_range<int>& range) {
-          // What the body needs, read from its task once, before the tiles' long work: the task
-          // lives in TBB's memory, handed between threads where ThreadSanitizer cannot see it,
-          // and a read after a long tile finds the task's write too old for TSan to restore its
-          // stack and match it to tsan.supp's TBB rules. The locals are the thread's own.
-          // The render's own state comes after the acquire, which orders it after its writes.
-          RenderState& st = state;
-          annotate_acquire(&st.pass_start_edge);
-          const std::atomic<bool>* const stop = cancel;
-          std::atomic<bool>& stopped = cancelled;
-          const TileDoneCallback& tile_done = on_tile_done;
-          const int step = preview_step;
-          const bool is_preview = preview;
-          const int first = range.begin(), last = range.end();
-          for (int tile = first; tile != last; ++tile) {
-            if (stop && stop->load(std::memory_order_relaxed)) {
-              stopped.store(true, std::memory_order_relaxed);
-              break;
-            }
-            int& passes = st.tile_passes[static_cast<std::size_t>(tile)];
-            if (!is_preview && passes > st.passes_done) continue;
-            st.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
-            if (!render_tile(st, tile, st.scratch.local(), stop, step)) {
-              st.tiles[tile].store(TileStatus::waiting, std::memory_order_release);
-              stopped.store(true, std::memory_order_relaxed);
-              break;
-            }
-            if (!is_preview) passes += 1;
-            if (tile_done) tile_done(tile);
-            st.tiles[tile].store(TileStatus::done, std::memory_order_release);
-          }
-          annotate_release(&st.pass_end_edge);
-        },
-        tbb::simple_partitioner());
+  run_tile_workers(static_cast<int>(state.scratch.size()), tile_count, [&](int worker, int tile) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) {
+      cancelled.store(true, std::memory_order_relaxed);
+      return false;
+    }
+    int& passes = state.tile_passes[static_cast<std::size_t>(tile)];
+    if (!preview && passes > state.passes_done) return true;
+    state.tiles[tile].store(TileStatus::rendering, std::memory_order_release);
+    if (!render_tile(state, tile, state.scratch[static_cast<std::size_t>(worker)], cancel,
+                     preview_step)) {
+      state.tiles[tile].store(TileStatus::waiting, std::memory_order_release);
+      cancelled.store(true, std::memory_order_relaxed);
+      return false;
+    }
+    if (!preview) passes += 1;
+    if (on_tile_done) on_tile_done(tile);
+    state.tiles[tile].store(TileStatus::done, std::memory_order_release);
+    return true;
   });
-  annotate_acquire(&state.pass_end_edge);
   if (preview) return !cancelled.load();
   state.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (cancelled.load()) return false;

@@ -1,13 +1,13 @@
 // The one progressive render step, under the render service every front end calls
 // (render_service.h): a RenderState plus render_pass, which renders one more sample per pixel
-// over all tiles on a oneTBB arena. Pass 0 samples pixel centres, pass k > 0 a jittered position
-// (unless RenderSettings::jitter_pixels is off) drawn from the (pixel, pass) random stream, so
-// images never depend on thread count or tile order. A pass can be cancelled at any time (the
-// flag is read between tiles, per row, in the recursion and every few thousand lights); finished
-// tiles keep their sample, an interrupted tile adds none.
-// The same pass with a pixel step > 1 is a preview: one pixel-centre sample every step pixels in
-// x and y, kept apart from the framebuffer (see render_pass), for a viewer that shows the whole
-// frame coarsely before the full-resolution passes arrive.
+// over all tiles on the pass's worker threads (tile_workers.h). Pass 0 samples pixel centres,
+// pass k > 0 a jittered position (unless RenderSettings::jitter_pixels is off) drawn from the
+// (pixel, pass) random stream, so images never depend on thread count or tile order. A pass can be
+// cancelled at any time (the flag is read between tiles, per row, in the recursion and every few
+// thousand lights); finished tiles keep their sample, an interrupted tile adds none. The same pass
+// with a pixel step > 1 is a preview: one pixel-centre sample every step pixels in x and y, kept
+// apart from the framebuffer (see render_pass), for a viewer that shows the whole frame coarsely
+// before the full-resolution passes arrive.
 #pragma once
 
 #include <atomic>
@@ -61,7 +61,7 @@ inline constexpr int kMinMissedSamples = 2;
 
 enum class TileStatus : std::uint8_t { waiting, rendering, done };
 
-struct RenderState;  // defined in render.cpp (holds the TBB arena and per-thread scratch)
+struct RenderState;  // defined in render.cpp (holds the per-worker scratch)
 
 struct RenderStateDeleter {
   void operator()(RenderState* state) const;
