@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 
 #include "lev/bounds.h"
 #include "lev/light_bounds.h"
+#include "lev/light_cut_tree.h"
 #include "lev/light_selector.h"
 
 namespace lev {
@@ -262,6 +264,110 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
   return true;
 }
 
+// The intensity (draw_weight) of the lights of the subtree at `node`, in the frame it is entered
+// with: an affine node's child's times its scale squared.
+double subtree_weight(const LightHierarchy& h, std::uint32_t node) {
+  double scale2 = 1.0;
+  while (h.nodes[node].kind == NodeKind::affine) {
+    const double s = h.transforms[h.nodes[node].payload].scale;
+    scale2 *= s * s;
+    node += 1;
+  }
+  const HierarchyNode& n = h.nodes[node];
+  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
+    return scale2 * draw_weight(h.lights[n.payload].intensity);
+  }
+  return scale2 * draw_weight(kept_aggregate(h, node).intensity);
+}
+
+// A kept subtree as one of its own lights, Lightcuts' representative (Walter et al. 2005, sec.
+// 4.1) in world space, carrying the subtree's summed intensity: drawn down the subtree, at each
+// union a child with probability proportional to its intensity (subtree_weight) by node_uniform
+// of the union's index, so each light represents the subtree with probability proportional to
+// its intensity and the draw is fixed for the scene. Not lev_est's centre of the box aimed along
+// the cone axis: a relative cut keeps large clusters, where that light's bias adds up the same
+// way in every cluster (stage 4,608, 80x60, relative error 0.02: avg / max error 2.36 / 27.2 %
+// with it). Entered with world_from_local = (linear, translation).
+Light drawn_representative(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
+                           const glm::vec3& translation) {
+  Similarity world_from_local{linear.rotation, linear.scale, translation};
+  while (h.nodes[node].kind == NodeKind::affine) {
+    world_from_local = compose(world_from_local, h.transforms[h.nodes[node].payload]);
+    node += 1;
+  }
+  const HierarchyNode& top = h.nodes[node];
+  if (top.kind == NodeKind::point_light || top.kind == NodeKind::spot_light) {
+    return transform_light(h.lights[top.payload], world_from_local);
+  }
+  const glm::vec3 intensity =
+      kept_aggregate(h, node).intensity * (world_from_local.scale * world_from_local.scale);
+  for (;;) {
+    const HierarchyNode& n = h.nodes[node];
+    switch (n.kind) {
+      case NodeKind::point_light:
+      case NodeKind::spot_light: {
+        Light representative = transform_light(h.lights[n.payload], world_from_local);
+        representative.intensity = intensity;
+        return representative;
+      }
+      case NodeKind::affine:
+        world_from_local = compose(world_from_local, h.transforms[n.payload]);
+        node += 1;
+        break;
+      case NodeKind::extent_volume:
+      case NodeKind::master:
+        node += 1;
+        break;
+      case NodeKind::instance:
+        node = n.payload;
+        break;
+      case NodeKind::set_union: {
+        const std::uint32_t* children = &h.union_children[n.payload];
+        double total = 0.0;
+        for (std::uint32_t k = 1; k <= children[0]; ++k) total += subtree_weight(h, children[k]);
+        double left = node_uniform(node) * total;
+        std::uint32_t chosen = 0;
+        for (std::uint32_t k = 1; k <= children[0]; ++k) {
+          const double w = subtree_weight(h, children[k]);
+          if (w <= 0.0 || !holds_lights(h, children[k])) continue;
+          chosen = children[k];
+          if (left < w) break;
+          left -= w;
+        }
+        node = chosen;  // the subtree holds lights (its bound is above 0), so one child does
+        break;
+      }
+    }
+  }
+}
+
+// How far a cluster's spot axes may spread, as a share of the angle its spots shine into, for
+// lev_est's representative (the centre of the box, aimed along the cone axis) to stand for it.
+constexpr float kCentredSpreadOfEmission = 0.25f;
+
+// lev_cut's representative of a kept subtree: lev_est's centred one where the lights shine
+// everywhere (point lights) or their axes spread little against their cones (a spot split in
+// four: the hall), else a drawn one (spots aimed apart, where a light aimed along the mean axis
+// lights what none of them lights: the stage). Measured at 80x60, relative error 0.02, avg / max
+// error against rt: stage 4,608 centred 2.36 / 27.2 %, drawn 0.55 / 8.4 %; hall 4,096 drawn
+// 0.85 / 10.1 %.
+Light cluster_representative(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
+                             const glm::vec3& translation) {
+  std::uint32_t below = node;
+  while (h.nodes[below].kind == NodeKind::affine) below += 1;
+  const HierarchyNode& n = h.nodes[below];
+  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
+    return representative_light(h, node, linear, translation);
+  }
+  const LightAggregate& a = kept_aggregate(h, below);
+  const bool centred =
+      shines_everywhere(a) ||
+      std::acos(std::clamp(a.cos_axis_spread, -1.0f, 1.0f)) <=
+          kCentredSpreadOfEmission * std::acos(std::clamp(a.cos_emission, -1.0f, 1.0f));
+  return centred ? representative_light(h, node, linear, translation)
+                 : drawn_representative(h, node, linear, translation);
+}
+
 // The relative cut's decision on a subtree the volumes kept (find_light_cut), entered with
 // world_from_local = (linear, translation) and the walk's point local_point in that frame: it is
 // dark at the point (bound 0: nothing to add), or it joins the cut as a cluster, its
@@ -280,7 +386,7 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
   float bound = brightest(radiance_bound(h, node, x, surface, &irradiance));
   if (bound == 0.0f) return;
   if (!(bound >= 0.0f)) bound = std::numeric_limits<float>::infinity();  // NaN: walk it first
-  const Light representative = representative_light(h, node, linear, translation);
+  const Light representative = cluster_representative(h, node, linear, translation);
   const glm::vec3 estimate = culled.shading->unshadowed_radiance(representative);
   culled.total += glm::dvec3(estimate);
   if (bound <= largest_cluster_bound(culled)) {
