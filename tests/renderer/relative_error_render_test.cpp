@@ -79,8 +79,8 @@ TEST_P(RelativeErrorRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, RelativeErrorRender, testing::ValuesIn(relative_error_methods()),
-                         [](const testing::TestParamInfo<lev::Method>& info) {
-                           return std::string(lev::method_info(info.param).name);
+                         [](const testing::TestParamInfo<lev::Method>& param) {
+                           return std::string(lev::method_info(param.param).name);
                          });
 
 }  // namespace
