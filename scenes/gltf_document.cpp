@@ -1,5 +1,6 @@
 #include "scenes/gltf_document.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <tiny_gltf.h>
 #include <nlohmann/json.hpp>
 
+#include "scenes/gltf_schema.h"
 #include "scenes/scene_file.h"
 
 namespace scenes {
@@ -44,6 +46,7 @@ struct Number {
   bool negative = false;
   bool whole = true;
   std::uint64_t magnitude = 0;  // exact for integers, saturated for huge floats
+  double value = 0.0;
   std::string text;
 };
 
@@ -60,14 +63,16 @@ class DocumentCheck {
       : path_(path), folder_(folder), text_(text) {}
 
   const GltfExternalFiles& files() const { return files_; }
+  const std::vector<std::string>& ignored_extensions() const { return ignored_extensions_; }
   const std::vector<std::pair<std::string, std::uintmax_t>>& reads() const { return reads_; }
   std::size_t values() const { return values_; }
 
-  bool null() { return scalar(); }
-  bool boolean(bool) { return scalar(); }
+  bool null() { return scalar({GltfJsonKind::null, 0.0, "null"}); }
+  bool boolean(bool v) { return scalar({GltfJsonKind::boolean, 0.0, v ? "true" : "false"}); }
   bool number_integer(json::number_integer_t v) {
     Number n;
     n.negative = v < 0;
+    n.value = static_cast<double>(v);
     n.magnitude = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
     n.text = std::to_string(v);
     return number(n);
@@ -75,12 +80,14 @@ class DocumentCheck {
   bool number_unsigned(json::number_unsigned_t v) {
     Number n;
     n.magnitude = v;
+    n.value = static_cast<double>(v);
     n.text = std::to_string(v);
     return number(n);
   }
   bool number_float(json::number_float_t v, const std::string& text) {
     Number n;
     n.negative = v < 0.0;
+    n.value = v;
     n.whole = std::isfinite(v) && v == std::floor(v);
     const double magnitude = std::abs(v);
     n.magnitude = magnitude < 18446744073709551615.0 ? static_cast<std::uint64_t>(magnitude)
@@ -89,18 +96,41 @@ class DocumentCheck {
     return number(n);
   }
   bool string(std::string& v) {
-    if (!scalar()) return true;
+    if (!scalar({GltfJsonKind::string, 0.0, v})) return true;
     if (is_uri_field()) check_uri(v);
     return true;
   }
-  bool binary(json::binary_t&) { return scalar(); }
+  bool binary(json::binary_t&) { return scalar({GltfJsonKind::null, 0.0, "binary"}); }
   bool start_object(std::size_t) { return open(false); }
   bool start_array(std::size_t) { return open(true); }
   bool end_object() { return close(); }
   bool end_array() { return close(); }
   bool key(std::string& k) {
-    stack_.back().key = k;
+    Level& level = stack_.back();
+    level.key = k;
+    for (std::size_t i = 0; i < level.missing.size(); ++i) {
+      if (level.missing[i] == k) level.missing.erase(level.missing.begin() + static_cast<long>(i));
+    }
     return true;
+  }
+
+  // Every index the document holds points into its array (counted as the arrays closed), and
+  // every extension required is used too (the spec: extensionsRequired is a subset).
+  void check_references() const {
+    for (const auto& [where, name] : required_extensions_) {
+      if (std::find(used_extensions_.begin(), used_extensions_.end(), name) ==
+          used_extensions_.end())
+        fail_at(where, "'" + shortened(name, 100) + "'", "required but not in extensionsUsed");
+    }
+    for (const Reference& reference : references_) {
+      const auto found = lengths_.find(reference.target);
+      const std::size_t length = found == lengths_.end() ? 0 : found->second;
+      if (reference.value >= length) {
+        fail_at(reference.where, std::to_string(reference.value),
+                "an index past the " + std::to_string(length) + " element(s) of " +
+                    std::string(reference.target));
+      }
+    }
   }
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
     std::size_t line = 1, column = 1;
@@ -126,12 +156,26 @@ class DocumentCheck {
     std::string key;        // an object's current member
     std::size_t index = 0;  // an array's current element
     std::size_t next = 0;
+    std::string pattern;                    // gltf_schema.h: the path with every index written []
+    const GltfFieldRule* rule = nullptr;    // the container's own rule, if levrt reads it
+    std::vector<std::string_view> missing;  // required members not met yet
+  };
+
+  // An index field, checked against its array's length once the whole document is read.
+  struct Reference {
+    std::string where;
+    std::uint64_t value = 0;
+    std::string_view target;
   };
 
   // The glTF path of the value being read: `nodes[3].extensions.KHR_lights_punctual.light`.
-  std::string where() const {
+  std::string where() const { return where_of(stack_.size()); }
+
+  // The glTF path of the value the first `depth` levels lead to.
+  std::string where_of(std::size_t depth) const {
     std::string p;
-    for (const Level& level : stack_) {
+    for (std::size_t i = 0; i < depth; ++i) {
+      const Level& level = stack_[i];
       if (level.array) {
         p += "[" + std::to_string(level.index) + "]";
       } else {
@@ -143,7 +187,46 @@ class DocumentCheck {
   }
 
   [[noreturn]] void fail(const std::string& value, const std::string& problem) const {
-    throw std::invalid_argument(path_ + ": " + where() + ": " + value + " (" + problem + ")");
+    fail_at(where(), value, problem);
+  }
+
+  [[noreturn]] void fail_at(const std::string& where, const std::string& value,
+                            const std::string& problem) const {
+    throw std::invalid_argument(path_ + ": " + where + ": " + value + " (" + problem + ")");
+  }
+
+  // The schema's rule for the value beginning (gltf_schema.h), or nullptr: outside the checked
+  // part of the document, or a field levrt does not read.
+  const GltfFieldRule* rule_here() const {
+    if (stack_.empty() || unchecked_from_ != kNone || unchecked_member(stack_.size() - 1))
+      return nullptr;
+    const Level& level = stack_.back();
+    return find_gltf_field_rule(level.pattern, level.key, level.array);
+  }
+
+  // Checks the value beginning against its rule; an index is kept for check_references and an
+  // extension used but not honoured for the warning.
+  const GltfFieldRule* check_rule(const GltfJsonValue& value) {
+    const GltfFieldRule* rule = rule_here();
+    if (stack_.empty() && value.kind != GltfJsonKind::object)
+      fail(std::string(value.text), "a glTF document is a JSON object");
+    if (!rule) return nullptr;
+    const std::string problem = gltf_field_problem(*rule, value);
+    if (!problem.empty()) {
+      const std::string shown = value.kind == GltfJsonKind::string
+                                    ? "'" + shortened(std::string(value.text), 100) + "'"
+                                    : shortened(std::string(value.text), 100);
+      fail(shown, problem);
+    }
+    if (!rule->indexes.empty())
+      references_.push_back({where(), static_cast<std::uint64_t>(value.number), rule->indexes});
+    if (rule->special == GltfSpecialCheck::used_extension) {
+      used_extensions_.emplace_back(value.text);
+      if (!is_honoured_gltf_extension(value.text)) ignored_extensions_.emplace_back(value.text);
+    }
+    if (rule->special == GltfSpecialCheck::required_extension)
+      required_extensions_.emplace_back(where(), value.text);
+    return rule;
   }
 
   // Called as every value begins: counts it and moves its array's index.
@@ -169,8 +252,9 @@ class DocumentCheck {
     return unchecked_from_ == kNone && !(!stack_.empty() && unchecked_member(stack_.size() - 1));
   }
 
-  bool scalar() {
+  bool scalar(const GltfJsonValue& value) {
     begin_value();
+    check_rule(value);
     return checking();
   }
 
@@ -179,13 +263,33 @@ class DocumentCheck {
     if (stack_.size() >= static_cast<std::size_t>(kMaxJsonDepth))
       fail("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
            "the limit a scene file has too");
+    const GltfJsonKind kind = array ? GltfJsonKind::array : GltfJsonKind::object;
+    Level level{array, {}, 0, 0, {}, nullptr, {}};
+    level.rule = check_rule({kind, 0.0, array ? "an array" : "an object"});
     if (unchecked_from_ == kNone && !stack_.empty() && unchecked_member(stack_.size() - 1))
       unchecked_from_ = stack_.size();
-    stack_.push_back({array, {}, 0, 0});
+    if (unchecked_from_ == kNone) {
+      if (!stack_.empty()) {
+        const Level& parent = stack_.back();
+        level.pattern = gltf_member_pattern(parent.pattern, parent.key, parent.array);
+      }
+      if (!array) level.missing = required_gltf_members(level.pattern);
+    }
+    stack_.push_back(std::move(level));
     return true;
   }
 
   bool close() {
+    const Level& level = stack_.back();
+    if (!level.missing.empty()) {
+      fail_at(where_of(stack_.size() - 1) + "." + std::string(level.missing.front()), "missing",
+              "a member glTF requires");
+    }
+    if (level.rule && level.rule->length != 0 && level.next != level.rule->length) {
+      fail_at(where_of(stack_.size() - 1), std::to_string(level.next) + " values",
+              std::to_string(level.rule->length) + " are expected");
+    }
+    if (level.array && is_gltf_index_target(level.pattern)) lengths_[level.pattern] = level.next;
     stack_.pop_back();
     if (stack_.size() == unchecked_from_) unchecked_from_ = kNone;
     return true;
@@ -209,7 +313,8 @@ class DocumentCheck {
   }
 
   bool number(const Number& n) {
-    if (!scalar()) return true;
+    const GltfJsonKind kind = n.whole ? GltfJsonKind::integer : GltfJsonKind::number;
+    if (!scalar({kind, n.value, n.text})) return true;
     const std::string_view name = field();
     if (is_attribute() || is_index_field(name)) {
       if (n.negative || !n.whole || n.magnitude > kMaxIndex)
@@ -258,6 +363,11 @@ class DocumentCheck {
   std::size_t unchecked_from_ = kNone;  // the depth from which nothing is checked
   std::size_t values_ = 0;
   GltfExternalFiles files_;
+  std::vector<Reference> references_;
+  std::map<std::string, std::size_t, std::less<>> lengths_;  // index targets by pattern
+  std::vector<std::string> ignored_extensions_;
+  std::vector<std::string> used_extensions_;
+  std::vector<std::pair<std::string, std::string>> required_extensions_;  // where, name
   std::vector<std::pair<std::string, std::uintmax_t>> reads_;  // every URI read, with its bytes
 };
 
@@ -270,10 +380,25 @@ std::uint32_t little_endian_u32(const std::string& bytes, std::size_t at) {
 
 }  // namespace
 
+bool is_glb(const std::string& bytes) {
+  return bytes.compare(0, 4, "glTF") == 0;
+}
+
 std::string glb_json_chunk(const std::string& bytes, const std::string& path) {
-  if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0) {
+  if (bytes.size() < 20 || !is_glb(bytes)) {
     throw std::invalid_argument(path + ": not a binary glTF file (" + std::to_string(bytes.size()) +
                                 " bytes without the 20-byte 'glTF' header and JSON chunk)");
+  }
+  const std::uint32_t version = little_endian_u32(bytes, 4);
+  if (version != 2) {
+    throw std::invalid_argument(path + ": binary glTF: header version " + std::to_string(version) +
+                                " (levrt reads version 2)");
+  }
+  const std::uint32_t length_bytes = little_endian_u32(bytes, 8);
+  if (length_bytes != bytes.size()) {
+    throw std::invalid_argument(path + ": binary glTF: header length " +
+                                std::to_string(length_bytes) + " bytes, the file has " +
+                                std::to_string(bytes.size()));
   }
   const std::uint32_t json_bytes = little_endian_u32(bytes, 12);
   if (little_endian_u32(bytes, 16) != 0x4E4F534Au)
@@ -286,7 +411,7 @@ std::string glb_json_chunk(const std::string& bytes, const std::string& path) {
   return bytes.substr(20, json_bytes);
 }
 
-GltfExternalFiles check_gltf_document(const std::string& bytes, bool binary,
+GltfDocumentFacts check_gltf_document(const std::string& bytes, bool binary,
                                       const std::string& path, const std::string& folder,
                                       GltfBudget& budget) {
   budget.charge(bytes.size(), "the file itself");
@@ -299,10 +424,11 @@ GltfExternalFiles check_gltf_document(const std::string& bytes, bool binary,
   DocumentCheck check(path, folder, text);
   // nlohmann's SAX parser keeps its nesting in a vector, not on the call stack.
   if (!json::sax_parse(text, &check)) throw std::invalid_argument(path + ": invalid JSON");
+  check.check_references();
   budget.charge(check.values(), kGltfBytesPerJsonValue,
                 "the JSON document's " + std::to_string(check.values()) + " values");
   for (const auto& [what, file_bytes] : check.reads()) budget.charge(file_bytes, what);
-  return check.files();
+  return {check.files(), check.ignored_extensions()};
 }
 
 }  // namespace scenes

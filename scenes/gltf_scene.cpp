@@ -24,6 +24,9 @@
 #include "renderer/direction.h"
 #include "scenes/gltf_budget.h"
 #include "scenes/gltf_document.h"
+#include "scenes/gltf_node_tree.h"
+#include "scenes/gltf_schema.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
 
@@ -124,6 +127,7 @@ class Importer {
   SceneDescription run() {
     check_buffers();
     check_lights();
+    check_gltf_node_tree(model_, path_);
     const int scene_index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
     if (model_.scenes.empty()) fail(path_, "scenes", "none");
     if (scene_index >= static_cast<int>(model_.scenes.size()))
@@ -134,6 +138,11 @@ class Importer {
     charge_scene(roots);
     on_path_.assign(model_.nodes.size(), false);
     for (const int node : roots) visit_tree(node);
+    if (positionless_primitives_ > 0) {
+      warnings_.push_back(
+          std::to_string(positionless_primitives_) +
+          " primitive(s) without POSITION skipped (the first: " + first_positionless_ + ")");
+    }
     scene_.name = std::filesystem::path(path_).stem().string();
     scene_.ambient = glm::vec3(0.0f);
     if (lights_.empty() && mesh_nodes_.empty() && scene_.directional_lights.empty()) {
@@ -773,6 +782,11 @@ class Importer {
         skipped_modes.push_back(primitive.mode);
         continue;
       }
+      // The spec: a primitive without POSITION is not rendered.
+      if (primitive.attributes.count("POSITION") == 0) {
+        if (positionless_primitives_++ == 0) first_positionless_ = primitive_where;
+        continue;
+      }
       renderer::TriangleMesh part = read_primitive(primitive, primitive_where);
       part.material = scene_material(primitive.material, primitive_where);
       if (!part.triangles.empty()) data.parts.push_back(std::move(part));
@@ -805,13 +819,14 @@ class Importer {
   // matrix is one (the usual case: every such node shares one Embree prototype); otherwise a
   // master per distinct linear part, with that part baked in, placed by the translation.
   void place_mesh(int gltf_mesh, const glm::dmat4& world, const std::string& where) {
-    const std::uint32_t mesh = scene_mesh(gltf_mesh, where);
-    if (mesh == kNoIndex) return;
     const glm::dmat3 linear(world);
     const glm::dvec3 translation(world[3]);
     const double det = glm::determinant(linear);
-    if (!std::isfinite(det) || !(std::abs(det) > 1e-18))
-      fail(path_, where, "singular transform of a mesh (determinant " + number_text(det) + ")");
+    if (!std::isfinite(det)) fail(path_, where, "transform of a mesh " + number_text(det));
+    // A scale of 0 (on any axis) is how authors hide a node: the mesh has no area to draw.
+    if (!(std::abs(det) > 1e-18)) return;
+    const std::uint32_t mesh = scene_mesh(gltf_mesh, where);
+    if (mesh == kNoIndex) return;
     const double scale = std::cbrt(std::abs(det));
     const glm::dmat3 unit = linear / scale;
     const glm::dmat3 gram = glm::transpose(unit) * unit;
@@ -912,15 +927,25 @@ class Importer {
 
   void add_light(const tinygltf::Light& light, const glm::dvec3& position,
                  const glm::dvec3& forward, const std::string& where) {
-    const double length = glm::length(forward);
-    if (!(length > 0.0) || !std::isfinite(length))
-      fail(path_, where, "degenerate transform of a light");
+    double length = glm::length(forward);
+    if (!std::isfinite(length)) fail(path_, where, "transform of a light " + number_text(length));
+    glm::dvec3 axis_forward = forward;
+    if (!(length > 0.0)) {
+      // A zero scale leaves no direction; a point light needs none (glTF never scales a light).
+      if (light.type != "point") {
+        warnings_.push_back(where + ": " + light.type +
+                            " light under a zero scale has no direction; skipped");
+        return;
+      }
+      axis_forward = {0.0, 0.0, -1.0};
+      length = 1.0;
+    }
     glm::dvec3 colour(1.0);
     if (light.color.size() == 3) colour = {light.color[0], light.color[1], light.color[2]};
     // glTF: candela for point and spot lights, lux for directional ones; both become levrt's
     // irradiance (at distance 1, or everywhere) through the one light scale.
     const glm::vec3 intensity(colour * light.intensity * static_cast<double>(light_scale_));
-    const glm::dvec3 direction = forward / length;
+    const glm::dvec3 direction = axis_forward / length;
     if (light.type == "directional") {
       scene_.directional_lights.push_back({glm::vec3(direction), intensity});
       return;
@@ -970,8 +995,12 @@ class Importer {
     const glm::dvec3 position(world[3]);
     const glm::dvec3 forward = -glm::dvec3(world[2]);
     const glm::dvec3 up(world[1]);
-    if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0))
-      fail(path_, where, "degenerate camera transform");
+    if (!std::isfinite(glm::length(forward) + glm::length(up)))
+      fail(path_, where, "camera transform not finite");
+    if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0)) {
+      warnings_.push_back(where + ": camera under a zero scale has no direction; not used");
+      return;
+    }
     camera_.position = glm::vec3(position);
     camera_.target = glm::vec3(position + glm::normalize(forward));
     camera_.up = glm::vec3(glm::normalize(up));
@@ -1020,6 +1049,8 @@ class Importer {
   std::vector<std::pair<glm::vec3, glm::vec3>> mesh_bounds_;  // per scene mesh, in its frame
   std::map<std::pair<std::uint32_t, std::array<float, 9>>, std::uint32_t> master_of_;
   std::vector<SceneNode> mesh_nodes_;
+  std::size_t positionless_primitives_ = 0;
+  std::string first_positionless_;  // the glTF path of the first one, for the warning
   renderer::Camera camera_;
   glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
@@ -1041,11 +1072,12 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
     fail(path, "light scale", number_text(light_scale));
   if (camera < 0) fail(path, "camera", std::to_string(camera));
   GltfBudget budget(path, kMaxGltfSceneBytes);
-  const bool binary = ends_with(path, ".glb");
+  const bool binary = is_glb(bytes);
   FolderReader reader;
   reader.gltf_path = path;
   reader.folder = std::filesystem::path(path).parent_path().string();
-  reader.files = check_gltf_document(bytes, binary, path, reader.folder, budget);
+  GltfDocumentFacts document = check_gltf_document(bytes, binary, path, reader.folder, budget);
+  reader.files = std::move(document.files);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_encoded_image, nullptr);
   loader.SetFsCallbacks({accept_any_name, keep_name, read_checked_file, write_nothing, &reader});
@@ -1073,7 +1105,15 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   } catch (const std::invalid_argument& e) {
     fail(path, "scene", e.what());
   }
-  for (const std::string& warning : importer.warnings()) {
+  std::vector<std::string> warnings = importer.warnings();
+  if (!document.ignored_extensions.empty()) {
+    std::string names;
+    for (const std::string& name : document.ignored_extensions)
+      names += (names.empty() ? "" : ", ") + escape_control_characters(name);
+    warnings.insert(warnings.begin(), "extensionsUsed: " + names + " ignored (levrt honours " +
+                                          honoured_gltf_extensions_text() + ")");
+  }
+  for (const std::string& warning : warnings) {
     std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), warning.c_str());
   }
   return scene;

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages levrt builds and tests with. Skips apt entirely when they are
-# all present, so it is cheap to call before every build. Needs root (or sudo) for apt-get.
+# Installs the Debian 12 packages levrt builds and tests with, then the Khronos glTF-Validator
+# from the npm registry (tests/app/gltf_validator_test.cpp; a pinned version, global). Skips apt
+# and npm when everything is present, so it is cheap to call before every build. Needs root (or
+# sudo) for apt-get and the global npm install.
 set -euo pipefail
 packages=(
   cmake g++ make ninja-build pkg-config
@@ -10,15 +12,21 @@ packages=(
   xvfb xauth mesa-utils xdotool
   clang python3
 )
+gltf_validator="gltf-validator@2.0.0-dev.3.10"
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
-fi
-sudo=""
+# node and npm from Debian, unless a node is already installed another way (its own npm).
+command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
+sudo=""""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
-echo "install-deps: installing ${missing[*]}" >&2
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+if [ ${#missing[@]} -ne 0 ]; then
+  echo "install-deps: installing ${missing[*]}" >&2
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+if ! npm ls -g "$gltf_validator" >/dev/null 2>&1; then
+  echo "install-deps: installing $gltf_validator (npm)" >&2
+  $sudo npm install -g --no-fund --no-audit "$gltf_validator" >/dev/null
+fi

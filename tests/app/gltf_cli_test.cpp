@@ -153,6 +153,50 @@ TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
   }
 }
 
+// What glTF forbids (scenes/gltf_schema.h, gltf_node_tree.h, gltf_document.h) through `render`:
+// one line naming the file and the glTF path, exit 2, nothing written.
+TEST_F(GltfCli, NonConformingFilesExitTwoWithOneLineNamingTheGltfPath) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const auto with = [&](const std::string& asset, const std::string& top, const std::string& light,
+                        const std::string& nodes, const std::string& roots) {
+    return R"({"asset": )" + asset + top +
+           R"(, "extensions": {"KHR_lights_punctual": {"lights": [)" + light +
+           R"(]}}, "scenes": [{"nodes": )" + roots + R"(}], "nodes": [)" + nodes + "]}";
+  };
+  const std::string v2 = R"({"version": "2.0"})";
+  const std::string point = R"({"type": "point"})";
+  std::string glb_json = with(v2, "", point, node, "[0]");
+  while (glb_json.size() % 4 != 0) glb_json += ' ';
+  const auto word = [](std::uint32_t v) {
+    return std::string(reinterpret_cast<const char*>(&v), 4);
+  };
+  const std::string glb = std::string("glTF") + word(2) +
+                          word(static_cast<std::uint32_t>(20 + glb_json.size())) +
+                          word(static_cast<std::uint32_t>(glb_json.size())) + "JSON" + glb_json;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {with(v2, R"(, "extensionsRequired": ["KHR_draco_mesh_compression"])", point, node, "[0]"),
+       "extensionsRequired[0]: 'KHR_draco_mesh_compression'"},
+      {with(R"({"version": "1.0"})", "", point, node, "[0]"), "asset.version: '1.0'"},
+      {with(R"({"version": "2.0", "minVersion": "2.1"})", "", point, node, "[0]"),
+       "asset.minVersion: '2.1'"},
+      {with(v2, "", R"({"type": "point", "intensity": "50"})", node, "[0]"),
+       "extensions.KHR_lights_punctual.lights[0].intensity: '50'"},
+      {with(v2, "", R"({"type": "point", "range": 0})", node, "[0]"),
+       "extensions.KHR_lights_punctual.lights[0].range: 0"},
+      {with(v2, "", point, node + R"(, {"children": [0]}, {"children": [0]})", "[1, 2]"),
+       "nodes[0]: a child of both nodes[1] and nodes[2]"},
+      {glb + "    ", "binary glTF: header length"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string file =
+        path("case" + std::to_string(i) + (i + 1 == cases.size() ? ".glb" : ".gltf"));
+    { std::ofstream(file, std::ios::binary) << cases[i].first; }
+    const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
+                                    "--out", path("x.png"), "--stats", path("s.json")});
+    expect_refused_without_output(r, file, cases[i].second);
+  }
+}
+
 TEST_F(GltfCli, AFileWithNothingToRenderShowsTheBackgroundWithOneWarning) {
   const std::string file = path("empty.gltf");
   {

@@ -24,6 +24,7 @@
 #include "scenes/scene_instantiation.h"
 #include "scenes/scene_models.h"
 #include "tests/support/error_bound_support.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
@@ -33,17 +34,11 @@ constexpr double kRoundingPct = renderer::kErrorBoundRoundingPct;
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
                              lev::Method method, float tolerance, bool compute_error_bound = true) {
-  renderer::RenderSettings rs;
-  rs.width = kWidth;
-  rs.height = kHeight;
-  rs.method = method;
+  renderer::RenderSettings rs = test_render_settings(method, kWidth, kHeight);
   rs.tolerance = tolerance;
-  rs.tile_size = 8;
   rs.compute_error_bound = compute_error_bound;
-  auto state = renderer::make_render_state(scene, rays, rs);
   // Two passes: the second is jittered, so the bound is a mean over samples as the image is.
-  for (int pass = 0; pass < 2; ++pass) EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, rs, 2);
 }
 
 // Every pixel of every non-reference method within its bound of rt's; rt's bound is exactly 0.

@@ -12,24 +12,19 @@
 #include "scenes/building.h"
 #include "scenes/maze.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
                              lev::Method method, float tolerance, int missed_samples,
                              std::uint64_t seed, int threads, int width, int height) {
-  renderer::RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.method = method;
+  renderer::RenderSettings rs = test_render_settings(method, width, height);
   rs.tolerance = tolerance;
   rs.threads = threads;
-  rs.tile_size = 8;
   rs.seed = seed;
   rs.missed_samples = missed_samples;
-  auto state = renderer::make_render_state(scene, rays, rs);
-  EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, rs);
 }
 
 glm::dvec3 sum(const std::vector<glm::vec3>& values) {

@@ -14,22 +14,17 @@
 #include "scenes/building.h"
 #include "scenes/hall.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
                              lev::Method method, float relative_error, int threads, int width = 48,
                              int height = 36) {
-  renderer::RenderSettings rs;
-  rs.width = width;
-  rs.height = height;
-  rs.method = method;
+  renderer::RenderSettings rs = test_render_settings(method, width, height);
   rs.relative_error = relative_error;
   rs.threads = threads;
-  rs.tile_size = 8;
-  auto state = renderer::make_render_state(scene, rays, rs);
-  EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, rs);
 }
 
 std::vector<lev::Method> relative_error_methods() {

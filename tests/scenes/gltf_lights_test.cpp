@@ -15,8 +15,9 @@
 #include "renderer/render.h"
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_instantiation.h"
-#include "tests/support/gltf_builder.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/gltf_builder.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
@@ -86,16 +87,10 @@ void add_camera(GltfBuilder& builder, tinygltf::Node node, double yfov) {
 renderer::Framebuffer render(const renderer::Scene& scene, lev::Method method, float tolerance,
                              int size = 40) {
   const renderer::RayScene rays(scene.geometry);
-  renderer::RenderSettings rs;
-  rs.width = size;
-  rs.height = size;
-  rs.method = method;
+  renderer::RenderSettings rs = test_render_settings(method, size, size);
   rs.tolerance = tolerance;
-  rs.tile_size = 8;
   rs.max_depth = 0;
-  auto state = renderer::make_render_state(scene, rays, rs);
-  EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, rs);
 }
 
 scenes::SceneDescription parse(GltfBuilder& builder, float light_scale = 1.0f, int camera = 0) {

@@ -1,7 +1,7 @@
 // glTF import (scenes/gltf_scene.h): KHR_lights_punctual lights land at their node's world
 // position and -Z direction after nested transforms, unscaled by the node; spot cones come from
 // outerConeAngle; the first perspective camera is used; bad files fail with one line naming the
-// file.
+// file; a zero scale hides meshes but keeps point lights; primitives without POSITION are skipped.
 
 #include "scenes/gltf_scene.h"
 
@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
@@ -158,6 +159,56 @@ TEST(GltfScene, FileNames) {
   EXPECT_TRUE(scenes::is_gltf_file_name("dir/a.glb"));
   EXPECT_FALSE(scenes::is_gltf_file_name("a.json"));
   EXPECT_FALSE(scenes::is_gltf_file_name(".gltf"));
+}
+
+// Scale 0 hides a node: its mesh is skipped without a word, its point light is still placed (glTF
+// never scales a light), a spot light there has no direction and is skipped with one warning.
+TEST(GltfScene, ZeroScaleHidesMeshesButPlacesPointLights) {
+  const std::string lights =
+      R"({"type": "point", "intensity": 2}, {"type": "spot", "spot": {"outerConeAngle": 0.5}})";
+  const std::string nodes =
+      R"({"scale": [0, 0, 0], "translation": [1, 2, 3], "children": [1, 2, 3]},
+         {"translation": [5, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+         {"mesh": 0}, {"extensions": {"KHR_lights_punctual": {"light": 1}}})";
+  const std::string mesh = R"(, "buffers": [{"byteLength": 36,
+      "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";
+  testing::internal::CaptureStderr();
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(lights, nodes, mesh), kPath, 1.0f);
+  const std::string warnings = testing::internal::GetCapturedStderr();
+  EXPECT_TRUE(scene.meshes.empty());
+  const scenes::SceneNode& placed = only_light(scene);
+  // The child's translation is scaled by 0 too: the light sits at its parent's origin.
+  EXPECT_EQ(std::get<scenes::Affine>(placed.data).translate, glm::vec3(1.0f, 2.0f, 3.0f));
+  EXPECT_TRUE(std::holds_alternative<scenes::PointLightSource>(placed.children.at(0).data));
+  EXPECT_EQ(warnings, std::string(kPath) +
+                          ": warning: nodes[3]: spot light under a zero scale has no direction; "
+                          "skipped\n");
+}
+
+// The spec: a primitive without POSITION is not drawn; one warning line names the first.
+TEST(GltfScene, PrimitivesWithoutPositionAreSkippedWithOneWarning) {
+  const std::string point = R"({"type": "point"})";
+  const std::string nodes =
+      R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "children": [1, 2]},
+         {"mesh": 0}, {"mesh": 1})";
+  const std::string meshes = R"(, "buffers": [{"byteLength": 12,
+      "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 12}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 1}],
+      "meshes": [{"primitives": [{"attributes": {"NORMAL": 0}}]},
+                 {"primitives": [{"attributes": {}}, {"attributes": {"TEXCOORD_0": 0}}]}])";
+  testing::internal::CaptureStderr();
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_with(point, nodes, meshes), kPath, 1.0f);
+  const std::string warnings = testing::internal::GetCapturedStderr();
+  EXPECT_TRUE(scene.meshes.empty());
+  EXPECT_EQ(warnings, std::string(kPath) +
+                          ": warning: 3 primitive(s) without POSITION skipped (the first: "
+                          "meshes[0].primitives[0])\n");
 }
 
 }  // namespace

@@ -13,20 +13,15 @@
 #include "scenes/scene_file.h"
 #include "scenes/scene_instantiation.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
 renderer::Framebuffer render(renderer::Scene& scene, lev::Method method, float tolerance) {
   const renderer::RayScene rays(scene.geometry);
-  renderer::RenderSettings rs;
-  rs.width = 48;
-  rs.height = 36;
-  rs.method = method;
+  renderer::RenderSettings rs = test_render_settings(method, 48, 36);
   rs.tolerance = tolerance;
-  rs.tile_size = 8;
-  auto state = renderer::make_render_state(scene, rays, rs);
-  EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
+  return render_test_image(scene, rays, rs);
 }
 
 TEST(SceneModels, ExportedFileRendersTheSameImageAndHierarchy) {

@@ -1,0 +1,268 @@
+#!/usr/bin/env python3
+"""Writes the glTF conformance corpus: a few files valid by the Khronos glTF-Validator, then
+mutants of them, each breaking one rule (a wrong JSON type, a value out of range, an index past
+its array, a node reachable twice, a version, a required extension, a broken GLB header...).
+tests/app/gltf_validator_test.cpp runs the validator and levrt over every file and compares.
+
+Usage: make_gltf_conformance_corpus.py OUT_DIR   (writes NAME.gltf / NAME.glb, one per case)
+"""
+import base64
+import copy
+import json
+import os
+import struct
+import sys
+
+POSITIONS = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]
+NORMALS = [0.0, 0.0, 1.0] * 3
+INDICES = [0, 1, 2]
+
+
+def mesh_bytes():
+    data = struct.pack("<9f", *POSITIONS) + struct.pack("<9f", *NORMALS)
+    data += struct.pack("<3H", *INDICES) + b"\0\0"
+    return data
+
+
+def light_document():
+    """Three lights (point, spot, directional) on three nodes under one parent, and a camera."""
+    return {
+        "asset": {"version": "2.0", "generator": "levrt conformance corpus"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "point", "color": [1.0, 0.9, 0.8], "intensity": 20.0, "range": 10.0},
+            {"type": "spot", "intensity": 30.0,
+             "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.6}},
+            {"type": "directional", "intensity": 2.0},
+        ]}},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 4]}],
+        "nodes": [
+            {"children": [1, 2, 3], "translation": [0.0, 2.0, 0.0]},
+            {"extensions": {"KHR_lights_punctual": {"light": 0}}},
+            {"rotation": [-0.7071068, 0.0, 0.0, 0.7071068],
+             "extensions": {"KHR_lights_punctual": {"light": 1}}},
+            {"extensions": {"KHR_lights_punctual": {"light": 2}}},
+            {"translation": [0.0, 1.0, 6.0], "camera": 0},
+        ],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+    }
+
+
+def mesh_document(uri=True):
+    """One indexed triangle with normals and a material, lit by one point light."""
+    data = mesh_bytes()
+    buffer = {"byteLength": len(data)}
+    if uri:
+        buffer["uri"] = "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+    return {
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5.0}]}},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0},
+                  {"translation": [0.3, 0.3, 2.0],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2,
+                                    "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1.0],
+                                                "metallicFactor": 0.0,
+                                                "roughnessFactor": 0.5}}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+             "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 0.0]},
+            {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5123, "count": 3, "type": "SCALAR"},
+        ],
+        "bufferViews": [{"buffer": 0, "byteLength": 36, "target": 34962},
+                        {"buffer": 0, "byteOffset": 36, "byteLength": 36, "target": 34962},
+                        {"buffer": 0, "byteOffset": 72, "byteLength": 6, "target": 34963}],
+        "buffers": [buffer],
+    }
+
+
+def glb(document, binary=b"", version=2, length_delta=0):
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text
+    if binary:
+        binary += b"\0" * (-len(binary) % 4)
+        chunks += struct.pack("<I4s", len(binary), b"BIN\0") + binary
+    return struct.pack("<4sII", b"glTF", version, 12 + len(chunks) + length_delta) + chunks
+
+
+def mesh_glb(**header):
+    document = mesh_document(uri=False)
+    return glb(document, mesh_bytes(), **header)
+
+
+def edit(base, change):
+    document = copy.deepcopy(base)
+    change(document)
+    return document
+
+
+def light(document, i=0):
+    return document["extensions"]["KHR_lights_punctual"]["lights"][i]
+
+
+def setter(path, value):
+    """A change setting document[path...] = value (a path of keys and indices)."""
+    def change(document):
+        target = document
+        for key in path[:-1]:
+            target = target[key]
+        target[path[-1]] = value
+    return change
+
+
+def remover(path):
+    def change(document):
+        target = document
+        for key in path[:-1]:
+            target = target[key]
+        del target[path[-1]]
+    return change
+
+
+LIGHTS = ["extensions", "KHR_lights_punctual", "lights"]
+
+
+def cases():
+    """(name, bytes) for every file: valid ones first, then the mutants."""
+    L, M = light_document(), mesh_document()
+    files = {
+        "valid_lights.gltf": L,
+        "valid_mesh.gltf": M,
+        "valid_mesh.glb": mesh_glb(),
+        "valid_glb_named_gltf.gltf": mesh_glb(),
+        "valid_json_named_glb.glb": M,
+        "valid_version_2_1.gltf": edit(L, setter(["asset", "version"], "2.1")),
+        "valid_min_version_2_0.gltf": edit(L, setter(["asset", "minVersion"], "2.0")),
+        "valid_required_lights.gltf": edit(L, setter(["extensionsRequired"],
+                                                     ["KHR_lights_punctual"])),
+        "valid_zero_scale.gltf": edit(edit(M, setter(["scenes", 0, "nodes"], [0])), setter(
+            ["nodes"], [{"scale": [0.0, 0.0, 0.0], "children": [1, 2]}, {"mesh": 0},
+                        {"extensions": {"KHR_lights_punctual": {"light": 0}}}])),
+        "valid_no_position.gltf": edit(M, setter(["meshes", 0, "primitives", 0, "attributes"],
+                                                 {"NORMAL": 1})),
+        "valid_range_absent.gltf": edit(L, remover(LIGHTS + [0, "range"])),
+        "valid_forest.gltf": edit(L, setter(["scenes"], [{"nodes": [0, 4]}, {"nodes": [4]}])),
+    }
+    mutants = {
+        # Wrong JSON types.
+        "intensity_string": (L, setter(LIGHTS + [0, "intensity"], "50")),
+        "range_string": (L, setter(LIGHTS + [0, "range"], "3")),
+        "color_string": (L, setter(LIGHTS + [0, "color"], "white")),
+        "type_number": (L, setter(LIGHTS + [0, "type"], 1)),
+        "spot_number": (L, setter(LIGHTS + [1, "spot"], 0.5)),
+        "light_index_string": (L, setter(["nodes", 1, "extensions", "KHR_lights_punctual",
+                                          "light"], "0")),
+        "translation_string": (L, setter(["nodes", 0, "translation"], [0, "2", 0])),
+        "mesh_index_float": (M, setter(["nodes", 0, "mesh"], 0.5)),
+        "byte_length_string": (M, setter(["bufferViews", 0, "byteLength"], "36")),
+        "version_number": (L, setter(["asset", "version"], 2.0)),
+        "scenes_object": (L, setter(["scenes"], {"nodes": [0]})),
+        "metallic_string": (M, setter(["materials", 0, "pbrMetallicRoughness",
+                                       "metallicFactor"], "0")),
+        "yfov_string": (L, setter(["cameras", 0, "perspective", "yfov"], "0.8")),
+        # Values out of range.
+        "range_zero": (L, setter(LIGHTS + [0, "range"], 0)),
+        "range_negative": (L, setter(LIGHTS + [0, "range"], -1.0)),
+        "intensity_negative": (L, setter(LIGHTS + [0, "intensity"], -5.0)),
+        "color_above_one": (L, setter(LIGHTS + [0, "color"], [2.0, 0.0, 0.0])),
+        "color_two_values": (L, setter(LIGHTS + [0, "color"], [1.0, 1.0])),
+        "light_type_area": (L, setter(LIGHTS + [0, "type"], "area")),
+        "light_type_missing": (L, remover(LIGHTS + [0, "type"])),
+        "outer_cone_above_half_pi": (L, setter(LIGHTS + [1, "spot", "outerConeAngle"], 2.0)),
+        "inner_cone_above_outer": (L, setter(LIGHTS + [1, "spot", "innerConeAngle"], 0.7)),
+        "translation_two_values": (L, setter(["nodes", 0, "translation"], [0.0, 2.0])),
+        "rotation_three_values": (L, setter(["nodes", 2, "rotation"], [0.0, 0.0, 0.0])),
+        "matrix_fifteen_values": (L, setter(["nodes", 0, "matrix"], [1.0] * 15)),
+        "base_colour_above_one": (M, setter(["materials", 0, "pbrMetallicRoughness",
+                                             "baseColorFactor"], [2.0, 0.0, 0.0, 1.0])),
+        "roughness_above_one": (M, setter(["materials", 0, "pbrMetallicRoughness",
+                                           "roughnessFactor"], 1.5)),
+        "yfov_zero": (L, setter(["cameras", 0, "perspective", "yfov"], 0.0)),
+        "camera_type_fisheye": (L, setter(["cameras", 0, "type"], "fisheye")),
+        "mode_seven": (M, setter(["meshes", 0, "primitives", 0, "mode"], 7)),
+        "component_type_5124": (M, setter(["accessors", 0, "componentType"], 5124)),
+        "accessor_type_vec5": (M, setter(["accessors", 0, "type"], "VEC5")),
+        "accessor_count_zero": (M, setter(["accessors", 0, "count"], 0)),
+        "accessor_count_past_view": (M, setter(["accessors", 0, "count"], 30)),
+        "byte_stride_three": (M, setter(["bufferViews", 0, "byteStride"], 3)),
+        "sampler_wrap_unknown": (M, setter(["samplers"], [{"wrapS": 1}])),
+        # Indices past their array.
+        "light_index_three": (L, setter(["nodes", 1, "extensions", "KHR_lights_punctual",
+                                         "light"], 3)),
+        "node_mesh_past": (M, setter(["nodes", 0, "mesh"], 4)),
+        "scene_past": (L, setter(["scene"], 2)),
+        "scene_root_past": (L, setter(["scenes", 0, "nodes"], [0, 9])),
+        "child_past": (L, setter(["nodes", 0, "children"], [1, 2, 3, 12])),
+        "camera_past": (L, setter(["nodes", 4, "camera"], 3)),
+        "material_past": (M, setter(["meshes", 0, "primitives", 0, "material"], 2)),
+        "indices_past": (M, setter(["meshes", 0, "primitives", 0, "indices"], 5)),
+        "attribute_past": (M, setter(["meshes", 0, "primitives", 0, "attributes", "NORMAL"], 8)),
+        "buffer_view_past": (M, setter(["accessors", 1, "bufferView"], 6)),
+        "view_past_buffer": (M, setter(["bufferViews", 2, "byteLength"], 60)),
+        "buffer_past": (M, setter(["bufferViews", 0, "buffer"], 1)),
+        # Required members missing.
+        "asset_missing": (L, remover(["asset"])),
+        "version_missing": (L, remover(["asset", "version"])),
+        "accessor_type_missing": (M, remover(["accessors", 0, "type"])),
+        "primitive_attributes_missing": (M, remover(["meshes", 0, "primitives", 0,
+                                                     "attributes"])),
+        "light_index_missing": (L, remover(["nodes", 1, "extensions", "KHR_lights_punctual",
+                                            "light"])),
+        # The node tree.
+        "node_under_two_parents": (L, setter(["nodes", 4, "children"], [1])),
+        "node_twice_in_children": (L, setter(["nodes", 0, "children"], [1, 2, 3, 1])),
+        "node_twice_in_scene": (L, setter(["scenes", 0, "nodes"], [0, 4, 4])),
+        "root_and_child": (L, setter(["scenes", 0, "nodes"], [0, 1, 4])),
+        "node_cycle": (L, setter(["nodes", 1, "children"], [0])),
+        "node_cycle_outside_scene": (L, setter(["nodes"], light_document()["nodes"] + [
+            {"children": [6]}, {"children": [5]}])),
+        # Versions.
+        "version_1_0": (L, setter(["asset", "version"], "1.0")),
+        "version_3_0": (L, setter(["asset", "version"], "3.0")),
+        "version_unparsable": (L, setter(["asset", "version"], "two")),
+        "min_version_2_1": (L, setter(["asset", "minVersion"], "2.1")),
+        # Required extensions levrt cannot honour (each also in extensionsUsed).
+        "required_draco": (M, setter(["extensionsRequired"], ["KHR_draco_mesh_compression"])),
+        "required_meshopt": (M, setter(["extensionsRequired"], ["EXT_meshopt_compression"])),
+        "required_basisu": (M, setter(["extensionsRequired"], ["KHR_texture_basisu"])),
+        "required_unknown": (M, setter(["extensionsRequired"], ["EXT_levrt_unknown"])),
+        "required_not_used": (L, setter(["extensionsRequired"], ["KHR_materials_ior"])),
+        # What the validator checks in the data and levrt reads its own way.
+        "position_min_max_missing": (M, remover(["accessors", 0, "min"])),
+        "position_max_wrong": (M, setter(["accessors", 0, "max"], [5.0, 5.0, 5.0])),
+        "rotation_not_unit": (L, setter(["nodes", 2, "rotation"], [0.0, 0.0, 0.0, 2.0])),
+    }
+    for name in ("required_draco", "required_meshopt", "required_basisu", "required_unknown"):
+        base, change = mutants[name]
+        def used_too(document, change=change):
+            change(document)
+            document["extensionsUsed"] = document["extensionsUsed"] + document["extensionsRequired"]
+        mutants[name] = (base, used_too)
+    for name, (base, change) in mutants.items():
+        files["bad_" + name + ".gltf"] = edit(base, change)
+    files["bad_glb_length_short.glb"] = mesh_glb(length_delta=-4)
+    files["bad_glb_length_long.glb"] = mesh_glb(length_delta=8)
+    files["bad_glb_version_1.glb"] = mesh_glb(version=1)
+    return files
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    for name, content in cases().items():
+        data = content if isinstance(content, bytes) else json.dumps(content, indent=1).encode()
+        with open(os.path.join(out, name), "wb") as f:
+            f.write(data)
+
+
+if __name__ == "__main__":
+    main()
