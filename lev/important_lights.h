@@ -15,6 +15,8 @@
 
 namespace lev {
 
+class ShadingPoint;  // light_selector.h
+
 struct WalkCounters {
   // Extent volumes tested: every box test (a union's children, extent-volume and master nodes)
   // and every light's exact irradiance test.
@@ -35,8 +37,8 @@ struct WalkFrame {
   glm::vec3 local_point{0.0f};
   std::uint32_t node = 0;
   glm::vec3 world_translation{0.0f};
-  std::uint32_t linear = 0;      // index into WalkScratch::linear; 0 is the identity
-  bool volume_tested = false;    // the subtree's box was tested by its parent (skip one test)
+  std::uint32_t linear = 0;    // index into WalkScratch::linear; 0 is the identity
+  bool volume_tested = false;  // the subtree's box was tested by its parent (skip one test)
 };
 
 // A part of a culled subtree whose bound is being tightened (tightened_irradiance_bound): its
@@ -46,11 +48,30 @@ struct BoundPart {
   FramePoint point;
 };
 
+// A subtree the relative cut (find_light_cut) put aside because its cluster bound was too large
+// for the point's running total: walked later, largest bound first, or kept as a cluster when
+// the total allows. Its frame is kept whole, the rotation by value: it leaves the stack's order.
+struct DeferredSubtree {
+  float bound = 0.0f;          // brightest channel of its radiance bound
+  std::uint32_t sequence = 0;  // order of deferral: ties go to the earlier, so nothing is left to
+                               // how the standard library breaks them
+  std::uint32_t node = 0;
+  bool volume_tested = false;
+  bool identity = true;  // the frame's rotation and scale are the identity
+  glm::vec3 local_point{0.0f};
+  glm::vec3 world_translation{0.0f};
+  WalkLinear linear;
+  Light representative;              // in world space, carrying the subtree's intensity
+  glm::vec3 estimate{0.0f};          // its unshadowed radiance, counted in the running total
+  glm::vec3 irradiance_bound{0.0f};  // of the subtree: what its cluster leaves uncertain
+};
+
 // Reused between queries so that a walk allocates nothing once warm.
 struct WalkScratch {
   std::vector<WalkFrame> stack;
   std::vector<WalkLinear> linear;
   std::vector<BoundPart> bound_parts;
+  std::vector<DeferredSubtree> deferred;  // a heap, largest bound on top
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point
@@ -81,9 +102,10 @@ struct CulledParts {
 // light.h's irradiance()) at point of every light not returned: the exact irradiance of each
 // light tested and culled plus the aggregate bound (light_bounds.h) of each subtree whose volume
 // missed the point, summed where the walk culls them. Without it the walk skips that work.
-void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
-                           const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
-                           WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+void find_important_lights(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                           float tolerance, const glm::vec3& point, WalkScratch& scratch,
+                           std::vector<Light>& important_lights, WalkCounters& counters,
+                           glm::vec3* culled_irradiance_bound = nullptr);
 
 // find_important_lights with a tighter culled_irradiance_bound (the same lights and counters):
 // a culled subtree whose aggregate bound exceeds the tolerance, as it does wherever the point lies
@@ -111,9 +133,10 @@ glm::dvec3 tightened_irradiance_bound(const LightHierarchy& hierarchy, std::uint
                                       std::vector<BoundPart>& parts);
 
 // find_important_lights, keeping in `culled` (cleared first) what it culls instead of dropping it.
-void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
-                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& important_lights,
-                               WalkCounters& counters, CulledParts& culled);
+void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                               float tolerance, const glm::vec3& point, WalkScratch& scratch,
+                               std::vector<Light>& important_lights, WalkCounters& counters,
+                               CulledParts& culled);
 
 // The walk of `lev_bounded`: like find_important_lights, but a subtree or light is culled only
 // while the running sum of what was culled at this point (the culled_irradiance_bound above) stays
@@ -121,9 +144,10 @@ void find_important_and_culled(const LightHierarchy& hierarchy, const ExtentVolu
 // subtree that does not fit is walked as if its volume held the point, a light that does not fit
 // is returned. So max(culled_irradiance_bound) <= tolerance (computed whether asked for or not).
 // What is culled depends on the depth-first order only: deterministic.
-void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
-                               const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
-                               WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+void find_lights_within_budget(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                               float tolerance, const glm::vec3& point, WalkScratch& scratch,
+                               std::vector<Light>& lights, WalkCounters& counters,
+                               glm::vec3* culled_irradiance_bound = nullptr);
 
 // Where find_lights_and_clusters cuts what it culls, on the scale of the per-light test (the
 // brightest channel of an irradiance bound).
@@ -133,6 +157,9 @@ struct ClusterCut {
   float refine_above = 0.0f;
   // A culled part whose bound exceeds this becomes a cluster; the rest is only summed.
   float keep_above = 0.0f;
+  // lev_est estimates the culled rest only where its bound exceeds this share of the irradiance
+  // of the tested lights found visible (the walk does not read it).
+  float rest_share_of_seen = 0.0f;
 };
 
 // The walk of `lev_est`: like find_important_lights (the same lights), and everything it culls
@@ -143,10 +170,30 @@ struct ClusterCut {
 // positions, aimed along the axis of its spots' direction cone (when that cone is narrower than
 // a hemisphere), carrying the summed intensity of the subtree. culled_irradiance_bound, as
 // find_important_lights', counts every culled part, clusters included.
-void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
-                              const ClusterCut& cut, const glm::vec3& point, WalkScratch& scratch,
-                              std::vector<Light>& important_lights, std::vector<Light>& clusters,
-                              WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                              float tolerance, const ClusterCut& cut, const glm::vec3& point,
+                              WalkScratch& scratch, std::vector<Light>& important_lights,
+                              std::vector<Light>& clusters, WalkCounters& counters,
+                              glm::vec3* culled_irradiance_bound = nullptr);
+
+// The walk of `lev_cut`: LEV's extent volumes drop what lies below the tolerance (as
+// find_important_lights does), and what remains is cut relative to the point, as Lightcuts cuts
+// (Walter et al. 2005): a subtree whose cluster bound (radiance_bound: irradiance bound times the
+// material's response bound over its box, visibility 1, brightest channel) is at most
+// relative_error times the running total becomes one cluster, its representative (as
+// find_lights_and_clusters makes it) appended to `lights`; a larger one is put aside, and once
+// the walk has nothing else left the largest bound put aside is walked, until every bound left
+// is within the criterion. The running total is the estimate of the cut so far, as in Lightcuts:
+// the unshadowed radiance (ShadingPoint::unshadowed_radiance) of every light appended and of the
+// representative of every cluster, appended or put aside. Lights above the tolerance are
+// appended themselves. At relative error 0 nothing is clustered or
+// put aside: the walk is find_important_lights', its lights in the same order.
+// culled_irradiance_bound, as find_important_lights', counts what the volumes dropped and the
+// clusters' irradiance bounds (an estimate is not exact).
+void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
+                    float relative_error, ShadingPoint& point, WalkScratch& scratch,
+                    std::vector<Light>& lights, WalkCounters& counters,
+                    glm::vec3* culled_irradiance_bound = nullptr);
 
 // Every light of the scene in world space, instances expanded, in the same depth-first order as
 // the walk and through the same arithmetic, so a light here is bit-identical to the one the walk

@@ -6,10 +6,7 @@
 #include "lev/important_lights.h"
 
 namespace lev {
-namespace {
 
-// A uniform number in [0, 1) from a node's index (splitmix64's finaliser): the representative's
-// draw, fixed per node.
 double node_uniform(std::uint32_t node) {
   std::uint64_t z = (static_cast<std::uint64_t>(node) + 1) * 0x9E3779B97F4A7C15ull;
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -18,12 +15,12 @@ double node_uniform(std::uint32_t node) {
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
-// The weight a representative is drawn by: the summed channels of the intensity (all three
-// channels count, so a dim red light still represents a red cluster).
 double draw_weight(const glm::vec3& intensity) {
   return static_cast<double>(intensity.x) + static_cast<double>(intensity.y) +
          static_cast<double>(intensity.z);
 }
+
+namespace {
 
 struct Builder {
   const std::vector<Light>& lights;

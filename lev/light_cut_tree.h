@@ -35,6 +35,13 @@ struct LightCutTree {
   std::vector<CutTreeNode> nodes;  // the root first; empty when the scene has no light
 };
 
+// A uniform number in [0, 1) from a node's index (splitmix64's finaliser): a representative's
+// draw, fixed per node (here, and for lev_cut's clusters in important_lights.cpp).
+double node_uniform(std::uint32_t node);
+// The weight a representative is drawn by: the summed channels of the intensity (all three
+// channels count, so a dim red light still represents a red cluster).
+double draw_weight(const glm::vec3& intensity);
+
 // The tree over the hierarchy's lights (flatten_lights).
 LightCutTree build_light_cut_tree(const LightHierarchy& hierarchy);
 // The tree over lights given in world space (for tests).

@@ -37,7 +37,7 @@ struct HierarchyNode {
   // volume, master)
   std::uint32_t payload = 0;
   NodeKind kind = NodeKind::set_union;
-  std::uint8_t flags = 0;      // kTranslationOnly
+  std::uint8_t flags = 0;  // kTranslationOnly
   std::uint8_t unused[2] = {0, 0};
 };
 static_assert(sizeof(HierarchyNode) == 8, "hierarchy nodes are 8 bytes");
@@ -53,9 +53,9 @@ struct LightHierarchy {
   // then the union's aggregate.
   std::vector<std::uint32_t> union_children;
   std::vector<Similarity> transforms;
-  std::vector<Light> lights;  // in their own frames
+  std::vector<Light> lights;               // in their own frames
   std::vector<LightAggregate> aggregates;  // each in the frame of the nodes that refer to it
-  std::vector<NodeRange> master_ranges;  // definition order; the root's range comes last
+  std::vector<NodeRange> master_ranges;    // definition order; the root's range comes last
   std::vector<std::uint64_t> master_light_counts;
   std::uint32_t root = 0;
   std::uint64_t light_count = 0;  // lights in the scene, instances expanded
@@ -106,18 +106,21 @@ inline const LightAggregate& kept_aggregate(const LightHierarchy& h, std::uint32
 // and for a light, which has none stored.
 inline const LightAggregate* stored_aggregate(const LightHierarchy& h, std::uint32_t node) {
   const NodeKind kind = h.nodes[node].kind;
-  if (kind == NodeKind::affine || kind == NodeKind::point_light || kind == NodeKind::spot_light) return nullptr;
+  if (kind == NodeKind::affine || kind == NodeKind::point_light || kind == NodeKind::spot_light)
+    return nullptr;
   return &kept_aggregate(h, node);
 }
 
 // Upper bound of the summed unshadowed irradiance (RGB) of the node's lights at x, given in the
 // frame the node is entered with (light_bounds.h). Affine nodes move x into their child's frame.
-inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node, const FramePoint& x) {
+inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node,
+                                  const FramePoint& x) {
   FramePoint local = x;
   while (h.nodes[node].kind == NodeKind::affine) {
     const Similarity& xf = h.transforms[h.nodes[node].payload];
-    local = (h.nodes[node].flags & kTranslationOnly) != 0 ? to_translated_frame(local, xf.translation)
-                                                           : to_node_frame(local, xf);
+    local = (h.nodes[node].flags & kTranslationOnly) != 0
+                ? to_translated_frame(local, xf.translation)
+                : to_node_frame(local, xf);
     node += 1;
   }
   const HierarchyNode& n = h.nodes[node];
@@ -125,6 +128,42 @@ inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node, c
     return irradiance_bound(light_aggregate(h.lights[n.payload]), local);
   }
   return irradiance_bound(kept_aggregate(h, node), local);
+}
+
+// The surface as seen from a frame whose world_from_local rotation is `rotation`: its directions
+// turned into the frame. The response depends on directions alone, so a scale changes nothing.
+inline SurfaceResponse surface_in_frame(const SurfaceResponse& surface, const glm::mat3& rotation) {
+  SurfaceResponse local = surface;
+  const glm::mat3 local_from_world = glm::transpose(rotation);
+  local.normal = local_from_world * surface.normal;
+  local.mirrored_view = local_from_world * surface.mirrored_view;
+  return local;
+}
+
+// light_bounds.h's radiance_bound of the node's lights at x: the cluster bound, visibility 1,
+// with x and the surface given in the frame the node is entered with (affine nodes move both
+// into their child's frame, as irradiance_bound moves x). When `irradiance` is given it receives
+// the irradiance part, irradiance_bound's.
+inline glm::vec3 radiance_bound(const LightHierarchy& h, std::uint32_t node, const FramePoint& x,
+                                const SurfaceResponse& surface, glm::vec3* irradiance = nullptr) {
+  FramePoint local = x;
+  SurfaceResponse local_surface = surface;
+  while (h.nodes[node].kind == NodeKind::affine) {
+    const Similarity& xf = h.transforms[h.nodes[node].payload];
+    if ((h.nodes[node].flags & kTranslationOnly) != 0) {
+      local = to_translated_frame(local, xf.translation);
+    } else {
+      local = to_node_frame(local, xf);
+      local_surface = surface_in_frame(local_surface, xf.rotation);
+    }
+    node += 1;
+  }
+  const HierarchyNode& n = h.nodes[node];
+  const bool is_light = n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light;
+  const LightAggregate aggregate =
+      is_light ? light_aggregate(h.lights[n.payload]) : kept_aggregate(h, node);
+  if (irradiance) *irradiance = irradiance_bound(aggregate, local);
+  return radiance_bound(aggregate, local, local_surface);
 }
 
 }  // namespace lev

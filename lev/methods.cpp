@@ -5,6 +5,7 @@
 #include "lev/selector_ast.h"
 #include "lev/selector_lev.h"
 #include "lev/selector_lev_bounded.h"
+#include "lev/selector_lev_cut.h"
 #include "lev/selector_lev_est.h"
 #include "lev/selector_lev_mc.h"
 #include "lev/selector_light_tree.h"
@@ -120,6 +121,22 @@ std::vector<MethodInfo>& table_rows() {
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LightcutsSelector>(h, p.relative_error);
+       },
+       true},
+      {Method::lev_cut,
+       "lev_cut",
+       "LEV cut (relative)",
+       "LEV's walk, its volumes dropping what cannot reach the display (below the relative error "
+       "times one 8-bit step), what they keep cut into clusters whose error bound is below the "
+       "relative error (--relative-error) times the point's running total; one shadow ray per "
+       "cluster",
+       false,
+       false,
+       false,
+       false,
+       {0.1, 0.05, 0.02, 0.01, 0.005},
+       [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
+         return std::make_unique<LevCutSelector>(h, p.relative_error);
        },
        true},
   };

@@ -38,7 +38,8 @@ enum class Method : std::uint8_t {
   lev_est,
   lev_mc,
   light_tree,
-  lightcuts
+  lightcuts,
+  lev_cut
 };
 
 // The lights a sampling method draws per shading point (--samples): 1 by default, at most this.

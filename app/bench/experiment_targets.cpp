@@ -1,15 +1,18 @@
 // targets (issue 23, new): per scene, rt's time and, for two error targets, the fastest method
 // and setting of the method table that meets it: its speedup over rt and its lights tested per
 // point. Every row of the table is swept over its bench tolerances, in turns with rt on the same
-// pixels, as control does; the whole sweep is written beside the summary.
+// pixels, as control does; the whole sweep is written beside the summary. The same sweep is
+// checked for monotonicity (monotonicity.h): every deterministic method's violations are printed.
 #include "app/bench/experiment_support.h"
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "app/bench/monotonicity.h"
 #include "lev/methods.h"
 
 namespace app::bench {
@@ -23,6 +26,11 @@ struct ErrorTarget {
 
 bool meets(const ErrorTarget& target, const PixelErrors& e) {
   return e.max_pct < target.max_pct && e.average_pct < target.avg_pct;
+}
+
+// The swept setting as the tables show it: "-" for a method swept over neither.
+std::string setting_text(const lev::MethodInfo& method, double setting) {
+  return method.uses_tolerance || method.uses_relative_error ? tolerance_text(setting) : "-";
 }
 
 // One render of the sweep, as the summary and the plot read it.
@@ -71,6 +79,7 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
   std::string scene_keys;
   std::vector<HeadlineRow> headline;
   std::optional<double> street_lev_seconds, bare_street_lev_seconds;
+  std::vector<MonotonicityViolation> violations;
   int scene_index = 0;
   for (const auto& [scene, wanted_lights] : c.target_renders) {
     const std::optional<ReferencedScene> where = referenced_scene(run, scene, wanted_lights);
@@ -89,15 +98,31 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
     const Measurement& reference = *done.front();
     const double rt_seconds = reference.full_frame_cpu_seconds();
     std::vector<SweptRender> renders;
+    // Each deterministic method's sweep, loosest setting first (its bench_tolerances' order).
+    std::vector<SweepPoint> sweep_points;
+    const lev::MethodInfo* sweep_method = nullptr;
+    const std::string scene_name = scene + " " + format_count(lights);
+    const auto check_sweep = [&] {
+      if (sweep_method && !sweep_method->samples && !run.planning()) {
+        for (const MonotonicityViolation& v :
+             find_monotonicity_violations(scene_name, sweep_method->name, sweep_points)) {
+          violations.push_back(v);
+        }
+      }
+      sweep_points.clear();
+    };
     for (std::size_t i = 1; i < requests.size(); ++i) {
       const Measurement& m = *done[i];
       const lev::MethodInfo& info = lev::method_info(requests[i].method);
       SweptRender r{&info, requests[i].tolerance, m.full_frame_cpu_seconds(),
                     pixel_errors(m, reference), m.lights_tested_avg()};
       renders.push_back(r);
+      if (sweep_method != &info) check_sweep();
+      sweep_method = &info;
+      sweep_points.push_back({r.tolerance, r.errors});
       sweep.rows.push_back({text_cell(scene), count_cell(lights), text_cell(info.name),
-                            text_cell(info.uses_tolerance ? tolerance_text(r.tolerance) : "-"),
-                            number_cell(r.seconds, 3), number_cell(m.full_frame_seconds(), 3),
+                            text_cell(setting_text(info, r.tolerance)), number_cell(r.seconds, 3),
+                            number_cell(m.full_frame_seconds(), 3),
                             ratio_cell(rt_seconds / r.seconds),
                             number_cell(r.errors.average_pct, 4), number_cell(r.errors.max_pct, 3),
                             number_cell(r.lights_tested, 1), text_cell(pixels_text(stride))});
@@ -106,6 +131,7 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
         if (scene == "street_bare") bare_street_lev_seconds = r.seconds;
       }
     }
+    check_sweep();
     for (const ErrorTarget& target : targets) {
       const SweptRender* best = nullptr;
       for (const SweptRender& r : renders) {
@@ -121,8 +147,7 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
       }
       summary.rows.push_back(
           {text_cell(scene), count_cell(lights), number_cell(rt_seconds, 3), text_cell(target.name),
-           text_cell(best->method->name),
-           text_cell(best->method->uses_tolerance ? tolerance_text(best->tolerance) : "-"),
+           text_cell(best->method->name), text_cell(setting_text(*best->method, best->tolerance)),
            number_cell(best->seconds, 3), ratio_cell(rt_seconds / best->seconds),
            number_cell(best->errors.average_pct, 4), number_cell(best->errors.max_pct, 3),
            number_cell(best->lights_tested, 1), text_cell(pixels_text(stride))});
@@ -149,8 +174,29 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
         {"lamp street: lev's time, lamps instanced over the same lights written bare", "<= 1.2x",
          "-", format_ratio(ratio), status(!c.quick, ratio <= 1.2)});
   }
+  if (!run.planning()) {
+    headline.push_back(
+        {"deterministic methods: a tighter setting never raises the avg or max "
+         "error against rt (targets' sweeps)",
+         "0 violations", "-", std::to_string(violations.size()) + " violations",
+         status(!c.quick, violations.empty())});
+  }
+  std::string monotonicity =
+      "Monotonicity (every deterministic method's sweep, each tighter "
+      "setting against every looser one): ";
+  if (violations.empty()) {
+    monotonicity += "no violation.\n\n";
+  } else {
+    monotonicity += std::to_string(violations.size()) + " violations:\n\n";
+    for (const MonotonicityViolation& v : violations) {
+      std::cerr << "monotonicity: " << violation_text(v) << "\n";
+      monotonicity += "- " + violation_text(v) + "\n";
+    }
+    monotonicity += "\n";
+  }
   write_table(run, out_dir, "targets_sweep", sweep);
   SectionText text;
+  text.before_table = monotonicity;
   text.heading = "targets: the fastest setting that meets an error target, per scene (new)";
   text.intro =
       "Per scene, rt's time and, for two error targets against rt on the same pixels (max < " +

@@ -59,13 +59,14 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "lev_wall_s,lev_pixels,lev_bounded_cpu_s,lev_bounded_wall_s,lev_bounded_pixels,"
        "lev_est_cpu_s,lev_est_wall_s,lev_est_pixels,lev_mc_cpu_s,lev_mc_wall_s,lev_mc_pixels,"
        "light_tree_cpu_s,light_tree_wall_s,light_tree_pixels,lightcuts_cpu_s,lightcuts_wall_s,"
-       "lightcuts_pixels,ast_over_rt_pct,lev_over_rt_pct,lev_bounded_over_rt_pct,"
-       "lev_est_over_rt_pct,lev_mc_over_rt_pct,light_tree_over_rt_pct,lightcuts_over_rt_pct,"
+       "lightcuts_pixels,lev_cut_cpu_s,lev_cut_wall_s,lev_cut_pixels,ast_over_rt_pct,"
+       "lev_over_rt_pct,lev_bounded_over_rt_pct,lev_est_over_rt_pct,lev_mc_over_rt_pct,"
+       "light_tree_over_rt_pct,lightcuts_over_rt_pct,lev_cut_over_rt_pct,"
        "rt_over_lev,ast_over_lev,lev_bounded_over_lev,lev_est_over_lev,lev_mc_over_lev,"
-       "light_tree_over_lev,lightcuts_over_lev,thesis_rt_over_lev,thesis_ast_over_lev,"
-       "rt_tests_per_point,ast_tests_per_point,lev_tests_per_point,"
+       "light_tree_over_lev,lightcuts_over_lev,lev_cut_over_lev,thesis_rt_over_lev,"
+       "thesis_ast_over_lev,rt_tests_per_point,ast_tests_per_point,lev_tests_per_point,"
        "lev_bounded_tests_per_point,lev_est_tests_per_point,lev_mc_tests_per_point,"
-       "light_tree_tests_per_point,lightcuts_tests_per_point"},
+       "light_tree_tests_per_point,lightcuts_tests_per_point,lev_cut_tests_per_point"},
       {"memory",
        "scene,lights,ast_bytes,ast_bytes_per_light,lev_flat_bytes,lev_flat_bytes_per_light,"
        "lev_flat_index_bytes_per_light,lev_instanced_bytes,thesis_ast_bytes,thesis_lev_flat_bytes,"

@@ -71,8 +71,10 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
 TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {
   const std::string out = path("image.png");
   std::vector<std::vector<std::string>> cases;
-  for (const char* value : {"-0.01", "-1", "nan", "NaN", "1.0001", "2", "inf", "", "x"})
-    cases.push_back({"--method", "lightcuts", "--relative-error", value});
+  for (const char* method : {"lightcuts", "lev_cut"}) {
+    for (const char* value : {"-0.01", "-1", "nan", "NaN", "1.0001", "2", "inf", "", "x"})
+      cases.push_back({"--method", method, "--relative-error", value});
+  }
   for (const char* method : {"rt", "lev", "lev_est", "ast", "light_tree"})
     cases.push_back({"--method", method, "--relative-error", "0.02"});
   for (std::vector<std::string> args : cases) {
@@ -86,9 +88,11 @@ TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << label << ": " << r.output;
     EXPECT_TRUE(folder_is_empty()) << label;
   }
-  const CommandRun ok = run_levrt({"render", "--method", "lightcuts", "--relative-error", "0.05",
-                                   "--width", "8", "--height", "8", "--out", out});
-  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  for (const char* method : {"lightcuts", "lev_cut"}) {
+    const CommandRun ok = run_levrt({"render", "--method", method, "--relative-error", "0.05",
+                                     "--width", "8", "--height", "8", "--out", out});
+    EXPECT_EQ(ok.exit_code, 0) << method << ": " << ok.output;
+  }
 }
 
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
@@ -259,9 +263,9 @@ TEST_F(Cli, TheSnapshotWritesTheErrorBoundHeatmapBesideTheOthers) {
 TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
   const auto bound = [&](const std::string& method) {
     const CommandRun r =
-        run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method,
-                   "--tolerance", "0.1", "--width", "16", "--height", "12", "--stats",
-                   path(method + ".json"), "--heatmap-bound", path(method + ".png"), "--quiet"});
+        run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method, "--tolerance",
+                   "0.1", "--width", "16", "--height", "12", "--stats", path(method + ".json"),
+                   "--heatmap-bound", path(method + ".png"), "--quiet"});
     EXPECT_EQ(r.exit_code, 0) << r.output;
     std::ifstream in(path(method + ".json"));
     const nlohmann::json stats = nlohmann::json::parse(in);

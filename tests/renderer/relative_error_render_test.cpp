@@ -1,9 +1,13 @@
-// `lightcuts` in the renderer: at relative error 0 its image equals rt's bit for bit (the
-// building, with point lights behind walls, and the hall's spots); at its default the image is
-// the same for one and two threads, close to rt's on the hall, where every light adds a little,
-// with far fewer shadow rays than rt.
+// The methods that read the relative error (`lightcuts`, `lev_cut`) in the renderer: at relative
+// error 0 the image equals rt's bit for bit (the building, with point lights behind walls, and
+// the hall's spots); at the default the image is the same for one and two threads, close to rt's
+// on the hall, where every light adds a little, with far fewer shadow rays than rt.
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "lev/methods.h"
 #include "renderer/pixel_error.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
@@ -23,11 +27,26 @@ renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RaySc
   return render_test_image(scene, rays, rs);
 }
 
-TEST(LightcutsRender, EqualsRtAtRelativeErrorZero) {
+std::vector<lev::Method> relative_error_methods() {
+  std::vector<lev::Method> methods;
+  for (const lev::MethodInfo& info : lev::method_table()) {
+    if (info.uses_relative_error) methods.push_back(info.id);
+  }
+  return methods;
+}
+
+class RelativeErrorRender : public testing::TestWithParam<lev::Method> {};
+
+TEST(RelativeErrorMethods, LightcutsAndLevCutReadIt) {
+  EXPECT_EQ(relative_error_methods(),
+            (std::vector<lev::Method>{lev::Method::lightcuts, lev::Method::lev_cut}));
+}
+
+TEST_P(RelativeErrorRender, EqualsRtAtRelativeErrorZero) {
   for (const bool hall : {false, true}) {
     const renderer::Scene scene = hall ? scenes::build_hall(4) : scenes::build_building(3);
     const renderer::RayScene rays(scene.geometry);
-    const renderer::Framebuffer exact = render(scene, rays, lev::Method::lightcuts, 0.0f, 2);
+    const renderer::Framebuffer exact = render(scene, rays, GetParam(), 0.0f, 2);
     const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
     EXPECT_TRUE(bitwise_equal(rt, exact)) << (hall ? "hall" : "building");
     EXPECT_EQ(renderer::sum_framebuffer(rt).shadow_rays,
@@ -35,15 +54,16 @@ TEST(LightcutsRender, EqualsRtAtRelativeErrorZero) {
   }
 }
 
-TEST(LightcutsRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
+TEST_P(RelativeErrorRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
   const renderer::Scene scene = scenes::build_hall(5);
   const renderer::RayScene rays(scene.geometry);
   const auto default_error = static_cast<float>(lev::kDefaultRelativeError);
-  const renderer::Framebuffer one = render(scene, rays, lev::Method::lightcuts, default_error, 1);
-  const renderer::Framebuffer two = render(scene, rays, lev::Method::lightcuts, default_error, 2);
+  const renderer::Framebuffer one = render(scene, rays, GetParam(), default_error, 1);
+  const renderer::Framebuffer two = render(scene, rays, GetParam(), default_error, 2);
   EXPECT_TRUE(bitwise_equal(one, two));
   EXPECT_EQ(one.shadow_rays, two.shadow_rays);
   EXPECT_EQ(one.lights_tested, two.lights_tested);
+  EXPECT_EQ(one.nodes_visited, two.nodes_visited);
   const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
   const renderer::PixelErrorStats error = renderer::summarize_pixel_error(
       renderer::pixel_error_pct(renderer::framebuffer_rgb8(one), renderer::framebuffer_rgb8(rt)));
@@ -52,5 +72,10 @@ TEST(LightcutsRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
   EXPECT_LT(renderer::sum_framebuffer(one).shadow_rays * 2,
             renderer::sum_framebuffer(rt).shadow_rays);
 }
+
+INSTANTIATE_TEST_SUITE_P(Methods, RelativeErrorRender, testing::ValuesIn(relative_error_methods()),
+                         [](const testing::TestParamInfo<lev::Method>& param) {
+                           return std::string(lev::method_info(param.param).name);
+                         });
 
 }  // namespace

@@ -1,0 +1,24 @@
+#include "lev/selector_lev_cut.h"
+
+namespace lev {
+
+LevCutSelector::LevCutSelector(const LightHierarchy& hierarchy, float relative_error)
+    : hierarchy_(hierarchy),
+      relative_error_(relative_error),
+      tolerance_(relative_error * kDropToleranceOfRelativeError),
+      volumes_(fit_extent_volumes(hierarchy, tolerance_)) {}
+
+glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                                          SelectionCounters& counters,
+                                          glm::vec3* culled_irradiance_bound) const {
+  scratch.lights.clear();
+  WalkCounters walk_counters;
+  find_light_cut(hierarchy_, volumes_, tolerance_, relative_error_, point, scratch.walk,
+                 scratch.lights, walk_counters, culled_irradiance_bound);
+  counters.nodes_visited += walk_counters.nodes_visited;
+  // The lights and the clusters' representatives alike: one shadow ray each.
+  return sum_visible_lights(
+      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
+}
+
+}  // namespace lev

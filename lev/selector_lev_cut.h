@@ -1,0 +1,38 @@
+// `lev_cut`: LEV with a relative criterion (issue 23). LEV's extent volumes drop the lights that
+// cannot reach the display (below the tolerance), and what they keep is cut relative to the
+// shading point, as Lightcuts cuts (Walter et al. 2005): a subtree whose cluster bound
+// (light_bounds.h's radiance_bound) is within the relative error of the point's running total
+// costs one shadow ray to its representative; a larger one is walked, largest first
+// (find_light_cut). One setting, the relative error: the tolerance the volumes drop at is tied
+// to it (kDropToleranceOfRelativeError), so a tighter setting both drops less and cuts finer,
+// and at 0 it drops nothing and cuts nothing: the image is `rt`'s bit for bit. Deterministic:
+// the cut depends on the point only.
+#pragma once
+
+#include "lev/important_lights.h"
+#include "lev/light_hierarchy.h"
+#include "lev/light_selector.h"
+
+namespace lev {
+
+// The tolerance lev_cut's volumes drop at, per unit of relative error: a light is dropped where
+// its irradiance is below the relative error times one 8-bit display step (1/255 in colour
+// units), so no single dropped light moves a pixel by more than that share of a step.
+inline constexpr float kDropToleranceOfRelativeError = 1.0f / 255.0f;
+
+class LevCutSelector final : public LightSelector {
+ public:
+  // relative_error in [0, 1]; fits the extent volumes for the tolerance it implies.
+  LevCutSelector(const LightHierarchy& hierarchy, float relative_error);
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                            SelectionCounters& counters,
+                            glm::vec3* culled_irradiance_bound = nullptr) const override;
+
+ private:
+  const LightHierarchy& hierarchy_;
+  const float relative_error_;
+  const float tolerance_;
+  const ExtentVolumes volumes_;
+};
+
+}  // namespace lev

@@ -1,0 +1,141 @@
+// `lev_cut`'s walk (find_light_cut) on random instanced scenes: at relative error 0 it is
+// find_important_lights' walk (the same lights, in the same order, and the same culled bound);
+// above 0 the lights and representatives it returns differ from the sum over every light by at
+// most its culled bound, and they are fewer than the lights at many points. The selector at
+// relative error 0 gives rt's radiance bit for bit.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lev/important_lights.h"
+#include "lev/light_hierarchy.h"
+#include "lev/methods.h"
+#include "lev/selector_lev_cut.h"
+#include "lev/selector_rt.h"
+#include "tests/lev/random_light_scenes.h"
+
+namespace {
+
+using lev_test::Random;
+
+// A surface that faces every light, reflects irradiance unchanged and is never shadowed, and
+// says so (a response of 1 from every direction), so a cluster's radiance bound is its
+// irradiance bound and the direct radiance is the summed irradiance of what a method returns.
+class UnitResponsePoint final : public lev::ShadingPoint {
+ public:
+  explicit UnitResponsePoint(const glm::vec3& x) : x_(x) {}
+  glm::vec3 position() const override { return x_; }
+  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
+    return lev::irradiance(light, x_);
+  }
+  bool visible(const lev::Light&) override { return true; }
+  lev::SurfaceResponse surface_response() const override {
+    lev::SurfaceResponse unit;
+    unit.diffuse = glm::vec3(1.0f);
+    return unit;
+  }
+
+ private:
+  glm::vec3 x_;
+};
+
+glm::dvec3 summed_irradiance(const std::vector<lev::Light>& lights, const glm::vec3& x) {
+  glm::dvec3 sum(0.0);
+  for (const lev::Light& l : lights) sum += glm::dvec3(lev::irradiance(l, x));
+  return sum;
+}
+
+TEST(LevCut, RelativeErrorZeroIsLevsWalk) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Random r(seed);
+    const lev::LightHierarchy h = lev::build_hierarchy(lev_test::random_instanced_tree(r));
+    lev::WalkScratch scratch;
+    for (const float tau : {0.0f, 1e-3f, 1e-2f, 1.0f}) {
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+      for (int k = 0; k < 30; ++k) {
+        const glm::vec3 x(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
+        const std::string context = "seed " + std::to_string(seed) + " tau " + std::to_string(tau) +
+                                    " k " + std::to_string(k);
+        UnitResponsePoint point(x);
+        std::vector<lev::Light> plain, cut;
+        lev::WalkCounters plain_counters, cut_counters;
+        glm::vec3 plain_bound(-1.0f), cut_bound(-2.0f);
+        lev::find_important_lights(h, volumes, tau, x, scratch, plain, plain_counters,
+                                   &plain_bound);
+        lev::find_light_cut(h, volumes, tau, 0.0f, point, scratch, cut, cut_counters, &cut_bound);
+        lev_test::expect_same_lights(cut, plain, context);
+        ASSERT_EQ(cut_bound, plain_bound) << context;
+        ASSERT_EQ(cut_counters.nodes_visited, plain_counters.nodes_visited) << context;
+      }
+    }
+  }
+}
+
+TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
+  std::uint64_t clustered_points = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Random r(seed);
+    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    lev::WalkScratch scratch;
+    for (const float tau : {0.0f, 1e-3f, 1e-1f}) {
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+      for (const float relative_error : {1e-3f, 0.02f, 0.3f, 1.0f}) {
+        for (int k = 0; k < 30; ++k) {
+          const glm::vec3 x(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
+          const std::string context = "seed " + std::to_string(seed) + " tau " +
+                                      std::to_string(tau) + " relative error " +
+                                      std::to_string(relative_error) + " k " + std::to_string(k);
+          UnitResponsePoint point(x);
+          std::vector<lev::Light> cut;
+          lev::WalkCounters counters;
+          glm::vec3 bound(-1.0f);
+          lev::find_light_cut(h, volumes, tau, relative_error, point, scratch, cut, counters,
+                              &bound);
+          const glm::dvec3 exact = summed_irradiance(world_lights, x);
+          const glm::dvec3 estimate = summed_irradiance(cut, x);
+          for (int c = 0; c < 3; ++c) {
+            // The bound is rounded up once; the sums differ in order by float roundings.
+            ASSERT_LE(std::abs(estimate[c] - exact[c]),
+                      static_cast<double>(bound[c]) * (1.0 + 1e-4) + 1e-6 * exact[c])
+                << context << ", channel " << c;
+          }
+          if (cut.size() < world_lights.size() && bound != glm::vec3(0.0f)) ++clustered_points;
+        }
+      }
+    }
+  }
+  EXPECT_GT(clustered_points, 1000u);
+}
+
+TEST(LevCut, SelectorAtRelativeErrorZeroIsRt) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Random r(seed);
+    const lev::LightHierarchy h = lev::build_hierarchy(lev_test::random_instanced_tree(r));
+    const lev::RtSelector rt(h);
+    const lev::LevCutSelector cut(h, 0.0f);
+    for (int k = 0; k < 30; ++k) {
+      UnitResponsePoint point({r.uniform(-30, 30), r.uniform(-30, 30), r.uniform(-10, 10)});
+      lev::SelectorScratch scratch;
+      lev::SelectionCounters counters;
+      const glm::vec3 exact = rt.direct_radiance(point, scratch, counters);
+      ASSERT_EQ(cut.direct_radiance(point, scratch, counters), exact) << "seed " << seed;
+    }
+  }
+}
+
+TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
+  const std::optional<lev::Method> method = lev::parse_method("lev_cut");
+  ASSERT_TRUE(method.has_value());
+  const lev::MethodInfo& info = lev::method_info(*method);
+  EXPECT_TRUE(info.uses_relative_error);
+  EXPECT_FALSE(info.uses_tolerance);
+  EXPECT_FALSE(info.samples);
+  EXPECT_EQ(lev::swept_setting(info), &lev::MethodParams::relative_error);
+}
+
+}  // namespace
