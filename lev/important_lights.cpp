@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "lev/bounds.h"
 #include "lev/light_bounds.h"
@@ -163,20 +164,34 @@ bool holds_lights(const LightHierarchy& h, std::uint32_t node) {
          !is_empty(kept_aggregate(h, node));
 }
 
+// A subtree entered with world_from_local = (linear, translation), moved below its affine nodes:
+// `node` becomes the first other node and `world_from_local` that node's frame. A light there is
+// returned in world space: a light below a transform is culled by its box like a subtree and
+// stands for itself (representative_light, drawn_representative).
+std::optional<Light> light_below_affine(const LightHierarchy& h, std::uint32_t& node,
+                                        const WalkLinear& linear, const glm::vec3& translation,
+                                        Similarity& world_from_local) {
+  world_from_local = Similarity{linear.rotation, linear.scale, translation};
+  while (h.nodes[node].kind == NodeKind::affine) {
+    world_from_local = compose(world_from_local, h.transforms[h.nodes[node].payload]);
+    node += 1;
+  }
+  const HierarchyNode& top = h.nodes[node];
+  if (top.kind == NodeKind::point_light || top.kind == NodeKind::spot_light) {
+    return transform_light(h.lights[top.payload], world_from_local);
+  }
+  return std::nullopt;
+}
+
 // A culled subtree as one light, its representative (find_lights_and_clusters). Entered with
 // world_from_local = (linear, translation). The centre of the positions rather than one of the
 // lights: measured in lev_est's selector (selector_lev_est.cpp).
 Light representative_light(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
                            const glm::vec3& translation) {
-  Similarity world_from_local{linear.rotation, linear.scale, translation};
-  while (h.nodes[node].kind == NodeKind::affine) {
-    world_from_local = compose(world_from_local, h.transforms[h.nodes[node].payload]);
-    node += 1;
-  }
-  // A light below a transform is culled by its box like a subtree: it stands for itself.
-  const HierarchyNode& top = h.nodes[node];
-  if (top.kind == NodeKind::point_light || top.kind == NodeKind::spot_light) {
-    return transform_light(h.lights[top.payload], world_from_local);
+  Similarity world_from_local;
+  if (std::optional<Light> light =
+          light_below_affine(h, node, linear, translation, world_from_local)) {
+    return *light;
   }
   const LightAggregate& aggregate = kept_aggregate(h, node);  // in the frame just composed
   const Similarity& cluster_from_local = world_from_local;
@@ -290,14 +305,10 @@ double subtree_weight(const LightHierarchy& h, std::uint32_t node) {
 // with it). Entered with world_from_local = (linear, translation).
 Light drawn_representative(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
                            const glm::vec3& translation) {
-  Similarity world_from_local{linear.rotation, linear.scale, translation};
-  while (h.nodes[node].kind == NodeKind::affine) {
-    world_from_local = compose(world_from_local, h.transforms[h.nodes[node].payload]);
-    node += 1;
-  }
-  const HierarchyNode& top = h.nodes[node];
-  if (top.kind == NodeKind::point_light || top.kind == NodeKind::spot_light) {
-    return transform_light(h.lights[top.payload], world_from_local);
+  Similarity world_from_local;
+  if (std::optional<Light> light =
+          light_below_affine(h, node, linear, translation, world_from_local)) {
+    return *light;
   }
   const glm::vec3 intensity =
       kept_aggregate(h, node).intensity * (world_from_local.scale * world_from_local.scale);
