@@ -19,12 +19,11 @@
 
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/xvfb_server.h"
 
 namespace {
 
 using levrt_test::CommandRun;
-using levrt_test::run_shell;
-using levrt_test::shell_quote;
 namespace fs = std::filesystem;
 
 constexpr int kWarmUpChanges = 100;           // memory is compared with its value after these
@@ -152,10 +151,6 @@ class SoakScript {
   bool reference_ = false;
 };
 
-bool have_xvfb() {
-  return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
-}
-
 // The resident bytes of each `memory=report` line, in order.
 std::vector<std::uint64_t> reported_memory(const std::string& output) {
   const std::string marker = "resident memory at frame ";
@@ -170,8 +165,8 @@ std::vector<std::uint64_t> reported_memory(const std::string& output) {
 }
 
 TEST(ViewerSoak, ScriptedChangesKeepResidentMemoryFlat) {
-  if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer soak skipped";
+  if (!levrt_test::have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer soak skipped";
   const levrt_test::TempDir temp("levrt_viewer_soak_");
   const fs::path snapshots = temp.path() / "snapshots";
   const SoakScript script(LEVRT_SOAK_CHANGES, snapshots.string());
@@ -180,13 +175,9 @@ TEST(ViewerSoak, ScriptedChangesKeepResidentMemoryFlat) {
     std::ofstream out(script_file);
     for (const std::string& line : script.lines()) out << line << "\n";
   }
-  // Leak checking is off in the windowed process for Mesa's sake (viewer_window_test.cpp says
-  // why); AddressSanitizer's other checks stay on.
-  const CommandRun r = run_shell(
-      "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" xvfb-run -a -s '-screen 0 1280x800x24' " +
-      shell_quote(LEVRT_BINARY) +
-      " view --lights 64 --width 48 --height 32 --spp 1 --window 640x480 --frames " +
-      std::to_string(script.frames()) + " --script " + shell_quote(script_file.string()));
+  const CommandRun r = levrt_test::run_viewer_on_xvfb(
+      {"--lights", "64", "--width", "48", "--height", "32", "--spp", "1", "--window", "640x480",
+       "--frames", std::to_string(script.frames()), "--script", script_file.string()});
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   const std::vector<std::uint64_t> memory = reported_memory(r.output);

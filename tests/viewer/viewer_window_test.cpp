@@ -1,7 +1,7 @@
 // The real viewer window under Xvfb, in scripted mode: open, render, switch method, move the
 // tolerance mid-render, switch every view (the error view computes the rt reference), save a
 // snapshot, and write the window to a PNG; the coarse preview covers the frame, never reaches a
-// snapshot, and the fit resolution follows the window. Skipped only when xvfb-run is missing.
+// snapshot, and the fit resolution follows the window. Skipped only when Xvfb is missing.
 // Labelled "threads": under the tsan preset the UI thread, the tile workers and the reference
 // thread share the display buffers and the cancel flag.
 #include <signal.h>
@@ -29,27 +29,19 @@
 #include "tests/support/run_command.h"
 #include "tests/support/signal_process.h"
 #include "tests/support/slow_gltf.h"
+#include "tests/support/xvfb_server.h"
 
 namespace {
 
 using levrt_test::CommandRun;
 using levrt_test::run_shell;
 using levrt_test::shell_quote;
+using levrt_test::have_xvfb;
+using levrt_test::XvfbServer;
 namespace fs = std::filesystem;
 
-bool have_xvfb() {
-  return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
-}
-
-// Mesa's GL driver is unloaded before LeakSanitizer runs at exit, so its one-off allocations
-// show up as leaks of an unknown module: under the asan preset the windowed process runs with
-// leak checking off (its other checks stay on; the worker tests check leaks in-process).
 CommandRun run_viewer(const std::vector<std::string>& args) {
-  std::string command =
-      "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" xvfb-run -a -s '-screen 0 1280x800x24' " +
-      shell_quote(LEVRT_BINARY) + " view";
-  for (const std::string& a : args) command += " " + shell_quote(a);
-  return run_shell(command);
+  return levrt_test::run_viewer_on_xvfb(args);
 }
 
 struct Png {
@@ -220,7 +212,7 @@ TEST_F(ViewerWindow, AnOutputThatIsAnInputOrAnotherOutputIsRefusedBeforeTheWindo
 
 TEST_F(ViewerWindow, EveryWriterWritesADeviceInPlace) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   struct stat null_before {
   }, zero_before{};
   ASSERT_EQ(::stat("/dev/null", &null_before), 0);
@@ -252,7 +244,7 @@ TEST_F(ViewerWindow, EveryWriterWritesADeviceInPlace) {
 
 TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   std::ofstream(path("broken.json")) << R"({"levrt_scene": 1, "camera": 5})";
   const std::vector<std::vector<std::string>> cases = {
       {"--scene", path("missing.json")},
@@ -278,7 +270,7 @@ TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
 
 TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   std::ofstream(path("file.txt")) << "a file, not a folder";
   const auto before = files_in(dir_);
   const CommandRun r = run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--frames",
@@ -292,7 +284,7 @@ TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
 // Without await=idle the snapshot waits for the render: all passes of it, not the preview.
 TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const CommandRun r =
       run_viewer({"--lights", "256", "--width", "96", "--height", "64", "--spp", "3", "--window",
                   "800x600", "--frames", "1", "--set", "snapshot=" + path("snap") + "@0"});
@@ -302,50 +294,12 @@ TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
   EXPECT_EQ(stats["spp"], 3);
 }
 
-// An Xvfb server of its own (-displayfd picks a free display), so that a test can signal the
-// levrt process itself rather than xvfb-run's shell. display() is empty when it did not start.
-class XvfbServer {
- public:
-  XvfbServer() {
-    int fds[2];
-    if (::pipe(fds) != 0) return;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(fds[1], STDOUT_FILENO);
-      ::close(fds[0]);
-      ::execlp("Xvfb", "Xvfb", "-displayfd", "1", "-screen", "0", "1024x768x24", "-nolisten", "tcp",
-               static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    ::close(fds[1]);
-    std::string number;
-    char c = 0;
-    while (::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
-    ::close(fds[0]);
-    if (!number.empty()) display_ = ":" + number;
-  }
-  ~XvfbServer() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      ::waitpid(pid_, nullptr, 0);
-    }
-  }
-  XvfbServer(const XvfbServer&) = delete;
-  XvfbServer& operator=(const XvfbServer&) = delete;
-  const std::string& display() const { return display_; }
-
- private:
-  pid_t pid_ = -1;
-  std::string display_;
-};
-
 // As root a rename would replace the machine's /dev/full; written in place it reports ENOSPC
-// and the viewer exits 1. On a server of its own: xvfb-run, when its client exits at once,
-// sometimes fails to clean up its folder and exits 5 itself, hiding levrt's exit code.
+// and the viewer exits 1.
 TEST_F(ViewerWindow, AFullDeviceAsTheControlsFileIsWrittenInPlaceAndExitsOne) {
   if (::geteuid() != 0 || !fs::is_character_file("/dev/full"))
     GTEST_SKIP() << "needs root and /dev/full: the test writes the device itself";
-  if (std::system("command -v Xvfb > /dev/null 2>&1") != 0)
+  if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const XvfbServer xvfb;
   ASSERT_FALSE(xvfb.display().empty());
@@ -364,7 +318,7 @@ TEST_F(ViewerWindow, AFullDeviceAsTheControlsFileIsWrittenInPlaceAndExitsOne) {
 // the viewer exits 130 promptly (the load stops at its next step, or the load watchdog ends it),
 // with no screenshot written.
 TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
-  if (std::system("command -v Xvfb > /dev/null 2>&1") != 0)
+  if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const XvfbServer xvfb;
   ASSERT_FALSE(xvfb.display().empty());
@@ -384,7 +338,7 @@ TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
 
 TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const std::string final_png = path("final.png");
   // clang-format off
   const CommandRun r = run_viewer({
@@ -444,7 +398,7 @@ TEST_F(ViewerWindow, ScriptedSessionRendersSwitchesEverythingAndScreenshots) {
 
 TEST_F(ViewerWindow, TheNoiseViewOfASamplingMethodShowsAndSnapshotsItsEstimate) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   // clang-format off
   const CommandRun r = run_viewer({
       "--scene", "hall", "--lights", "64", "--method", "lev_mc", "--tolerance", "0.3", "--samples", "2",
@@ -472,7 +426,7 @@ TEST_F(ViewerWindow, TheNoiseViewOfASamplingMethodShowsAndSnapshotsItsEstimate) 
 
 TEST_F(ViewerWindow, OnceThePreviewIsDoneNoPixelIsGreyAfterAChangeToRt) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const std::string shot = path("preview.png");
   // The lights view shows unrendered pixels in the grey; rt at 4,096 lights takes seconds for
   // its first pass, so right after the preview most tiles are still being traced.
@@ -496,7 +450,7 @@ TEST_F(ViewerWindow, OnceThePreviewIsDoneNoPixelIsGreyAfterAChangeToRt) {
 
 TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   // ast carries per-light statistics from pass to pass: a preview that fed them would change
   // pass 1. Two passes, a typed size, the same settings as the headless render below.
   const std::vector<std::string> settings = {"--lights", "256",      "--method", "ast",   "--width",
@@ -536,7 +490,7 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
 // read-out and stats say the same as `levrt render` of the same settings, and no rt is rendered.
 TEST_F(ViewerWindow, TheErrorBoundViewShowsTheBoundWithoutTheReference) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const std::vector<std::string> settings = {"--scene", "hall",     "--lights", "256",   "--width",
                                              "128",     "--height", "96",       "--spp", "1"};
   std::vector<std::string> view_args = settings;
@@ -579,7 +533,7 @@ TEST_F(ViewerWindow, TheErrorBoundViewShowsTheBoundWithoutTheReference) {
 
 TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   // One function writes both files (app/render_stats.h): the keys cannot drift, and threads 0
   // is resolved to the core count in both.
   const std::vector<std::string> settings = {"--lights", "64", "--width",   "48",
@@ -615,7 +569,7 @@ TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
 
 TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
   if (!have_xvfb())
-    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth): viewer test skipped";
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const std::string controls = path("controls.json");
   // clang-format off
   const CommandRun r = run_viewer({
