@@ -12,9 +12,9 @@ gives the bytes per vertex, triangle and texel.
 Both hold one point light. Standard library only."""
 import array
 import base64
+import argparse
 import json
 import struct
-import sys
 import zlib
 
 
@@ -74,11 +74,18 @@ def texture(out, width, uses):
 
 
 def main():
-    out, kind, size = sys.argv[1], sys.argv[2], int(sys.argv[3])
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", help="the .gltf file to write")
+    parser.add_argument("kind", choices=["grid", "texture"])
+    parser.add_argument("size", type=int, help="quads a side (grid) or texels a side (texture)")
+    parser.add_argument("extra", nargs="?", default=None,
+                        help="grid: 'flat' for no normals; texture: how many textures use it")
+    args = parser.parse_args()
+    out, kind, size = args.out, args.kind, args.size
     if kind == "grid":
-        document = grid(out, size, len(sys.argv) > 4 and sys.argv[4] == "flat")
+        document = grid(out, size, args.extra == "flat")
     else:
-        document = texture(out, size, int(sys.argv[4]) if len(sys.argv) > 4 else 1)
+        document = texture(out, size, int(args.extra) if args.extra else 1)
     document.update({
         "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
         "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 10}]}},

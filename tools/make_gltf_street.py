@@ -4,16 +4,22 @@ placed by every house node), a streetlight spot every 4 units on both sides (KHR
 inner 25 / outer 45 degrees, range 14), a warm point light in front of every house, and a dim
 moon (a directional light). Usage: make_gltf_street.py OUT.gltf [SEGMENTS] (lights = 4 x SEGMENTS).
 The camera looks down the street from one end. Standard library only."""
+import argparse
 import base64
 import json
 import math
 import struct
-import sys
 
 
 def main():
-    out = sys.argv[1]
-    segments = int(sys.argv[2]) if len(sys.argv) > 2 else 750
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", help="the .gltf file to write")
+    parser.add_argument("segments", type=int, nargs="?", default=750,
+                        help="street segments of 4 units, 4 lights each (default 750)")
+    args = parser.parse_args()
+    if args.segments < 1:
+        parser.error(f"segments must be at least 1, not {args.segments}")
+    out, segments = args.out, args.segments
     length = 4.0 * segments
     # A unit box (y up, base at y = 0) and the road quad: positions, normals, indices.
     box_faces = [((1, 0, 0), (0, 1, 0), (0, 0, 1)), ((-1, 0, 0), (0, 0, 1), (0, 1, 0)),
