@@ -8,7 +8,6 @@ void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
   stats.threads = renderer::worker_count(settings.threads);
   stats.depth = settings.depth;
   stats.subsample = settings.subsample;
-  stats.light_scale = settings.light_scale;
   stats.exposure_ev = settings.exposure_ev;
   stats.exposure_auto = settings.exposure_auto;
   stats.display = renderer::display_curve_name(settings.display);
@@ -30,7 +29,6 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["threads"] = s.threads;
   j["depth"] = s.depth;
   j["subsample"] = s.subsample;
-  j["light_scale"] = s.light_scale;
   j["exposure_ev"] = s.exposure_ev;
   j["exposure_auto"] = s.exposure_auto;
   j["display"] = s.display;

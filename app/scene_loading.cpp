@@ -66,8 +66,7 @@ void apply_light_count_flag(Settings& settings, const std::string& text) {
 
 scenes::SceneDescription describe_scene(const Settings& settings) {
   if (is_scene_file(settings)) {
-    return scenes::load_scene_file(settings.scene,
-                                   {static_cast<float>(settings.light_scale), settings.camera});
+    return scenes::load_scene_file(settings.scene, {settings.camera});
   }
   const scenes::SceneModel& model = model_for(settings);
   if (settings.level < model.min_level || settings.level > model.max_level) {

@@ -93,11 +93,6 @@ const std::vector<SettingSpec>& setting_table() {
        IntRange{&Settings::threads, 0, 1024}},
       {"subsample", "Subsample", "render every n-th pixel in x and y",
        IntRange{&Settings::subsample, 1, 64}},
-      {"light-scale", "Light scale",
-       "glTF scenes: a light's colour x intensity (candela; lux for directional lights) times this "
-       "is its "
-       "intensity in colour units",
-       RealRange{&Settings::light_scale, 0.0, 1e12, true, 1e-4, 1e2}},
       {"camera", "Camera",
        "glTF scenes: the perspective camera to look through, in node order (0: the first, or a "
        "view "
@@ -240,6 +235,7 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
                      std::to_string(settings.missed_samples) + "'");
   }
   rs.missed_samples = settings.missed_samples;
+  rs.exposure_ev = settings.exposure_ev;
   return rs;
 }
 

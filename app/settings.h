@@ -37,9 +37,7 @@ struct Settings {
   int depth = 5;                   // reflection/refraction depth
   int threads = 0;                 // 0 = all cores
   int subsample = 1;               // render every n-th pixel in x and y (for slow references)
-  // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
-  double light_scale = scenes::kDefaultGltfLightScale;
-  int camera = 0;  // a glTF file's perspective camera, in node order
+  int camera = 0;                  // a glTF file's perspective camera, in node order
   // The display step (renderer/display_transform.h): radiance x 2^exposure_ev through the
   // display curve. exposure_auto: the EV is chosen before the first pass
   // (renderer/auto_exposure.h) and exposure_ev is then what it chose. Built-in scenes and scene

@@ -1,5 +1,6 @@
 #include "lev/methods.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "lev/selector_ast.h"
@@ -41,7 +42,7 @@ std::vector<MethodInfo>& table_rows() {
        true,
        {1.0, 0.3, 0.1, 0.03, 0.01},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<AstSelector>(h, p.tolerance);
+         return std::make_unique<AstSelector>(h, scene_tolerance(p));
        }},
       {Method::lev,
        "lev",
@@ -53,7 +54,7 @@ std::vector<MethodInfo>& table_rows() {
        false,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevSelector>(h, p.tolerance);
+         return std::make_unique<LevSelector>(h, scene_tolerance(p));
        }},
       {Method::lev_bounded,
        "lev_bounded",
@@ -67,7 +68,7 @@ std::vector<MethodInfo>& table_rows() {
        true,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevBoundedSelector>(h, p.tolerance);
+         return std::make_unique<LevBoundedSelector>(h, scene_tolerance(p));
        }},
       {Method::lev_est,
        "lev_est",
@@ -80,7 +81,7 @@ std::vector<MethodInfo>& table_rows() {
        false,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevEstSelector>(h, p.tolerance);
+         return std::make_unique<LevEstSelector>(h, scene_tolerance(p), p.display_scale);
        }},
       {Method::lev_mc,
        "lev_mc",
@@ -93,7 +94,7 @@ std::vector<MethodInfo>& table_rows() {
        false,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevMcSelector>(h, p.tolerance, p.light_samples);
+         return std::make_unique<LevMcSelector>(h, scene_tolerance(p), p.light_samples);
        }},
       {Method::light_tree,
        "light_tree",
@@ -136,7 +137,7 @@ std::vector<MethodInfo>& table_rows() {
        false,
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevCutSelector>(h, p.relative_error);
+         return std::make_unique<LevCutSelector>(h, p.relative_error, p.display_scale);
        },
        true},
   };
@@ -196,11 +197,19 @@ std::unique_ptr<LightSelector> make_selector(const LightHierarchy& hierarchy,
     throw std::invalid_argument("samples per point " + std::to_string(params.light_samples) +
                                 " outside [1, " + std::to_string(kMaxLightSamples) + "]");
   }
+  if (!(params.display_scale > 0.0f) || !std::isfinite(params.display_scale)) {
+    throw std::invalid_argument("display scale " + std::to_string(params.display_scale) +
+                                " is not a finite number above 0");
+  }
   if (!(params.relative_error >= 0.0f && params.relative_error <= 1.0f)) {
     throw std::invalid_argument("relative error " + std::to_string(params.relative_error) +
                                 " outside [0, 1]");
   }
   return method_info(params.method).make_selector(hierarchy, params);
+}
+
+float scene_tolerance(const MethodParams& params) {
+  return params.tolerance / params.display_scale;
 }
 
 float MethodParams::*swept_setting(const MethodInfo& method) {

@@ -55,7 +55,14 @@ struct MethodParams {
   float tolerance = static_cast<float>(kDefaultTolerance);           // >= 0, colour units
   float relative_error = static_cast<float>(kDefaultRelativeError);  // [0, 1]
   int light_samples = 1;  // lights a sampling method draws per shading point, [1, kMaxLightSamples]
+  // The tolerance is in displayed units: scene-linear irradiance times this (the exposure, 2^EV;
+  // > 0). A selector culls at tolerance / display_scale in the scene's own units, so a scene
+  // 100x darker shown 6.64 EV brighter culls the same lights.
+  float display_scale = 1.0f;
 };
+
+// The tolerance in the scene's units: params.tolerance / params.display_scale.
+float scene_tolerance(const MethodParams& params);
 
 using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
                                                         const MethodParams& params);

@@ -2,10 +2,11 @@
 
 namespace lev {
 
-LevCutSelector::LevCutSelector(const LightHierarchy& hierarchy, float relative_error)
+LevCutSelector::LevCutSelector(const LightHierarchy& hierarchy, float relative_error,
+                               float display_scale)
     : hierarchy_(hierarchy),
       relative_error_(relative_error),
-      tolerance_(relative_error * kDropToleranceOfRelativeError),
+      tolerance_(relative_error * kDropToleranceOfRelativeError / display_scale),
       volumes_(fit_extent_volumes(hierarchy, tolerance_)) {}
 
 glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,

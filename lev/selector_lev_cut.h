@@ -16,14 +16,16 @@
 namespace lev {
 
 // The tolerance lev_cut's volumes drop at, per unit of relative error: a light is dropped where
-// its irradiance is below the relative error times one 8-bit display step (1/255 in colour
-// units), so no single dropped light moves a pixel by more than that share of a step.
+// its displayed irradiance (times the exposure, 2^EV) is below the relative error times one
+// 8-bit display step (1/255), so no single dropped light moves a pixel by more than that share
+// of a step at any exposure.
 inline constexpr float kDropToleranceOfRelativeError = 1.0f / 255.0f;
 
 class LevCutSelector final : public LightSelector {
  public:
-  // relative_error in [0, 1]; fits the extent volumes for the tolerance it implies.
-  LevCutSelector(const LightHierarchy& hierarchy, float relative_error);
+  // relative_error in [0, 1]; fits the extent volumes for the tolerance it implies at the
+  // exposure display_scale (2^EV, > 0).
+  LevCutSelector(const LightHierarchy& hierarchy, float relative_error, float display_scale = 1.0f);
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;

@@ -40,21 +40,22 @@ float rest_share_of_seen(float tolerance) {
   return kRestShareOfSeen * std::min(1.0f, tolerance / kShareFromTolerance);
 }
 
-ClusterCut cut_for(float tolerance) {
+ClusterCut cut_for(float tolerance, float display_scale) {
   ClusterCut cut;
   cut.refine_above = kRefineAboveTolerances * tolerance;
   cut.keep_above = kKeepAboveTolerances * tolerance;
-  cut.rest_share_of_seen = rest_share_of_seen(tolerance);
+  cut.rest_share_of_seen = rest_share_of_seen(tolerance * display_scale);
   return cut;
 }
 
 }  // namespace
 
-LevEstSelector::LevEstSelector(const LightHierarchy& hierarchy, float tolerance)
+LevEstSelector::LevEstSelector(const LightHierarchy& hierarchy, float tolerance,
+                               float display_scale)
     : hierarchy_(hierarchy),
       volumes_(fit_extent_volumes(hierarchy, tolerance)),
       tolerance_(tolerance),
-      cut_(cut_for(tolerance)) {}
+      cut_(cut_for(tolerance, display_scale)) {}
 
 // The estimate of the culled rest, chosen by measurement (hall 4,096, tolerance 0.01, cut as
 // above; avg/max error against rt):

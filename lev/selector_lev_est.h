@@ -23,7 +23,9 @@ struct LevEstScratch final : MethodScratch {
 class LevEstSelector final : public LightSelector {
  public:
   // Fits the hierarchy's extent volumes for `tolerance` (the hierarchy itself is not changed).
-  LevEstSelector(const LightHierarchy& hierarchy, float tolerance);
+  // tolerance in the scene's units; display_scale (2^EV) turns it into displayed units for the
+  // share of the seen irradiance the rest is estimated above, which the displayed tolerance sets.
+  LevEstSelector(const LightHierarchy& hierarchy, float tolerance, float display_scale = 1.0f);
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;

@@ -34,7 +34,7 @@ double error_bound_pct(const glm::vec3& mean_bound) {
 double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i) {
   if (framebuffer.samples[i] == 0) return 0.0;
   return error_bound_pct(framebuffer.error_bound_sum[i] /
-                         static_cast<float>(framebuffer.samples[i]));
+                         static_cast<float>(framebuffer.samples[i]) * framebuffer.exposure_scale);
 }
 
 std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer) {

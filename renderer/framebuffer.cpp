@@ -38,7 +38,7 @@ std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& f) {
   std::vector<std::uint8_t> rgb(f.radiance_sum.size() * 3, 0);
   for (std::size_t i = 0; i < f.radiance_sum.size(); ++i) {
     if (f.samples[i] == 0) continue;
-    const glm::vec3 mean = f.radiance_sum[i] / static_cast<float>(f.samples[i]);
+    const glm::vec3 mean = f.radiance_sum[i] / static_cast<float>(f.samples[i]) * f.exposure_scale;
     for (int c = 0; c < 3; ++c) {
       const float v = std::isnan(mean[c]) ? 0.0f : std::clamp(mean[c], 0.0f, 1.0f);
       rgb[3 * i + c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));

@@ -29,6 +29,10 @@ struct Framebuffer {
   // the estimate (RGB radiance, renderer/missed_light.h) and its variance.
   std::vector<glm::vec3> missed_sum;
   std::vector<glm::vec3> missed_variance_sum;
+  // 2^EV of the displayed units its error metrics are measured on (RenderSettings::exposure_ev):
+  // framebuffer_rgb8, the error bound, the noise and the missed-light estimate all read the
+  // radiance times this. 1 at EV 0.
+  float exposure_scale = 1.0f;
 };
 
 Framebuffer make_framebuffer(int width, int height);
@@ -36,7 +40,9 @@ void clear_framebuffer(Framebuffer& framebuffer);
 // Gives the framebuffer the missed-light sums (zero); clear_framebuffer keeps them.
 void allocate_missed_light(Framebuffer& framebuffer);
 
-// 8-bit RGB of the mean radiance, clamped to [0, 1] (1.0 = 255, the units of the tolerance).
+// 8-bit RGB of the mean exposed radiance (radiance x exposure_scale) clamped to [0, 1] (1.0 =
+// 255, the units of the tolerance): the linear image the pixel errors compare, and at EV 0 the
+// image levrt writes for a scene at its linear default.
 std::vector<std::uint8_t> framebuffer_rgb8(const Framebuffer& framebuffer);
 
 struct FramebufferTotals {

@@ -10,14 +10,15 @@ namespace renderer {
 double pixel_missed_pct(const Framebuffer& f, std::size_t i) {
   if (f.missed_sum.empty() || f.samples[i] == 0) return 0.0;
   // The error scale's arithmetic is the bound's: |value| per channel, clamped at 1.
-  return error_bound_pct(glm::abs(f.missed_sum[i] / static_cast<float>(f.samples[i])));
+  return error_bound_pct(
+      glm::abs(f.missed_sum[i] / static_cast<float>(f.samples[i]) * f.exposure_scale));
 }
 
 double pixel_missed_std_error_pct(const Framebuffer& f, std::size_t i) {
   if (f.missed_variance_sum.empty() || f.samples[i] == 0) return 0.0;
   // The mean of n independent samples: the variances summed, over n^2.
   const auto n = static_cast<float>(f.samples[i]);
-  return error_bound_pct(glm::sqrt(f.missed_variance_sum[i]) / n);
+  return error_bound_pct(glm::sqrt(f.missed_variance_sum[i]) / n * f.exposure_scale);
 }
 
 std::vector<double> missed_pct_image(const Framebuffer& f) {

@@ -15,8 +15,8 @@ double pixel_std_error_pct(const Framebuffer& f, std::size_t i) {
         0.0, (static_cast<double>(f.radiance_square_sum[i][c]) - n * mean * mean) / (n - 1.0));
     sum_pct += std::sqrt(variance / n);
   }
-  // 1.0 = 255: a channel's error e is e * 255 / 765 of the scale, in percent.
-  return sum_pct * 100.0 / 3.0;
+  // 1.0 = 255 after the exposure: a channel's error e is e * 255 / 765 of the scale, in percent.
+  return sum_pct * static_cast<double>(f.exposure_scale) * 100.0 / 3.0;
 }
 
 std::vector<double> pixel_std_error_pct(const Framebuffer& f) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "renderer/denormal_mode.h"
+#include "renderer/display_transform.h"
 #include "renderer/shading.h"
 #include "renderer/tile_workers.h"
 
@@ -132,6 +133,7 @@ lev::MethodParams method_params(const RenderSettings& settings) {
   params.tolerance = settings.tolerance;
   params.relative_error = settings.relative_error;
   params.light_samples = settings.light_samples;
+  params.display_scale = exposure_scale(settings.exposure_ev);
   return params;
 }
 
@@ -148,6 +150,7 @@ RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
   RenderStatePtr state(new RenderState(scene, rays, settings));
   state->selector = lev::make_selector(scene.lights, method_params(settings));
   state->framebuffer = make_framebuffer(settings.width, settings.height);
+  state->framebuffer.exposure_scale = exposure_scale(settings.exposure_ev);
   if (settings.missed_samples > 0) allocate_missed_light(state->framebuffer);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
@@ -170,6 +173,7 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
           lev::make_selector(state.scene.lights, method_params(state.settings));
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,
                                      (state.settings.height + preview_step - 1) / preview_step);
+    state.preview.exposure_scale = state.framebuffer.exposure_scale;
   }
   const int tile_count = render_tile_count(state);
   for (int i = 0; i < tile_count; ++i) {

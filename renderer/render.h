@@ -51,6 +51,11 @@ struct RenderSettings {
   // into Framebuffer::missed_sum (renderer/missed_light.h), in [kMinMissedSamples,
   // lev::kMaxLightSamples]; 0: off, and the selectors do none of that work.
   int missed_samples = 0;
+  // The exposure of the displayed units (renderer/display_transform.h): the tolerance, the
+  // relative methods' absolute floor and every error metric read radiance x 2^exposure_ev, so
+  // they mean the same on the displayed image at any exposure. The radiance itself stays
+  // scene-linear. The framebuffer records it (Framebuffer::exposure_scale).
+  double exposure_ev = 0.0;
 };
 
 // The settings the method's selector is made with.

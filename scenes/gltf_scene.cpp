@@ -113,13 +113,8 @@ renderer::TextureWrap texture_wrap(int gltf_wrap) {
 
 class Importer {
  public:
-  Importer(const tinygltf::Model& model, const std::string& path, float light_scale, int camera,
-           GltfBudget& budget)
-      : model_(model),
-        path_(path),
-        light_scale_(light_scale),
-        wanted_camera_(camera),
-        budget_(budget) {}
+  Importer(const tinygltf::Model& model, const std::string& path, int camera, GltfBudget& budget)
+      : model_(model), path_(path), wanted_camera_(camera), budget_(budget) {}
 
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -942,9 +937,10 @@ class Importer {
     }
     glm::dvec3 colour(1.0);
     if (light.color.size() == 3) colour = {light.color[0], light.color[1], light.color[2]};
-    // glTF: candela for point and spot lights, lux for directional ones; both become levrt's
-    // irradiance (at distance 1, or everywhere) through the one light scale.
-    const glm::vec3 intensity(colour * light.intensity * static_cast<double>(light_scale_));
+    // glTF: candela for point and spot lights, lux for directional ones, used as authored: levrt's
+    // irradiance at distance 1 (or everywhere). The exposure, not the scene, brings it to the
+    // display (renderer/display_transform.h).
+    const glm::vec3 intensity(colour * light.intensity);
     const glm::dvec3 direction = axis_forward / length;
     if (light.type == "directional") {
       scene_.directional_lights.push_back({glm::vec3(direction), intensity});
@@ -1029,7 +1025,6 @@ class Importer {
 
   const tinygltf::Model& model_;
   const std::string& path_;
-  float light_scale_;
   int wanted_camera_;
   GltfBudget& budget_;
   int cameras_seen_ = 0;
@@ -1066,10 +1061,7 @@ bool is_gltf_file_name(std::string_view name) {
   return ends_with(name, ".gltf") || ends_with(name, ".glb");
 }
 
-SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
-                                  float light_scale, int camera) {
-  if (!std::isfinite(light_scale) || light_scale < 0.0f)
-    fail(path, "light scale", number_text(light_scale));
+SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path, int camera) {
   if (camera < 0) fail(path, "camera", std::to_string(camera));
   GltfBudget budget(path, kMaxGltfSceneBytes);
   const bool binary = is_glb(bytes);
@@ -1097,7 +1089,7 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   if (!ok && error == std::bad_alloc().what()) throw std::bad_alloc();
   if (!ok)
     fail(path, "not a readable glTF file", error.empty() ? "(no detail)" : first_line(error));
-  Importer importer(model, path, light_scale, camera, budget);
+  Importer importer(model, path, camera, budget);
   SceneDescription scene = importer.run();
   // The limits every scene obeys (light count, intensities), with the file's name in front.
   try {

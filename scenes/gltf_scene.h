@@ -23,10 +23,6 @@
 
 namespace scenes {
 
-// glTF light intensity is in candela (lm/sr), which is irradiance in lux at distance 1; levrt's
-// irradiance is in colour units (1.0 = 255), so one factor maps the one onto the other. The
-// default shows the sample assets (../shared/gltf) without clipping their light pools.
-inline constexpr float kDefaultGltfLightScale = 0.03f;
 inline constexpr std::size_t kMaxGltfNodes = std::size_t{1} << 20;
 inline constexpr std::size_t kMaxGltfAccessorElements = std::size_t{1} << 25;
 
@@ -36,7 +32,10 @@ bool is_gltf_file_name(std::string_view name);
 // `bytes` is the whole file, `path` names it in messages and locates external buffers. camera:
 // the index of the perspective camera to look through among those the scene's nodes carry (depth
 // first); 0 falls back to the framing view when there is none, any other index must exist.
+// Light intensities are used as authored (candela for point and spot lights, lux for
+// directional ones, as irradiance at distance 1): photometric, usually far above levrt's 1.0 =
+// 255, and brought to the display by the exposure (glTF files open at --exposure auto).
 SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
-                                  float light_scale = kDefaultGltfLightScale, int camera = 0);
+                                  int camera = 0);
 
 }  // namespace scenes

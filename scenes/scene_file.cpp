@@ -615,7 +615,7 @@ SceneDescription load_scene_file(const std::string& path, const SceneFileOptions
   std::string text;
   read_regular_file(path, kMaxSceneFileBytes, "scene file", text);
   if (is_gltf_file_name(path))
-    return parse_gltf_scene(text, path, options.gltf_light_scale, options.camera);
+    return parse_gltf_scene(text, path, options.camera);
   if (options.camera != 0) {
     throw std::invalid_argument(path + ": camera: " + std::to_string(options.camera) +
                                 " (a scene file has one camera, 0)");

@@ -42,10 +42,9 @@ bool is_scene_file_name(std::string_view name);
 // Parses and validates; `source` names the text in messages (the file name).
 SceneDescription parse_scene_json(const std::string& text, const std::string& source);
 
-// What a file's reading may be asked: glTF light units and which camera (gltf_scene.h). A JSON
-// scene file has one camera, 0.
+// What a file's reading may be asked: which camera (gltf_scene.h). A JSON scene file has one
+// camera, 0.
 struct SceneFileOptions {
-  float gltf_light_scale = kDefaultGltfLightScale;
   int camera = 0;
 };
 

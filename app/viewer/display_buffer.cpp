@@ -14,7 +14,8 @@ void mean_rgb8(const renderer::Framebuffer& f, std::size_t pixel, std::uint8_t* 
     rgb[0] = rgb[1] = rgb[2] = 0;
     return;
   }
-  const glm::vec3 mean = f.radiance_sum[pixel] / static_cast<float>(f.samples[pixel]);
+  const glm::vec3 mean =
+      f.radiance_sum[pixel] / static_cast<float>(f.samples[pixel]) * f.exposure_scale;
   for (int c = 0; c < 3; ++c) {
     const float v = std::isnan(mean[c]) ? 0.0f : std::clamp(mean[c], 0.0f, 1.0f);
     rgb[c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));

@@ -91,7 +91,6 @@ struct Worker {
   std::unique_ptr<LoadedScene> loaded;
   std::string scene;
   int level = -1;
-  double light_scale = -1.0;
   int camera_index = -1;
   renderer::Camera preset;
   std::optional<ViewKey> view;
@@ -185,7 +184,6 @@ struct Worker {
     tear_down(serial);
     scene = s.scene;
     level = s.level;
-    light_scale = s.light_scale;
     camera_index = s.camera;
     update_status([&](WorkerStatus& st) {
       st.phase = WorkerPhase::loading;
@@ -215,9 +213,9 @@ struct Worker {
     });
     // A size over the budget is refused before the scene is built or a framebuffer allocated.
     check_memory_budget(s, request.want_reference);
-    // The light scale and camera index are read with a glTF file: they reload it.
-    const bool scene_changed = !loaded || s.scene != scene || s.level != level ||
-                               s.light_scale != light_scale || s.camera != camera_index;
+    // The camera index is read with a glTF file: it reloads it.
+    const bool scene_changed =
+        !loaded || s.scene != scene || s.level != level || s.camera != camera_index;
     if (scene_changed) load(s, serial);
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);

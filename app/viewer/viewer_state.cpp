@@ -15,8 +15,8 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
     if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene))
       s.level = model->default_level;
   }
-  const bool new_scene = s.scene != before.scene || s.level != before.level ||
-                         s.light_scale != before.light_scale || s.camera != before.camera;
+  const bool new_scene =
+      s.scene != before.scene || s.level != before.level || s.camera != before.camera;
   const bool new_size = s.width != before.width || s.height != before.height;
   if (new_size && s.resolution == before.resolution) s.resolution = "typed";
   const bool new_view = new_scene || new_size || s.resolution != before.resolution ||

@@ -40,7 +40,7 @@ TEST(GltfDocument, TheContentNotTheNameTellsBinaryFromText) {
   EXPECT_FALSE(scenes::is_glb("glT"));
   for (const std::string& bytes : {glb_of(kJson), kJson}) {
     for (const std::string name : {"named.gltf", "named.glb"}) {
-      EXPECT_EQ(scenes::parse_gltf_scene(bytes, name, 1.0f).root.children.size(), 1u) << name;
+      EXPECT_EQ(scenes::parse_gltf_scene(bytes, name).root.children.size(), 1u) << name;
     }
   }
 }

@@ -24,7 +24,7 @@ using levrt_test::GltfBuilder;
 constexpr char kPath[] = "mesh.gltf";
 
 scenes::SceneDescription parse(GltfBuilder& builder) {
-  return scenes::parse_gltf_scene(builder.text(), kPath, 1.0f);
+  return scenes::parse_gltf_scene(builder.text(), kPath);
 }
 
 const renderer::TriangleMesh& only_part(const scenes::SceneDescription& scene) {

@@ -93,8 +93,8 @@ renderer::Framebuffer render(const renderer::Scene& scene, lev::Method method, f
   return render_test_image(scene, rays, rs);
 }
 
-scenes::SceneDescription parse(GltfBuilder& builder, float light_scale = 1.0f, int camera = 0) {
-  return scenes::parse_gltf_scene(builder.text(), "lights.gltf", light_scale, camera);
+scenes::SceneDescription parse(GltfBuilder& builder, int camera = 0) {
+  return scenes::parse_gltf_scene(builder.text(), "lights.gltf", camera);
 }
 
 // A floor, a roof, a grid of ranged point lights, two smooth spots, a sun from 45 degrees, and a
@@ -126,7 +126,7 @@ GltfBuilder street() {
 
 TEST(GltfLights, RangeSmoothConesAndSunsReachTheRenderedScene) {
   GltfBuilder builder = street();
-  const renderer::Scene scene = scenes::instantiate_scene(parse(builder, 0.5f));
+  const renderer::Scene scene = scenes::instantiate_scene(parse(builder));
   const std::vector<lev::Light> lights = lev::flatten_lights(scene.lights);
   ASSERT_EQ(lights.size(), 38u);
   int ranged_points = 0, smooth_spots = 0;
@@ -134,7 +134,7 @@ TEST(GltfLights, RangeSmoothConesAndSunsReachTheRenderedScene) {
     if (light.kind == lev::LightKind::point) {
       ++ranged_points;
       EXPECT_FLOAT_EQ(light.range, 1.2f);
-      EXPECT_FLOAT_EQ(light.intensity.y, 0.5f * 0.5f * 2.0f);  // colour x intensity x light scale
+      EXPECT_FLOAT_EQ(light.intensity.y, 0.5f * 2.0f);  // colour x intensity, as authored
     } else {
       ++smooth_spots;
       EXPECT_EQ(light.profile, lev::SpotProfile::smooth);
@@ -150,8 +150,9 @@ TEST(GltfLights, RangeSmoothConesAndSunsReachTheRenderedScene) {
   ASSERT_EQ(scene.directional_lights.size(), 1u);
   EXPECT_NEAR(scene.directional_lights[0].direction.x, std::sqrt(0.5f), 1e-5f);
   EXPECT_NEAR(scene.directional_lights[0].direction.y, -std::sqrt(0.5f), 1e-5f);
-  EXPECT_NEAR(scene.directional_lights[0].irradiance.x, 0.15f, 1e-6f);
-  EXPECT_NEAR(scene.directional_lights[0].irradiance.z, 0.135f, 1e-6f);
+  // Lux as authored: colour x intensity.
+  EXPECT_NEAR(scene.directional_lights[0].irradiance.x, 0.3f, 1e-6f);
+  EXPECT_NEAR(scene.directional_lights[0].irradiance.z, 0.27f, 1e-6f);
 }
 
 TEST(GltfLights, LevAtToleranceZeroEqualsRtBitForBitWithASun) {
@@ -218,12 +219,12 @@ TEST(GltfLights, RangeAndSunShadowHoldInEveryMethod) {
 TEST(GltfLights, CameraIndexPicksAPerspectiveCameraInNodeOrder) {
   GltfBuilder builder = street();
   add_camera(builder, looking_down(3, 7, 0), 0.8);
-  EXPECT_NEAR(parse(builder, 1.0f, 0).camera.position.y, 12.0f, 1e-5f);
-  const renderer::Camera second = parse(builder, 1.0f, 1).camera;
+  EXPECT_NEAR(parse(builder, 0).camera.position.y, 12.0f, 1e-5f);
+  const renderer::Camera second = parse(builder, 1).camera;
   EXPECT_NEAR(second.position.x, 3.0f, 1e-5f);
   EXPECT_NEAR(second.vertical_fov_deg, 0.8 * 180.0 / kPi, 1e-3);
   try {
-    parse(builder, 1.0f, 2);
+    parse(builder, 2);
     FAIL() << "camera 2 of 2";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),

@@ -65,8 +65,7 @@ TEST(GltfMaterial, BaseColourTextureIsSampledAtTheHitsUv) {
       builder.add_png_texture(2, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255},
                               TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE, TINYGLTF_TEXTURE_WRAP_REPEAT);
   builder.model.materials[0].pbrMetallicRoughness.baseColorTexture.index = texture;
-  const scenes::SceneDescription description =
-      scenes::parse_gltf_scene(builder.text(), "tex.gltf", 1.0f);
+  const scenes::SceneDescription description = scenes::parse_gltf_scene(builder.text(), "tex.gltf");
   ASSERT_EQ(description.textures.size(), 1u);
   const renderer::Texture& decoded = description.textures[0];
   EXPECT_EQ(decoded.width, 2);
@@ -114,7 +113,7 @@ TEST(GltfMaterial, MetallicAndRoughnessMapOntoPhongAsDocumented) {
   shiny.pbrMetallicRoughness.roughnessFactor = 0.0;
   GltfBuilder builder = textured_square(shiny);
   const renderer::Material m =
-      scenes::parse_gltf_scene(builder.text(), "m.gltf", 1.0f).materials.at(0).material;
+      scenes::parse_gltf_scene(builder.text(), "m.gltf").materials.at(0).material;
   EXPECT_EQ(m.colour, glm::vec3(0.2f, 0.4f, 0.6f));
   EXPECT_FLOAT_EQ(m.kd, 0.0f);  // 1 - metallic x (1 - roughness)
   EXPECT_FLOAT_EQ(m.ks, 1.0f);  // (1 - roughness) x (0.04 + 0.96 metallic)
@@ -122,7 +121,7 @@ TEST(GltfMaterial, MetallicAndRoughnessMapOntoPhongAsDocumented) {
   EXPECT_FLOAT_EQ(m.shininess, 10000.0f);
   GltfBuilder matte_builder = textured_square(matte({1, 1, 1, 1}));
   const renderer::Material d =
-      scenes::parse_gltf_scene(matte_builder.text(), "m.gltf", 1.0f).materials.at(0).material;
+      scenes::parse_gltf_scene(matte_builder.text(), "m.gltf").materials.at(0).material;
   EXPECT_FLOAT_EQ(d.kd, 1.0f);
   EXPECT_FLOAT_EQ(d.ks, 0.0f);
   EXPECT_FLOAT_EQ(d.kr, 0.0f);
@@ -137,7 +136,7 @@ TEST(GltfMaterial, AnImageThatDoesNotDecodeFailsWithOneLine) {
   const tinygltf::BufferView& view = builder.model.bufferViews.back();
   builder.model.buffers[0].data[view.byteOffset] = 'X';
   try {
-    scenes::parse_gltf_scene(builder.text(), "bad.gltf", 1.0f);
+    scenes::parse_gltf_scene(builder.text(), "bad.gltf");
     FAIL() << "a broken PNG was accepted";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();

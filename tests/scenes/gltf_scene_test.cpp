@@ -44,7 +44,7 @@ const scenes::SceneNode& only_light(const scenes::SceneDescription& scene) {
 
 TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(kSpot, kNestedNodes), kPath, 1.0f);
+      scenes::parse_gltf_scene(gltf_with(kSpot, kNestedNodes), kPath);
   const scenes::SceneNode& placed = only_light(scene);
   const auto& affine = std::get<scenes::Affine>(placed.data);
   EXPECT_NEAR(affine.translate.x, 3.0f, 1e-5f);
@@ -62,13 +62,14 @@ TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
   EXPECT_EQ(spot.intensity, glm::vec3(8.0f, 4.0f, 2.0f));
 }
 
-TEST(GltfScene, LightScaleMultipliesColourTimesIntensity) {
+// Photometric intensities are used as authored: colour x intensity, no factor (the exposure
+// brings them to the display).
+TEST(GltfScene, LightIntensityIsColourTimesIntensityAsAuthored) {
   const std::string point = R"({"type": "point", "color": [0, 1, 0.5], "intensity": 4})";
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(point, node), kPath, 0.5f);
+  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, node), kPath);
   const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
-  EXPECT_EQ(light.intensity, glm::vec3(0.0f, 2.0f, 1.0f));
+  EXPECT_EQ(light.intensity, glm::vec3(0.0f, 4.0f, 2.0f));
 }
 
 TEST(GltfScene, MatrixNodesAndTheFirstPerspectiveCamera) {
@@ -80,7 +81,7 @@ TEST(GltfScene, MatrixNodesAndTheFirstPerspectiveCamera) {
   const std::string cameras =
       R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 1.0, "znear": 0.1}}])";
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(point, nodes, cameras), kPath, 1.0f);
+      scenes::parse_gltf_scene(gltf_with(point, nodes, cameras), kPath);
   EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
             glm::vec3(5.0f, 6.0f, 7.0f));
   EXPECT_EQ(scene.camera.position, glm::vec3(5.0f, 6.0f, 17.0f));
@@ -93,8 +94,7 @@ TEST(GltfScene, WithoutACameraTheViewFramesTheLightsFromFrontAbove) {
   const std::string point = R"({"type": "point"})";
   const std::string node =
       R"({"translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(point, node), kPath, 1.0f);
+  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, node), kPath);
   EXPECT_EQ(scene.camera.target, glm::vec3(2.0f, 0.0f, 0.0f));
   EXPECT_GT(scene.camera.position.y, scene.camera.target.y);
   EXPECT_GT(scene.camera.position.z, scene.camera.target.z);
@@ -147,10 +147,10 @@ TEST(GltfScene, BinaryFilesReadTheJsonChunkAndCheckTheLength) {
   const std::string node =
       R"({"translation": [0, 1, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 0), "test.glb", 1.0f);
+      scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 0), "test.glb");
   EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
             glm::vec3(0.0f, 1.0f, 0.0f));
-  EXPECT_THROW(scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 4), "test.glb", 1.0f),
+  EXPECT_THROW(scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 4), "test.glb"),
                std::invalid_argument);
 }
 
@@ -177,7 +177,7 @@ TEST(GltfScene, ZeroScaleHidesMeshesButPlacesPointLights) {
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(lights, nodes, mesh), kPath, 1.0f);
+      scenes::parse_gltf_scene(gltf_with(lights, nodes, mesh), kPath);
   const std::string warnings = testing::internal::GetCapturedStderr();
   EXPECT_TRUE(scene.meshes.empty());
   const scenes::SceneNode& placed = only_light(scene);
@@ -203,7 +203,7 @@ TEST(GltfScene, PrimitivesWithoutPositionAreSkippedWithOneWarning) {
                  {"primitives": [{"attributes": {}}, {"attributes": {"TEXCOORD_0": 0}}]}])";
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(point, nodes, meshes), kPath, 1.0f);
+      scenes::parse_gltf_scene(gltf_with(point, nodes, meshes), kPath);
   const std::string warnings = testing::internal::GetCapturedStderr();
   EXPECT_TRUE(scene.meshes.empty());
   EXPECT_EQ(warnings, std::string(kPath) +

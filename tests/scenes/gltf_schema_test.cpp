@@ -29,7 +29,7 @@ std::string gltf(
 
 std::string warnings_of(const std::string& text) {
   testing::internal::CaptureStderr();
-  (void)scenes::parse_gltf_scene(text, kPath, 1.0f);
+  (void)scenes::parse_gltf_scene(text, kPath);
   return testing::internal::GetCapturedStderr();
 }
 
@@ -86,7 +86,7 @@ TEST(GltfSchema, VersionsOtherThanTwoAndMinVersionsAboveTwoPointZeroAreRefused) 
     EXPECT_NO_THROW((void)scenes::parse_gltf_scene(
         gltf("", R"({"type": "point"})", R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})",
              asset),
-        kPath, 1.0f))
+        kPath))
         << asset;
   }
 }
@@ -131,7 +131,7 @@ TEST(GltfSchema, AWholeNumberWrittenWithAFractionIsAnIndex) {
   const scenes::SceneDescription scene =
       scenes::parse_gltf_scene(gltf("", R"({"type": "point", "intensity": 2})",
                                     R"({"extensions": {"KHR_lights_punctual": {"light": 0.0}}})"),
-                               kPath, 1.0f);
+                               kPath);
   EXPECT_EQ(scene.root.children.size(), 1u);
 }
 

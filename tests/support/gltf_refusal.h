@@ -14,7 +14,7 @@ namespace levrt_test {
 inline void expect_gltf_refused(const std::string& text, const std::string& path,
                                 const std::string& problem) {
   try {
-    scenes::parse_gltf_scene(text, path, 1.0f);
+    scenes::parse_gltf_scene(text, path);
     ADD_FAILURE() << "accepted: " << problem;
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
