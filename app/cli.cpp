@@ -42,6 +42,7 @@ std::string setting_type_name(const SettingSpec& spec) {
     } else {
       text << " in [" << d->min << ", " << d->max << "]";
     }
+    if (d->word) text << "|" << d->word;
     return text.str();
   }
   const auto& c = std::get<Choice>(spec.kind);
@@ -102,6 +103,8 @@ Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults
                      std::string(lev::method_info(settings.method).name) + " ignores it, got '" +
                      flags.text.at("relative-error") + "'");
   }
+  apply_scene_display_defaults(settings, flags.options.at("exposure")->count() > 0,
+                               flags.options.at("display")->count() > 0);
   if (lights_option->count() > 0) {
     if (flags.options.at("level")->count() > 0)
       throw UsageError("--lights: give --level or --lights, not both");

@@ -12,6 +12,8 @@
 #include "app/output_files.h"
 #include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
+#include "renderer/auto_exposure.h"
+#include "renderer/display_transform.h"
 #include "renderer/error_bound.h"
 #include "renderer/heatmap.h"
 #include "renderer/missed_light.h"
@@ -166,6 +168,10 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
     InterruptScope::throw_if_interrupted();
     throw;
   }
+  if (settings.exposure_auto) {
+    settings.exposure_ev = renderer::auto_exposure_ev(
+        loaded->scene, *loaded->rays, render_settings_from(settings), settings.display);
+  }
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
   const renderer::RenderResult result =
       render_image(*loaded, settings, settings.method, cancel, show_progress);
@@ -199,9 +205,12 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   std::vector<std::uint8_t> reference_rgb;
   std::vector<std::uint8_t> error_rgb;
   if (outputs.reference_rt) {
-    reference_rgb = renderer::framebuffer_rgb8(reference.framebuffer);
-    error_rgb = heatmap(renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), reference_rgb),
-                        stats.heatmap_error_range, outputs.heatmap_error);
+    reference_rgb =
+        renderer::display_framebuffer_rgb8(reference.framebuffer, display_from(settings));
+    error_rgb =
+        heatmap(renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb),
+                                          renderer::framebuffer_rgb8(reference.framebuffer)),
+                stats.heatmap_error_range, outputs.heatmap_error);
   }
   const std::vector<std::uint8_t> missed_rgb =
       stats.missed ? heatmap(renderer::missed_pct_image(fb), stats.heatmap_missed_range,
@@ -212,8 +221,10 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   const auto add = [&files](const std::string& path, std::function<std::string()> bytes) {
     if (!path.empty()) files.push_back({path, std::move(bytes)});
   };
-  add(outputs.image,
-      [&fb] { return png_rgb8_bytes(fb.width, fb.height, renderer::framebuffer_rgb8(fb)); });
+  add(outputs.image, [&fb, &settings] {
+    return png_rgb8_bytes(fb.width, fb.height,
+                          renderer::display_framebuffer_rgb8(fb, display_from(settings)));
+  });
   const auto png_of = [&fb](const std::vector<std::uint8_t>& rgb) {
     return [&fb, &rgb] { return png_rgb8_bytes(fb.width, fb.height, rgb); };
   };

@@ -9,6 +9,9 @@ void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
   stats.depth = settings.depth;
   stats.subsample = settings.subsample;
   stats.light_scale = settings.light_scale;
+  stats.exposure_ev = settings.exposure_ev;
+  stats.exposure_auto = settings.exposure_auto;
+  stats.display = renderer::display_curve_name(settings.display);
   stats.camera_index = settings.camera;
 }
 
@@ -28,6 +31,9 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["depth"] = s.depth;
   j["subsample"] = s.subsample;
   j["light_scale"] = s.light_scale;
+  j["exposure_ev"] = s.exposure_ev;
+  j["exposure_auto"] = s.exposure_auto;
+  j["display"] = s.display;
   j["directional_lights"] = s.directional_lights;
   j["time_build_s"] = s.build_seconds;
   j["time_refit_s"] = s.setup_seconds;

@@ -40,6 +40,9 @@ struct RenderStats {
   int depth = 0;
   int subsample = 1;
   double light_scale = 1.0;            // glTF light exposure (Settings::light_scale)
+  double exposure_ev = 0.0;            // the EV the image was displayed with (auto's choice too)
+  bool exposure_auto = false;          // chosen by --exposure auto
+  std::string display = "linear";      // the display curve
   std::size_t directional_lights = 0;  // suns, shadow-tested at every point outside the hierarchy
   double build_seconds = 0.0;
   double setup_seconds = 0.0;  // the render state: selector and extent volumes
@@ -70,7 +73,7 @@ struct RenderStats {
 };
 
 // The fields the settings decide alone, the same for `render` and a viewer snapshot: threads
-// (resolved), depth, subsample, light scale and camera index.
+// (resolved), depth, subsample, light scale, exposure, display and camera index.
 void set_stats_from_settings(RenderStats& stats, const Settings& settings);
 
 nlohmann::ordered_json render_stats_json(const RenderStats& stats);

@@ -38,6 +38,18 @@ const lev::MethodInfo& method_option(const std::string& option) {
   return lev::method_info(*lev::parse_method(option));
 }
 
+const char* display_option_summary(const std::string& option) {
+  switch (*renderer::parse_display_curve(option)) {
+    case renderer::DisplayCurve::linear:
+      return "the exposed radiance clipped to [0, 1] (1.0 = 255), no curve";
+    case renderer::DisplayCurve::srgb:
+      return "the sRGB transfer curve";
+    case renderer::DisplayCurve::neutral:
+      return "Khronos PBR Neutral tone mapping, then sRGB";
+  }
+  return "";
+}
+
 }  // namespace
 
 std::vector<std::string> scene_options() {
@@ -91,6 +103,19 @@ const std::vector<SettingSpec>& setting_table() {
        "view "
        "framing the scene when there is none)",
        IntRange{&Settings::camera, 0, 1000000}},
+      {"exposure", "Exposure",
+       "exposure in EV: the displayed image is the radiance x 2^EV through the display curve; "
+       "the tolerance and the error metrics are in these exposed units. auto: chosen from a "
+       "coarse preview so the 99th-percentile luminance shows at 0.75 (default for glTF, else 0)",
+       RealRange{&Settings::exposure_ev, -64.0, 64.0, false, -16.0, 16.0, "auto",
+                 &Settings::exposure_auto}},
+      {"display", "Display",
+       "display curve after the exposure (default: neutral for glTF, else linear)",
+       Choice{
+           [](const Settings& s) { return std::string(renderer::display_curve_name(s.display)); },
+           [](Settings& s, const std::string& v) { s.display = *renderer::parse_display_curve(v); },
+           renderer::display_curve_names, nullptr,
+           [](const std::string& o) { return display_option_summary(o); }}},
       {"missed-samples", "Missed light",
        "draws per shading point of the light a method left out, each with a shadow ray: the "
        "missed-light estimate and its standard error (0: off; --heatmap-missed turns it on with "
@@ -127,8 +152,13 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
     if (errno != 0 || *end != '\0' || v < r->min || v > r->max) reject(spec, what, text);
     settings.*(r->field) = static_cast<int>(v);
   } else if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
+    if (d->word && text == d->word) {
+      settings.*(d->word_flag) = true;
+      return;
+    }
     std::ostringstream range;
-    range << "must be a finite number in [" << d->min << ", " << d->max << "]";
+    range << "must be " << (d->word ? std::string(d->word) + " or " : std::string())
+          << "a finite number in [" << d->min << ", " << d->max << "]";
     if (text.empty()) reject(spec, range.str(), text);
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
@@ -138,6 +168,7 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
       reject(spec, range.str(), text);
     }
     settings.*(d->field) = v;
+    if (d->word_flag) settings.*(d->word_flag) = false;
   } else {
     const auto& c = std::get<Choice>(spec.kind);
     std::string valid;
@@ -161,11 +192,22 @@ std::string setting_text(const Settings& settings, const SettingSpec& spec) {
   if (const auto* r = std::get_if<IntRange>(&spec.kind))
     return std::to_string(settings.*(r->field));
   if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
+    if (d->word_flag && settings.*(d->word_flag)) return d->word;
     std::ostringstream s;
     s << settings.*(d->field);
     return s.str();
   }
   return std::get<Choice>(spec.kind).get(settings);
+}
+
+void apply_scene_display_defaults(Settings& settings, bool exposure_given, bool display_given) {
+  if (!scenes::is_gltf_file_name(settings.scene)) return;
+  if (!exposure_given) settings.exposure_auto = true;
+  if (!display_given) settings.display = renderer::DisplayCurve::neutral;
+}
+
+renderer::Display display_from(const Settings& settings) {
+  return {settings.exposure_ev, settings.display};
 }
 
 }  // namespace app

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "lev/methods.h"
+#include "renderer/display_transform.h"
 #include "renderer/render.h"
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_models.h"
@@ -39,6 +40,14 @@ struct Settings {
   // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
   double light_scale = scenes::kDefaultGltfLightScale;
   int camera = 0;  // a glTF file's perspective camera, in node order
+  // The display step (renderer/display_transform.h): radiance x 2^exposure_ev through the
+  // display curve. exposure_auto: the EV is chosen before the first pass
+  // (renderer/auto_exposure.h) and exposure_ev is then what it chose. Built-in scenes and scene
+  // files default to linear at EV 0 (the images levrt always wrote); glTF files to auto and
+  // neutral (apply_scene_display_defaults).
+  double exposure_ev = 0.0;
+  bool exposure_auto = false;
+  renderer::DisplayCurve display = renderer::DisplayCurve::linear;
   // Draws per shading point of the missed-light estimate (renderer/missed_light.h); 0: off.
   int missed_samples = 0;
 };
@@ -62,6 +71,10 @@ struct RealRange {
   // The viewer's log slider spans [slider_min, slider_max] (within [min, max]); typed values may
   // leave it, and a 0 button sits beside it when min allows 0.
   double slider_min = 0.0, slider_max = 0.0;
+  // A word the setting also takes instead of a number (the exposure's "auto"), and the flag it
+  // raises; a number lowers it.
+  const char* word = nullptr;
+  bool Settings::*word_flag = nullptr;
 };
 struct Choice {
   std::string (*get)(const Settings& settings);
@@ -95,6 +108,13 @@ std::vector<std::string> resolution_options();
 // The divisor of the image area's size a fit resolution names (1, 2, 4), or 0 for typed.
 int fit_divisor(const std::string& resolution);
 std::vector<std::string> scene_options();
+
+// What a scene opens with when neither --exposure nor --display was given: glTF files auto and
+// neutral (as their authors' viewers show them), everything else linear at EV 0.
+void apply_scene_display_defaults(Settings& settings, bool exposure_given, bool display_given);
+
+// The display the settings ask for (an auto exposure as last resolved).
+renderer::Display display_from(const Settings& settings);
 
 }  // namespace app
 
