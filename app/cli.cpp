@@ -14,6 +14,7 @@
 #include "app/accuracy_gate.h"
 #include "app/bench/bench.h"
 #include "app/export_command.h"
+#include "app/inspect_command.h"
 #include "app/render_command.h"
 #include "app/settings.h"
 #include "app/view_command.h"
@@ -191,6 +192,28 @@ int run_cli(int argc, char** argv) {
               "also render this method's image and report pixel errors (" + reference_name + ")")
           ->type_name("{" + reference_name + "}");
 
+  CLI::App* inspect = cli.add_subcommand(
+      "inspect", "list the lights behind one pixel: tested, culled (by which node), clustered");
+  SettingFlags inspect_flags;
+  add_setting_flags(*inspect, inspect_flags, Settings{});
+  std::string inspect_lights_text;
+  CLI::Option* inspect_lights_option =
+      inspect
+          ->add_option("--lights", inspect_lights_text,
+                       "light count (selects the level with that many lights)")
+          ->type_name("COUNT");
+  InspectFlags inspect_options;
+  inspect
+      ->add_option("--pixel", inspect_options.pixel,
+                   "the pixel to inspect, from the top left of the --width x --height image")
+      ->type_name("X,Y")
+      ->required();
+  inspect->add_option("--top", inspect_options.top, "table rows per hit (the JSON has all)")
+      ->type_name("N")
+      ->default_val(kDefaultInspectTop);
+  inspect->add_option("--json", inspect_options.json, "the complete lists (- for standard output)")
+      ->type_name("FILE.json");
+
   CLI::App* export_command =
       cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");
   ExportFlags export_flags;
@@ -244,6 +267,11 @@ int run_cli(int argc, char** argv) {
     }
     if (fail_above_option->count() > 0) outputs.fail_above = parse_accuracy_gate(fail_above);
     return run_render(settings, outputs);
+  }
+  if (inspect->parsed()) {
+    const Settings settings =
+        apply_setting_flags(inspect_flags, Settings{}, inspect_lights_option, inspect_lights_text);
+    return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);
   if (bench->parsed()) return run_bench(bench_flags);

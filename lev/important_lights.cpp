@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "lev/bounds.h"
+#include "lev/inspect_record.h"
 #include "lev/light_bounds.h"
 #include "lev/light_cut_tree.h"
 #include "lev/light_selector.h"
@@ -90,7 +91,25 @@ struct CulledSoFar {
   float relative_error = 0.0f;
   glm::dvec3 total{0.0};
   std::uint32_t deferrals = 0;
+  // The pixel inspector's record (WalkScratch::inspect): what is culled and clustered, when set.
+  InspectRecord* record = nullptr;
 };
+
+// The inspector's note of a culled subtree, or of a cluster standing for one (its representative
+// at `index` of the list the walk appended it to), entered with world_from_local = (linear,
+// translation).
+void record_culled_subtree(InspectRecord& record, std::uint32_t node, const WalkLinear& linear,
+                           const glm::vec3& translation) {
+  record.culled_subtrees.push_back(
+      {node, Similarity{linear.rotation, linear.scale, translation}, FramePoint{}});
+}
+void record_subtree_cluster(InspectRecord& record, std::size_t index, std::uint32_t node,
+                            const WalkLinear& linear, const glm::vec3& translation) {
+  WalkCluster& cluster = record.walk_clusters.emplace_back();
+  cluster.index = index;
+  cluster.whole_subtree = true;
+  cluster.subtree = {node, Similarity{linear.rotation, linear.scale, translation}, FramePoint{}};
+}
 
 // The most a cluster's bound (brightest channel) may be at this point of the walk.
 inline float largest_cluster_bound(const CulledSoFar& culled) {
@@ -127,8 +146,15 @@ inline bool passes(const Light& world, const glm::vec3& point, float tolerance,
     culled.sum += e;
     if (kCulled == Culled::clustered && brightest(e) > culled.cut.keep_above) {
       culled.clusters->push_back(world);
+      if (culled.record) {
+        WalkCluster& cluster = culled.record->walk_clusters.emplace_back();
+        cluster.index = culled.clusters->size() - 1;
+        cluster.single = world;
+      }
+      return false;
     }
   }
+  if (culled.record) culled.record->culled_lights.push_back(world);
   return false;
 }
 
@@ -253,17 +279,22 @@ template <Culled kCulled>
 inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm::vec3& local_point,
                          float point_magnitude, const glm::vec3& translation,
                          const WalkLinear& linear, float tolerance, CulledSoFar& culled) {
-  if constexpr (kCulled == Culled::dropped) return true;
+  if constexpr (kCulled == Culled::dropped) {
+    if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
+    return true;
+  }
   if constexpr (kCulled == Culled::collected) {
     culled.parts->subtrees.push_back(
         {node, Similarity{linear.rotation, linear.scale, translation},
          walk_frame_point(local_point, point_magnitude, translation, linear.scale)});
+    if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
     return true;
   }
   const FramePoint x = walk_frame_point(local_point, point_magnitude, translation, linear.scale);
   if constexpr (kCulled == Culled::tight) {
     culled.sum += tightened_irradiance_bound(h, node, x, tolerance, culled.openings_left,
                                              *culled.bound_parts);
+    if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
     return true;
   }
   const glm::dvec3 b(irradiance_bound(h, node, x));
@@ -273,9 +304,16 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
     if (!(brightest_bound <= culled.cut.refine_above)) return false;  // NaN-safe: +inf refines
     if (brightest_bound > culled.cut.keep_above) {
       culled.clusters->push_back(representative_light(h, node, linear, translation));
+      if (culled.record) {
+        record_subtree_cluster(*culled.record, culled.clusters->size() - 1, node, linear,
+                               translation);
+      }
+      culled.sum += b;
+      return true;
     }
   }
   culled.sum += b;
+  if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
   return true;
 }
 
@@ -395,13 +433,18 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
       identity ? culled.surface : surface_in_frame(culled.surface, linear.rotation);
   glm::vec3 irradiance;
   float bound = brightest(radiance_bound(h, node, x, surface, &irradiance));
-  if (bound == 0.0f) return;
+  if (bound == 0.0f) {  // dark here: culled
+    if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
+    return;
+  }
   if (!(bound >= 0.0f)) bound = std::numeric_limits<float>::infinity();  // NaN: walk it first
   const Light representative = cluster_representative(h, node, linear, translation);
   const glm::vec3 estimate = culled.shading->unshadowed_radiance(representative);
   culled.total += glm::dvec3(estimate);
   if (bound <= largest_cluster_bound(culled)) {
     out.push_back(representative);
+    if (culled.record)
+      record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
     culled.sum += glm::dvec3(irradiance);
     return;
   }
@@ -441,6 +484,9 @@ bool resume_deferred(std::vector<WalkFrame>& stack, std::vector<WalkLinear>& lin
     const DeferredSubtree& d = deferred.back();
     if (d.bound <= largest_cluster_bound(culled)) {
       out.push_back(d.representative);
+      if (culled.record)
+        record_subtree_cluster(*culled.record, out.size() - 1, d.node, d.linear,
+                               d.world_translation);
       culled.sum += glm::dvec3(d.irradiance_bound);
       deferred.pop_back();
       continue;
@@ -483,6 +529,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
   push_frame(stack, point, h.root, glm::vec3(0.0f), 0, false);
   std::vector<DeferredSubtree>& deferred = scratch.deferred;
   deferred.clear();
+  culled.record = scratch.inspect;
   for (;;) {
     if (stack.empty()) {
       if constexpr (kCulled != Culled::relative) break;

@@ -15,7 +15,8 @@
 
 namespace lev {
 
-class ShadingPoint;  // light_selector.h
+class ShadingPoint;    // light_selector.h
+struct InspectRecord;  // inspect_record.h
 
 struct WalkCounters {
   // Extent volumes tested: every box test (a union's children, extent-volume and master nodes)
@@ -72,6 +73,9 @@ struct WalkScratch {
   std::vector<WalkLinear> linear;
   std::vector<BoundPart> bound_parts;
   std::vector<DeferredSubtree> deferred;  // a heap, largest bound on top
+  // When set (the pixel inspector, SelectorScratch::inspect), the walk also records there what it
+  // culls and the clusters it makes; null in renders.
+  InspectRecord* inspect = nullptr;
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point

@@ -98,4 +98,31 @@ glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
   return glm::vec3(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
 }
 
+void record_light_cut(const LightCutTree& tree, const CutScratch& scratch, ShadingPoint& point,
+                      InspectRecord& record) {
+  std::vector<std::uint32_t> below;
+  for (const CutEntry& e : scratch.final) {
+    ShadedLight& shaded = record.shaded.emplace_back();
+    shaded.light = cluster_light(tree, e.node);
+    shaded.node = e.node;
+    shaded.unshadowed_radiance = point.unshadowed_radiance(shaded.light);
+    shaded.shadow_ray = e.visibility >= 0;
+    shaded.visible = e.visibility == 1;
+    shaded.contribution = e.estimate;
+    if (tree.nodes[e.node].is_leaf()) continue;
+    shaded.role = InspectRole::cluster;
+    below.assign(1, e.node);
+    while (!below.empty()) {
+      const CutTreeNode& n = tree.nodes[below.back()];
+      below.pop_back();
+      if (n.is_leaf()) {
+        shaded.members.push_back(inspect_light(tree.lights[n.representative], e.node, point));
+      } else {
+        below.push_back(n.children[1]);
+        below.push_back(n.children[0]);
+      }
+    }
+  }
+}
+
 }  // namespace lev

@@ -55,4 +55,10 @@ glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
                           glm::vec3* culled_irradiance_bound = nullptr,
                           const std::atomic<bool>* cancel = nullptr);
 
+// The pixel inspector's view of the cut shade_light_cut just made in `scratch`: each cluster (a
+// single light as tested, a larger one as a cluster with its lights, each measured at the point
+// with its own shadow ray) appended to record.shaded.
+void record_light_cut(const LightCutTree& tree, const CutScratch& scratch, ShadingPoint& point,
+                      InspectRecord& record);
+
 }  // namespace lev

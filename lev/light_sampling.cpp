@@ -263,7 +263,8 @@ void open_wide_parts(const LightHierarchy& h, CulledParts& parts, std::size_t ma
 
 glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
                            RandomStream& random, SamplingScratch& scratch,
-                           SelectionCounters& counters, glm::dvec3* draw_square_sum) {
+                           SelectionCounters& counters, glm::dvec3* draw_square_sum,
+                           InspectRecord* record) {
   open_wide_parts(hierarchy, scratch.parts, sampled_parts_budget(k), scratch.queue);
   const CulledParts& parts = scratch.parts;
   std::vector<double>& part_weights = scratch.part_weights;
@@ -296,9 +297,23 @@ glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint&
     }
     ++counters.lights_tested;
     const glm::vec3 radiance = point.unshadowed_radiance(sampled.light);
+    ShadedLight* shaded = nullptr;
+    if (record) {
+      shaded = &record->shaded.emplace_back();
+      shaded->light = sampled.light;
+      shaded->role = InspectRole::sampled;
+      shaded->unshadowed_radiance = radiance;
+      shaded->weight = 1.0 / (part_probability * sampled.probability * static_cast<double>(k));
+    }
     if (radiance == glm::vec3(0.0f)) continue;
     ++counters.shadow_rays;
-    if (!point.visible(sampled.light)) continue;
+    const bool visible = point.visible(sampled.light);
+    if (shaded) {
+      shaded->shadow_ray = true;
+      shaded->visible = visible;
+      if (visible) shaded->contribution = glm::vec3(glm::dvec3(radiance) * shaded->weight);
+    }
+    if (!visible) continue;
     const glm::dvec3 weighed = glm::dvec3(radiance) / (part_probability * sampled.probability);
     sum += weighed;
     if (draw_square_sum) *draw_square_sum += weighed * weighed;

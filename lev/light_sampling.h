@@ -115,9 +115,11 @@ struct SamplingScratch final : MethodScratch {
 // by sample_light; one shadow ray per draw, its radiance weighed by 1/probability, the mean of
 // the k returned. Its expected value is the summed unshadowed-and-visible radiance of every
 // light in the parts. draw_square_sum (may be null) gains the sum over the k draws of each
-// draw's weighed radiance squared, for the estimate's variance (the missed light).
+// draw's weighed radiance squared, for the estimate's variance (the missed light). record (may be
+// null: the pixel inspector's) gains each draw as a sampled light with its weight.
 glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint& point,
                            RandomStream& random, SamplingScratch& scratch,
-                           SelectionCounters& counters, glm::dvec3* draw_square_sum = nullptr);
+                           SelectionCounters& counters, glm::dvec3* draw_square_sum = nullptr,
+                           InspectRecord* record = nullptr);
 
 }  // namespace lev

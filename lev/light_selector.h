@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "lev/important_lights.h"
+#include "lev/inspect_record.h"
 #include "lev/light.h"
 
 namespace lev {
@@ -95,6 +96,10 @@ struct SelectorScratch {
   // and the estimate's buffers (lev/missed_light.h), made on first use.
   MissedLight* missed = nullptr;
   std::unique_ptr<MethodScratch> missed_scratch;
+  // Set by the caller for one call when it inspects the point (the pixel inspector,
+  // lev/inspect_record.h), with walk.inspect the same: the method records there what it shaded,
+  // culled and clustered. Null in renders.
+  InspectRecord* inspect = nullptr;
 };
 
 class LightSelector {
@@ -132,23 +137,40 @@ class LightSelector {
 // irradiance() clamps each term, so that huge lights never overflow the conversion.
 // cancel (may be null) is read every kCancelCheckLights lights; once raised the sum so far is
 // returned, which the caller discards. visible_irradiance (may be null) gains the brightest
-// channel of irradiance() of each light found visible.
+// channel of irradiance() of each light found visible. record (may be null: the inspector's,
+// SelectorScratch::inspect) gains each selected light as shaded and each other as culled by its
+// own test.
 inline constexpr std::size_t kCancelCheckLights = 4096;
 template <typename LightRange, typename Filter>
 glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
                              SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr,
-                             float* visible_irradiance = nullptr) {
+                             float* visible_irradiance = nullptr, InspectRecord* record = nullptr) {
   glm::dvec3 sum(0.0);
   std::size_t seen = 0;
   for (const Light& light : lights) {
     if (cancel && ++seen % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed))
       break;
-    if (!selected(light)) continue;
+    if (!selected(light)) {
+      if (record) record->culled_lights.push_back(light);
+      continue;
+    }
     ++counters.lights_tested;
     const glm::vec3 radiance = point.unshadowed_radiance(light);
+    ShadedLight* shaded = nullptr;
+    if (record) {
+      shaded = &record->shaded.emplace_back();
+      shaded->light = light;
+      shaded->unshadowed_radiance = radiance;
+    }
     if (radiance == glm::vec3(0.0f)) continue;
     ++counters.shadow_rays;
-    if (!point.visible(light)) continue;
+    const bool visible = point.visible(light);
+    if (shaded) {
+      shaded->shadow_ray = true;
+      shaded->visible = visible;
+      if (visible) shaded->contribution = radiance;
+    }
+    if (!visible) continue;
     sum += glm::dvec3(radiance);
     if (visible_irradiance) *visible_irradiance += brightest(irradiance(light, point.position()));
   }

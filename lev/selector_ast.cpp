@@ -41,10 +41,16 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   for (std::uint32_t i = 0; i < world_lights_.size(); ++i) {
     if (cancelled(i + 1)) return glm::vec3(0.0f);
     const Light& light = world_lights_[i];
-    if (!is_important(light, x, 0.0f)) continue;
+    if (!is_important(light, x, 0.0f)) {
+      if (scratch.inspect) scratch.inspect->culled_lights.push_back(light);
+      continue;
+    }
     const glm::vec3 radiance = point.unshadowed_radiance(light);
     const float potential = brightest(radiance);
-    if (potential <= 0.0f) continue;
+    if (potential <= 0.0f) {
+      if (scratch.inspect) scratch.inspect->culled_lights.push_back(light);
+      continue;
+    }
     heap.push_back({potential, i, radiance});
     untested += potential;
   }
@@ -72,7 +78,16 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
     ++counters.lights_tested;
     ++counters.shadow_rays;
     pass_tests_[c.light].fetch_add(1, std::memory_order_relaxed);
-    if (point.visible(world_lights_[c.light])) {
+    const bool visible = point.visible(world_lights_[c.light]);
+    if (scratch.inspect) {
+      ShadedLight& shaded = scratch.inspect->shaded.emplace_back();
+      shaded.light = world_lights_[c.light];
+      shaded.unshadowed_radiance = c.radiance;
+      shaded.shadow_ray = true;
+      shaded.visible = visible;
+      if (visible) shaded.contribution = c.radiance;
+    }
+    if (visible) {
       ++point_hits;
       pass_hits_[c.light].fetch_add(1, std::memory_order_relaxed);
       sum += c.radiance;
@@ -86,6 +101,14 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
                             ? static_cast<float>(hits_[c.light]) / static_cast<float>(tests_[c.light])
                             : point_ratio;
     sum += c.radiance * ratio;
+    if (scratch.inspect) {
+      ShadedLight& shaded = scratch.inspect->shaded.emplace_back();
+      shaded.light = world_lights_[c.light];
+      shaded.role = InspectRole::estimated;
+      shaded.unshadowed_radiance = c.radiance;
+      shaded.weight = ratio;
+      shaded.contribution = c.radiance * ratio;
+    }
   }
   // The estimated rest is off by at most its unshadowed value: its irradiance bounds the error.
   if (culled_irradiance_bound) {

@@ -14,7 +14,8 @@ glm::vec3 LevSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
         culled_irradiance_bound);
   counters.nodes_visited += walk_counters.nodes_visited;
   const glm::vec3 radiance = sum_visible_lights(
-      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
+      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
+      scratch.inspect);
   if (scratch.missed) {
     // lev's culled lights, less those a variant (lev_bounded) tested all the same.
     estimate_missed_light(hierarchy_, volumes_, tolerance_, point, scratch,

@@ -18,8 +18,12 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
                  scratch.lights, walk_counters, culled_irradiance_bound);
   counters.nodes_visited += walk_counters.nodes_visited;
   // The lights and the clusters' representatives alike: one shadow ray each.
-  return sum_visible_lights(
-      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
+  const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
+  const glm::vec3 radiance = sum_visible_lights(
+      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
+      scratch.inspect);
+  if (scratch.inspect) scratch.inspect->attach_walk_clusters(shaded_from);
+  return radiance;
 }
 
 }  // namespace lev

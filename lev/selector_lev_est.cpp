@@ -83,20 +83,24 @@ glm::vec3 LevEstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   float visible_tested_irradiance = 0.0f;
   const glm::vec3 tested = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel,
-      &visible_tested_irradiance);
+      &visible_tested_irradiance, scratch.inspect);
   const float culled = brightest(culled_bound);
   if (culled > cut_.keep_above && culled > cut_.rest_share_of_seen * visible_tested_irradiance) {
     // The same walk again, now cutting what it culls into clusters: it returns the same lights,
     // already summed above.
     scratch.lights.clear();
+    if (scratch.inspect) scratch.inspect->clear_walk();
     find_lights_and_clusters(hierarchy_, volumes_, tolerance_, cut_, x, scratch.walk,
                              scratch.lights, clusters, walk_counters, &culled_bound);
   }
   counters.nodes_visited += walk_counters.nodes_visited;
   // The estimate is not exact, so the bound still counts every culled cluster.
   if (culled_irradiance_bound) *culled_irradiance_bound = culled_bound;
+  const std::size_t clusters_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
   const glm::vec3 estimate = sum_visible_lights(
-      clusters, [](const Light&) { return true; }, point, counters, scratch.cancel);
+      clusters, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
+      scratch.inspect);
+  if (scratch.inspect) scratch.inspect->attach_walk_clusters(clusters_from);
   // What lev culls, less the clusters' estimate that stood in for it.
   estimate_missed_light(hierarchy_, volumes_, tolerance_, point, scratch, estimate);
   return tested + estimate;

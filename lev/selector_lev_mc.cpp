@@ -21,10 +21,11 @@ glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& s
                             scratch.lights, walk_counters, sampling.parts);
   counters.nodes_visited += walk_counters.nodes_visited;
   const glm::vec3 tested = sum_visible_lights(
-      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel);
+      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
+      scratch.inspect);
   if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) return tested;
   return tested + sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling,
-                                   counters);
+                                   counters, nullptr, scratch.inspect);
 }
 
 }  // namespace lev

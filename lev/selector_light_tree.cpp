@@ -8,8 +8,10 @@ glm::vec3 LightTreeSelector::direct_radiance(ShadingPoint& point, SelectorScratc
   SamplingScratch& sampling = begin_point(scratch, culled_irradiance_bound);
   sampling.parts.clear();
   sampling.parts.subtrees.push_back(whole_hierarchy(hierarchy_, point.position()));
-  return sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling,
-                          counters);
+  // Nothing is tested exactly: every light is left to the draws, as the root's.
+  if (scratch.inspect) scratch.inspect->culled_subtrees.push_back(sampling.parts.subtrees.back());
+  return sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling, counters,
+                          nullptr, scratch.inspect);
 }
 
 }  // namespace lev

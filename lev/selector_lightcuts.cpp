@@ -8,8 +8,11 @@ LightcutsSelector::LightcutsSelector(const LightHierarchy& hierarchy, float rela
 glm::vec3 LightcutsSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                              SelectionCounters& counters,
                                              glm::vec3* culled_irradiance_bound) const {
-  return shade_light_cut(tree_, settings_, point, method_scratch<CutScratch>(scratch), counters,
-                         culled_irradiance_bound, scratch.cancel);
+  CutScratch& cut = method_scratch<CutScratch>(scratch);
+  const glm::vec3 radiance = shade_light_cut(tree_, settings_, point, cut, counters,
+                                             culled_irradiance_bound, scratch.cancel);
+  if (scratch.inspect) record_light_cut(tree_, cut, point, *scratch.inspect);
+  return radiance;
 }
 
 std::size_t LightcutsSelector::bookkeeping_bytes() const {

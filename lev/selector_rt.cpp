@@ -13,7 +13,7 @@ glm::vec3 RtSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scra
   if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(0.0f);  // every light is tested
   return sum_visible_lights(
       world_lights_, [&](const Light& l) { return is_important(l, x, 0.0f); }, point, counters,
-      scratch.cancel);
+      scratch.cancel, nullptr, scratch.inspect);
 }
 
 }  // namespace lev

@@ -85,16 +85,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
       if (x % step != 0) continue;
       const auto pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(rs.width) +
                          static_cast<std::size_t>(x);
-      lev::RandomStream random{mix(mix(rs.seed, pixel), pass)};
-      float jx = 0.5f, jy = 0.5f;
-      if (pass > 0 && rs.jitter_pixels) {
-        jx = random.next_float();
-        jy = random.next_float();
-      }
-      scratch.random.state = random.next_u64();
-      context.missed_random.state = random.next_u64();  // after the method's: it never moves it
-      const Ray ray = primary_ray(state.scene.camera, rs.width, rs.height,
-                                  static_cast<float>(x) + jx, static_cast<float>(y) + jy);
+      const Ray ray = pixel_sample_ray(rs, state.scene.camera, x, y, pass, scratch.random,
+                                       context.missed_random);
       PixelSample& sample = samples.emplace_back();
       sample.pixel = preview ? static_cast<std::size_t>(y / step) *
                                        static_cast<std::size_t>(state.preview.width) +
@@ -126,6 +118,23 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
 }
 
 }  // namespace
+
+Ray pixel_sample_ray(const RenderSettings& rs, const Camera& camera, int x, int y,
+                     std::uint64_t pass, lev::RandomStream& method_random,
+                     lev::RandomStream& missed_random) {
+  const auto pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(rs.width) +
+                     static_cast<std::size_t>(x);
+  lev::RandomStream random{mix(mix(rs.seed, pixel), pass)};
+  float jx = 0.5f, jy = 0.5f;
+  if (pass > 0 && rs.jitter_pixels) {
+    jx = random.next_float();
+    jy = random.next_float();
+  }
+  method_random.state = random.next_u64();
+  missed_random.state = random.next_u64();  // after the method's: it never moves it
+  return primary_ray(camera, rs.width, rs.height, static_cast<float>(x) + jx,
+                     static_cast<float>(y) + jy);
+}
 
 lev::MethodParams method_params(const RenderSettings& settings) {
   lev::MethodParams params;

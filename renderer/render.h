@@ -58,6 +58,13 @@ struct RenderSettings {
   double exposure_ev = 0.0;
 };
 
+// The primary ray of pixel (x, y)'s sample in pass `pass`, with the method's and the missed-light
+// estimate's random streams seeded for it, as every render seeds them (the pixel inspector
+// traces the same sample).
+Ray pixel_sample_ray(const RenderSettings& settings, const Camera& camera, int x, int y,
+                     std::uint64_t pass, lev::RandomStream& method_random,
+                     lev::RandomStream& missed_random);
+
 // The settings the method's selector is made with.
 lev::MethodParams method_params(const RenderSettings& settings);
 

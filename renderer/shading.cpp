@@ -6,6 +6,7 @@
 
 #include "renderer/direction.h"
 #include "renderer/error_bound.h"
+#include "renderer/pixel_inspection.h"
 
 namespace renderer {
 namespace {
@@ -127,16 +128,37 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
     missed.random = &context.missed_random;
     context.scratch.missed = &missed;
   }
+  const std::size_t inspected = context.inspection ? context.inspection->size() : 0;
+  if (context.inspection) {
+    InspectedHit& inspection = context.inspection->emplace_back();
+    inspection.depth = depth;
+    inspection.path_weight = path_weight;
+    inspection.position = hit.position;
+    inspection.normal = facing;
+    context.scratch.inspect = &inspection.record;
+    context.scratch.walk.inspect = &inspection.record;
+  }
+  glm::vec3 direct(0.0f), hit_error_bound(0.0f);
   if (context.compute_error_bound) {
     // The direct term is weighed by path_weight in the pixel, so is what it may miss.
     glm::vec3 culled_irradiance(0.0f);
-    radiance += context.selector.direct_radiance(point, context.scratch, counters.selection,
-                                                 &culled_irradiance);
-    counters.error_bound += path_weight * shading_error_bound(material, culled_irradiance);
+    direct = context.selector.direct_radiance(point, context.scratch, counters.selection,
+                                              &culled_irradiance);
+    hit_error_bound = path_weight * shading_error_bound(material, culled_irradiance);
+    counters.error_bound += hit_error_bound;
   } else {
-    radiance += context.selector.direct_radiance(point, context.scratch, counters.selection);
+    direct = context.selector.direct_radiance(point, context.scratch, counters.selection);
   }
+  radiance += direct;
   context.scratch.missed = nullptr;
+  if (context.inspection) {
+    context.scratch.inspect = nullptr;
+    context.scratch.walk.inspect = nullptr;
+    InspectedHit& inspection = (*context.inspection)[inspected];
+    inspection.direct_radiance = direct;
+    inspection.error_bound = hit_error_bound;
+    lev::complete_inspection(context.scene.lights, point, inspection.record);
+  }
   if (missed.estimated) {
     counters.missed += path_weight * missed.radiance;
     counters.missed_variance += path_weight * path_weight * missed.variance;

@@ -15,6 +15,8 @@
 
 namespace renderer {
 
+struct InspectedHit;  // pixel_inspection.h
+
 struct PathCounters {
   std::uint64_t shading_points = 0;
   lev::SelectionCounters selection;
@@ -43,6 +45,9 @@ struct TraceContext {
   // per pixel and pass by the caller), into PathCounters::missed.
   int missed_samples = 0;
   lev::RandomStream missed_random{};
+  // When set (the pixel inspector, pixel_inspection.h), each shading point of the path appends
+  // what the method did there, recorded by the selector itself; null in renders.
+  std::vector<InspectedHit>* inspection = nullptr;
 };
 
 // Reflection and refraction stop where the path weight (the product of kr and kt along the path)

@@ -1,0 +1,247 @@
+#include "app/inspect_command.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <vector>
+
+#include "app/output_files.h"
+#include "app/scene_loading.h"
+#include "lev/methods.h"
+#include "scenes/scene_inputs.h"
+
+namespace app {
+namespace {
+
+nlohmann::ordered_json vec_json(const glm::vec3& v) {
+  return {v.x, v.y, v.z};
+}
+nlohmann::ordered_json vec_json(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+std::string node_text(std::uint32_t node) {
+  return node == lev::kOwnTest ? std::string("own test") : "node " + std::to_string(node);
+}
+
+nlohmann::ordered_json light_json(const lev::Light& light) {
+  nlohmann::ordered_json j;
+  j["kind"] = light.kind == lev::LightKind::spot ? "spot" : "point";
+  j["position"] = vec_json(light.position);
+  j["intensity"] = vec_json(light.intensity);
+  if (light.kind == lev::LightKind::spot) j["direction"] = vec_json(light.direction);
+  return j;
+}
+
+// A light of the scene the method did not shade itself, in pixel units (times the path weight).
+nlohmann::ordered_json inspected_json(const lev::InspectedLight& l, double weight) {
+  nlohmann::ordered_json j = light_json(l.light);
+  j["node"] =
+      l.node == lev::kOwnTest ? nlohmann::ordered_json("own test") : nlohmann::ordered_json(l.node);
+  j["unshadowed"] = vec_json(glm::dvec3(l.unshadowed_radiance) * weight);
+  j["visible"] = l.visible;
+  j["lost"] = vec_json(glm::dvec3(l.visible_radiance()) * weight);
+  return j;
+}
+
+nlohmann::ordered_json totals_json(const renderer::InspectedTotals& t) {
+  nlohmann::ordered_json j;
+  j["tested_sum"] = vec_json(t.tested);
+  j["exact_sum"] = vec_json(t.exact);
+  j["lost_sum"] = vec_json(t.lost);
+  j["certified_bound"] = std::isfinite(t.bound.x) ? vec_json(t.bound) : nlohmann::ordered_json();
+  j["shaded"] = t.shaded;
+  j["tested_lights"] = t.tested_lights;
+  j["culled_lights"] = t.culled_lights;
+  j["clusters"] = t.clusters;
+  j["clustered_lights"] = t.clustered_lights;
+  return j;
+}
+
+double brightest(const glm::dvec3& v) {
+  return std::max({v.x, v.y, v.z});
+}
+
+// One row of the table: a shaded term or a culled light, with its value for the pixel.
+struct Row {
+  glm::dvec3 pixel{0.0};    // contribution, or the light lost
+  double unshadowed = 0.0;  // brightest channel, for the order among equal contributions
+  std::string text;
+};
+
+std::string position_text(const glm::vec3& p) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "(%.3g, %.3g, %.3g)", p.x, p.y, p.z);
+  return buffer;
+}
+
+std::string rgb_text(const glm::dvec3& v) {
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return "none";
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%.6f %.6f %.6f", v.x, v.y, v.z);
+  return buffer;
+}
+
+std::string totals_text(const renderer::InspectedTotals& t) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer,
+                "%zu shaded (%zu single lights tested), %zu culled, %zu clusters of %zu lights",
+                t.shaded, t.tested_lights, t.culled_lights, t.clusters, t.clustered_lights);
+  return "  tested sum " + rgb_text(t.tested) + " | lost sum (true, with shadows) " +
+         rgb_text(t.lost) + " | certified bound " + rgb_text(t.bound) + "\n  lights: " + buffer +
+         "\n";
+}
+
+}  // namespace
+
+void parse_inspect_pixel(const std::string& text, int width, int height, int& x, int& y) {
+  static const std::regex pattern("([0-9]{1,9}),([0-9]{1,9})");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern))
+    throw UsageError("--pixel: expected X,Y (image pixels from the top left), got '" + text + "'");
+  x = std::stoi(match[1].str());
+  y = std::stoi(match[2].str());
+  if (x >= width || y >= height) {
+    throw UsageError("--pixel: outside the " + std::to_string(width) + "x" +
+                     std::to_string(height) + " image, got '" + text + "'");
+  }
+}
+
+nlohmann::ordered_json inspection_json(const renderer::PixelInspection& inspection) {
+  nlohmann::ordered_json j;
+  j["pixel"] = {inspection.x, inspection.y};
+  j["radiance"] = vec_json(inspection.radiance);
+  j["lights_tested"] = inspection.counters.selection.lights_tested;
+  j["shadow_rays"] = inspection.counters.selection.shadow_rays;
+  j["nodes_visited"] = inspection.counters.selection.nodes_visited;
+  nlohmann::ordered_json hits = nlohmann::ordered_json::array();
+  for (const renderer::InspectedHit& hit : inspection.hits) {
+    const double weight = hit.path_weight;
+    nlohmann::ordered_json h;
+    h["depth"] = hit.depth;
+    h["path_weight"] = hit.path_weight;
+    h["position"] = vec_json(hit.position);
+    h["normal"] = vec_json(hit.normal);
+    h["direct_radiance"] = vec_json(hit.direct_radiance);
+    nlohmann::ordered_json shaded = nlohmann::ordered_json::array();
+    for (const lev::ShadedLight& s : hit.record.shaded) {
+      nlohmann::ordered_json e = light_json(s.light);
+      e["role"] = lev::role_name(s.role);
+      if (s.node != lev::kOwnTest) e["node"] = s.node;
+      e["weight"] = s.weight;
+      e["unshadowed"] = vec_json(glm::dvec3(s.unshadowed_radiance) * weight);
+      e["shadow_ray"] = s.shadow_ray;
+      e["visible"] = s.visible;
+      e["contribution"] = vec_json(glm::dvec3(s.contribution) * weight);
+      if (s.role == lev::InspectRole::cluster || s.role == lev::InspectRole::estimated) {
+        e["member_count"] = s.members.size();
+        nlohmann::ordered_json members = nlohmann::ordered_json::array();
+        for (const lev::InspectedLight& m : s.members) members.push_back(inspected_json(m, weight));
+        e["members"] = std::move(members);
+      }
+      shaded.push_back(std::move(e));
+    }
+    h["shaded"] = std::move(shaded);
+    std::vector<const lev::InspectedLight*> culled;
+    for (const lev::InspectedLight& c : hit.record.culled) culled.push_back(&c);
+    std::stable_sort(culled.begin(), culled.end(), [](const auto* a, const auto* b) {
+      return brightest(glm::dvec3(a->visible_radiance())) >
+             brightest(glm::dvec3(b->visible_radiance()));
+    });
+    nlohmann::ordered_json culled_json = nlohmann::ordered_json::array();
+    for (const lev::InspectedLight* c : culled) culled_json.push_back(inspected_json(*c, weight));
+    h["culled"] = std::move(culled_json);
+    h["totals"] = totals_json(renderer::hit_totals(hit));
+    hits.push_back(std::move(h));
+  }
+  j["hits"] = std::move(hits);
+  j["totals"] = totals_json(inspection.totals);
+  return j;
+}
+
+std::string inspection_table(const renderer::PixelInspection& inspection, int top) {
+  std::string out;
+  char line[512];
+  std::snprintf(line, sizeof line, "pixel %d,%d: radiance %.6f %.6f %.6f, %zu hit%s\n",
+                inspection.x, inspection.y, inspection.radiance.x, inspection.radiance.y,
+                inspection.radiance.z, inspection.hits.size(),
+                inspection.hits.size() == 1 ? "" : "s");
+  out += line;
+  for (const renderer::InspectedHit& hit : inspection.hits) {
+    const double weight = hit.path_weight;
+    std::snprintf(line, sizeof line, "hit %d (%s), path weight %.4g, at %s\n", hit.depth,
+                  hit.depth == 0 ? "primary" : "reflected or refracted", weight,
+                  position_text(hit.position).c_str());
+    out += line;
+    std::vector<Row> rows;
+    for (const lev::ShadedLight& s : hit.record.shaded) {
+      Row& row = rows.emplace_back();
+      row.pixel = glm::dvec3(s.contribution) * weight;
+      row.unshadowed = brightest(glm::dvec3(s.unshadowed_radiance) * weight);
+      std::string role = lev::role_name(s.role);
+      if (s.role == lev::InspectRole::cluster || s.role == lev::InspectRole::estimated)
+        role += "(" + std::to_string(s.members.size()) + ")";
+      const std::string by = s.node == lev::kOwnTest ? "-" : node_text(s.node);
+      std::snprintf(line, sizeof line, "%-14s %-5s %-28s %-12s %12.6f %-4s %9.4g %12.6f\n",
+                    role.c_str(), s.light.kind == lev::LightKind::spot ? "spot" : "point",
+                    position_text(s.light.position).c_str(), by.c_str(),
+                    brightest(glm::dvec3(s.unshadowed_radiance) * weight),
+                    !s.shadow_ray ? "-" : (s.visible ? "yes" : "no"), s.weight,
+                    brightest(row.pixel));
+      row.text = line;
+    }
+    for (const lev::InspectedLight& c : hit.record.culled) {
+      Row& row = rows.emplace_back();
+      row.pixel = glm::dvec3(c.visible_radiance()) * weight;
+      row.unshadowed = brightest(glm::dvec3(c.unshadowed_radiance) * weight);
+      std::snprintf(line, sizeof line, "%-14s %-5s %-28s %-12s %12.6f %-4s %9s %12.6f\n", "culled",
+                    c.light.kind == lev::LightKind::spot ? "spot" : "point",
+                    position_text(c.light.position).c_str(), node_text(c.node).c_str(),
+                    brightest(glm::dvec3(c.unshadowed_radiance) * weight),
+                    c.unshadowed_radiance == glm::vec3(0.0f) ? "-" : (c.visible ? "yes" : "no"),
+                    "-", brightest(row.pixel));
+      row.text = line;
+    }
+    std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
+      const double pa = std::abs(brightest(a.pixel)), pb = std::abs(brightest(b.pixel));
+      return pa > pb || (pa == pb && a.unshadowed > b.unshadowed);
+    });
+    std::snprintf(line, sizeof line, "%-14s %-5s %-28s %-12s %12s %-4s %9s %12s\n", "role", "kind",
+                  "position", "node", "unshadowed", "seen", "weight", "to pixel");
+    out += line;
+    const std::size_t shown = std::min(rows.size(), static_cast<std::size_t>(top));
+    for (std::size_t i = 0; i < shown; ++i) out += rows[i].text;
+    if (rows.size() > shown) out += "... " + std::to_string(rows.size() - shown) + " more rows\n";
+    out += totals_text(renderer::hit_totals(hit));
+  }
+  out += "pixel totals (every hit, times its path weight):\n" + totals_text(inspection.totals);
+  return out;
+}
+
+int run_inspect(const Settings& settings, const InspectFlags& flags) {
+  const renderer::RenderSettings render_settings = render_settings_from(settings);
+  int x = 0, y = 0;
+  parse_inspect_pixel(flags.pixel, settings.width, settings.height, x, y);
+  if (flags.top < 0)
+    throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
+  check_output_paths({{"--json", flags.json, ".json", "JSON"}},
+                     scenes::scene_input_files(settings.scene));
+  const std::unique_ptr<LoadedScene> loaded = load_scene(settings);
+  const std::unique_ptr<lev::LightSelector> selector =
+      lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
+  const renderer::PixelInspection inspection =
+      renderer::inspect_pixel(loaded->scene, *loaded->rays, render_settings, *selector, x, y);
+  const nlohmann::ordered_json json = inspection_json(inspection);
+  if (!flags.json.empty())
+    write_output_files({{flags.json, [&json] { return json.dump(1) + "\n"; }}});
+  std::FILE* table = flags.json == kStandardOutputName ? stderr : stdout;
+  std::fprintf(table, "%s, %llu lights, %s, tolerance %g\n", loaded->scene.name.c_str(),
+               static_cast<unsigned long long>(loaded->scene.lights.light_count),
+               lev::method_info(settings.method).name, settings.tolerance);
+  std::fputs(inspection_table(inspection, flags.top).c_str(), table);
+  return 0;
+}
+
+}  // namespace app

@@ -1,0 +1,73 @@
+#include "renderer/pixel_inspection.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace renderer {
+
+InspectedTotals hit_totals(const InspectedHit& hit) {
+  InspectedTotals t;
+  const double weight = hit.path_weight;
+  glm::dvec3 exact(0.0);
+  for (const lev::ShadedLight& shaded : hit.record.shaded) {
+    ++t.shaded;
+    if (shaded.role == lev::InspectRole::tested) {
+      ++t.tested_lights;
+      exact += glm::dvec3(shaded.visible ? shaded.unshadowed_radiance : glm::vec3(0.0f));
+    }
+    if (shaded.role == lev::InspectRole::cluster || shaded.role == lev::InspectRole::estimated) {
+      ++t.clusters;
+      t.clustered_lights += shaded.members.size();
+      for (const lev::InspectedLight& member : shaded.members)
+        exact += glm::dvec3(member.visible_radiance());
+    }
+  }
+  // AST's estimates are not shaded terms the render counts as tested.
+  for (const lev::ShadedLight& shaded : hit.record.shaded) {
+    if (shaded.role == lev::InspectRole::estimated) --t.shaded;
+  }
+  for (const lev::InspectedLight& culled : hit.record.culled) {
+    ++t.culled_lights;
+    exact += glm::dvec3(culled.visible_radiance());
+  }
+  t.tested = weight * glm::dvec3(hit.direct_radiance);
+  t.exact = weight * exact;
+  t.lost = t.exact - t.tested;
+  t.bound = glm::dvec3(hit.error_bound);
+  return t;
+}
+
+PixelInspection inspect_pixel(const Scene& scene, const RayScene& rays,
+                              const RenderSettings& settings, const lev::LightSelector& selector,
+                              int x, int y) {
+  if (x < 0 || y < 0 || x >= settings.width || y >= settings.height) {
+    throw std::invalid_argument("inspect: pixel " + std::to_string(x) + "," + std::to_string(y) +
+                                " outside the " + std::to_string(settings.width) + "x" +
+                                std::to_string(settings.height) + " image");
+  }
+  PixelInspection inspection;
+  inspection.x = x;
+  inspection.y = y;
+  lev::SelectorScratch scratch;
+  TraceContext context{scene, rays, selector, scratch, settings.max_depth, nullptr, nullptr, true};
+  context.inspection = &inspection.hits;
+  const Ray ray =
+      pixel_sample_ray(settings, scene.camera, x, y, 0, scratch.random, context.missed_random);
+  inspection.radiance = trace_radiance(context, ray, 0, inspection.counters);
+  for (const InspectedHit& hit : inspection.hits) {
+    const InspectedTotals t = hit_totals(hit);
+    InspectedTotals& all = inspection.totals;
+    all.tested += t.tested;
+    all.exact += t.exact;
+    all.lost += t.lost;
+    all.bound += t.bound;
+    all.shaded += t.shaded;
+    all.tested_lights += t.tested_lights;
+    all.culled_lights += t.culled_lights;
+    all.clusters += t.clusters;
+    all.clustered_lights += t.clustered_lights;
+  }
+  return inspection;
+}
+
+}  // namespace renderer

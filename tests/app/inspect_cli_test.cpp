@@ -1,0 +1,118 @@
+// `levrt inspect` (app/inspect_command.h): the table on standard output with its totals and the
+// --top limit, the complete lists in --json (every light of the scene once per hit, tested,
+// culled or clustered, and the totals agreeing with the lists), and bad input as one line and
+// exit 2 with nothing written.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+namespace {
+
+using levrt_test::run_levrt;
+
+nlohmann::json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return nlohmann::json::parse(text.str());
+}
+
+std::size_t line_count(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(InspectCli, PrintsTheTableAndWritesTheCompleteListsAsJson) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-");
+  const std::string json_path = (dir.path() / "pixel.json").string();
+  const auto run = run_levrt({"inspect", "--scene", "hall", "--level", "3", "--method", "lev",
+                              "--tolerance", "0.1", "--width", "80", "--height", "60", "--pixel",
+                              "40,40", "--top", "3", "--json", json_path});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("pixel 40,40"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("lost sum (true, with shadows)"), std::string::npos);
+  EXPECT_NE(run.output.find("certified bound"), std::string::npos);
+  EXPECT_NE(run.output.find("more rows"), std::string::npos) << "--top 3 cuts the table";
+  EXPECT_NE(run.output.find("pixel totals"), std::string::npos);
+
+  const nlohmann::json j = read_json(json_path);
+  EXPECT_EQ(j["pixel"], nlohmann::json({40, 40}));
+  ASSERT_FALSE(j["hits"].empty());
+  for (const nlohmann::json& hit : j["hits"]) {
+    std::size_t tested = 0;
+    for (const nlohmann::json& shaded : hit["shaded"]) tested += shaded["role"] == "tested";
+    const std::size_t culled = hit["culled"].size();
+    EXPECT_EQ(tested + culled, 64u);
+    EXPECT_EQ(hit["totals"]["tested_lights"], tested);
+    EXPECT_EQ(hit["totals"]["culled_lights"], culled);
+    // The culled list comes sorted by the light lost, largest first.
+    double previous = 1e30;
+    for (const nlohmann::json& c : hit["culled"]) {
+      const double lost = std::max(
+          {c["lost"][0].get<double>(), c["lost"][1].get<double>(), c["lost"][2].get<double>()});
+      EXPECT_LE(lost, previous);
+      previous = lost;
+    }
+  }
+  EXPECT_TRUE(j["totals"]["certified_bound"].is_array());
+}
+
+TEST(InspectCli, ClusteringMethodsListClustersWithTheirMembers) {
+  const auto run =
+      run_levrt({"inspect", "--scene", "hall", "--level", "3", "--method", "lightcuts", "--width",
+                 "80", "--height", "60", "--pixel", "40,40", "--json", "-"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::size_t start = run.output.find('{');
+  ASSERT_NE(start, std::string::npos);
+  // The table goes to stderr when the JSON takes standard output; it follows the JSON here.
+  const std::size_t end = run.output.find("\n}\n");
+  ASSERT_NE(end, std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(run.output.substr(start, end + 2 - start));
+  for (const nlohmann::json& hit : j["hits"]) {
+    std::size_t lights = hit["culled"].size();
+    for (const nlohmann::json& shaded : hit["shaded"]) {
+      if (shaded["role"] == "cluster") {
+        EXPECT_EQ(shaded["member_count"], shaded["members"].size());
+        lights += shaded["members"].size();
+      } else {
+        lights += 1;
+      }
+    }
+    EXPECT_EQ(lights, 64u);
+  }
+}
+
+TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-bad-");
+  const std::string json_path = (dir.path() / "pixel.json").string();
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"--pixel", "320,10"},
+                                               {"--pixel", "10,240"},
+                                               {"--pixel", "-1,5"},
+                                               {"--pixel", "a,b"},
+                                               {"--pixel", "5"},
+                                               {"--pixel", "5,5", "--top", "-2"},
+                                               {"--pixel", "5,5", "--method", "nope"}}) {
+    std::vector<std::string> command = {"inspect", "--json", json_path};
+    command.insert(command.end(), args.begin(), args.end());
+    const auto run = run_levrt(command);
+    EXPECT_EQ(run.exit_code, 2) << args[1] << ": " << run.output;
+    EXPECT_EQ(line_count(run.output), 1u) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(json_path));
+  }
+  const auto missing = run_levrt({"inspect"});
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_EQ(line_count(missing.output), 1u) << missing.output;
+  const auto wrong_extension =
+      run_levrt({"inspect", "--pixel", "1,1", "--json", (dir.path() / "pixel.txt").string()});
+  EXPECT_EQ(wrong_extension.exit_code, 2) << wrong_extension.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "pixel.txt"));
+}
+
+}  // namespace
