@@ -145,8 +145,11 @@ int run_cli(int argc, char** argv) {
           ->type_name("COUNT");
   RenderOutputs outputs;
   const std::vector<CLI::Option*> output_options = {
-      render->add_option("--out", outputs.image, "image PNG (- for standard output)")
-          ->type_name("FILE.png"),
+      render
+          ->add_option("--out", outputs.image,
+                       "image: PNG (displayed; - for standard output) or EXR (scene-linear "
+                       "radiance as float, with the per-pixel counters and errors as channels)")
+          ->type_name("FILE.png|FILE.exr"),
       render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")
           ->type_name("FILE.png"),
       render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")
@@ -172,8 +175,8 @@ int run_cli(int argc, char** argv) {
           ->type_name("FILE.png"),
       render
           ->add_option("--reference-out", outputs.reference_image,
-                       "the reference's image PNG (needs --reference)")
-          ->type_name("FILE.png")};
+                       "the reference's image, PNG or EXR (needs --reference)")
+          ->type_name("FILE.png|FILE.exr")};
   std::string fail_above;
   CLI::Option* fail_above_option =
       render

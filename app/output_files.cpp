@@ -26,6 +26,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Whether path ends in one of the '|'-separated extensions.
+bool has_extension(const std::string& path, const std::string& extensions) {
+  const std::string actual = fs::path(path).extension().string();
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t bar = extensions.find('|', start);
+    if (actual == extensions.substr(start, bar - start)) return true;
+    if (bar == std::string::npos) return false;
+    start = bar + 1;
+  }
+}
+
 // Blocks the termination signals while temporaries exist, so Ctrl-C cannot leave one behind; a
 // signal that arrives meanwhile is delivered when the files are complete and renamed.
 class TerminationSignalsBlocked {
@@ -241,9 +253,12 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
     if (::access(path.c_str(), W_OK) != 0)
       throw UsageError(flag + ": is not writable, got '" + path + "'");
   } else {
-    if (fs::path(path).extension() != output.extension) {
-      throw UsageError(flag + ": must end in " + output.extension + " (" + output.format +
-                       "), got '" + path + "'");
+    if (!has_extension(path, output.extension)) {
+      std::string names = output.extension;
+      for (std::size_t bar = names.find('|'); bar != std::string::npos; bar = names.find('|'))
+        names.replace(bar, 1, " or ");
+      throw UsageError(flag + ": must end in " + names + " (" + output.format + "), got '" + path +
+                       "'");
     }
     // A symlink is followed: the rename happens in its target's folder.
     const fs::path target = output_target(path);
@@ -324,6 +339,10 @@ void write_output_files(const std::vector<OutputFile>& files) {
     discard(staged);
     throw;
   }
+}
+
+bool is_exr_path(const std::string& path) {
+  return fs::path(path).extension() == ".exr";
 }
 
 std::string png_rgb8_bytes(int width, int height, const std::vector<std::uint8_t>& rgb) {

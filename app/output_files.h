@@ -31,7 +31,7 @@ std::filesystem::path output_target(const std::string& path);
 struct OutputPath {
   std::string flag;
   std::string path;       // empty: not written
-  std::string extension;  // ".png", ".json"
+  std::string extension;  // ".png", ".json"; several separated by '|' (".png|.exr")
   std::string format;     // for the message
 };
 
@@ -53,7 +53,12 @@ struct OutputFile {
 // encoder's exception passes through, with nothing written.
 void write_output_files(const std::vector<OutputFile>& files);
 
-// The encoders. PNG throws std::invalid_argument when the pixels do not match the size.
+// Whether an image output writes EXR (its name ends in .exr; anything else written is PNG: a
+// checked name ends in .png, standard output and a pipe or device take PNG).
+bool is_exr_path(const std::string& path);
+
+// The encoders (EXR: app/exr_encoding.h). PNG throws std::invalid_argument when the pixels do
+// not match the size.
 std::string png_rgb8_bytes(int width, int height, const std::vector<std::uint8_t>& rgb);
 
 // One output alone, under the same guarantee.

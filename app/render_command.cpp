@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 
+#include "app/exr_encoding.h"
 #include "app/interrupt.h"
 #include "app/output_files.h"
 #include "app/render_stats.h"
@@ -39,8 +40,28 @@ std::vector<double> per_sample(const renderer::Framebuffer& fb,
 
 }  // namespace
 
+std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& fb,
+                                                 const std::vector<double>& error_pct) {
+  std::vector<glm::vec3> radiance(fb.radiance_sum.size(), glm::vec3(0.0f));
+  for (std::size_t i = 0; i < radiance.size(); ++i) {
+    if (fb.samples[i] > 0) radiance[i] = fb.radiance_sum[i] / static_cast<float>(fb.samples[i]);
+  }
+  std::vector<ExrChannel> channels = rgb_channels(radiance);
+  const auto add = [&channels](const char* name, const std::vector<double>& values) {
+    channels.push_back({name, std::vector<float>(values.begin(), values.end())});
+  };
+  add("samples", std::vector<double>(fb.samples.begin(), fb.samples.end()));
+  add("lights_tested", per_sample(fb, fb.lights_tested));
+  add("nodes_visited", per_sample(fb, fb.nodes_visited));
+  add("error_bound_pct", renderer::error_bound_pct_image(fb));
+  add("noise_pct", renderer::pixel_std_error_pct(fb));
+  if (!fb.missed_sum.empty()) add("missed_pct", renderer::missed_pct_image(fb));
+  if (!error_pct.empty()) add("error_pct", error_pct);
+  return channels;
+}
+
 std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
-  return {{"--out", o.image, ".png", "PNG"},
+  return {{"--out", o.image, ".png|.exr", "PNG or EXR"},
           {"--heatmap-lights", o.heatmap_lights, ".png", "PNG"},
           {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
           {"--stats", o.stats, ".json", "JSON"},
@@ -48,7 +69,7 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
           {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"},
           {"--heatmap-error", o.heatmap_error, ".png", "PNG"},
           {"--heatmap-missed", o.heatmap_missed, ".png", "PNG"},
-          {"--reference-out", o.reference_image, ".png", "PNG"}};
+          {"--reference-out", o.reference_image, ".png|.exr", "PNG or EXR"}};
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -204,13 +225,13 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
       heatmap(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range, outputs.heatmap_noise);
   std::vector<std::uint8_t> reference_rgb;
   std::vector<std::uint8_t> error_rgb;
+  std::vector<double> error_pct;
   if (outputs.reference_rt) {
     reference_rgb =
         renderer::display_framebuffer_rgb8(reference.framebuffer, display_from(settings));
-    error_rgb =
-        heatmap(renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb),
-                                          renderer::framebuffer_rgb8(reference.framebuffer)),
-                stats.heatmap_error_range, outputs.heatmap_error);
+    error_pct = renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb),
+                                          renderer::framebuffer_rgb8(reference.framebuffer));
+    error_rgb = heatmap(error_pct, stats.heatmap_error_range, outputs.heatmap_error);
   }
   const std::vector<std::uint8_t> missed_rgb =
       stats.missed ? heatmap(renderer::missed_pct_image(fb), stats.heatmap_missed_range,
@@ -221,7 +242,9 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   const auto add = [&files](const std::string& path, std::function<std::string()> bytes) {
     if (!path.empty()) files.push_back({path, std::move(bytes)});
   };
-  add(outputs.image, [&fb, &settings] {
+  add(outputs.image, [&fb, &settings, &outputs, &error_pct] {
+    if (is_exr_path(outputs.image))
+      return exr_bytes(fb.width, fb.height, framebuffer_exr_channels(fb, error_pct));
     return png_rgb8_bytes(fb.width, fb.height,
                           renderer::display_framebuffer_rgb8(fb, display_from(settings)));
   });
@@ -234,7 +257,13 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   add(outputs.heatmap_noise, png_of(noise_rgb));
   add(outputs.heatmap_error, png_of(error_rgb));
   add(outputs.heatmap_missed, png_of(missed_rgb));
-  add(outputs.reference_image, png_of(reference_rgb));
+  add(outputs.reference_image, [&reference, &reference_rgb, &outputs, &fb] {
+    if (is_exr_path(outputs.reference_image)) {
+      const renderer::Framebuffer& rf = reference.framebuffer;
+      return exr_bytes(rf.width, rf.height, framebuffer_exr_channels(rf, {}));
+    }
+    return png_rgb8_bytes(fb.width, fb.height, reference_rgb);
+  });
   add(outputs.stats, [&json] { return json.dump(2) + "\n"; });
   write_output_files(files);
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/accuracy_gate.h"
+#include "app/exr_encoding.h"
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "app/settings.h"
@@ -17,7 +18,7 @@
 namespace app {
 
 struct RenderOutputs {
-  std::string image;           // PNG
+  std::string image;           // PNG (the displayed image) or EXR (radiance and channels)
   std::string heatmap_lights;  // PNG
   std::string heatmap_nodes;   // PNG
   std::string heatmap_bound;   // PNG: the certified error bound per pixel (renderer/error_bound.h)
@@ -62,5 +63,13 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
                                     bool show_progress = false);
 
 int run_render(const Settings& settings, const RenderOutputs& outputs);
+
+// The channels `--out FILE.exr` writes (app/exr_encoding.h): R, G, B the mean scene-linear
+// radiance (before the exposure), `samples`, `lights_tested` and `nodes_visited` (per sample),
+// `error_bound_pct` and `noise_pct` (renderer/error_bound.h, pixel_noise.h, on the displayed
+// scale), `missed_pct` when the missed light was estimated, and `error_pct` (the error against
+// the rt reference, pixel order) when error_pct is not empty.
+std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& framebuffer,
+                                                 const std::vector<double>& error_pct);
 
 }  // namespace app

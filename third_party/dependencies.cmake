@@ -22,6 +22,13 @@ target_link_libraries(levrt_embree INTERFACE embree)
 add_library(levrt_stb INTERFACE)
 target_link_libraries(levrt_stb INTERFACE PkgConfig::STB)
 
+# tinyexr (libtinyexr-dev): tinyexr.h plus Debian's libtinyexr.so, which holds the implementation
+# (do not define TINYEXR_IMPLEMENTATION) and uses zlib, not miniz. Its CMake package exports
+# tinyexr::tinyexr with only a NONE configuration, which CMake uses for any build type.
+find_package(tinyexr CONFIG REQUIRED)
+add_library(levrt_tinyexr INTERFACE)
+target_link_libraries(levrt_tinyexr INTERFACE tinyexr::tinyexr)
+
 if(LEVRT_BUILD_VIEWER)
   find_package(glfw3 3.3 REQUIRED)
   set(OpenGL_GL_PREFERENCE GLVND)

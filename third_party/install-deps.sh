@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake g++ make ninja-build pkg-config
   libglm-dev libembree-dev libtbb-dev libstb-dev
-  libcli11-dev nlohmann-json3-dev libtinygltf-dev libgtest-dev libbenchmark-dev
+  libcli11-dev nlohmann-json3-dev libtinygltf-dev libtinyexr-dev libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libgl-dev libopengl-dev libegl-dev libx11-dev
   xvfb xauth mesa-utils xdotool
   clang python3
