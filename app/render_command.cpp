@@ -191,7 +191,8 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   }
   if (settings.exposure_auto) {
     settings.exposure_ev = renderer::auto_exposure_ev(
-        loaded->scene, *loaded->rays, render_settings_from(settings), settings.display);
+        loaded->scene, *loaded->rays, render_settings_from(settings), settings.display, cancel);
+    InterruptScope::throw_if_interrupted();
   }
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
   const renderer::RenderResult result =

@@ -31,7 +31,7 @@ double luminance_percentile(const Framebuffer& f, double fraction) {
 }
 
 double auto_exposure_ev(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
-                        DisplayCurve curve) {
+                        DisplayCurve curve, const std::atomic<bool>* cancel) {
   RenderSettings preview;
   preview.width = std::min(settings.width, kAutoExposurePreviewWidth);
   preview.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(preview.width) *
@@ -42,7 +42,7 @@ double auto_exposure_ev(const Scene& scene, const RayScene& rays, const RenderSe
   preview.light_samples = kAutoExposureLightSamples;
   preview.jitter_pixels = false;
   RenderResult result;
-  render_passes(scene, rays, preview, kAutoExposurePasses, result);
+  if (!render_passes(scene, rays, preview, kAutoExposurePasses, result, cancel)) return 0.0;
   return exposure_for_percentile(luminance_percentile(result.framebuffer, kAutoExposurePercentile),
                                  curve);
 }

@@ -7,6 +7,8 @@
 // well-exposed image's 99th percentile lies in). A black preview keeps EV 0.
 #pragma once
 
+#include <atomic>
+
 #include "renderer/display_transform.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
@@ -29,8 +31,9 @@ double exposure_for_percentile(double luminance_percentile, DisplayCurve curve);
 double luminance_percentile(const Framebuffer& framebuffer, double fraction);
 
 // The auto exposure of the scene seen with `settings` (its size gives the preview's aspect, its
-// depth and threads are used; method, tolerance and passes are the rule's own).
+// depth and threads are used; method, tolerance and passes are the rule's own). When *cancel is
+// raised the preview stops and EV 0 is returned.
 double auto_exposure_ev(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
-                        DisplayCurve curve);
+                        DisplayCurve curve, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace renderer

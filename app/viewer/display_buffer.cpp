@@ -36,6 +36,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   const auto count =
       static_cast<std::size_t>(rect.x1 - rect.x0) * static_cast<std::size_t>(rect.y1 - rect.y0);
   u.rgb.resize(3 * count);
+  u.radiance.assign(count, glm::vec3(0.0f));
   u.samples.resize(count);
   u.lights_tested.resize(count);
   u.nodes_visited.resize(count);
@@ -48,6 +49,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
                      static_cast<std::size_t>(x);
       mean_rgb8(f, i, &u.rgb[3 * k]);
       const std::uint32_t n = f.samples[i];
+      if (n > 0) u.radiance[k] = f.radiance_sum[i] / static_cast<float>(n);
       u.samples[k] = n;
       u.lights_tested[k] =
           n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;

@@ -10,6 +10,8 @@
 #include <mutex>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "renderer/framebuffer.h"
 
 namespace app::viewer {
@@ -32,7 +34,10 @@ struct TileUpdate {
   // stands for the preview_step x preview_step block of image pixels it is the corner of.
   int preview_step = 1;
   TileRect rect;
-  std::vector<std::uint8_t> rgb;  // mean colour, 8-bit RGB, rows of the tile
+  std::vector<std::uint8_t> rgb;  // mean exposed linear colour, 8-bit RGB (what errors compare)
+  // Mean scene-linear radiance, rows of the tile: the UI maps it through the current exposure
+  // and display curve, so changing those re-maps the image without a new render.
+  std::vector<glm::vec3> radiance;
   std::vector<std::uint32_t> samples;
   std::vector<float> lights_tested;  // per sample
   std::vector<float> nodes_visited;  // per sample

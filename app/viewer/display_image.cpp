@@ -22,7 +22,10 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
   image.height = height;
   image.generation = generation;
   const std::size_t n = pixel_count(image);
-  if (!same_size) image.rgb.assign(3 * n, 0);
+  if (!same_size) {
+    image.rgb.assign(3 * n, 0);
+    image.radiance.assign(n, glm::vec3(0.0f));
+  }
   image.first_pass_rgb.assign(3 * n, 0);
   image.samples.assign(n, 0);
   image.lights_tested.assign(n, 0.0f);
@@ -65,6 +68,7 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       // Pixels skipped by a subsample keep the backdrop.
       if (u.samples[k] == 0) continue;
       for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
+      image.radiance[i] = u.radiance[k];
       if (u.samples[k] == 1) {
         for (int c = 0; c < 3; ++c) image.first_pass_rgb[3 * i + c] = u.rgb[3 * k + c];
       }
@@ -79,6 +83,7 @@ void start_preview(PreviewImage& preview, std::uint64_t generation, int width, i
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   preview.step.assign(n, 0);
   preview.rgb.assign(3 * n, 0);
+  preview.radiance.assign(n, glm::vec3(0.0f));
   preview.lights_tested.assign(n, 0.0f);
   preview.nodes_visited.assign(n, 0.0f);
   preview.error_bound_pct.assign(n, 0.0f);
@@ -100,6 +105,7 @@ void apply_preview_update(PreviewImage& preview, const TileUpdate& u) {
           if (preview.step[i] != 0 && preview.step[i] < step) continue;
           preview.step[i] = static_cast<std::uint8_t>(step);
           for (int c = 0; c < 3; ++c) preview.rgb[3 * i + c] = u.rgb[3 * k + c];
+          preview.radiance[i] = u.radiance[k];
           preview.lights_tested[i] = u.lights_tested[k];
           preview.nodes_visited[i] = u.nodes_visited[k];
           preview.error_bound_pct[i] = u.error_bound_pct[k];
@@ -208,6 +214,7 @@ double sample_value(const Image& image, ViewMode mode, std::size_t i) {
 
 std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewImage* preview,
                                        const ErrorImage& error, ViewMode mode,
+                                       const renderer::Display& display,
                                        renderer::HeatmapRange& range) {
   const std::size_t n = pixel_count(image);
   if (preview != nullptr && (preview->generation != image.generation ||
@@ -217,16 +224,18 @@ std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewI
   std::vector<std::uint8_t> rgb(3 * n);
   range = {};
   if (mode == ViewMode::image) {
+    const float scale = renderer::exposure_scale(display.exposure_ev);
     for (std::size_t i = 0; i < n; ++i) {
       // Colours of the previous render (same size) stay visible, dimmed, until redrawn.
       const bool fresh = image.samples[i] > 0;
       if (shows_preview(image, preview, i)) {
-        for (int c = 0; c < 3; ++c) rgb[3 * i + c] = preview->rgb[3 * i + c];
+        renderer::display_rgb8(preview->radiance[i], scale, display.curve, &rgb[3 * i]);
         continue;
       }
-      for (int c = 0; c < 3; ++c) {
-        const int v = image.rgb[3 * i + c];
-        rgb[3 * i + c] = static_cast<std::uint8_t>(fresh ? v : v * 2 / 5);
+      renderer::display_rgb8(image.radiance[i], scale, display.curve, &rgb[3 * i]);
+      if (!fresh) {
+        for (int c = 0; c < 3; ++c)
+          rgb[3 * i + c] = static_cast<std::uint8_t>(rgb[3 * i + c] * 2 / 5);
       }
     }
     return rgb;
@@ -269,14 +278,15 @@ std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewI
 }  // namespace
 
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
-                                    ViewMode mode, renderer::HeatmapRange& range) {
-  return compose_rgb8(image, nullptr, error, mode, range);
+                                    ViewMode mode, renderer::HeatmapRange& range,
+                                    const renderer::Display& display) {
+  return compose_rgb8(image, nullptr, error, mode, display, range);
 }
 
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
-                       renderer::HeatmapRange& range) {
-  const std::vector<std::uint8_t> rgb = compose_rgb8(image, &preview, error, mode, range);
+                       renderer::HeatmapRange& range, const renderer::Display& display) {
+  const std::vector<std::uint8_t> rgb = compose_rgb8(image, &preview, error, mode, display, range);
   const std::size_t n = rgb.size() / 3;
   rgba.resize(4 * n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -13,6 +13,7 @@
 
 #include "app/viewer/display_buffer.h"
 #include "app/viewer/view_mode.h"
+#include "renderer/display_transform.h"
 #include "renderer/heatmap.h"
 
 namespace app::viewer {
@@ -21,7 +22,8 @@ struct DisplayImage {
   int width = 0;
   int height = 0;
   std::uint64_t generation = 0;
-  std::vector<std::uint8_t> rgb;             // latest mean colour
+  std::vector<std::uint8_t> rgb;             // latest mean colour, exposed linear 8-bit
+  std::vector<glm::vec3> radiance;           // latest mean scene-linear radiance (shown)
   std::vector<std::uint8_t> first_pass_rgb;  // pass 0 (pixel centres): what the error compares
   std::vector<std::uint32_t> samples;        // 0: not rendered yet in this generation
   std::vector<float> lights_tested;          // per sample
@@ -46,6 +48,7 @@ struct PreviewImage {
   std::uint64_t generation = 0;
   std::vector<std::uint8_t> step;  // 0: no preview sample covers the pixel yet
   std::vector<std::uint8_t> rgb;
+  std::vector<glm::vec3> radiance;
   std::vector<float> lights_tested;  // per sample
   std::vector<float> nodes_visited;
   std::vector<float> error_bound_pct;
@@ -85,13 +88,16 @@ extern const std::uint8_t kNotRenderedRgb[3];
 // (returned in `range`; heatmap_scale.h); pixels the render has not reached show the preview of
 // the same generation where it has a sample, else dark grey (heatmaps) or the dimmed colour of
 // the previous render (image).
+// The image view maps the radiance through `display` (exposure and curve), so a change of those
+// is a new composition, never a new render.
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
-                       renderer::HeatmapRange& range);
+                       renderer::HeatmapRange& range, const renderer::Display& display = {});
 
 // 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview.
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
-                                    ViewMode mode, renderer::HeatmapRange& range);
+                                    ViewMode mode, renderer::HeatmapRange& range,
+                                    const renderer::Display& display = {});
 
 struct PixelInfo {
   bool rendered = false;

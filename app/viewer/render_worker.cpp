@@ -15,6 +15,7 @@
 #include "app/viewer/reference_render.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
+#include "renderer/auto_exposure.h"
 #include "renderer/render_service.h"
 
 namespace app::viewer {
@@ -92,6 +93,7 @@ struct Worker {
   std::string scene;
   int level = -1;
   int camera_index = -1;
+  double auto_exposure_ev = 0.0;  // the loaded scene's (renderer/auto_exposure.h)
   renderer::Camera preset;
   std::optional<ViewKey> view;
   std::unique_ptr<renderer::RenderJob> main;
@@ -201,6 +203,8 @@ struct Worker {
     level = s.level;
     camera_index = s.camera;
     preset = loaded->scene.camera;
+    auto_exposure_ev = renderer::auto_exposure_ev(
+        loaded->scene, *loaded->rays, render_settings_from(s), s.display, &shared.quitting);
     update_status([&](WorkerStatus& st) {
       st.loading_scene.clear();
       st.scene = s.scene;
@@ -214,6 +218,7 @@ struct Worker {
       st.preset_camera = preset;
       st.build_seconds = loaded->build_seconds;
       st.hierarchy_bytes = lev::hierarchy_bytes(loaded->scene.lights);
+      st.auto_exposure_ev = auto_exposure_ev;
     });
   }
 
@@ -258,6 +263,7 @@ struct Worker {
     const Settings s = scene_changed ? load_or_keep(r, serial) : r;
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);
+    if (s.exposure_auto) rs.exposure_ev = auto_exposure_ev;
     rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it
     const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth,
                       rs.pixel_stride};

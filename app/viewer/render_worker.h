@@ -62,6 +62,9 @@ struct WorkerStatus {
   renderer::Camera preset_camera;
   double build_seconds = 0.0;  // model, hierarchy and Embree build
   std::size_t hierarchy_bytes = 0;
+  // --exposure auto's choice for this scene (renderer/auto_exposure.h), made at its load when the
+  // settings asked for auto; the renders cull at it while auto is on.
+  double auto_exposure_ev = 0.0;
 
   // The render being shown; generation is the serial of the request that started it.
   std::uint64_t generation = 0;

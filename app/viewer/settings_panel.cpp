@@ -73,6 +73,7 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
                ControlRects* rects) {
   double value = settings.*(range.field);
   bool changed = false;
+  bool word_chosen = false;
   ImGui::PushID(spec.name);
   const float full = ImGui::CalcItemWidth();
   if (range.logarithmic) {
@@ -104,6 +105,36 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
                                          ImGui::GetStyle().WindowPadding.x,
                                      40.0f));
   }
+  if (!range.logarithmic && range.slider_max > range.slider_min) {
+    // One row: a linear slider (the exposure's EV), the word button ("auto") and the typed value.
+    float position = static_cast<float>(std::clamp(value, range.slider_min, range.slider_max));
+    ImGui::SetNextItemWidth(full * 0.55f);
+    if (ImGui::SliderFloat("##linear", &position, static_cast<float>(range.slider_min),
+                           static_cast<float>(range.slider_max), "%.2f",
+                           ImGuiSliderFlags_AlwaysClamp)) {
+      value = position;
+      changed = true;
+    }
+    record_item(rects, std::string(spec.name) + "_slider");
+    help_tooltip(spec);
+    if (range.word) {
+      ImGui::SameLine(0.0f, 2.0f);
+      const bool on = settings.*(range.word_flag);
+      if (on)
+        ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+      if (ImGui::Button(range.word) && !on) {
+        settings.*(range.word_flag) = true;
+        word_chosen = true;
+      }
+      if (on) ImGui::PopStyleColor();
+      record_item(rects, std::string(spec.name) + "_" + range.word);
+    }
+    ImGui::SameLine(0.0f, 2.0f);
+    ImGui::SetNextItemWidth(std::max(full -
+                                         (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
+                                         ImGui::GetStyle().WindowPadding.x,
+                                     40.0f));
+  }
   double typed = value;
   if (ImGui::InputDouble(spec.label, &typed, 0.0, 0.0, "%g",
                          ImGuiInputTextFlags_EnterReturnsTrue)) {
@@ -116,8 +147,11 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s (--%s); type a value and press Enter", spec.help, spec.name);
   ImGui::PopID();
-  if (!changed || value == settings.*(range.field)) return false;
+  if (word_chosen) return true;
+  const bool word_was_on = range.word_flag && settings.*(range.word_flag);
+  if (!changed || (value == settings.*(range.field) && !word_was_on)) return false;
   settings.*(range.field) = value;
+  if (range.word_flag) settings.*(range.word_flag) = false;
   return true;
 }
 

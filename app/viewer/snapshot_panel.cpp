@@ -26,7 +26,8 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   RenderStats stats = snapshot_stats(collect_live_stats(state.image, st, state.error, now), st,
                                      state.settings, current_camera(state));
   renderer::HeatmapRange range;
-  job.image_rgb = view_rgb8(state.image, state.error, ViewMode::image, range);
+  job.image_rgb =
+      view_rgb8(state.image, state.error, ViewMode::image, range, display_from(state.settings));
   // The ranges of both counters' heatmaps, as `levrt render` reports them; the file holds the
   // one on screen (lights when the image is).
   view_rgb8(state.image, state.error, ViewMode::lights, stats.heatmap_lights_range);
@@ -38,6 +39,16 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.heatmap_name = view_mode_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
   job.stats_json = render_stats_json(stats).dump(2) + "\n";
+  job.exr_channels = rgb_channels(state.image.radiance);
+  const auto add = [&job](const char* name, std::vector<float> values) {
+    job.exr_channels.push_back({name, std::move(values)});
+  };
+  add("samples", std::vector<float>(state.image.samples.begin(), state.image.samples.end()));
+  add("lights_tested", state.image.lights_tested);
+  add("nodes_visited", state.image.nodes_visited);
+  add("error_bound_pct", state.image.error_bound_pct);
+  add("noise_pct", state.image.noise_pct);
+  if (stats.error) add("error_pct", state.error.pct);
   job.inputs = scenes::scene_input_files(state.settings.scene);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;
@@ -54,7 +65,8 @@ void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer,
   if (!ready) ImGui::BeginDisabled();
   if (ImGui::Button("Save snapshot")) writer.start(make_snapshot_job(state, now));
   if (!ready) ImGui::EndDisabled();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("image, current heatmap and stats JSON");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("image, current heatmap, stats JSON and the EXR of the radiance");
   if (writer.busy()) {
     ImGui::SameLine();
     ImGui::ProgressBar(writer.progress(), ImVec2(-1.0f, 0.0f), "writing");

@@ -53,29 +53,31 @@ void SnapshotWriter::run(const SnapshotJob& job) {
     const std::string image = stem.string() + ".png";
     const std::string heatmap = stem.string() + "_" + job.heatmap_name + ".png";
     const std::string stats = stem.string() + "_stats.json";
+    const std::string exr = stem.string() + ".exr";
     std::vector<OutputPath> outputs = job.other_outputs;
     outputs.push_back({"snapshot", image, ".png", "PNG"});
     outputs.push_back({"snapshot", heatmap, ".png", "PNG"});
     outputs.push_back({"snapshot", stats, ".json", "JSON"});
+    outputs.push_back({"snapshot", exr, ".exr", "EXR"});
     fs::create_directories(job.folder);
     app::check_output_paths(outputs, job.inputs);
-    app::write_output_files({{image,
-                              [&] {
-                                std::string png =
-                                    app::png_rgb8_bytes(job.width, job.height, job.image_rgb);
-                                steps_done_.store(1);
-                                return png;
-                              }},
-                             {heatmap,
-                              [&] {
-                                std::string png =
-                                    app::png_rgb8_bytes(job.width, job.height, job.heatmap_rgb);
-                                steps_done_.store(2);
-                                return png;
-                              }},
-                             {stats, [&] { return job.stats_json; }}});
+    app::write_output_files(
+        {{image,
+          [&] {
+            std::string png = app::png_rgb8_bytes(job.width, job.height, job.image_rgb);
+            steps_done_.store(1);
+            return png;
+          }},
+         {heatmap,
+          [&] {
+            std::string png = app::png_rgb8_bytes(job.width, job.height, job.heatmap_rgb);
+            steps_done_.store(2);
+            return png;
+          }},
+         {stats, [&] { return job.stats_json; }},
+         {exr, [&] { return app::exr_bytes(job.width, job.height, job.exr_channels); }}});
     steps_done_.store(3);
-    message = "wrote " + image + ", " + heatmap + ", " + stats;
+    message = "wrote " + image + ", " + heatmap + ", " + stats + ", " + exr;
   } catch (const std::exception& e) {
     if (!folder_existed) fs::remove(job.folder, ec);  // only if empty
     message = std::string("snapshot failed: ") + e.what();

@@ -1,6 +1,7 @@
-// Saving a snapshot from the panel: the image, the current heatmap and the stats JSON, written on
+// Saving a snapshot from the panel: the image, the current heatmap, the stats JSON and the EXR of
+// the radiance with its per-pixel channels, written on
 // a thread of its own (PNG encoding of a large image takes a while) with a progress fraction the
-// panel shows. The job carries copies of the pixels, so the UI keeps drawing meanwhile. The three
+// panel shows. The job carries copies of the pixels, so the UI keeps drawing meanwhile. The four
 // files obey the outputs' rule (app/output_files.h): checked against the viewer's inputs and its
 // other outputs, then written all or none.
 #pragma once
@@ -12,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/exr_encoding.h"
 #include "app/output_files.h"
 
 namespace app::viewer {
@@ -25,6 +27,9 @@ struct SnapshotJob {
   std::string heatmap_name;  // file name suffix (view name)
   std::vector<std::uint8_t> heatmap_rgb;
   std::string stats_json;
+  // The EXR beside the PNGs (app/exr_encoding.h): the scene-linear radiance and the per-pixel
+  // channels, as `levrt render --out FILE.exr` writes them.
+  std::vector<ExrChannel> exr_channels;
   std::vector<std::string> inputs;        // the files the viewer reads (scene, script)
   std::vector<OutputPath> other_outputs;  // the viewer's other outputs (screenshot, controls)
 };

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -156,6 +157,9 @@ struct Picture {
   std::uint64_t image_version = ~0ull;
   std::uint64_t error_version = ~0ull;
   ViewMode view = ViewMode::image;
+  // The exposure and curve composed with (NaN: none yet).
+  renderer::Display display{std::numeric_limits<double>::quiet_NaN(),
+                            renderer::DisplayCurve::linear};
   Clock::time_point composed;
   std::vector<std::uint8_t> rgba;
 };
@@ -186,6 +190,10 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
                          Clock::time_point now) {
   // Status first: every tile a status refers to was posted before it, so it is in the buffer.
   state.status = worker.status();
+  // Auto exposure: the EV the worker chose for the scene is the one shown (until the slider
+  // takes over).
+  if (state.settings.exposure_auto && state.status.scene_serial > 0)
+    state.settings.exposure_ev = state.status.auto_exposure_ev;
   // Tiles of renders that are gone never arrive (the buffers' floors); the previous render's
   // colours stay as the new one's backdrop.
   if (apply_tile_updates(state.image, worker.take_tiles().updates)) {
@@ -247,13 +255,18 @@ void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clo
                      Clock::time_point now, bool force) {
   const bool uses_error = state.view == ViewMode::error;
   const std::uint64_t error_version = uses_error ? clock.computed : 0;
+  const renderer::Display display = display_from(state.settings);
+  const bool same_display =
+      picture.display.exposure_ev == display.exposure_ev && picture.display.curve == display.curve;
   if (picture.image_version == state.image.version && picture.error_version == error_version &&
-      picture.view == state.view) {
+      picture.view == state.view && same_display) {
     return;
   }
-  if (!force && seconds_between(picture.composed, now) < kComposeSeconds) return;
+  // A new exposure or curve re-maps at once: it is the user's hand on the control.
+  if (!force && same_display && seconds_between(picture.composed, now) < kComposeSeconds) return;
   compose_view_rgba(state.image, state.preview, state.error, state.view, picture.rgba,
-                    state.heatmap_range);
+                    state.heatmap_range, display);
+  picture.display = display;
   upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
   picture.image_version = state.image.version;
   picture.error_version = error_version;
@@ -368,7 +381,8 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
   if (ImGui::CollapsingHeader("Snapshot", ImGuiTreeNodeFlags_DefaultOpen)) {
     draw_snapshot_section(state, snapshots, now);
   }
-  if (!state.messages.empty() && ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen))
+  if (!state.messages.empty() &&
+      ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen))
     draw_messages_section(state);
   ImGui::End();
   if (compact) ImGui::PopStyleVar();

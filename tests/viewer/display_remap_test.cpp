@@ -1,0 +1,134 @@
+// The viewer's exposure slider and display switch (issue 26): under Xvfb, a scripted change of
+// `exposure` or `display` re-maps the window's image at once from the radiance the UI holds,
+// without a new render: the snapshot statistics before and after show the same render (passes,
+// render and refit times), with the new exposure and curve recorded, and the snapshot writes
+// the EXR of the radiance beside its PNGs. Skipped only when Xvfb is missing.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <stb/stb_image.h>
+#include "tests/support/exr_file.h"
+#include "tests/support/run_command.h"
+#include "tests/support/xvfb_server.h"
+
+namespace {
+namespace fs = std::filesystem;
+using levrt_test::CommandRun;
+using levrt_test::have_xvfb;
+
+struct Png {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+Png read_png(const fs::path& path) {
+  Png png;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
+  if (!data) return {};
+  png.rgb.assign(data, data + 3 * static_cast<std::size_t>(png.width) * png.height);
+  stbi_image_free(data);
+  return png;
+}
+
+// Pixels that differ inside the picture (right of the panel, above the statistics).
+int picture_differences(const Png& a, const Png& b) {
+  int differences = 0;
+  for (int y = a.height * 15 / 100; y < a.height * 55 / 100; ++y) {
+    for (int x = a.width / 2; x < a.width * 9 / 10; ++x) {
+      const std::size_t i = 3 * (static_cast<std::size_t>(y) * a.width + x);
+      if (a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2])
+        ++differences;
+    }
+  }
+  return differences;
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// The one file of `folder` whose name ends in `suffix`.
+fs::path file_ending(const fs::path& folder, const std::string& suffix) {
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return entry.path();
+  }
+  return {};
+}
+
+class DisplayRemap : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("levrt_remap_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const CommandRun r = levrt_test::run_viewer_on_xvfb({
+      "--lights", "64",
+      "--width",  "64",
+      "--height", "48",
+      "--spp",    "2",
+      "--window", "800x600",
+      "--frames", "9",                                         //
+      "--set",    "await=idle@0",                              //
+      "--set",    "snapshot=" + path("before") + "@1",         //
+      "--set",    "screenshot=" + path("linear.png") + "@2",   //
+      "--set",    "exposure=1.5@3",                            //
+      "--set",    "screenshot=" + path("exposed.png") + "@4",  //
+      "--set",    "display=neutral@5",                         //
+      "--set",    "screenshot=" + path("neutral.png") + "@6",  //
+      "--set",    "snapshot=" + path("after") + "@7",          //
+  });
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Png linear = read_png(path("linear.png")), exposed = read_png(path("exposed.png")),
+            neutral = read_png(path("neutral.png"));
+  ASSERT_GT(linear.width, 0);
+  EXPECT_GT(picture_differences(linear, exposed), 100);
+  EXPECT_GT(picture_differences(exposed, neutral), 100);
+
+  const auto before =
+      nlohmann::json::parse(read_bytes(file_ending(dir_ / "before", "_stats.json")));
+  const auto after = nlohmann::json::parse(read_bytes(file_ending(dir_ / "after", "_stats.json")));
+  EXPECT_EQ(before["exposure_ev"], 0.0);
+  EXPECT_EQ(before["display"], "linear");
+  EXPECT_EQ(after["exposure_ev"], 1.5);
+  EXPECT_EQ(after["display"], "neutral");
+  // The same render: no pass was added, none restarted.
+  for (const char* key : {"spp", "time_render_s", "time_refit_s", "shading_points"})
+    EXPECT_EQ(before[key], after[key]) << key;
+  // The snapshot's EXR holds the radiance, the same before and after the re-map.
+  const levrt_test::ExrFile exr_before =
+      levrt_test::read_exr(read_bytes(file_ending(dir_ / "before", ".exr")));
+  const levrt_test::ExrFile exr_after =
+      levrt_test::read_exr(read_bytes(file_ending(dir_ / "after", ".exr")));
+  EXPECT_EQ(exr_before.width, 64);
+  EXPECT_EQ(exr_before.channels.at("R"), exr_after.channels.at("R"));
+  EXPECT_EQ(exr_before.channels.count("lights_tested"), 1u);
+}
+
+}  // namespace
