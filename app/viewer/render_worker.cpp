@@ -94,6 +94,7 @@ struct Worker {
   int level = -1;
   int camera_index = -1;
   double auto_exposure_ev = 0.0;  // the loaded scene's (renderer/auto_exposure.h)
+  CameraFlags camera_flags;
   renderer::Camera preset;
   std::optional<ViewKey> view;
   std::unique_ptr<renderer::RenderJob> main;
@@ -202,6 +203,7 @@ struct Worker {
     scene = s.scene;
     level = s.level;
     camera_index = s.camera;
+    camera_flags = s.camera_flags;
     preset = loaded->scene.camera;
     auto_exposure_ev = renderer::auto_exposure_ev(
         loaded->scene, *loaded->rays, render_settings_from(s), s.display, &shared.quitting);
@@ -210,6 +212,7 @@ struct Worker {
       st.scene = s.scene;
       st.level = s.level;
       st.camera_index = s.camera;
+      st.camera_flags = s.camera_flags;
       st.generation = 0;
       st.scene_serial += 1;
       st.scene_name = loaded->scene.name;
@@ -245,6 +248,7 @@ struct Worker {
     kept.scene = scene;
     kept.level = level;
     kept.camera = camera_index;
+    kept.camera_flags = camera_flags;
     return kept;
   }
 
@@ -258,8 +262,8 @@ struct Worker {
     check_memory_budget(request.settings, request.want_reference);
     // The camera index is read with a glTF file: it reloads it.
     const Settings& r = request.settings;
-    const bool scene_changed =
-        !loaded || r.scene != scene || r.level != level || r.camera != camera_index;
+    const bool scene_changed = !loaded || r.scene != scene || r.level != level ||
+                               r.camera != camera_index || r.camera_flags != camera_flags;
     const Settings s = scene_changed ? load_or_keep(r, serial) : r;
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);

@@ -4,8 +4,8 @@
 
 #include <imgui.h>
 
+#include "app/scene_loading.h"
 #include "app/viewer/live_stats.h"
-#include "scenes/scene_inputs.h"
 
 namespace app::viewer {
 
@@ -49,7 +49,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   add("error_bound_pct", state.image.error_bound_pct);
   add("noise_pct", state.image.noise_pct);
   if (stats.error) add("error_pct", state.error.pct);
-  job.inputs = scenes::scene_input_files(state.settings.scene);
+  job.inputs = settings_input_files(state.settings);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;
   return job;
