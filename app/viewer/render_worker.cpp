@@ -186,21 +186,35 @@ struct Worker {
     return WorkerPhase::idle;
   }
 
+  // The new scene is built before the old one is let go, so a file that cannot be read leaves
+  // the old scene, its render and its reference as they were (at the cost of both scenes in
+  // memory while the new one loads). Throws what load_scene throws.
   void load(const Settings& s, std::uint64_t serial) {
+    update_status([&](WorkerStatus& st) {
+      st.phase = WorkerPhase::loading;
+      st.loading_scene = s.scene;
+    });
+    std::unique_ptr<LoadedScene> fresh;
+    try {
+      fresh = load_scene(s, &shared.quitting);
+    } catch (...) {
+      update_status([](WorkerStatus& st) { st.loading_scene.clear(); });
+      throw;
+    }
     tear_down(serial);
+    loaded = std::move(fresh);
     scene = s.scene;
     level = s.level;
     light_scale = s.light_scale;
     camera_index = s.camera;
-    update_status([&](WorkerStatus& st) {
-      st.phase = WorkerPhase::loading;
-      st.scene = s.scene;
-      st.level = s.level;
-      st.generation = 0;
-    });
-    loaded = load_scene(s, &shared.quitting);
     preset = loaded->scene.camera;
     update_status([&](WorkerStatus& st) {
+      st.loading_scene.clear();
+      st.scene = s.scene;
+      st.level = s.level;
+      st.light_scale = s.light_scale;
+      st.camera_index = s.camera;
+      st.generation = 0;
       st.scene_serial += 1;
       st.scene_name = loaded->scene.name;
       st.light_count = loaded->scene.lights.light_count;
@@ -211,19 +225,46 @@ struct Worker {
     });
   }
 
+  // Loads the scene a request names. When another scene is loaded already and this one cannot
+  // be read (any failure but a cancelled load), the old scene stays: the failure is reported as
+  // a load error (the UI logs it and returns its settings to the loaded scene), and the request
+  // is applied to the old scene. Returns the settings to apply.
+  Settings load_or_keep(const Settings& requested, std::uint64_t serial) {
+    try {
+      load(requested, serial);
+      return requested;
+    } catch (const LoadCancelled&) {
+      throw;
+    } catch (const std::exception& e) {
+      if (!loaded) throw;
+      const std::string message = e.what();
+      update_status([&](WorkerStatus& st) {
+        st.load_error = message;
+        st.load_error_scene = requested.scene;
+        st.load_error_serial += 1;
+      });
+    }
+    Settings kept = requested;
+    kept.scene = scene;
+    kept.level = level;
+    kept.light_scale = light_scale;
+    kept.camera = camera_index;
+    return kept;
+  }
+
   void apply(const ViewRequest& request, std::uint64_t serial) {
-    const Settings& s = request.settings;
     last_serial = serial;
     update_status([](WorkerStatus& st) {
       st.error.clear();
       st.bad_input = false;
     });
     // A size over the budget is refused before the scene is built or a framebuffer allocated.
-    check_memory_budget(s, request.want_reference);
+    check_memory_budget(request.settings, request.want_reference);
     // The light scale and camera index are read with a glTF file: they reload it.
-    const bool scene_changed = !loaded || s.scene != scene || s.level != level ||
-                               s.light_scale != light_scale || s.camera != camera_index;
-    if (scene_changed) load(s, serial);
+    const Settings& r = request.settings;
+    const bool scene_changed = !loaded || r.scene != scene || r.level != level ||
+                               r.light_scale != light_scale || r.camera != camera_index;
+    const Settings s = scene_changed ? load_or_keep(r, serial) : r;
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);
     rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it

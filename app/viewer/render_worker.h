@@ -48,11 +48,20 @@ struct WorkerStatus {
   bool bad_input = false;            // the failure was the request's (a scene or size it refused)
   std::uint64_t request_serial = 0;  // the latest request the worker has fully applied
 
+  // A scene that could not be loaded while another one stayed loaded: the whole message, the
+  // scene as the request named it, and a serial that bumps with every such failure.
+  std::string load_error;
+  std::string load_error_scene;
+  std::uint64_t load_error_serial = 0;
+  std::string loading_scene;  // the scene being loaded now (empty when none is)
+
   // The loaded scene.
   std::uint64_t scene_serial = 0;  // bumps with every (re)load
   std::string scene;               // as the request named it (model name or file)
   std::string scene_name;          // as the scene calls itself
   int level = 0;
+  double light_scale = 0.0;  // the settings it was loaded with (a glTF's)
+  int camera_index = 0;
   std::uint64_t light_count = 0;
   std::size_t directional_lights = 0;  // suns, outside the hierarchy
   renderer::Camera preset_camera;

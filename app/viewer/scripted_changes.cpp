@@ -10,6 +10,8 @@
 #include <fstream>
 
 #include "app/scene_loading.h"
+#include "app/viewer/scene_opening.h"
+#include "scenes/scene_file.h"
 
 namespace app::viewer {
 namespace {
@@ -105,7 +107,7 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     int w = 0, h = 0;
     if (!parse_window_size(c.value, w, h))
       reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
-  } else if (c.key == "snapshot" || c.key == "screenshot") {
+  } else if (c.key == "snapshot" || c.key == "screenshot" || c.key == "drop") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
     if (c.value != "idle" && c.value != "preview") reject(text, "await must be idle or preview");
@@ -116,7 +118,7 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
     reject(text, "key must be one of " + keys +
                      "lights|view|reference|hover|inspect|inspect_row|window|snapshot|screenshot|"
-                     "await|memory");
+                     "drop|await|memory");
   }
   return c;
 }
@@ -195,6 +197,15 @@ void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settin
 
 ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) {
   const std::string label = c.key + "=" + c.value + " (frame " + std::to_string(c.frame) + ")";
+  // A scene file opens as one typed into the panel would (logged, kept on failure).
+  if (c.key == "scene" && scenes::is_scene_file_name(c.value)) {
+    open_scene_file(state, c.value);
+    return ScriptAction::none;
+  }
+  if (c.key == "drop") {
+    open_dropped_files(state, {c.value});
+    return ScriptAction::none;
+  }
   if (const SettingSpec* spec = find_setting(c.key)) {
     const Settings before = state.settings;
     set_setting(state.settings, *spec, c.value);

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/viewer/log_slider.h"
+#include "app/viewer/scene_open_panel.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -171,6 +172,7 @@ void draw_settings_section(ViewerState& state) {
     if (changed)
       settings_changed(state, before,
                        std::string(spec.name) + "=" + setting_text(state.settings, spec));
+    if (std::string(spec.name) == "scene") draw_scene_open_row(state);
   }
   ImGui::PopItemWidth();
   if (ImGui::Button("Reset camera")) reset_camera(state);

@@ -42,11 +42,23 @@ std::string bytes_text(std::size_t bytes) {
 
 void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_point now) {
   const WorkerStatus& st = state.status;
+  // Errors are shown whole, wrapped to the panel (a glTF error names the file and the field).
   if (st.phase == WorkerPhase::failed) {
-    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "error: %s", st.error.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.4f, 1.0f));
+    ImGui::TextWrapped("error: %s", st.error.c_str());
+    ImGui::PopStyleColor();
     return;
   }
-  if (!st.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", st.error.c_str());
+  if (!st.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", st.error.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (st.phase == WorkerPhase::loading && !st.loading_scene.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("loading %s", st.loading_scene.c_str());
+    ImGui::PopStyleColor();
+  }
   if (st.phase == WorkerPhase::loading || st.phase == WorkerPhase::preparing) {
     const float t =
         static_cast<float>(std::chrono::duration<double>(now.time_since_epoch()).count());

@@ -17,6 +17,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/interrupt.h"
 #include "app/output_files.h"
@@ -26,6 +28,8 @@
 #include "app/viewer/image_view.h"
 #include "app/viewer/inspector_panel.h"
 #include "app/viewer/render_worker.h"
+#include "app/viewer/scene_open_panel.h"
+#include "app/viewer/scene_opening.h"
 #include "app/viewer/scripted_changes.h"
 #include "app/viewer/settings_panel.h"
 #include "app/viewer/snapshot_panel.h"
@@ -108,14 +112,23 @@ class Window {
     }
     glfwMakeContextCurrent(handle_);
     glfwSwapInterval(1);
+    // ImGui's GLFW backend leaves the drop callback and the user pointer alone.
+    glfwSetWindowUserPointer(handle_, this);
+    glfwSetDropCallback(handle_, [](GLFWwindow* w, int count, const char** paths) {
+      auto* self = static_cast<Window*>(glfwGetWindowUserPointer(w));
+      for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    });
   }
   ~Window() { glfwDestroyWindow(handle_); }
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;
   GLFWwindow* get() const { return handle_; }
+  // The paths dropped on the window since the last call (filled while events are polled).
+  std::vector<std::string> take_dropped() { return std::exchange(dropped_, {}); }
 
  private:
   GLFWwindow* handle_ = nullptr;
+  std::vector<std::string> dropped_;
 };
 
 class ImGuiSession {
@@ -356,6 +369,8 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
   if (ImGui::CollapsingHeader("Snapshot", ImGuiTreeNodeFlags_DefaultOpen)) {
     draw_snapshot_section(state, snapshots, now);
   }
+  if (!state.messages.empty() && ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen))
+    draw_messages_section(state);
   ImGui::End();
   if (compact) ImGui::PopStyleVar();
 }
@@ -448,6 +463,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   state.settings = settings;
   state.mouse_input = flags.frames == 0 || flags.real_input;
   state.record_controls = !flags.controls.empty();
+  state.print_messages = flags.frames > 0;
   state.other_inputs = inputs;
   state.other_outputs = outputs;
   std::string controls_written;
@@ -526,6 +542,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       }
 
       take_worker_results(state, worker, log, now);
+      follow_scene_loads(state);
+      open_dropped_files(state, window.take_dropped());
       // A first scene that cannot be read (or a size over the memory budget) is bad input.
       if (state.status.phase == WorkerPhase::failed && state.status.bad_input &&
           state.status.scene_serial == 0) {

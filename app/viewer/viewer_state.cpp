@@ -21,7 +21,10 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
   if (new_size && s.resolution == before.resolution) s.resolution = "typed";
   const bool new_view = new_scene || new_size || s.resolution != before.resolution ||
                         s.depth != before.depth || s.subsample != before.subsample;
-  if (new_scene) state.camera.reset();
+  if (new_scene) {
+    state.camera_before_scene_change = state.camera;
+    state.camera.reset();
+  }
   if (new_view && state.view != ViewMode::error) state.want_reference = false;
   mark_changed(state, label);
 }

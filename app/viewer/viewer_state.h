@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,12 @@
 #include "renderer/heatmap.h"
 
 namespace app::viewer {
+
+// A line of the log pane; a problem (a file that did not open) is drawn in a warning colour.
+struct LogMessage {
+  std::string text;
+  bool problem = false;
+};
 
 struct ViewerState {
   Settings settings;
@@ -61,6 +68,19 @@ struct ViewerState {
   // `--controls FILE`: the panel records its named controls' rectangles each frame.
   bool record_controls = false;
   ControlRects control_rects;
+
+  // Opening scene files (app/viewer/scene_opening.h): the panel's path field, the files loaded
+  // this session (newest first), the log pane's messages (oldest first) and whether they are
+  // also printed (scripted sessions print them, so a test or CI log sees them).
+  std::string scene_path_field;
+  std::vector<std::string> recent_scenes;
+  std::vector<LogMessage> messages;
+  bool print_messages = false;
+  std::uint64_t load_errors_seen = 0;
+  std::uint64_t scene_loads_seen = 0;
+  // The camera the user had before asking for another scene: a scene that cannot be loaded
+  // gives it back, with the old scene.
+  std::optional<renderer::Camera> camera_before_scene_change;
 };
 
 // Marks the request dirty; `label` names the change in the latency report.

@@ -254,6 +254,38 @@ TEST(RenderWorker, AFailedRequestIsReportedAndTheNextOneRecovers) {
   EXPECT_TRUE(ui.status.error.empty());
 }
 
+// A scene file that cannot be read, asked for while another scene is shown, leaves the shown
+// scene and its finished render as they were; the failure is a load error, not a failed render.
+TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
+  Ui ui;
+  const app::Settings good = small_settings();
+  const std::uint64_t first = ui.worker.post(request_for(good));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); }));
+  const std::vector<std::uint8_t> before = ui.image.rgb;
+  const std::uint64_t loads = ui.status.scene_serial;
+
+  app::Settings missing = good;
+  missing.scene = "/nonexistent-levrt-folder/missing.gltf";
+  const std::uint64_t serial = ui.worker.post(request_for(missing));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial) && ui.status.load_error_serial > 0; }));
+  EXPECT_EQ(ui.status.load_error_serial, 1u);
+  EXPECT_EQ(ui.status.load_error_scene, missing.scene);
+  EXPECT_NE(ui.status.load_error.find("missing.gltf"), std::string::npos) << ui.status.load_error;
+  EXPECT_EQ(ui.status.scene, good.scene);
+  EXPECT_EQ(ui.status.scene_serial, loads);
+  EXPECT_TRUE(ui.status.loading_scene.empty());
+  EXPECT_EQ(ui.status.generation, first);  // the render was not restarted
+  EXPECT_EQ(ui.image.rgb, before);
+
+  // The next request (the UI has gone back to the old scene) renders as usual.
+  app::Settings more = good;
+  more.spp = 3;
+  const std::uint64_t next = ui.worker.post(request_for(more));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(next); }));
+  EXPECT_EQ(ui.status.passes_done, 3);
+  EXPECT_EQ(ui.status.load_error_serial, 1u);
+}
+
 TEST(RenderWorker, ShutsDownPromptlyMidRender) {
   auto ui = std::make_unique<Ui>();
   app::Settings slow = small_settings();

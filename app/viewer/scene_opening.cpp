@@ -1,0 +1,73 @@
+#include "app/viewer/scene_opening.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "scenes/scene_file.h"
+
+namespace app::viewer {
+
+void log_message(ViewerState& state, const std::string& text, bool problem) {
+  state.messages.push_back({text, problem});
+  if (state.messages.size() > kMaxLogMessages)
+    state.messages.erase(state.messages.begin(),
+                         state.messages.end() - static_cast<std::ptrdiff_t>(kMaxLogMessages));
+  if (state.print_messages) std::fprintf(stderr, "levrt view: %s\n", text.c_str());
+}
+
+bool open_scene_file(ViewerState& state, const std::string& path) {
+  if (path.empty()) return false;
+  if (!scenes::is_scene_file_name(path)) {
+    log_message(state, path + ": not a scene file (a .json, .gltf or .glb file opens)", true);
+    return false;
+  }
+  if (path == state.settings.scene) return true;
+  const Settings before = state.settings;
+  state.settings.scene = path;
+  settings_changed(state, before, "scene=" + path);
+  log_message(state, "opening " + path, false);
+  return true;
+}
+
+bool open_dropped_files(ViewerState& state, const std::vector<std::string>& paths) {
+  bool opened = false;
+  for (const std::string& path : paths) {
+    if (opened) {
+      log_message(state, path + ": ignored (one scene opens at a time)", true);
+    } else {
+      opened = open_scene_file(state, path);
+    }
+  }
+  return opened;
+}
+
+void follow_scene_loads(ViewerState& state) {
+  const WorkerStatus& st = state.status;
+  if (st.load_error_serial != state.load_errors_seen) {
+    state.load_errors_seen = st.load_error_serial;
+    log_message(state,
+                "cannot open " + st.load_error_scene + ": " + st.load_error +
+                    (st.scene_serial > 0 ? " (kept " + st.scene + ")" : ""),
+                true);
+    Settings& s = state.settings;
+    if (st.scene_serial > 0 && s.scene == st.load_error_scene) {
+      s.scene = st.scene;
+      s.level = st.level;
+      s.light_scale = st.light_scale;
+      s.camera = st.camera_index;
+      state.camera = state.camera_before_scene_change;
+      mark_changed(state, "");
+    }
+  }
+  if (st.scene_serial != state.scene_loads_seen) {
+    state.scene_loads_seen = st.scene_serial;
+    if (scenes::is_scene_file_name(st.scene)) {
+      auto& recent = state.recent_scenes;
+      recent.erase(std::remove(recent.begin(), recent.end(), st.scene), recent.end());
+      recent.insert(recent.begin(), st.scene);
+      if (recent.size() > kMaxRecentScenes) recent.resize(kMaxRecentScenes);
+    }
+  }
+}
+
+}  // namespace app::viewer

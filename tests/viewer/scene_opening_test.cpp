@@ -1,0 +1,115 @@
+// Opening scene files in the viewer without a window: a path that names no scene file is logged
+// and requests nothing, a failed load puts the settings and the user's camera back to the scene
+// still loaded, loaded files make the recent list (newest first, no repeats, capped), the log
+// keeps the newest messages, and the scripted `drop` key opens a file as a real drop does.
+#include "app/viewer/scene_opening.h"
+
+#include <algorithm>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "app/viewer/scripted_changes.h"
+
+namespace {
+using namespace app::viewer;
+
+renderer::Camera orbited_camera() {
+  renderer::Camera c;
+  c.position = {1.0f, 2.0f, 3.0f};
+  c.target = {0.0f, 0.0f, 0.0f};
+  return c;
+}
+
+// The status of a worker that has loaded `scene` (serial `loads`).
+void loaded(ViewerState& state, const std::string& scene, std::uint64_t loads) {
+  state.status.scene = scene;
+  state.status.level = state.settings.level;
+  state.status.scene_serial = loads;
+  follow_scene_loads(state);
+}
+
+TEST(SceneOpening, APathThatIsNoSceneFileIsLoggedAndRequestsNothing) {
+  ViewerState state;
+  state.request_dirty = false;
+  EXPECT_FALSE(open_scene_file(state, "notes.txt"));
+  EXPECT_EQ(state.settings.scene, "building");
+  EXPECT_FALSE(state.request_dirty);
+  ASSERT_EQ(state.messages.size(), 1u);
+  EXPECT_TRUE(state.messages[0].problem);
+  EXPECT_NE(state.messages[0].text.find("notes.txt"), std::string::npos);
+  EXPECT_FALSE(open_scene_file(state, ""));
+  EXPECT_EQ(state.messages.size(), 1u);
+}
+
+TEST(SceneOpening, AFailedLoadGoesBackToTheLoadedSceneAndCamera) {
+  ViewerState state;
+  loaded(state, "building", 1);
+  state.camera = orbited_camera();
+  ASSERT_TRUE(open_scene_file(state, "/scenes/broken.gltf"));
+  EXPECT_EQ(state.settings.scene, "/scenes/broken.gltf");
+  EXPECT_FALSE(state.camera.has_value());  // a new scene starts at its preset view
+  EXPECT_TRUE(state.request_dirty);
+
+  state.request_dirty = false;
+  state.status.load_error = "/scenes/broken.gltf: lights[3].range: 0 (must be above 0)";
+  state.status.load_error_scene = "/scenes/broken.gltf";
+  state.status.load_error_serial = 1;
+  follow_scene_loads(state);
+  EXPECT_EQ(state.settings.scene, "building");
+  ASSERT_TRUE(state.camera.has_value());
+  EXPECT_EQ(state.camera->position, orbited_camera().position);
+  EXPECT_TRUE(state.request_dirty);
+  ASSERT_FALSE(state.messages.empty());
+  const LogMessage& last = state.messages.back();
+  EXPECT_TRUE(last.problem);
+  EXPECT_NE(last.text.find("lights[3].range: 0 (must be above 0)"), std::string::npos) << last.text;
+  EXPECT_NE(last.text.find("kept building"), std::string::npos) << last.text;
+  EXPECT_TRUE(state.recent_scenes.empty());
+
+  // The same error is followed once.
+  const std::size_t messages = state.messages.size();
+  follow_scene_loads(state);
+  EXPECT_EQ(state.messages.size(), messages);
+}
+
+TEST(SceneOpening, LoadedFilesMakeTheRecentListNewestFirst) {
+  ViewerState state;
+  std::uint64_t loads = 0;
+  loaded(state, "building", ++loads);
+  EXPECT_TRUE(state.recent_scenes.empty());  // a built-in model is not a file
+  for (int i = 0; i < 10; ++i) loaded(state, "s" + std::to_string(i) + ".gltf", ++loads);
+  ASSERT_EQ(state.recent_scenes.size(), kMaxRecentScenes);
+  EXPECT_EQ(state.recent_scenes.front(), "s9.gltf");
+  loaded(state, "s5.gltf", ++loads);
+  EXPECT_EQ(state.recent_scenes.front(), "s5.gltf");
+  EXPECT_EQ(std::count(state.recent_scenes.begin(), state.recent_scenes.end(), "s5.gltf"), 1);
+  EXPECT_EQ(state.recent_scenes.size(), kMaxRecentScenes);
+}
+
+TEST(SceneOpening, TheLogKeepsTheNewestMessages) {
+  ViewerState state;
+  for (std::size_t i = 0; i < kMaxLogMessages + 5; ++i)
+    log_message(state, "message " + std::to_string(i), false);
+  ASSERT_EQ(state.messages.size(), kMaxLogMessages);
+  EXPECT_EQ(state.messages.front().text, "message 5");
+  EXPECT_EQ(state.messages.back().text, "message " + std::to_string(kMaxLogMessages + 4));
+}
+
+TEST(SceneOpening, ADropOpensTheFirstSceneFileAndIgnoresTheRest) {
+  ViewerState state;
+  EXPECT_TRUE(open_dropped_files(state, {"photo.png", "a.glb", "b.gltf"}));
+  EXPECT_EQ(state.settings.scene, "a.glb");
+  ASSERT_EQ(state.messages.size(), 3u);
+  EXPECT_TRUE(state.messages[0].problem);   // photo.png: not a scene file
+  EXPECT_FALSE(state.messages[1].problem);  // opening a.glb
+  EXPECT_NE(state.messages[2].text.find("b.gltf: ignored"), std::string::npos);
+
+  ViewerState scripted;
+  const ScriptedChange drop = parse_scripted_change("drop=room.json@3");
+  EXPECT_EQ(apply_scripted_change(scripted, drop), ScriptAction::none);
+  EXPECT_EQ(scripted.settings.scene, "room.json");
+  EXPECT_THROW(parse_scripted_change("drop=@3"), app::UsageError);
+}
+
+}  // namespace
