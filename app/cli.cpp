@@ -72,6 +72,21 @@ void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& d
   }
 }
 
+// The camera flags (app/camera_flags.h) of a command that renders a scene.
+void add_camera_flags(CLI::App& command, CameraFlagTexts& texts) {
+  command.add_option("--camera-position", texts.position, "the camera's position")
+      ->type_name("X,Y,Z");
+  command.add_option("--camera-target", texts.target, "the point the camera looks at")
+      ->type_name("X,Y,Z");
+  command.add_option("--camera-up", texts.up, "the camera's up direction")->type_name("X,Y,Z");
+  command.add_option("--fov", texts.fov_deg, "vertical field of view, degrees in (0, 180)")
+      ->type_name("DEG");
+  command
+      .add_option("--camera-from", texts.from_file,
+                  "the camera of a stats JSON levrt wrote (the flags above override its parts)")
+      ->type_name("STATS.json");
+}
+
 // `levrt NAME` where NAME is no command: CLI11 would call it an unexpected argument.
 void check_subcommand_name(const CLI::App& cli, int argc, char** argv) {
   if (argc < 2 || argv[1][0] == '-') return;
@@ -137,6 +152,8 @@ int run_cli(int argc, char** argv) {
       cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
   SettingFlags render_flags;
   add_setting_flags(*render, render_flags, Settings{});
+  CameraFlagTexts render_camera;
+  add_camera_flags(*render, render_camera);
   std::string lights_text;
   CLI::Option* lights_option =
       render
@@ -196,6 +213,8 @@ int run_cli(int argc, char** argv) {
       "inspect", "list the lights behind one pixel: tested, culled (by which node), clustered");
   SettingFlags inspect_flags;
   add_setting_flags(*inspect, inspect_flags, Settings{});
+  CameraFlagTexts inspect_camera;
+  add_camera_flags(*inspect, inspect_camera);
   std::string inspect_lights_text;
   CLI::Option* inspect_lights_option =
       inspect
@@ -232,6 +251,8 @@ int run_cli(int argc, char** argv) {
   SettingFlags view_flags;
   const Settings view_defaults = viewer_default_settings();
   add_setting_flags(*view, view_flags, view_defaults);
+  CameraFlagTexts view_camera;
+  add_camera_flags(*view, view_camera);
   std::string view_lights_text;
   CLI::Option* view_lights_option =
       view->add_option("--lights", view_lights_text,
@@ -252,8 +273,8 @@ int run_cli(int argc, char** argv) {
   }
 
   if (render->parsed()) {
-    const Settings settings =
-        apply_setting_flags(render_flags, Settings{}, lights_option, lights_text);
+    Settings settings = apply_setting_flags(render_flags, Settings{}, lights_option, lights_text);
+    settings.camera_flags = parse_camera_flags(render_camera);
     for (const CLI::Option* option : output_options) {
       if (option->count() > 0 && option->as<std::string>().empty()) {
         throw UsageError(option->get_name() + ": needs a file name, got ''");
@@ -269,16 +290,18 @@ int run_cli(int argc, char** argv) {
     return run_render(settings, outputs);
   }
   if (inspect->parsed()) {
-    const Settings settings =
+    Settings settings =
         apply_setting_flags(inspect_flags, Settings{}, inspect_lights_option, inspect_lights_text);
+    settings.camera_flags = parse_camera_flags(inspect_camera);
     return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);
   if (bench->parsed()) return run_bench(bench_flags);
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
-    const Settings settings =
+    Settings settings =
         apply_setting_flags(view_flags, view_defaults, view_lights_option, view_lights_text);
+    settings.camera_flags = parse_camera_flags(view_camera);
     return run_view(settings, view_options);
   }
   if (viewer_display_available()) {

@@ -228,7 +228,7 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
   check_output_paths({{"--json", flags.json, ".json", "JSON"}},
-                     scenes::scene_input_files(settings.scene));
+                     settings_input_files(settings));
   const std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));

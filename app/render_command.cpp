@@ -155,7 +155,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
     if (outputs.fail_above) throw UsageError("--fail-above: needs --reference " + rt);
   }
   check_memory_budget(settings, outputs.reference_rt);
-  check_output_paths(render_output_paths(outputs), scenes::scene_input_files(settings.scene));
+  check_output_paths(render_output_paths(outputs), settings_input_files(settings));
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   // Until the outputs are written nothing is, so Ctrl-C may end the process outright.

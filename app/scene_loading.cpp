@@ -6,6 +6,7 @@
 
 #include <chrono>
 
+#include "scenes/scene_inputs.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_instantiation.h"
 #include "scenes/scene_models.h"
@@ -78,6 +79,12 @@ scenes::SceneDescription describe_scene(const Settings& settings) {
   return model.describe(settings.level);
 }
 
+std::vector<std::string> settings_input_files(const Settings& settings) {
+  std::vector<std::string> files = scenes::scene_input_files(settings.scene);
+  if (!settings.camera_flags.from_file.empty()) files.push_back(settings.camera_flags.from_file);
+  return files;
+}
+
 std::unique_ptr<LoadedScene> load_scene(const Settings& settings, const std::atomic<bool>* cancel) {
   const auto poll = [cancel] {
     if (cancel && cancel->load()) throw LoadCancelled();
@@ -88,6 +95,7 @@ std::unique_ptr<LoadedScene> load_scene(const Settings& settings, const std::ato
   poll();
   auto loaded = std::make_unique<LoadedScene>();
   loaded->scene = scenes::instantiate_scene(description);
+  loaded->scene.camera = apply_camera_flags(loaded->scene.camera, settings.camera_flags);
   poll();
   loaded->rays = std::make_unique<renderer::RayScene>(loaded->scene.geometry);
   poll();

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "app/settings.h"
 #include "renderer/ray_scene.h"
@@ -29,6 +30,10 @@ bool is_scene_file(const Settings& settings);
 void apply_light_count(Settings& settings, std::uint64_t lights);
 // The --lights flag's text: decimal digits only, reported as typed when it is refused.
 void apply_light_count_flag(Settings& settings, const std::string& text);
+
+// Every file the settings read: the scene file with what it refers to (a glTF's buffers and
+// images) and --camera-from's stats file. No output may replace one of them.
+std::vector<std::string> settings_input_files(const Settings& settings);
 
 // The description --scene names: a model's level, or a scene file read and validated (throws
 // std::invalid_argument "FILE: /json/path: problem" for a bad file).

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "app/camera_flags.h"
 #include "lev/methods.h"
 #include "renderer/display_transform.h"
 #include "renderer/render.h"
@@ -40,6 +41,10 @@ struct Settings {
   // glTF light units: colour x intensity (candela, lux for suns) times this is levrt's intensity.
   double light_scale = scenes::kDefaultGltfLightScale;
   int camera = 0;  // a glTF file's perspective camera, in node order
+  // --camera-position/-target/-up, --fov, --camera-from: parts of the preset camera replaced
+  // (app/camera_flags.h). They belong to the scene they were given with: the viewer drops them
+  // when another scene opens.
+  CameraFlags camera_flags;
   // The display step (renderer/display_transform.h): radiance x 2^exposure_ev through the
   // display curve. exposure_auto: the EV is chosen before the first pass
   // (renderer/auto_exposure.h) and exposure_ev is then what it chose. Built-in scenes and scene

@@ -95,6 +95,7 @@ struct Worker {
   int level = -1;
   double light_scale = -1.0;
   int camera_index = -1;
+  CameraFlags camera_flags;
   renderer::Camera preset;
   std::optional<ViewKey> view;
   std::unique_ptr<renderer::RenderJob> main;
@@ -207,6 +208,7 @@ struct Worker {
     level = s.level;
     light_scale = s.light_scale;
     camera_index = s.camera;
+    camera_flags = s.camera_flags;
     preset = loaded->scene.camera;
     update_status([&](WorkerStatus& st) {
       st.loading_scene.clear();
@@ -214,6 +216,7 @@ struct Worker {
       st.level = s.level;
       st.light_scale = s.light_scale;
       st.camera_index = s.camera;
+      st.camera_flags = s.camera_flags;
       st.generation = 0;
       st.scene_serial += 1;
       st.scene_name = loaded->scene.name;
@@ -249,6 +252,7 @@ struct Worker {
     kept.level = level;
     kept.light_scale = light_scale;
     kept.camera = camera_index;
+    kept.camera_flags = camera_flags;
     return kept;
   }
 
@@ -263,7 +267,8 @@ struct Worker {
     // The light scale and camera index are read with a glTF file: they reload it.
     const Settings& r = request.settings;
     const bool scene_changed = !loaded || r.scene != scene || r.level != level ||
-                               r.light_scale != light_scale || r.camera != camera_index;
+                               r.light_scale != light_scale || r.camera != camera_index ||
+                               r.camera_flags != camera_flags;
     const Settings s = scene_changed ? load_or_keep(r, serial) : r;
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);

@@ -62,6 +62,7 @@ struct WorkerStatus {
   int level = 0;
   double light_scale = 0.0;  // the settings it was loaded with (a glTF's)
   int camera_index = 0;
+  app::CameraFlags camera_flags;
   std::uint64_t light_count = 0;
   std::size_t directional_lights = 0;  // suns, outside the hierarchy
   renderer::Camera preset_camera;

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <imgui.h>
+
+#include "app/camera_flags.h"
 #include "scenes/scene_file.h"
 
 namespace app::viewer {
@@ -55,6 +58,7 @@ void follow_scene_loads(ViewerState& state) {
       s.level = st.level;
       s.light_scale = st.light_scale;
       s.camera = st.camera_index;
+      s.camera_flags = st.camera_flags;
       state.camera = state.camera_before_scene_change;
       mark_changed(state, "");
     }
@@ -68,6 +72,12 @@ void follow_scene_loads(ViewerState& state) {
       if (recent.size() > kMaxRecentScenes) recent.resize(kMaxRecentScenes);
     }
   }
+}
+
+void copy_camera_flags(ViewerState& state) {
+  const std::string flags = camera_flags_text(current_camera(state));
+  if (ImGui::GetCurrentContext()) ImGui::SetClipboardText(flags.c_str());
+  log_message(state, "camera: " + flags, false);
 }
 
 }  // namespace app::viewer

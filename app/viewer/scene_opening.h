@@ -3,7 +3,8 @@
 // all end in open_scene_file, which asks the worker for the file like any other setting. The
 // worker builds the new scene before letting the old one go (app/viewer/render_worker.h), so a
 // file that cannot be read leaves the old scene on screen: follow_scene_loads logs the whole
-// message and returns the settings and camera to the scene still loaded.
+// message and returns the settings and camera to the scene still loaded. "Copy camera" gives the
+// view back as flags, so a scene opened by hand can be rendered headless from the same place.
 #pragma once
 
 #include <string>
@@ -32,5 +33,8 @@ bool open_dropped_files(ViewerState& state, const std::vector<std::string>& path
 // (scene, level, light scale, camera index and the user's camera go back to what is loaded);
 // a scene file that loaded goes to the front of the recent list.
 void follow_scene_loads(ViewerState& state);
+
+// The current view as --camera-* flags (app/camera_flags.h): to the clipboard and the log.
+void copy_camera_flags(ViewerState& state);
 
 }  // namespace app::viewer

@@ -113,12 +113,14 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     if (c.value != "idle" && c.value != "preview") reject(text, "await must be idle or preview");
   } else if (c.key == "memory") {
     if (c.value != "report") reject(text, "memory must be report");
+  } else if (c.key == "copy") {
+    if (c.value != "camera") reject(text, "copy must be camera");
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
     reject(text, "key must be one of " + keys +
                      "lights|view|reference|hover|inspect|inspect_row|window|snapshot|screenshot|"
-                     "drop|await|memory");
+                     "drop|copy|await|memory");
   }
   return c;
 }
@@ -204,6 +206,10 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "drop") {
     open_dropped_files(state, {c.value});
+    return ScriptAction::none;
+  }
+  if (c.key == "copy") {
+    copy_camera_flags(state);
     return ScriptAction::none;
   }
   if (const SettingSpec* spec = find_setting(c.key)) {

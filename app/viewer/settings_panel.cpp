@@ -7,8 +7,10 @@
 
 #include <imgui.h>
 
+#include "app/camera_flags.h"
 #include "app/viewer/log_slider.h"
 #include "app/viewer/scene_open_panel.h"
+#include "app/viewer/scene_opening.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -178,6 +180,11 @@ void draw_settings_section(ViewerState& state) {
   if (ImGui::Button("Reset camera")) reset_camera(state);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene's preset view");
   ImGui::SameLine();
+  if (ImGui::Button("Copy camera")) copy_camera_flags(state);
+  record_item(rects, "copy_camera");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s\n(to the clipboard, as flags for levrt render or view)",
+                      app::camera_flags_text(current_camera(state)).c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   ImGui::TextWrapped("drag: orbit, right drag: pan, wheel: zoom");
   ImGui::PopStyleColor();

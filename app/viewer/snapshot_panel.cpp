@@ -5,7 +5,7 @@
 #include <imgui.h>
 
 #include "app/viewer/live_stats.h"
-#include "scenes/scene_inputs.h"
+#include "app/scene_loading.h"
 
 namespace app::viewer {
 
@@ -38,7 +38,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.heatmap_name = view_mode_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
   job.stats_json = render_stats_json(stats).dump(2) + "\n";
-  job.inputs = scenes::scene_input_files(state.settings.scene);
+  job.inputs = settings_input_files(state.settings);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;
   return job;

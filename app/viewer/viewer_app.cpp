@@ -445,9 +445,11 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   std::vector<std::string> scenes_read = {settings.scene};
   for (const ScriptedChange& c : script) {
     if (c.key == "screenshot") outputs.push_back({"--set screenshot", c.value, ".png", "PNG"});
-    if (c.key == "scene") scenes_read.push_back(c.value);
+    if (c.key == "scene" || c.key == "drop") scenes_read.push_back(c.value);
   }
   std::vector<std::string> all_inputs = inputs;
+  if (!settings.camera_flags.from_file.empty())
+    all_inputs.push_back(settings.camera_flags.from_file);
   for (const std::string& scene : scenes_read) {
     for (const std::string& file : scenes::scene_input_files(scene)) all_inputs.push_back(file);
   }

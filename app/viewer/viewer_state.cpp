@@ -14,9 +14,11 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
   if (s.scene != before.scene) {
     if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene))
       s.level = model->default_level;
+    s.camera_flags = CameraFlags{};  // the command line's camera was for the first scene
   }
   const bool new_scene = s.scene != before.scene || s.level != before.level ||
-                         s.light_scale != before.light_scale || s.camera != before.camera;
+                         s.light_scale != before.light_scale || s.camera != before.camera ||
+                         s.camera_flags != before.camera_flags;
   const bool new_size = s.width != before.width || s.height != before.height;
   if (new_size && s.resolution == before.resolution) s.resolution = "typed";
   const bool new_view = new_scene || new_size || s.resolution != before.resolution ||

@@ -326,6 +326,22 @@ TEST_F(ViewerWindow, AFileOpenedWhileRunningLoadsAndABadOneKeepsTheSceneShown) {
   EXPECT_TRUE(read_png(path("kept.png")).ok());
 }
 
+// The camera flags set the viewer's view, and Copy camera gives that view back as the same flags
+// (scripted sessions print what is copied).
+TEST_F(ViewerWindow, TheCameraFlagsSetTheViewAndCopyCameraGivesThemBack) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const CommandRun r = run_viewer({"--lights", "64", "--width", "48", "--height", "36", "--window",
+                                   "800x600", "--frames", "3", "--camera-position", "2,-14,7",
+                                   "--camera-target", "0.5,0,1", "--fov", "35", "--set",
+                                   "await=idle@0", "--set", "copy=camera@1"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("camera: --camera-position 2,-14,7 --camera-target 0.5,0,1 "
+                          "--camera-up 0,0,1 --fov 35"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";

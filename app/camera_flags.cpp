@@ -1,0 +1,145 @@
+#include "app/camera_flags.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/settings.h"
+
+namespace app {
+namespace {
+
+bool parse_float(const std::string& text, float& value) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return false;
+  char* end = nullptr;
+  errno = 0;
+  const float v = std::strtof(text.c_str(), &end);
+  if (*end != '\0' || errno == ERANGE || !std::isfinite(v)) return false;
+  value = v;
+  return true;
+}
+
+glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
+  glm::vec3 v(0.0f);
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    const bool last = i == 2;
+    if (last != (comma == std::string::npos) ||
+        !parse_float(text.substr(start, last ? std::string::npos : comma - start), v[i])) {
+      throw UsageError(flag + ": must be X,Y,Z (three finite numbers), got '" + text + "'");
+    }
+    start = comma + 1;
+  }
+  return v;
+}
+
+float parse_fov(const std::string& flag, const std::string& text) {
+  float fov = 0.0f;
+  if (!parse_float(text, fov) || !(fov > 0.0f && fov < 180.0f))
+    throw UsageError(flag + ": must be a number of degrees in (0, 180), got '" + text + "'");
+  return fov;
+}
+
+// The "camera" object of a stats JSON levrt wrote.
+CameraFlags read_camera_file(const std::string& path) {
+  const std::string flag = "--camera-from";
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw UsageError(flag + ": cannot read '" + path + "'");
+  if (!fs::is_regular_file(status))
+    throw UsageError(flag + ": is not a regular file, got '" + path + "'");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec || size > kMaxCameraFileBytes)
+    throw UsageError(flag + ": a stats file is at most 1 MiB, got '" + path + "' of " +
+                     std::to_string(size) + " bytes");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw UsageError(flag + ": cannot read '" + path + "'");
+  const nlohmann::json doc = nlohmann::json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded()) throw UsageError(flag + ": " + path + ": not JSON");
+  if (!doc.is_object() || !doc.contains("camera") || !doc["camera"].is_object())
+    throw UsageError(flag + ": " + path +
+                     ": no \"camera\" object (a stats file levrt wrote has one)");
+  const nlohmann::json& camera = doc["camera"];
+  const auto vec = [&](const char* name) {
+    const nlohmann::json* v = camera.contains(name) ? &camera[name] : nullptr;
+    if (!v || !v->is_array() || v->size() != 3 || !(*v)[0].is_number() || !(*v)[1].is_number() ||
+        !(*v)[2].is_number())
+      throw UsageError(flag + ": " + path + ": camera." + name + ": must be 3 numbers");
+    const glm::vec3 out((*v)[0].get<float>(), (*v)[1].get<float>(), (*v)[2].get<float>());
+    if (!std::isfinite(out.x) || !std::isfinite(out.y) || !std::isfinite(out.z))
+      throw UsageError(flag + ": " + path + ": camera." + name + ": must be finite");
+    return out;
+  };
+  CameraFlags flags;
+  flags.position = vec("position");
+  flags.target = vec("target");
+  flags.up = vec("up");
+  if (!camera.contains("vertical_fov_deg") || !camera["vertical_fov_deg"].is_number())
+    throw UsageError(flag + ": " + path + ": camera.vertical_fov_deg: must be a number");
+  const float fov = camera["vertical_fov_deg"].get<float>();
+  if (!(fov > 0.0f && fov < 180.0f))
+    throw UsageError(flag + ": " + path + ": camera.vertical_fov_deg: must be in (0, 180)");
+  flags.vertical_fov_deg = fov;
+  return flags;
+}
+
+std::string float_text(float v) {
+  // %.9g is the shortest notation that always reads back as the same float.
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+  return text;
+}
+
+std::string vec3_text(const glm::vec3& v) {
+  return float_text(v.x) + "," + float_text(v.y) + "," + float_text(v.z);
+}
+
+}  // namespace
+
+CameraFlags parse_camera_flags(const CameraFlagTexts& texts) {
+  CameraFlags flags;
+  if (!texts.from_file.empty()) {
+    flags = read_camera_file(texts.from_file);
+    flags.from_file = texts.from_file;
+  }
+  if (!texts.position.empty()) flags.position = parse_vec3("--camera-position", texts.position);
+  if (!texts.target.empty()) flags.target = parse_vec3("--camera-target", texts.target);
+  if (!texts.up.empty()) flags.up = parse_vec3("--camera-up", texts.up);
+  if (!texts.fov_deg.empty()) flags.vertical_fov_deg = parse_fov("--fov", texts.fov_deg);
+  return flags;
+}
+
+renderer::Camera apply_camera_flags(const renderer::Camera& preset, const CameraFlags& flags) {
+  renderer::Camera camera = preset;
+  if (flags.position) camera.position = *flags.position;
+  if (flags.target) camera.target = *flags.target;
+  if (flags.up) camera.up = *flags.up;
+  if (flags.vertical_fov_deg) camera.vertical_fov_deg = *flags.vertical_fov_deg;
+  if (flags.empty()) return camera;
+  const renderer::CameraBasis basis = renderer::camera_basis(camera);
+  if (basis.forward == glm::vec3(0.0f)) {
+    throw UsageError("--camera-target: the camera at " + vec3_text(camera.position) +
+                     " looking at " + vec3_text(camera.target) + " with up " +
+                     vec3_text(camera.up) +
+                     " has no view (target at the position, or up along the view)");
+  }
+  return camera;
+}
+
+std::string camera_flags_text(const renderer::Camera& camera) {
+  return "--camera-position " + vec3_text(camera.position) + " --camera-target " +
+         vec3_text(camera.target) + " --camera-up " + vec3_text(camera.up) + " --fov " +
+         float_text(camera.vertical_fov_deg);
+}
+
+}  // namespace app

@@ -1,0 +1,196 @@
+// The camera flags (app/camera_flags.h): parsing and refusing each flag, replacing parts of the
+// preset, the copied text reading back as the same floats, and through `levrt render`: a moved
+// camera changes the image, --camera-from a stats file renders that image again byte for byte,
+// every bad value is one line naming the flag (exit 2), and no output may replace the camera file.
+#include "app/camera_flags.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "app/settings.h"
+#include "tests/support/read_file.h"
+#include "tests/support/run_command.h"
+
+namespace {
+namespace fs = std::filesystem;
+using app::CameraFlags;
+using app::CameraFlagTexts;
+using levrt_test::CommandRun;
+using levrt_test::read_file;
+using levrt_test::run_levrt;
+
+// The message of the UsageError parsing throws, or "" when it parses.
+std::string refusal(const CameraFlagTexts& texts) {
+  try {
+    app::parse_camera_flags(texts);
+  } catch (const app::UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CameraFlags, ParseEachFlagAndRefuseBadValuesNamingTheFlag) {
+  CameraFlagTexts texts;
+  texts.position = "1,-2.5,3e1";
+  texts.fov_deg = "30";
+  const CameraFlags flags = app::parse_camera_flags(texts);
+  EXPECT_EQ(*flags.position, glm::vec3(1.0f, -2.5f, 30.0f));
+  EXPECT_EQ(*flags.vertical_fov_deg, 30.0f);
+  EXPECT_FALSE(flags.target.has_value());
+  EXPECT_TRUE(app::parse_camera_flags({}).empty());
+
+  for (const std::string bad : {"1,2", "1,2,3,4", "1,,3", "a,b,c", "nan,0,0", "inf,0,0", "1e39,0,0",
+                                " 1,2,3", "1,2,3 ", ",,", ""}) {
+    if (bad.empty()) continue;  // an empty text is a flag not given
+    CameraFlagTexts t;
+    t.target = bad;
+    const std::string message = refusal(t);
+    EXPECT_EQ(message.rfind("--camera-target: must be X,Y,Z", 0), 0u) << bad << ": " << message;
+    EXPECT_NE(message.find("'" + bad + "'"), std::string::npos) << message;
+  }
+  for (const std::string bad : {"0", "180", "-5", "200", "x", "nan", "45deg"}) {
+    CameraFlagTexts t;
+    t.fov_deg = bad;
+    EXPECT_EQ(refusal(t).rfind("--fov: must be a number of degrees in (0, 180)", 0), 0u) << bad;
+  }
+}
+
+TEST(CameraFlags, ReplacePartsOfThePresetAndRefuseAViewOfNothing) {
+  renderer::Camera preset;
+  preset.position = {0.0f, -10.0f, 5.0f};
+  preset.target = {0.0f, 0.0f, 0.0f};
+  CameraFlags flags;
+  flags.vertical_fov_deg = 20.0f;
+  const renderer::Camera narrow = app::apply_camera_flags(preset, flags);
+  EXPECT_EQ(narrow.position, preset.position);
+  EXPECT_EQ(narrow.target, preset.target);
+  EXPECT_EQ(narrow.vertical_fov_deg, 20.0f);
+
+  CameraFlags at_target;
+  at_target.position = preset.target;
+  EXPECT_THROW(app::apply_camera_flags(preset, at_target), app::UsageError);
+  CameraFlags up_along_view;
+  up_along_view.up = glm::vec3(0.0f, 10.0f, -5.0f);
+  EXPECT_THROW(app::apply_camera_flags(preset, up_along_view), app::UsageError);
+}
+
+TEST(CameraFlags, TheCopiedTextReadsBackAsTheSameCamera) {
+  renderer::Camera c;
+  c.position = {0.1f, -1.0f / 3.0f, 123456.789f};
+  c.target = {1e-7f, 2.0f, -0.3f};
+  c.up = {0.0f, 0.0f, 1.0f};
+  c.vertical_fov_deg = 37.123456f;
+  const std::string text = app::camera_flags_text(c);
+  // "--camera-position X --camera-target Y --camera-up Z --fov W"
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  for (std::size_t space = text.find(' ');; space = text.find(' ', start)) {
+    words.push_back(text.substr(start, space == std::string::npos ? space : space - start));
+    if (space == std::string::npos) break;
+    start = space + 1;
+  }
+  ASSERT_EQ(words.size(), 8u) << text;
+  EXPECT_EQ(words[0], "--camera-position");
+  CameraFlagTexts texts;
+  texts.position = words[1];
+  texts.target = words[3];
+  texts.up = words[5];
+  texts.fov_deg = words[7];
+  const renderer::Camera back =
+      app::apply_camera_flags(renderer::Camera{}, app::parse_camera_flags(texts));
+  EXPECT_EQ(back.position, c.position);
+  EXPECT_EQ(back.target, c.target);
+  EXPECT_EQ(back.up, c.up);
+  EXPECT_EQ(back.vertical_fov_deg, c.vertical_fov_deg);
+}
+
+class CameraCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("levrt_camera_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  CommandRun render(std::vector<std::string> args) const {
+    for (const std::string a : {"--lights", "64", "--width", "48", "--height", "36", "--quiet"})
+      args.push_back(a);
+    args.insert(args.begin(), "render");
+    return run_levrt(args);
+  }
+  fs::path dir_;
+};
+
+TEST_F(CameraCli, AMovedCameraIsRecordedAndRendersAgainFromItsStats) {
+  ASSERT_EQ(render({"--out", path("preset.png")}).exit_code, 0);
+  const CommandRun moved =
+      render({"--camera-position", "2,-14,7", "--camera-target", "0.5,0,1", "--fov", "35", "--out",
+              path("moved.png"), "--stats", path("moved.json")});
+  ASSERT_EQ(moved.exit_code, 0) << moved.output;
+  EXPECT_NE(read_file(path("moved.png")), read_file(path("preset.png")));
+  const nlohmann::json stats = nlohmann::json::parse(read_file(path("moved.json")));
+  EXPECT_EQ(stats["camera"]["position"], nlohmann::json::array({2.0, -14.0, 7.0}));
+  EXPECT_EQ(stats["camera"]["target"], nlohmann::json::array({0.5, 0.0, 1.0}));
+  EXPECT_EQ(stats["camera"]["vertical_fov_deg"], 35.0);
+
+  const CommandRun again =
+      render({"--camera-from", path("moved.json"), "--out", path("again.png")});
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_file(path("again.png")), read_file(path("moved.png")));
+  // A flag given with --camera-from overrides that part.
+  ASSERT_EQ(render({"--camera-from", path("moved.json"), "--fov", "50", "--out", path("wide.png")})
+                .exit_code,
+            0);
+  EXPECT_NE(read_file(path("wide.png")), read_file(path("moved.png")));
+}
+
+TEST_F(CameraCli, BadCamerasExitTwoWithOneLineNamingTheFlagAndWriteNothing) {
+  std::ofstream(path("no_camera.json")) << R"({"scene": "building"})";
+  std::ofstream(path("bad_fov.json"))
+      << R"({"camera": {"position": [0,-10,5], "target": [0,0,0], "up": [0,0,1], "vertical_fov_deg": 0}})";
+  std::ofstream(path("text.json")) << "not json";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--camera-position", "1,2"}, "--camera-position"},
+      {{"--camera-up", "nan,0,1"}, "--camera-up"},
+      {{"--fov", "0"}, "--fov"},
+      {{"--camera-position", "1,1,1", "--camera-target", "1,1,1"}, "--camera-target"},
+      {{"--camera-from", path("missing.json")}, "--camera-from"},
+      {{"--camera-from", dir_.string()}, "--camera-from"},
+      {{"--camera-from", path("no_camera.json")}, "no \"camera\" object"},
+      {{"--camera-from", path("bad_fov.json")}, "camera.vertical_fov_deg"},
+      {{"--camera-from", path("text.json")}, "not JSON"},
+  };
+  for (const auto& [flags, expected] : cases) {
+    std::vector<std::string> args = flags;
+    args.push_back("--out");
+    args.push_back(path("out.png"));
+    const CommandRun r = render(args);
+    EXPECT_EQ(r.exit_code, 2) << flags[0] << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
+  }
+}
+
+TEST_F(CameraCli, NoOutputReplacesTheCameraFile) {
+  ASSERT_EQ(render({"--stats", path("s.json")}).exit_code, 0);
+  const std::string before = read_file(path("s.json"));
+  const CommandRun r = render({"--camera-from", path("s.json"), "--stats", path("s.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--stats"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(path("s.json")), before);
+}
+
+}  // namespace
