@@ -128,6 +128,31 @@ Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults
   return settings;
 }
 
+// Everything a command that renders a scene takes about it: the settings table, the light
+// count and the camera.
+struct SceneFlags {
+  SettingFlags settings;
+  CameraFlagTexts camera;
+  std::string lights_text;
+  CLI::Option* lights = nullptr;
+};
+
+void add_scene_flags(CLI::App& command, SceneFlags& flags, const Settings& defaults) {
+  add_setting_flags(command, flags.settings, defaults);
+  add_camera_flags(command, flags.camera);
+  flags.lights = command
+                     .add_option("--lights", flags.lights_text,
+                                 "light count (selects the level with that many lights)")
+                     ->type_name("COUNT");
+}
+
+Settings apply_scene_flags(const SceneFlags& flags, const Settings& defaults) {
+  Settings settings =
+      apply_setting_flags(flags.settings, defaults, flags.lights, flags.lights_text);
+  settings.camera_flags = parse_camera_flags(flags.camera);
+  return settings;
+}
+
 int run_snapshot() {
   // The main job without a window: a snapshot of the default scene into out/.
   std::filesystem::create_directories("out");
@@ -150,16 +175,8 @@ int run_cli(int argc, char** argv) {
 
   CLI::App* render =
       cli.add_subcommand("render", "render a scene headless: image, heatmaps, stats");
-  SettingFlags render_flags;
-  add_setting_flags(*render, render_flags, Settings{});
-  CameraFlagTexts render_camera;
-  add_camera_flags(*render, render_camera);
-  std::string lights_text;
-  CLI::Option* lights_option =
-      render
-          ->add_option("--lights", lights_text,
-                       "light count (selects the level with that many lights)")
-          ->type_name("COUNT");
+  SceneFlags render_flags;
+  add_scene_flags(*render, render_flags, Settings{});
   RenderOutputs outputs;
   const std::vector<CLI::Option*> output_options = {
       render->add_option("--out", outputs.image, "image PNG (- for standard output)")
@@ -211,16 +228,8 @@ int run_cli(int argc, char** argv) {
 
   CLI::App* inspect = cli.add_subcommand(
       "inspect", "list the lights behind one pixel: tested, culled (by which node), clustered");
-  SettingFlags inspect_flags;
-  add_setting_flags(*inspect, inspect_flags, Settings{});
-  CameraFlagTexts inspect_camera;
-  add_camera_flags(*inspect, inspect_camera);
-  std::string inspect_lights_text;
-  CLI::Option* inspect_lights_option =
-      inspect
-          ->add_option("--lights", inspect_lights_text,
-                       "light count (selects the level with that many lights)")
-          ->type_name("COUNT");
+  SceneFlags inspect_flags;
+  add_scene_flags(*inspect, inspect_flags, Settings{});
   InspectFlags inspect_options;
   inspect
       ->add_option("--pixel", inspect_options.pixel,
@@ -248,16 +257,9 @@ int run_cli(int argc, char** argv) {
 
   CLI::App* view = cli.add_subcommand(
       "view", "the interactive viewer (the default when a display is available)");
-  SettingFlags view_flags;
+  SceneFlags view_flags;
   const Settings view_defaults = viewer_default_settings();
-  add_setting_flags(*view, view_flags, view_defaults);
-  CameraFlagTexts view_camera;
-  add_camera_flags(*view, view_camera);
-  std::string view_lights_text;
-  CLI::Option* view_lights_option =
-      view->add_option("--lights", view_lights_text,
-                       "light count (selects the level with that many lights)")
-          ->type_name("COUNT");
+  add_scene_flags(*view, view_flags, view_defaults);
   viewer::ViewFlags view_options;
   add_view_flags(*view, view_options);
 
@@ -273,8 +275,7 @@ int run_cli(int argc, char** argv) {
   }
 
   if (render->parsed()) {
-    Settings settings = apply_setting_flags(render_flags, Settings{}, lights_option, lights_text);
-    settings.camera_flags = parse_camera_flags(render_camera);
+    const Settings settings = apply_scene_flags(render_flags, Settings{});
     for (const CLI::Option* option : output_options) {
       if (option->count() > 0 && option->as<std::string>().empty()) {
         throw UsageError(option->get_name() + ": needs a file name, got ''");
@@ -290,18 +291,14 @@ int run_cli(int argc, char** argv) {
     return run_render(settings, outputs);
   }
   if (inspect->parsed()) {
-    Settings settings =
-        apply_setting_flags(inspect_flags, Settings{}, inspect_lights_option, inspect_lights_text);
-    settings.camera_flags = parse_camera_flags(inspect_camera);
+    const Settings settings = apply_scene_flags(inspect_flags, Settings{});
     return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);
   if (bench->parsed()) return run_bench(bench_flags);
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
-    Settings settings =
-        apply_setting_flags(view_flags, view_defaults, view_lights_option, view_lights_text);
-    settings.camera_flags = parse_camera_flags(view_camera);
+    const Settings settings = apply_scene_flags(view_flags, view_defaults);
     return run_view(settings, view_options);
   }
   if (viewer_display_available()) {

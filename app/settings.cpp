@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scenes/gltf_scene.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_models.h"
 
@@ -50,6 +51,30 @@ const char* display_option_summary(const std::string& option) {
   return "";
 }
 
+const char* tolerance_unused(const Settings& s) {
+  return lev::method_info(s.method).uses_tolerance
+             ? nullptr
+             : "this method has no tolerance (lightcuts and lev_cut cut by the relative error; "
+               "rt tests every light)";
+}
+
+const char* samples_unused(const Settings& s) {
+  return lev::method_info(s.method).samples
+             ? nullptr
+             : "only the sampling methods (lev_mc, light_tree) draw light samples";
+}
+
+const char* relative_error_unused(const Settings& s) {
+  return lev::method_info(s.method).uses_relative_error
+             ? nullptr
+             : "only lightcuts and lev_cut cut by the relative error";
+}
+
+const char* camera_unused(const Settings& s) {
+  return scenes::is_gltf_file_name(s.scene) ? nullptr
+                                            : "only glTF files have cameras of their own";
+}
+
 }  // namespace
 
 std::vector<std::string> scene_options() {
@@ -72,7 +97,8 @@ const std::vector<SettingSpec>& setting_table() {
               method_options, [](const std::string& o) { return method_option(o).label; },
               [](const std::string& o) { return method_option(o).summary; }}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
-       RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0}},
+       RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0},
+       tolerance_unused},
       {"resolution", "Resolution",
        "viewer image size: the image area's pixels (fit), 1/2 or 1/4 of them, or the typed width "
        "and height (typed; giving either selects it); headless renders always use width and height",
@@ -83,11 +109,11 @@ const std::vector<SettingSpec>& setting_table() {
       {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
       {"samples", "Light samples",
        "lights lev_mc and light_tree draw per shading point and pass (each one shadow ray)",
-       IntRange{&Settings::samples, 1, lev::kMaxLightSamples}},
+       IntRange{&Settings::samples, 1, lev::kMaxLightSamples}, samples_unused},
       {"relative-error", "Relative error",
        "lightcuts: refine the cut until every cluster's error bound is below this share of the "
        "point's estimated radiance (0 = exact)",
-       RealRange{&Settings::relative_error, 0.0, 1.0, true, 1e-4, 1.0}},
+       RealRange{&Settings::relative_error, 0.0, 1.0, true, 1e-4, 1.0}, relative_error_unused},
       {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
       {"threads", "Threads", "worker threads (0 = all cores)",
        IntRange{&Settings::threads, 0, 1024}},
@@ -102,7 +128,7 @@ const std::vector<SettingSpec>& setting_table() {
        "glTF scenes: the perspective camera to look through, in node order (0: the first, or a "
        "view "
        "framing the scene when there is none)",
-       IntRange{&Settings::camera, 0, 1000000}},
+       IntRange{&Settings::camera, 0, 1000000}, camera_unused},
       {"exposure", "Exposure",
        "exposure in EV: the displayed image is the radiance x 2^EV through the display curve; "
        "the tolerance and the error metrics are in these exposed units. auto: chosen from a "

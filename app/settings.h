@@ -99,6 +99,9 @@ struct SettingSpec {
   const char* label;  // viewer
   const char* help;
   std::variant<IntRange, RealRange, Choice> kind;
+  // Null when the setting matters for these settings, else why it does not ("lev_cut has no
+  // tolerance..."): the viewer greys the control and shows the reason.
+  const char* (*unused_because)(const Settings& settings) = nullptr;
 };
 
 const std::vector<SettingSpec>& setting_table();

@@ -28,8 +28,12 @@ std::string controls_json(const ControlRects& rects, const Settings& settings, V
     out["controls"][r.name] = {r.x0, r.y0, r.x1, r.y1};
     if (r.hovered) out["hovered"] = r.name;
   }
-  for (const SettingSpec& spec : setting_table())
+  out["unused"] = nlohmann::json::object();
+  for (const SettingSpec& spec : setting_table()) {
     out["settings"][spec.name] = setting_text(settings, spec);
+    if (const char* why = spec.unused_because ? spec.unused_because(settings) : nullptr)
+      out["unused"][spec.name] = why;
+  }
   out["view"] = view_mode_info(view).name;
   out["mouse_busy"] = mouse_busy;
   return out.dump(1) + "\n";

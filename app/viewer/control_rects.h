@@ -29,7 +29,8 @@ void record_item(ControlRects* rects, const std::string& name);
 void record_rect(ControlRects* rects, const std::string& name, float x0, float y0, float x1,
                  float y1);
 
-// {"controls": {name: [x0, y0, x1, y1], ...}, "settings": {name: text, ...}, "view": name,
+// {"controls": {name: [x0, y0, x1, y1], ...}, "settings": {name: text, ...}, "unused": {name:
+// why, ...} (the settings greyed out for these settings), "view": name,
 // "mouse_busy": a control is held or the mouse is down, "hovered": the control under the pointer
 // or ""}. A test waits for its target to be hovered before clicking: the window then surely
 // receives the pointer. A test waits for mouse_busy false

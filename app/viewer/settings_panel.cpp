@@ -163,6 +163,9 @@ void draw_settings_section(ViewerState& state) {
   ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
   for (const SettingSpec& spec : setting_table()) {
     const Settings before = state.settings;
+    // A setting these settings ignore is greyed out, saying why.
+    const char* unused = spec.unused_because ? spec.unused_because(state.settings) : nullptr;
+    if (unused) ImGui::BeginDisabled();
     bool changed = false;
     if (const auto* i = std::get_if<IntRange>(&spec.kind)) {
       changed = draw_int(state.settings, spec, *i, rects);
@@ -170,6 +173,11 @@ void draw_settings_section(ViewerState& state) {
       changed = draw_real(state.settings, spec, *r, rects);
     } else {
       changed = draw_choice(state.settings, spec, std::get<Choice>(spec.kind), rects);
+    }
+    if (unused) {
+      ImGui::EndDisabled();
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s: %s", spec.label, unused);
     }
     if (changed)
       settings_changed(state, before,

@@ -342,6 +342,28 @@ TEST_F(ViewerWindow, TheCameraFlagsSetTheViewAndCopyCameraGivesThemBack) {
       << r.output;
 }
 
+// The panel greys out what the chosen method ignores (the settings table's unused_because), and
+// the controls file says which: lev_cut has no tolerance and draws no samples but uses the
+// relative error; lev the other way round.
+TEST_F(ViewerWindow, ThePanelGreysOutWhatTheMethodIgnores) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  for (const std::string method : {"lev", "lev_cut"}) {
+    const CommandRun r = run_viewer({"--lights", "64", "--width", "48", "--height", "36",
+                                     "--window", "800x600", "--frames", "3", "--controls",
+                                     path("controls.json"), "--set", "method=" + method + "@1"});
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json controls = read_json(path("controls.json"));
+    ASSERT_TRUE(controls.is_object()) << r.output;
+    const nlohmann::json& unused = controls["unused"];
+    EXPECT_EQ(controls["settings"]["method"], method);
+    EXPECT_EQ(unused.contains("tolerance"), method == "lev_cut") << unused.dump();
+    EXPECT_EQ(unused.contains("relative-error"), method == "lev") << unused.dump();
+    EXPECT_TRUE(unused.contains("samples")) << unused.dump();
+    EXPECT_TRUE(unused.contains("camera")) << unused.dump();  // building is no glTF file
+  }
+}
+
 TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
