@@ -5,7 +5,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <regex>
+#include <string>
 #include <vector>
 
 #include "app/output_files.h"
@@ -98,12 +98,21 @@ std::string totals_text(const renderer::InspectedTotals& t) {
 }  // namespace
 
 void parse_inspect_pixel(const std::string& text, int width, int height, int& x, int& y) {
-  static const std::regex pattern("([0-9]{1,9}),([0-9]{1,9})");
-  std::smatch match;
-  if (!std::regex_match(text, match, pattern))
+  // X,Y: 1 to 9 decimal digits each (std::regex would do, but GCC 12 warns inside it under the
+  // sanitizer presets).
+  const auto digits = [](const std::string& part, int& value) {
+    if (part.empty() || part.size() > 9) return false;
+    value = 0;
+    for (const char c : part) {
+      if (c < '0' || c > '9') return false;
+      value = value * 10 + (c - '0');
+    }
+    return true;
+  };
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || !digits(text.substr(0, comma), x) ||
+      !digits(text.substr(comma + 1), y))
     throw UsageError("--pixel: expected X,Y (image pixels from the top left), got '" + text + "'");
-  x = std::stoi(match[1].str());
-  y = std::stoi(match[2].str());
   if (x >= width || y >= height) {
     throw UsageError("--pixel: outside the " + std::to_string(width) + "x" +
                      std::to_string(height) + " image, got '" + text + "'");

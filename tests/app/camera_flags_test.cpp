@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "tests/support/folder_test.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
@@ -112,25 +113,14 @@ TEST(CameraFlags, TheCopiedTextReadsBackAsTheSameCamera) {
   EXPECT_EQ(back.vertical_fov_deg, c.vertical_fov_deg);
 }
 
-class CameraCli : public ::testing::Test {
+class CameraCli : public levrt_test::FolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_camera_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   CommandRun render(std::vector<std::string> args) const {
     for (const std::string a : {"--lights", "64", "--width", "48", "--height", "36", "--quiet"})
       args.push_back(a);
     args.insert(args.begin(), "render");
     return run_levrt(args);
   }
-  fs::path dir_;
 };
 
 TEST_F(CameraCli, AMovedCameraIsRecordedAndRendersAgainFromItsStats) {

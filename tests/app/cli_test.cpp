@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/folder_test.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
@@ -20,20 +21,9 @@ using levrt_test::CommandRun;
 using levrt_test::read_file;
 using levrt_test::run_levrt;
 
-class Cli : public ::testing::Test {
+class Cli : public levrt_test::FolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   bool folder_is_empty() const { return fs::is_empty(dir_); }
-  fs::path dir_;
 };
 
 TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "app/settings.h"
+#include "tests/support/folder_test.h"
 #include "tests/support/run_command.h"
 
 namespace {
@@ -62,18 +63,8 @@ long line_count(const std::string& text) {
   return std::count(text.begin(), text.end(), '\n');
 }
 
-class Outputs : public ::testing::Test {
+class Outputs : public levrt_test::FolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_outputs_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
     for (const auto& e : fs::directory_iterator(dir_))
@@ -87,7 +78,6 @@ class Outputs : public ::testing::Test {
     for (const std::string& a : args) command += " " + shell_quote(a);
     return run_shell(command);
   }
-  fs::path dir_;
 };
 
 // Renders with `flag` naming a FIFO that a child process (cat) reads; returns what it received.
