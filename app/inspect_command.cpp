@@ -1,6 +1,7 @@
 #include "app/inspect_command.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -240,15 +241,19 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   const std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
+  const auto start = std::chrono::steady_clock::now();
   const renderer::PixelInspection inspection =
       renderer::inspect_pixel(loaded->scene, *loaded->rays, render_settings, *selector, x, y);
+  const double inspect_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::ordered_json json = inspection_json(inspection);
   if (!flags.json.empty())
     write_output_files({{flags.json, [&json] { return json.dump(1) + "\n"; }}});
   std::FILE* table = flags.json == kStandardOutputName ? stderr : stdout;
-  std::fprintf(table, "%s, %llu lights, %s, tolerance %g\n", loaded->scene.name.c_str(),
+  std::fprintf(table, "%s, %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
+               loaded->scene.name.c_str(),
                static_cast<unsigned long long>(loaded->scene.lights.light_count),
-               lev::method_info(settings.method).name, settings.tolerance);
+               lev::method_info(settings.method).name, settings.tolerance, inspect_ms);
   std::fputs(inspection_table(inspection, flags.top).c_str(), table);
   return 0;
 }

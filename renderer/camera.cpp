@@ -25,4 +25,19 @@ Ray primary_ray(const Camera& camera, int width, int height, float image_x, floa
   return {camera.position, robust_normalize(forward + sx * right + sy * up)};
 }
 
+bool project_point(const Camera& camera, int width, int height, const glm::vec3& world,
+                   glm::vec2& image, float& depth) {
+  const CameraBasis basis = camera_basis(camera);
+  const glm::vec3 d = world - camera.position;
+  depth = glm::dot(d, basis.forward);
+  if (!(depth > 0.0f)) return false;
+  const float half_h = std::tan(glm::radians(camera.vertical_fov_deg) * 0.5f);
+  const float half_w = half_h * static_cast<float>(width) / static_cast<float>(height);
+  const float sx = glm::dot(d, basis.right) / depth;
+  const float sy = glm::dot(d, basis.up) / depth;
+  image.x = (sx / half_w + 1.0f) * 0.5f * static_cast<float>(width);
+  image.y = (1.0f - sy / half_h) * 0.5f * static_cast<float>(height);
+  return true;
+}
+
 }  // namespace renderer

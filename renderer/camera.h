@@ -29,4 +29,10 @@ CameraBasis camera_basis(const Camera& camera);
 // The direction is zero (the ray is not cast) when the camera has no basis.
 Ray primary_ray(const Camera& camera, int width, int height, float image_x, float image_y);
 
+// The inverse: where a world point appears on the image, in pixels from the top-left corner
+// (fractional, possibly outside the image), and its depth along the view direction; false for a
+// point at or behind the camera plane, or a camera without a basis.
+bool project_point(const Camera& camera, int width, int height, const glm::vec3& world,
+                   glm::vec2& image, float& depth);
+
 }  // namespace renderer

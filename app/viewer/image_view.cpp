@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "app/viewer/camera_control.h"
+#include "app/viewer/inspector_panel.h"
 
 namespace app::viewer {
 namespace {
@@ -98,6 +99,15 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
     image_min = ImVec2(origin.x + 0.5f * (avail.x - size.x), origin.y + 0.5f * (avail.y - size.y));
     image_max = ImVec2(image_min.x + size.x, image_min.y + size.y);
   }
+  // A click (a press and release that did not drag) pins the inspector on that pixel.
+  if (w > 0 && state.mouse_input && ImGui::IsItemDeactivated() &&
+      ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+      ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9.0f) {
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const int x = static_cast<int>(std::floor((mouse.x - image_min.x) / scale));
+    const int y = static_cast<int>(std::floor((mouse.y - image_min.y) / scale));
+    if (x >= 0 && y >= 0 && x < w && y < h) set_inspect_pixel(state, std::array<int, 2>{x, y});
+  }
   move_camera(state, ImVec2(image_max.x - image_min.x, image_max.y - image_min.y));
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -113,6 +123,7 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
       }
     }
   }
+  if (w > 0) draw_inspector_overlay(state, draw, image_min, image_max, scale);
   const WorkerStatus& st = state.status;
   if (st.phase == WorkerPhase::loading || st.phase == WorkerPhase::preparing) {
     draw->AddText(ImVec2(origin.x + 12.0f, origin.y + 10.0f), IM_COL32(255, 255, 255, 255),

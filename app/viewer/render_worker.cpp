@@ -16,6 +16,8 @@
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
 #include "renderer/auto_exposure.h"
+#include "renderer/pixel_inspection.h"
+#include "renderer/render.h"
 #include "renderer/render_service.h"
 
 namespace app::viewer {
@@ -106,6 +108,9 @@ struct Worker {
   std::size_t preview_levels_done = 0;
   double seconds_at_last_pass = 0.0;
   ReferenceRender reference;
+  // The pixel and render of the inspection published (status.inspection).
+  std::optional<std::array<int, 2>> inspected_pixel;
+  std::uint64_t inspected_generation = 0;
 
   explicit Worker(WorkerShared& s)
       : shared(s), reference(s.reference_tiles, [this](double seconds, const std::string& error) {
@@ -343,6 +348,35 @@ struct Worker {
       }
       reference.resume();
     }
+    inspect(request.inspect_pixel);
+  }
+
+  // The pinned pixel's inspection with a selector made as the render's (a fresh one: AST's
+  // statistics of the render must not learn from it), published once per pixel and render.
+  void inspect(const std::optional<std::array<int, 2>>& pixel) {
+    if (pixel == inspected_pixel && generation == inspected_generation) return;
+    inspected_pixel = pixel;
+    inspected_generation = generation;
+    std::shared_ptr<PixelInspectionView> view_of_pixel;
+    if (pixel && main && (*pixel)[0] < main_settings.width && (*pixel)[1] < main_settings.height) {
+      const auto start = Clock::now();
+      const renderer::Scene& sc = loaded->scene;
+      const auto selector = lev::make_selector(sc.lights, renderer::method_params(main_settings));
+      const renderer::PixelInspection inspection = renderer::inspect_pixel(
+          sc, *loaded->rays, main_settings, *selector, (*pixel)[0], (*pixel)[1]);
+      view_of_pixel = std::make_shared<PixelInspectionView>();
+      view_of_pixel->generation = generation;
+      view_of_pixel->x = (*pixel)[0];
+      view_of_pixel->y = (*pixel)[1];
+      view_of_pixel->camera = sc.camera;
+      view_of_pixel->width = main_settings.width;
+      view_of_pixel->height = main_settings.height;
+      view_of_pixel->tolerance = main_settings.tolerance;
+      view_of_pixel->totals = inspection.totals;
+      view_of_pixel->rows = inspector_rows(inspection, kInspectorRows, &view_of_pixel->all_rows);
+      view_of_pixel->seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    update_status([&](WorkerStatus& st) { st.inspection = std::move(view_of_pixel); });
   }
 
   // One preview level over the whole frame; a cancelled level is rendered again from the start.

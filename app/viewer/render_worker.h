@@ -12,6 +12,7 @@
 // never mix with the render's tiles.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -22,6 +23,7 @@
 
 #include "app/settings.h"
 #include "app/viewer/display_buffer.h"
+#include "app/viewer/inspector_rows.h"
 #include "lev/methods.h"
 #include "renderer/camera.h"
 
@@ -31,6 +33,8 @@ struct ViewRequest {
   Settings settings;
   std::optional<renderer::Camera> camera;  // empty: the scene's preset view
   bool want_reference = false;             // render the rt reference of this view
+  // The pinned pixel to inspect (the inspector, inspector_rows.h), in the render's image pixels.
+  std::optional<std::array<int, 2>> inspect_pixel;
 };
 
 enum class WorkerPhase { idle, loading, preparing, rendering, waiting_for_reference, failed };
@@ -94,6 +98,10 @@ struct WorkerStatus {
   int reference_tile_count = 0;
   std::chrono::steady_clock::time_point reference_started;
   double reference_seconds = 0.0;
+
+  // The inspection of the pinned pixel in the render shown (null: none asked for, or the pixel
+  // is outside the image).
+  std::shared_ptr<const PixelInspectionView> inspection;
 };
 
 // Render time so far, the running pass included.

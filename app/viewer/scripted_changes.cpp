@@ -96,6 +96,13 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "hover") {
     int x = 0, y = 0;
     if (!parse_pixel(c.value, x, y)) reject(text, "hover needs a pixel X,Y");
+  } else if (c.key == "inspect") {
+    int x = 0, y = 0;
+    if (c.value != "off" && !parse_pixel(c.value, x, y))
+      reject(text, "inspect needs a pixel X,Y or off");
+  } else if (c.key == "inspect_row") {
+    int x = 0, y = 0;
+    if (!parse_pixel(c.value + ",0", x, y)) reject(text, "inspect_row needs a row number");
   } else if (c.key == "window") {
     int w = 0, h = 0;
     if (!parse_window_size(c.value, w, h))
@@ -112,7 +119,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
     reject(text, "key must be one of " + keys +
-                     "lights|view|reference|hover|window|snapshot|screenshot|drop|copy|await|memory");
+                     "lights|view|reference|hover|inspect|inspect_row|window|snapshot|screenshot|"
+                     "drop|copy|await|memory");
   }
   return c;
 }
@@ -230,6 +238,21 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     pixel.x1 = pixel.x0 + 1;
     pixel.y1 = pixel.y0 + 1;
     state.scripted_hover = pixel;
+    return ScriptAction::none;
+  }
+  if (c.key == "inspect") {
+    std::optional<std::array<int, 2>> pixel;
+    if (c.value != "off") {
+      pixel.emplace();
+      parse_pixel(c.value, (*pixel)[0], (*pixel)[1]);
+    }
+    set_inspect_pixel(state, pixel);
+    return ScriptAction::none;
+  }
+  if (c.key == "inspect_row") {
+    int row = 0, ignored = 0;
+    parse_pixel(c.value + ",0", row, ignored);
+    state.inspect_row = row;
     return ScriptAction::none;
   }
   if (c.key == "memory") {

@@ -27,6 +27,7 @@
 #include "app/viewer/frame_log.h"
 #include "app/viewer/gl_texture.h"
 #include "app/viewer/image_view.h"
+#include "app/viewer/inspector_panel.h"
 #include "app/viewer/render_worker.h"
 #include "app/viewer/scene_open_panel.h"
 #include "app/viewer/scene_opening.h"
@@ -436,6 +437,7 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
   draw_image_view(state, picture.texture);
   ImGui::End();
   ImGui::PopStyleVar();
+  draw_inspector_window(state, layout.picture_pos, layout.picture_size);
 }
 
 }  // namespace

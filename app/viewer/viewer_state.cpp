@@ -73,11 +73,19 @@ renderer::Camera current_camera(const ViewerState& state) {
   return state.camera.value_or(state.status.preset_camera);
 }
 
+void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2>>& pixel) {
+  if (state.inspect_pixel == pixel) return;
+  state.inspect_pixel = pixel;
+  state.inspect_row = -1;
+  mark_changed(state, "");  // no new render: the worker inspects between passes
+}
+
 ViewRequest make_request(const ViewerState& state) {
   ViewRequest r;
   r.settings = state.settings;
   r.camera = state.camera;
   r.want_reference = state.want_reference;
+  r.inspect_pixel = state.inspect_pixel;
   return r;
 }
 

@@ -4,6 +4,7 @@
 // dirty; the frame loop posts one request per frame at most.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -60,6 +61,10 @@ struct ViewerState {
   // pointer happens to be) and can hover a pixel instead.
   bool mouse_input = true;
   std::optional<TileRect> scripted_hover;  // the pixel x0, y0
+  // The inspector: the pixel pinned by a click (or `--set inspect=X,Y`) until cleared, and the
+  // row of its list selected (-1: none), whose extent volume the image outlines.
+  std::optional<std::array<int, 2>> inspect_pixel;
+  int inspect_row = -1;
   // `--controls FILE`: the panel records its named controls' rectangles each frame.
   bool record_controls = false;
   ControlRects control_rects;
@@ -94,6 +99,8 @@ void select_view(ViewerState& state, ViewMode mode);
 void set_camera(ViewerState& state, const renderer::Camera& camera);
 void reset_camera(ViewerState& state);
 void set_want_reference(ViewerState& state, bool want);
+// Pins the inspector on a pixel (image pixels from the top left), or clears it.
+void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2>>& pixel);
 
 // True when the worker has loaded the scene the settings name (the preset camera is known).
 bool scene_ready(const ViewerState& state);
