@@ -20,7 +20,8 @@ bool parse_float(const std::string& text, float& value) {
   char* end = nullptr;
   errno = 0;
   const float v = std::strtof(text.c_str(), &end);
-  if (*end != '\0' || errno == ERANGE || !std::isfinite(v)) return false;
+  // ERANGE also flags a subnormal, which is a float like any other (Copy camera may print one).
+  if (*end != '\0' || !std::isfinite(v) || (errno == ERANGE && v == 0.0f)) return false;
   value = v;
   return true;
 }

@@ -270,11 +270,16 @@ struct Worker {
     const bool scene_changed = !loaded || r.scene != scene || r.level != level ||
                                r.camera != camera_index || r.camera_flags != camera_flags;
     const Settings s = scene_changed ? load_or_keep(r, serial) : r;
+    // A request for a scene that could not be loaded asked for that scene's preset view; the
+    // old scene keeps the view it had (and with it its render and reference).
+    const bool kept_old_scene = scene_changed && s.scene != r.scene;
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);
     if (s.exposure_auto) rs.exposure_ev = auto_exposure_ev;
     rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it
-    const ViewKey key{request.camera.value_or(preset), rs.width, rs.height, rs.max_depth,
+    const renderer::Camera camera =
+        kept_old_scene && view ? view->camera : request.camera.value_or(preset);
+    const ViewKey key{camera, rs.width, rs.height, rs.max_depth,
                       rs.pixel_stride};
     const bool view_changed = !view || !same_view(key, *view);
     // A method that ignores the tolerance keeps rendering when only the tolerance moves.

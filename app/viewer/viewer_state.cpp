@@ -23,7 +23,9 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
   const bool new_view = new_scene || new_size || s.resolution != before.resolution ||
                         s.depth != before.depth || s.subsample != before.subsample;
   if (new_scene) {
-    state.camera_before_scene_change = state.camera;
+    // Only the view of the scene on screen is worth giving back (a second open before the first
+    // failed must not replace it with the preset it asked for).
+    if (before.scene == state.status.scene) state.camera_before_scene_change = state.camera;
     state.camera.reset();
   }
   if (new_view && state.view != ViewMode::error) state.want_reference = false;

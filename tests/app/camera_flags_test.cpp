@@ -86,7 +86,7 @@ TEST(CameraFlags, ReplacePartsOfThePresetAndRefuseAViewOfNothing) {
 TEST(CameraFlags, TheCopiedTextReadsBackAsTheSameCamera) {
   renderer::Camera c;
   c.position = {0.1f, -1.0f / 3.0f, 123456.789f};
-  c.target = {1e-7f, 2.0f, -0.3f};
+  c.target = {1e-40f, 2.0f, -0.3f};  // a subnormal reads back too
   c.up = {0.0f, 0.0f, 1.0f};
   c.vertical_fov_deg = 37.123456f;
   const std::string text = app::camera_flags_text(c);

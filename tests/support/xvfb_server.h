@@ -4,7 +4,9 @@
 // the levrt process, not xvfb-run's shell. -displayfd lets Xvfb pick a free display.
 #pragma once
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -25,7 +27,12 @@ class XvfbServer {
     if (::pipe(fds) != 0) return;
     pid_ = ::fork();
     if (pid_ == 0) {
+      // The server dies with the test process even when its destructor never runs (an abort, a
+      // ctest timeout), and never holds ctest's output pipe open.
+      ::prctl(PR_SET_PDEATHSIG, SIGTERM);
       ::dup2(fds[1], STDOUT_FILENO);
+      const int null_fd = ::open("/dev/null", O_WRONLY);
+      if (null_fd >= 0) ::dup2(null_fd, STDERR_FILENO);
       ::close(fds[0]);
       ::execlp("Xvfb", "Xvfb", "-displayfd", "1", "-screen", "0", screen.c_str(), "-nolisten",
                "tcp", static_cast<char*>(nullptr));

@@ -259,28 +259,40 @@ TEST(RenderWorker, AFailedRequestIsReportedAndTheNextOneRecovers) {
 TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
   Ui ui;
   const app::Settings good = small_settings();
-  const std::uint64_t first = ui.worker.post(request_for(good));
-  ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); }));
+  // An orbited view with its rt reference: both survive the failed open.
+  ViewRequest orbited = request_for(good, true);
+  renderer::Camera camera;
+  camera.position = {3.0f, -12.0f, 8.0f};
+  camera.target = {0.5f, 0.5f, 0.0f};
+  orbited.camera = camera;
+  const std::uint64_t first = ui.worker.post(orbited);
+  ASSERT_TRUE(ui.run_until([&] {
+    return ui.settled(first) && ui.status.reference == ReferencePhase::done;
+  }));
   const std::vector<std::uint8_t> before = ui.image.rgb;
   const std::uint64_t loads = ui.status.scene_serial;
+  const std::uint64_t reference_generation = ui.status.reference_generation;
 
-  app::Settings missing = good;
-  missing.scene = "/nonexistent-levrt-folder/missing.gltf";
-  const std::uint64_t serial = ui.worker.post(request_for(missing));
+  // As the UI asks for a new scene: its preset view (no camera), the reference still wanted.
+  ViewRequest missing = request_for(good, true);
+  missing.settings.scene = "/nonexistent-levrt-folder/missing.gltf";
+  const std::uint64_t serial = ui.worker.post(missing);
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial) && ui.status.load_error_serial > 0; }));
   EXPECT_EQ(ui.status.load_error_serial, 1u);
-  EXPECT_EQ(ui.status.load_error_scene, missing.scene);
+  EXPECT_EQ(ui.status.load_error_scene, missing.settings.scene);
   EXPECT_NE(ui.status.load_error.find("missing.gltf"), std::string::npos) << ui.status.load_error;
   EXPECT_EQ(ui.status.scene, good.scene);
   EXPECT_EQ(ui.status.scene_serial, loads);
   EXPECT_TRUE(ui.status.loading_scene.empty());
   EXPECT_EQ(ui.status.generation, first);  // the render was not restarted
+  EXPECT_EQ(ui.status.reference, ReferencePhase::done);
+  EXPECT_EQ(ui.status.reference_generation, reference_generation);
   EXPECT_EQ(ui.image.rgb, before);
 
   // The next request (the UI has gone back to the old scene) renders as usual.
-  app::Settings more = good;
-  more.spp = 3;
-  const std::uint64_t next = ui.worker.post(request_for(more));
+  ViewRequest more = orbited;
+  more.settings.spp = 3;
+  const std::uint64_t next = ui.worker.post(more);
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(next); }));
   EXPECT_EQ(ui.status.passes_done, 3);
   EXPECT_EQ(ui.status.load_error_serial, 1u);
