@@ -236,8 +236,7 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   parse_inspect_pixel(flags.pixel, settings.width, settings.height, x, y);
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
-  check_output_paths({{"--json", flags.json, ".json", "JSON"}},
-                     settings_input_files(settings));
+  check_output_paths({{"--json", flags.json, ".json", "JSON"}}, settings_input_files(settings));
   const std::unique_ptr<LoadedScene> loaded = load_scene(settings);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));

@@ -6,8 +6,8 @@
 
 #include <chrono>
 
-#include "scenes/scene_inputs.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_inputs.h"
 #include "scenes/scene_instantiation.h"
 #include "scenes/scene_models.h"
 

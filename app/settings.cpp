@@ -71,8 +71,7 @@ const char* relative_error_unused(const Settings& s) {
 }
 
 const char* camera_unused(const Settings& s) {
-  return scenes::is_gltf_file_name(s.scene) ? nullptr
-                                            : "only glTF files have cameras of their own";
+  return scenes::is_gltf_file_name(s.scene) ? nullptr : "only glTF files have cameras of their own";
 }
 
 }  // namespace

@@ -33,8 +33,10 @@ Bounds transform_bounds(const Bounds& b, const Similarity& xf) {
 
 float round_outwards(double x, int direction) {
   auto f = static_cast<float>(x);
-  if (direction > 0 && static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  if (direction < 0 && static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  if (direction > 0 && static_cast<double>(f) < x)
+    f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  if (direction < 0 && static_cast<double>(f) > x)
+    f = std::nextafter(f, -std::numeric_limits<float>::infinity());
   return f;
 }
 
@@ -42,10 +44,9 @@ Bounds pad_bounds(const Bounds& b, float relative) {
   if (is_empty(b) || !is_finite(b)) return b;
   const glm::vec3 extent = b.hi - b.lo;
   const glm::vec3 magnitude = glm::max(glm::abs(b.lo), glm::abs(b.hi));
-  const float margin =
-      relative * (glm::max(glm::max(extent.x, extent.y), extent.z) +
-                  glm::max(glm::max(magnitude.x, magnitude.y), magnitude.z)) +
-      std::numeric_limits<float>::min();
+  const float margin = relative * (glm::max(glm::max(extent.x, extent.y), extent.z) +
+                                   glm::max(glm::max(magnitude.x, magnitude.y), magnitude.z)) +
+                       std::numeric_limits<float>::min();
   return {b.lo - margin, b.hi + margin};
 }
 

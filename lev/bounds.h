@@ -15,7 +15,9 @@ struct Bounds {
   glm::vec3 hi{-std::numeric_limits<float>::infinity()};
 };
 
-inline bool is_empty(const Bounds& b) { return b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z; }
+inline bool is_empty(const Bounds& b) {
+  return b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z;
+}
 // Branch-free: the walk's outcome per box is unpredictable, so one branch on the result is
 // cheaper than six short-circuit ones.
 inline bool contains(const Bounds& b, const glm::vec3& p) {

@@ -19,7 +19,8 @@ Light make_spot_light(const glm::vec3& position, const glm::vec3& direction,
   l.position = position;
   l.direction = glm::normalize(direction);
   l.intensity = intensity;
-  l.cos_cone_half_angle = static_cast<float>(std::cos(std::clamp<double>(cone_half_angle_rad, 0.0, M_PI)));
+  l.cos_cone_half_angle =
+      static_cast<float>(std::cos(std::clamp<double>(cone_half_angle_rad, 0.0, M_PI)));
   l.dropoff = dropoff;
   return l;
 }

@@ -21,7 +21,7 @@ enum class LightKind : std::uint8_t { point, spot };
 
 struct Light {
   glm::vec3 position{0.0f};
-  glm::vec3 intensity{1.0f};          // RGB, irradiance at distance 1 on the axis
+  glm::vec3 intensity{1.0f};               // RGB, irradiance at distance 1 on the axis
   glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot axis (unit)
   float cos_cone_half_angle = -1.0f;  // spot: lit where cos(gamma) >= this (Warn's cone, fig. 2.4)
   float dropoff = 0.0f;               // spot: Warn exponent P in cos(gamma)^P (eq. 5)
@@ -58,7 +58,8 @@ inline Light transform_light(const Light& light, const Similarity& xf) {
   l.position = apply_point(xf, light.position);
   l.intensity = light.intensity * (xf.scale * xf.scale);
   l.range = light.range * xf.scale;
-  if (light.kind == LightKind::spot) l.direction = glm::normalize(apply_direction(xf, light.direction));
+  if (light.kind == LightKind::spot)
+    l.direction = glm::normalize(apply_direction(xf, light.direction));
   return l;
 }
 
@@ -86,7 +87,8 @@ inline float irradiance_falloff(const Light& light, const glm::vec3& x) {
   const float d2 = std::max(d2_raw, kMinLightDistance * kMinLightDistance);
   if (light.kind == LightKind::point) return 1.0f / d2;
   // At the apex itself the direction is undefined; the point counts as on the axis.
-  const float cos_gamma = d2_raw > 0.0f ? glm::dot(light.direction, to_point) / std::sqrt(d2_raw) : 1.0f;
+  const float cos_gamma =
+      d2_raw > 0.0f ? glm::dot(light.direction, to_point) / std::sqrt(d2_raw) : 1.0f;
   if (cos_gamma < light.cos_cone_half_angle) return 0.0f;
   if (light.profile == SpotProfile::smooth) {
     return smooth_spot_attenuation(cos_gamma, light.cos_cone_half_angle, light.cos_inner_cone) / d2;
@@ -108,7 +110,8 @@ inline glm::vec3 irradiance_from_falloff(const Light& light, float falloff) {
   if (falloff == 0.0f) return glm::vec3(0.0f);
   constexpr float kLargest = std::numeric_limits<float>::max();
   const glm::vec3 e = light.intensity * falloff;
-  return {e.x < kLargest ? e.x : kLargest, e.y < kLargest ? e.y : kLargest, e.z < kLargest ? e.z : kLargest};
+  return {e.x < kLargest ? e.x : kLargest, e.y < kLargest ? e.y : kLargest,
+          e.z < kLargest ? e.z : kLargest};
 }
 inline glm::vec3 irradiance(const Light& light, const glm::vec3& x) {
   return irradiance_from_falloff(light, irradiance_falloff(light, x));

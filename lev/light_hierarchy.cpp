@@ -52,7 +52,8 @@ class Flattener {
                                       std::to_string(xf.scale));
         }
         h_.nodes[index].payload = static_cast<std::uint32_t>(h_.transforms.size());
-        if (xf.rotation == glm::mat3(1.0f) && xf.scale == 1.0f) h_.nodes[index].flags |= kTranslationOnly;
+        if (xf.rotation == glm::mat3(1.0f) && xf.scale == 1.0f)
+          h_.nodes[index].flags |= kTranslationOnly;
         h_.transforms.push_back(xf);
         add(src.children[0], depth + 1, current_master);
         break;
@@ -187,10 +188,12 @@ ExtentVolumes fit_extent_volumes(const LightHierarchy& h, float tolerance) {
       switch (node.kind) {
         case NodeKind::point_light:
         case NodeKind::spot_light:
-          volume = pad_bounds(light_extent_bounds(h.lights[node.payload], tolerance), kVolumePadding);
+          volume =
+              pad_bounds(light_extent_bounds(h.lights[node.payload], tolerance), kVolumePadding);
           break;
         case NodeKind::affine:
-          volume = pad_bounds(transform_bounds(out[i + 1].volume, h.transforms[node.payload]), kVolumePadding);
+          volume = pad_bounds(transform_bounds(out[i + 1].volume, h.transforms[node.payload]),
+                              kVolumePadding);
           break;
         case NodeKind::extent_volume:
         case NodeKind::master:
@@ -218,8 +221,7 @@ std::size_t hierarchy_bytes(const LightHierarchy& h) {
   return h.nodes.size() * (sizeof(HierarchyNode) + sizeof(Bounds)) +
          h.union_children.size() * sizeof(std::uint32_t) +
          h.transforms.size() * sizeof(Similarity) + h.lights.size() * sizeof(Light) +
-         h.aggregates.size() * sizeof(LightAggregate) +
-         h.master_ranges.size() * sizeof(NodeRange) +
+         h.aggregates.size() * sizeof(LightAggregate) + h.master_ranges.size() * sizeof(NodeRange) +
          h.master_light_counts.size() * sizeof(std::uint64_t);
 }
 

@@ -6,13 +6,20 @@ namespace lev {
 
 const char* node_kind_name(NodeKind kind) {
   switch (kind) {
-    case NodeKind::point_light: return "point_light";
-    case NodeKind::spot_light: return "spot_light";
-    case NodeKind::affine: return "affine";
-    case NodeKind::extent_volume: return "extent_volume";
-    case NodeKind::set_union: return "union";
-    case NodeKind::instance: return "instance";
-    case NodeKind::master: return "master";
+    case NodeKind::point_light:
+      return "point_light";
+    case NodeKind::spot_light:
+      return "spot_light";
+    case NodeKind::affine:
+      return "affine";
+    case NodeKind::extent_volume:
+      return "extent_volume";
+    case NodeKind::set_union:
+      return "union";
+    case NodeKind::instance:
+      return "instance";
+    case NodeKind::master:
+      return "master";
   }
   return "unknown";
 }

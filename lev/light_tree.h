@@ -26,9 +26,9 @@ const char* node_kind_name(NodeKind kind);
 
 struct LightTreeNode {
   NodeKind kind = NodeKind::set_union;
-  Light light;                         // point_light, spot_light
-  Similarity transform;                // affine
-  std::uint32_t master = 0;            // instance: index into LightTree::masters
+  Light light;                          // point_light, spot_light
+  Similarity transform;                 // affine
+  std::uint32_t master = 0;             // instance: index into LightTree::masters
   std::vector<LightTreeNode> children;  // affine, extent_volume: exactly one; set_union: any
 };
 

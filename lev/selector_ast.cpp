@@ -26,7 +26,8 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
                                        glm::vec3* culled_irradiance_bound) const {
   const glm::vec3 x = point.position();
   // Unknown until the end (a cancelled call returns early, with a result the caller discards).
-  if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(std::numeric_limits<float>::infinity());
+  if (culled_irradiance_bound)
+    *culled_irradiance_bound = glm::vec3(std::numeric_limits<float>::infinity());
   // Both loops run over every light (a million shadow rays per point at tolerance 0): like
   // sum_visible_lights they read the cancel flag every kCancelCheckLights lights and return early,
   // a result the caller discards.
@@ -55,8 +56,8 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
     untested += potential;
   }
   // Step 2: order them. Instead of a full sort, a heap yields the largest contributions in
-  // order; the test loop usually stops long before the heap is empty. Ties break on the light index so the
-  // order is a pure function of the inputs.
+  // order; the test loop usually stops long before the heap is empty. Ties break on the light index
+  // so the order is a pure function of the inputs.
   auto smaller = [](const AstCandidate& a, const AstCandidate& b) {
     return a.potential < b.potential || (a.potential == b.potential && a.light > b.light);
   };
@@ -97,9 +98,9 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   const float point_ratio = point_tests > 0 ? static_cast<float>(point_hits) / point_tests : 1.0f;
   for (std::size_t k = 0; k < remaining; ++k) {
     const AstCandidate& c = heap[k];
-    const float ratio = tests_[c.light] > 0
-                            ? static_cast<float>(hits_[c.light]) / static_cast<float>(tests_[c.light])
-                            : point_ratio;
+    const float ratio = tests_[c.light] > 0 ? static_cast<float>(hits_[c.light]) /
+                                                  static_cast<float>(tests_[c.light])
+                                            : point_ratio;
     sum += c.radiance * ratio;
     if (scratch.inspect) {
       ShadedLight& shaded = scratch.inspect->shaded.emplace_back();
@@ -113,7 +114,8 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   // The estimated rest is off by at most its unshadowed value: its irradiance bounds the error.
   if (culled_irradiance_bound) {
     glm::dvec3 rest(0.0);
-    for (std::size_t k = 0; k < remaining; ++k) rest += glm::dvec3(irradiance(world_lights_[heap[k].light], x));
+    for (std::size_t k = 0; k < remaining; ++k)
+      rest += glm::dvec3(irradiance(world_lights_[heap[k].light], x));
     *culled_irradiance_bound = round_up_sum(rest);
   }
   return sum;

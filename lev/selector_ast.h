@@ -34,11 +34,14 @@ struct AstScratch final : MethodScratch {
 class AstSelector final : public LightSelector {
  public:
   AstSelector(const LightHierarchy& hierarchy, float tolerance);
-  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                            SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
   void end_pass() override;
   std::size_t bookkeeping_bytes() const override;
-  std::unique_ptr<MethodScratch> make_scratch() const override { return std::make_unique<AstScratch>(); }
+  std::unique_ptr<MethodScratch> make_scratch() const override {
+    return std::make_unique<AstScratch>();
+  }
 
  private:
   const double tolerance_;

@@ -10,8 +10,8 @@ glm::vec3 LevSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
                                        glm::vec3* culled_irradiance_bound) const {
   scratch.lights.clear();
   WalkCounters walk_counters;
-  walk_(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk, scratch.lights, walk_counters,
-        culled_irradiance_bound);
+  walk_(hierarchy_, volumes_, tolerance_, point.position(), scratch.walk, scratch.lights,
+        walk_counters, culled_irradiance_bound);
   counters.nodes_visited += walk_counters.nodes_visited;
   const glm::vec3 radiance = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,

@@ -15,9 +15,10 @@ namespace lev {
 // find_important_lights_tight_bound (find_important_lights' lights, with its culled bound
 // tightened where the point lies near culled lights); variants of LEV (lev_bounded) derive from
 // LevSelector with their own.
-using LightWalk = void (*)(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
-                           const glm::vec3& point, WalkScratch& scratch, std::vector<Light>& lights,
-                           WalkCounters& counters, glm::vec3* culled_irradiance_bound);
+using LightWalk = void (*)(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                           float tolerance, const glm::vec3& point, WalkScratch& scratch,
+                           std::vector<Light>& lights, WalkCounters& counters,
+                           glm::vec3* culled_irradiance_bound);
 
 class LevSelector : public LightSelector {
  public:
@@ -28,7 +29,8 @@ class LevSelector : public LightSelector {
         volumes_(fit_extent_volumes(hierarchy, tolerance)),
         tolerance_(tolerance),
         walk_(walk) {}
-  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                            SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const final;
 
  private:

@@ -4,11 +4,12 @@
 
 namespace lev {
 
-RtSelector::RtSelector(const LightHierarchy& hierarchy) : world_lights_(flatten_lights(hierarchy)) {}
+RtSelector::RtSelector(const LightHierarchy& hierarchy)
+    : world_lights_(flatten_lights(hierarchy)) {}
 
 glm::vec3 RtSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                       SelectionCounters& counters,
-                                       glm::vec3* culled_irradiance_bound) const {
+                                      glm::vec3* culled_irradiance_bound) const {
   const glm::vec3 x = point.position();
   if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(0.0f);  // every light is tested
   return sum_visible_lights(

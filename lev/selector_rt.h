@@ -12,7 +12,8 @@ namespace lev {
 class RtSelector final : public LightSelector {
  public:
   explicit RtSelector(const LightHierarchy& hierarchy);
-  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch, SelectionCounters& counters,
+  glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
+                            SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
 
  private:

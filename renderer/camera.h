@@ -19,7 +19,8 @@ struct Ray {
 
 // The camera's orthonormal frame as the render threads compute it (direction.h): forward, right
 // and up are zero when the target equals the position or up is zero or parallel to the view, in
-// the float mode of the caller. Scene validation calls it in the render mode to refuse such cameras.
+// the float mode of the caller. Scene validation calls it in the render mode to refuse such
+// cameras.
 struct CameraBasis {
   glm::vec3 forward{0.0f}, right{0.0f}, up{0.0f};
 };

@@ -18,7 +18,8 @@ namespace renderer {
 // v is zero (or denormal, which the render mode reads as zero) or not finite.
 inline glm::vec3 robust_normalize(const glm::vec3& v) {
   const float length_squared = glm::dot(v, v);
-  if (length_squared >= std::numeric_limits<float>::min() && length_squared <= std::numeric_limits<float>::max()) {
+  if (length_squared >= std::numeric_limits<float>::min() &&
+      length_squared <= std::numeric_limits<float>::max()) {
     return glm::normalize(v);
   }
   const glm::vec3 a = glm::abs(v);
@@ -29,8 +30,9 @@ inline glm::vec3 robust_normalize(const glm::vec3& v) {
 
 // What Embree needs of a ray: a finite origin and a finite, non-zero direction.
 inline bool castable(const glm::vec3& origin, const glm::vec3& direction) {
-  const bool finite = std::isfinite(origin.x) && std::isfinite(origin.y) && std::isfinite(origin.z) &&
-                      std::isfinite(direction.x) && std::isfinite(direction.y) && std::isfinite(direction.z);
+  const bool finite = std::isfinite(origin.x) && std::isfinite(origin.y) &&
+                      std::isfinite(origin.z) && std::isfinite(direction.x) &&
+                      std::isfinite(direction.y) && std::isfinite(direction.z);
   return finite && direction != glm::vec3(0.0f);
 }
 

@@ -33,8 +33,8 @@ glm::vec3 largest_response(const Material& material);
 glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound);
 
 // A pixel's bound on the error scale (docs/design.md, "Metrics"): sum over channels of
-// min(bound_c, 1) * 255, as a percentage of 765. mean_bound is the pixel's bound per sample (Framebuffer::error_bound_sum
-// over its samples).
+// min(bound_c, 1) * 255, as a percentage of 765. mean_bound is the pixel's bound per sample
+// (Framebuffer::error_bound_sum over its samples).
 double error_bound_pct(const glm::vec3& mean_bound);
 // Pixel i's bound in percent; 0 for a pixel without samples.
 double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i);

@@ -7,9 +7,9 @@ namespace renderer {
 
 glm::u8vec3 viridis(float t) {
   // Nine samples of matplotlib's viridis at t = 0, 1/8, ..., 1; linear in between.
-  static const glm::vec3 kStops[9] = {
-      {68, 1, 84},    {71, 44, 122},  {59, 81, 139},  {44, 113, 142}, {33, 144, 141},
-      {39, 173, 129}, {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
+  static const glm::vec3 kStops[9] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},
+                                      {44, 113, 142}, {33, 144, 141}, {39, 173, 129},
+                                      {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
   const float x = std::clamp(std::isnan(t) ? 0.0f : t, 0.0f, 1.0f) * 8.0f;
   const int i = std::min(static_cast<int>(x), 7);
   const glm::vec3 c = glm::mix(kStops[i], kStops[i + 1], x - static_cast<float>(i));

@@ -10,8 +10,8 @@
 
 namespace renderer {
 
-glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude,
-                            float offset_floor) {
+glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal,
+                            float extra_magnitude, float offset_floor) {
   const glm::vec3 a = glm::abs(position);
   const float magnitude = std::max(std::max(a.x, a.y), a.z) + extra_magnitude;
   return position + normal * (offset_floor + 4e-6f * magnitude);
@@ -53,10 +53,12 @@ RayScene::RayScene(const Geometry& geometry)
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
     for (const TriangleMesh& mesh : prototype.meshes) {
       RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-          g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-      auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                            RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                            mesh.positions.size()));
+      auto* t = static_cast<unsigned*>(
+          rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                  3 * sizeof(unsigned), mesh.triangles.size()));
       if (!v || !t) {
         rtcReleaseGeometry(g);
         throw_if_error("embree mesh buffers");
@@ -74,8 +76,9 @@ RayScene::RayScene(const Geometry& geometry)
     }
     if (!prototype.spheres.empty()) {
       RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-          g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), prototype.spheres.size()));
+      auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                            RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                                            prototype.spheres.size()));
       if (!v) {
         rtcReleaseGeometry(g);
         throw_if_error("embree sphere buffer");
@@ -164,7 +167,8 @@ float RayScene::closest_distance(const Ray& ray) const {
   rtcInitIntersectContext(&context);
   RTCRayHit rh = make_ray_hit(ray);
   rtcIntersect1(top_, &context, &rh);
-  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity() : rh.ray.tfar;
+  return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
+                                                  : rh.ray.tfar;
 }
 
 bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
@@ -182,7 +186,8 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   // Embree reports Ng in the instance's object space; similarities need only the rotation.
   // Ng is the unnormalised cross product of two edges: 1e-20 for a 1e-10 triangle, 1e24 for a
   // 1e12 one, both beyond what glm::normalize survives in the render mode.
-  const glm::vec3 ng = robust_normalize(rotation * glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
+  const glm::vec3 ng =
+      robust_normalize(rotation * glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
   if (ng == glm::vec3(0.0f)) return false;
   glm::vec3 ns = ng;
   if (rh.hit.geomID < prototype.meshes.size()) {
@@ -208,7 +213,8 @@ bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
   return true;
 }
 
-bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const {
+bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction,
+                        float max_distance) const {
   // A shadow ray that cannot be cast lets no light through: it contributes nothing.
   assert(castable(origin, direction) && !std::isnan(max_distance));
   if (!castable(origin, direction) || std::isnan(max_distance)) return true;

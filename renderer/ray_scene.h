@@ -29,8 +29,8 @@ struct SurfaceHit {
 // Origin offset along the normal that keeps a secondary ray off the surface it leaves: a floor
 // (RayScene::offset_floor, which follows the scene's size) plus ~32 float ulps of the largest
 // coordinate, so it holds at large coordinates too.
-glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal, float extra_magnitude,
-                            float offset_floor);
+glm::vec3 offset_ray_origin(const glm::vec3& position, const glm::vec3& normal,
+                            float extra_magnitude, float offset_floor);
 
 // The offset floor of a scene whose geometry spans extent units (its bounding box's largest
 // side): 1e-5 for scenes of a unit or more (every built-in model; their images keep every bit),

@@ -27,8 +27,8 @@ struct Scene {
   Geometry geometry;
   std::vector<Material> materials;
   std::vector<Texture> textures;  // what materials' colour_texture indexes
-  glm::vec3 ambient{1.0f};     // I_a of eq. 3
-  glm::vec3 background{0.0f};  // radiance of rays that leave the scene
+  glm::vec3 ambient{1.0f};        // I_a of eq. 3
+  glm::vec3 background{0.0f};     // radiance of rays that leave the scene
   // Everything above is in render space: world = render space + world_origin. Far-away scenes
   // are moved near the origin to keep float precision (scenes/scene_instantiation.h).
   glm::vec3 world_origin{0.0f};

@@ -34,7 +34,7 @@ struct TraceContext {
   const RayScene& rays;
   const lev::LightSelector& selector;
   lev::SelectorScratch& scratch;
-  int max_depth = 5;  // secondary bounces after the primary hit
+  int max_depth = 5;                          // secondary bounces after the primary hit
   std::vector<LoggedRay>* ray_log = nullptr;  // when set, every ray cast is appended (ray_log.h)
   // When set and raised, the trace stops casting (what it returns is then discarded by the caller).
   const std::atomic<bool>* cancel = nullptr;

@@ -35,12 +35,12 @@ void add_quad(TriangleMesh& mesh, const glm::vec3& corner, const glm::vec3& edge
 void add_box(TriangleMesh& mesh, const glm::vec3& lo, const glm::vec3& hi) {
   const glm::vec3 d = hi - lo;
   const glm::vec3 x(d.x, 0, 0), y(0, d.y, 0), z(0, 0, d.z);
-  add_quad(mesh, lo, y, x);            // bottom (-z)
-  add_quad(mesh, lo + z, x, y);        // top (+z)
-  add_quad(mesh, lo, x, z);            // front (-y)
-  add_quad(mesh, lo + y, z, x);        // back (+y)
-  add_quad(mesh, lo, z, y);            // left (-x)
-  add_quad(mesh, lo + x, y, z);        // right (+x)
+  add_quad(mesh, lo, y, x);      // bottom (-z)
+  add_quad(mesh, lo + z, x, y);  // top (+z)
+  add_quad(mesh, lo, x, z);      // front (-y)
+  add_quad(mesh, lo + y, z, x);  // back (+y)
+  add_quad(mesh, lo, z, y);      // left (-x)
+  add_quad(mesh, lo + x, y, z);  // right (+x)
 }
 
 void add_cylinder(TriangleMesh& mesh, const glm::vec3& a, const glm::vec3& b, float radius,
@@ -63,9 +63,10 @@ void add_cylinder(TriangleMesh& mesh, const glm::vec3& a, const glm::vec3& b, fl
     mesh.triangles.push_back({base, base + 2, base + 3});
     // Caps: flat.
     const auto cap = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const auto& [p, n] : {std::pair{b, axis}, std::pair{b + radius * r0, axis},
-                               std::pair{b + radius * r1, axis}, std::pair{a, -axis},
-                               std::pair{a + radius * r1, -axis}, std::pair{a + radius * r0, -axis}}) {
+    for (const auto& [p, n] :
+         {std::pair{b, axis}, std::pair{b + radius * r0, axis}, std::pair{b + radius * r1, axis},
+          std::pair{a, -axis}, std::pair{a + radius * r1, -axis},
+          std::pair{a + radius * r0, -axis}}) {
       mesh.positions.push_back(p);
       mesh.normals.push_back(n);
     }

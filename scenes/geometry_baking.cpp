@@ -49,8 +49,10 @@ class PrototypeBuilder {
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     const bool identity = lev::is_identity(xf);
     for (std::size_t i = 0; i < local.positions.size(); ++i) {
-      mesh.positions.push_back(identity ? local.positions[i] : lev::apply_point(xf, local.positions[i]));
-      mesh.normals.push_back(identity ? local.normals[i] : lev::apply_direction(xf, local.normals[i]));
+      mesh.positions.push_back(identity ? local.positions[i]
+                                        : lev::apply_point(xf, local.positions[i]));
+      mesh.normals.push_back(identity ? local.normals[i]
+                                      : lev::apply_direction(xf, local.normals[i]));
     }
     for (const glm::uvec3& t : local.triangles) mesh.triangles.push_back(t + glm::uvec3(base));
     if (!mesh.uvs.empty()) mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
@@ -104,9 +106,13 @@ class PrototypeBuilder {
 class GeometryBuilder {
  public:
   // root: the scene's root, or its stand-in in render space.
-  GeometryBuilder(const SceneDescription& scene, const SceneNode& root, const SceneAnalysis& analysis)
-      : scene_(scene), analysis_(analysis), baked_(scene.masters.size(), kNone),
-        flattened_(scene.masters.size()), flattened_done_(scene.masters.size(), false) {
+  GeometryBuilder(const SceneDescription& scene, const SceneNode& root,
+                  const SceneAnalysis& analysis)
+      : scene_(scene),
+        analysis_(analysis),
+        baked_(scene.masters.size(), kNone),
+        flattened_(scene.masters.size()),
+        flattened_done_(scene.masters.size(), false) {
     place(flatten(root), lev::Similarity{});
   }
 

@@ -17,10 +17,14 @@ SceneNode half_wall(std::uint32_t material, int i, int j, Side side) {
   const float x0 = kMazeCell * static_cast<float>(i), y0 = kMazeCell * static_cast<float>(j);
   const float x1 = x0 + kMazeCell, y1 = y0 + kMazeCell, t = kMazeHalfWall, h = kMazeWallHeight;
   switch (side) {
-    case Side::minus_x: return box_node(material, {x0, y0, 0.0f}, {x0 + t, y1, h});
-    case Side::plus_x: return box_node(material, {x1 - t, y0, 0.0f}, {x1, y1, h});
-    case Side::minus_y: return box_node(material, {x0, y0, 0.0f}, {x1, y0 + t, h});
-    case Side::plus_y: break;
+    case Side::minus_x:
+      return box_node(material, {x0, y0, 0.0f}, {x0 + t, y1, h});
+    case Side::plus_x:
+      return box_node(material, {x1 - t, y0, 0.0f}, {x1, y1, h});
+    case Side::minus_y:
+      return box_node(material, {x0, y0, 0.0f}, {x1, y0 + t, h});
+    case Side::plus_y:
+      break;
   }
   return box_node(material, {x0, y1 - t, 0.0f}, {x1, y1, h});
 }
@@ -33,7 +37,8 @@ SceneNode placed(const glm::vec3& at, float degrees_about_z, SceneNode child) {
 }
 
 glm::vec3 cell_centre(int i, int j) {
-  return {kMazeCell * (static_cast<float>(i) + 0.5f), kMazeCell * (static_cast<float>(j) + 0.5f), 0.0f};
+  return {kMazeCell * (static_cast<float>(i) + 0.5f), kMazeCell * (static_cast<float>(j) + 0.5f),
+          0.0f};
 }
 
 // The corridor segment from the centre of cell (i, j) to its neighbour in +x (or +y).
@@ -43,7 +48,9 @@ SceneNode segment_at(std::uint32_t segment, int i, int j, bool along_y) {
 
 }  // namespace
 
-std::uint64_t maze_light_count(int level) { return 3ull * ((1ull << (2 * (level + 1))) - 1ull); }
+std::uint64_t maze_light_count(int level) {
+  return 3ull * ((1ull << (2 * (level + 1))) - 1ull);
+}
 
 SceneDescription describe_maze(int level) {
   if (level < kMazeMinLevel || level > kMazeMaxLevel) {
@@ -56,28 +63,39 @@ SceneDescription describe_maze(int level) {
   scene.ambient = glm::vec3(1.0f);
   scene.background = glm::vec3(0.01f, 0.01f, 0.03f);
 
-  const std::uint32_t ground = add_material(scene, "ground", {{0.85f, 0.85f, 0.9f}, 0.12f, 0.9f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t hedge = add_material(scene, "hedge", {{0.6f, 0.85f, 0.5f}, 0.15f, 0.9f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t red = add_material(scene, "red", {{0.9f, 0.2f, 0.15f}, 0.1f, 0.8f, 0.4f, 40.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t blue = add_material(scene, "blue", {{0.2f, 0.35f, 0.95f}, 0.1f, 0.8f, 0.4f, 40.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t yellow = add_material(scene, "yellow", {{0.95f, 0.8f, 0.2f}, 0.1f, 0.8f, 0.4f, 40.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t chrome = add_material(scene, "chrome", {{0.9f, 0.9f, 0.9f}, 0.05f, 0.15f, 0.8f, 80.0f, 0.6f, 0.0f, 1.0f});
-  const std::uint32_t metal = add_material(scene, "metal", {{0.6f, 0.6f, 0.65f}, 0.1f, 0.5f, 0.5f, 30.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t tyre = add_material(scene, "tyre", {{0.12f, 0.12f, 0.12f}, 0.1f, 0.5f, 0.1f, 10.0f, 0.0f, 0.0f, 1.0f});
-  const std::uint32_t lamp = add_material(scene, "lamp", {{1.0f, 0.85f, 0.5f}, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t ground = add_material(
+      scene, "ground", {{0.85f, 0.85f, 0.9f}, 0.12f, 0.9f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t hedge = add_material(
+      scene, "hedge", {{0.6f, 0.85f, 0.5f}, 0.15f, 0.9f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t red =
+      add_material(scene, "red", {{0.9f, 0.2f, 0.15f}, 0.1f, 0.8f, 0.4f, 40.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t blue = add_material(
+      scene, "blue", {{0.2f, 0.35f, 0.95f}, 0.1f, 0.8f, 0.4f, 40.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t yellow = add_material(
+      scene, "yellow", {{0.95f, 0.8f, 0.2f}, 0.1f, 0.8f, 0.4f, 40.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t chrome = add_material(
+      scene, "chrome", {{0.9f, 0.9f, 0.9f}, 0.05f, 0.15f, 0.8f, 80.0f, 0.6f, 0.0f, 1.0f});
+  const std::uint32_t metal = add_material(
+      scene, "metal", {{0.6f, 0.6f, 0.65f}, 0.1f, 0.5f, 0.5f, 30.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t tyre = add_material(
+      scene, "tyre", {{0.12f, 0.12f, 0.12f}, 0.1f, 0.5f, 0.1f, 10.0f, 0.0f, 0.0f, 1.0f});
+  const std::uint32_t lamp =
+      add_material(scene, "lamp", {{1.0f, 0.85f, 0.5f}, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
 
-  const std::uint32_t robots[3] = {add_master(scene, "robot_red", robot_node({red, chrome, metal, tyre})),
-                                   add_master(scene, "robot_blue", robot_node({blue, chrome, metal, tyre})),
-                                   add_master(scene, "robot_yellow", robot_node({yellow, chrome, metal, tyre}))};
+  const std::uint32_t robots[3] = {
+      add_master(scene, "robot_red", robot_node({red, chrome, metal, tyre})),
+      add_master(scene, "robot_blue", robot_node({blue, chrome, metal, tyre})),
+      add_master(scene, "robot_yellow", robot_node({yellow, chrome, metal, tyre}))};
 
   // A streetlight in a corridor running along x: pole at the side, arm over the corridor, the
   // light under a shade just off the centre line.
   const float h = kStreetlightHeight;
   const std::uint32_t pole = add_master(
       scene, "lamp_post",
-      union_node({cylinder_node(metal, {0.0f, -2.2f, 0.0f}, {0.0f, -2.2f, h + 0.3f}, 0.07f, 12),
-                  cylinder_node(metal, {0.0f, -2.2f, h + 0.3f}, {0.0f, -0.5f, h + 0.3f}, 0.05f, 12),
-                  cylinder_node(lamp, {0.0f, -0.3f, h + 0.06f}, {0.0f, -0.3f, h + 0.3f}, 0.22f, 16)}));
+      union_node(
+          {cylinder_node(metal, {0.0f, -2.2f, 0.0f}, {0.0f, -2.2f, h + 0.3f}, 0.07f, 12),
+           cylinder_node(metal, {0.0f, -2.2f, h + 0.3f}, {0.0f, -0.5f, h + 0.3f}, 0.05f, 12),
+           cylinder_node(lamp, {0.0f, -0.3f, h + 0.06f}, {0.0f, -0.3f, h + 0.3f}, 0.22f, 16)}));
 
   // One segment of the corridor, from a cell centre to the next: three robots, each under its
   // own streetlight, a third of a cell apart (so the spacing is the same around corners).
@@ -89,8 +107,11 @@ SceneDescription describe_maze(int level) {
     robot_frame.scale = 0.8f;
     posts.push_back(translate_node(
         {kMazeCell * (static_cast<float>(2 * k + 1) / 6.0f), 0.0f, 0.0f},
-        union_node({affine_node(robot_frame, instance_node(robots[k])), instance_node(pole),
-                    translate_node({0.0f, -0.3f, h}, spot_light_node(kStreetlightIntensity * glm::vec3(1.0f, 0.9f, 0.7f), kStreetlightConeDegrees, kStreetlightDropoff))})));
+        union_node(
+            {affine_node(robot_frame, instance_node(robots[k])), instance_node(pole),
+             translate_node({0.0f, -0.3f, h},
+                            spot_light_node(kStreetlightIntensity * glm::vec3(1.0f, 0.9f, 0.7f),
+                                            kStreetlightConeDegrees, kStreetlightDropoff))})));
   }
   const std::uint32_t segment = add_master(scene, "segment", union_node(std::move(posts)));
 
@@ -133,10 +154,11 @@ SceneDescription describe_maze(int level) {
   const int cells = 1 << (level + 1);
   const float width = kMazeCell * static_cast<float>(cells);
   const float margin = 0.0f;
-  scene.root = union_node({quad_node(ground, {-margin, -margin, 0.0f}, {width + 2.0f * margin, 0.0f, 0.0f},
-                                     {0.0f, width + 2.0f * margin, 0.0f}),
-                           instance_node(curve), half_wall(hedge, 0, 0, Side::minus_x),
-                           half_wall(hedge, cells - 1, 0, Side::plus_x)});
+  scene.root =
+      union_node({quad_node(ground, {-margin, -margin, 0.0f}, {width + 2.0f * margin, 0.0f, 0.0f},
+                            {0.0f, width + 2.0f * margin, 0.0f}),
+                  instance_node(curve), half_wall(hedge, 0, 0, Side::minus_x),
+                  half_wall(hedge, cells - 1, 0, Side::plus_x)});
 
   // Straight down on the whole maze (thesis fig. 5.2).
   scene.camera.target = {0.5f * width, 0.5f * width, 0.0f};
@@ -146,6 +168,8 @@ SceneDescription describe_maze(int level) {
   return scene;
 }
 
-renderer::Scene build_maze(int level) { return instantiate_scene(describe_maze(level)); }
+renderer::Scene build_maze(int level) {
+  return instantiate_scene(describe_maze(level));
+}
 
 }  // namespace scenes

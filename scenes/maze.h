@@ -15,8 +15,8 @@ namespace scenes {
 
 inline constexpr int kMazeMinLevel = 1;
 inline constexpr int kMazeMaxLevel = 8;
-inline constexpr float kMazeCell = 6.0f;        // corridor cell, wall to wall
-inline constexpr float kMazeHalfWall = 0.15f;   // each cell owns half of a wall it has
+inline constexpr float kMazeCell = 6.0f;       // corridor cell, wall to wall
+inline constexpr float kMazeHalfWall = 0.15f;  // each cell owns half of a wall it has
 inline constexpr float kMazeWallHeight = 2.0f;
 inline constexpr float kStreetlightHeight = 3.2f;
 // Streetlights are Warn spots pointing down, as the thesis' maze lights were (Test 2.4, Table 11

@@ -10,7 +10,8 @@ glm::vec3 render_space_origin(const renderer::Camera& camera) {
   const glm::vec3 reach3 = glm::abs(camera.position);
   const float reach = std::max(std::max(reach3.x, reach3.y), reach3.z);
   const float view = glm::length(camera.target - camera.position);
-  if (reach < kRenderSpaceRebaseDistance || reach <= kRenderSpaceRebaseRatio * view) return glm::vec3(0.0f);
+  if (reach < kRenderSpaceRebaseDistance || reach <= kRenderSpaceRebaseRatio * view)
+    return glm::vec3(0.0f);
   return glm::round(camera.position);
 }
 

@@ -42,14 +42,19 @@ std::string pointer_segment(const std::string& key) {
 // shortened in the middle.
 std::string one_line(const std::string& raw, std::size_t max_length) {
   std::string s = escape_control_characters(raw);
-  if (s.size() > max_length) s = s.substr(0, max_length / 2) + "..." + s.substr(s.size() - max_length / 2);
+  if (s.size() > max_length)
+    s = s.substr(0, max_length / 2) + "..." + s.substr(s.size() - max_length / 2);
   return s;
 }
 
-std::string value_text(const json& v) { return one_line(v.dump(), 60); }
+std::string value_text(const json& v) {
+  return one_line(v.dump(), 60);
+}
 
-[[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& problem) {
-  throw std::invalid_argument(source + ": " + one_line(path.empty() ? "/" : path, 160) + ": " + problem);
+[[noreturn]] void fail(const std::string& source, const std::string& path,
+                       const std::string& problem) {
+  throw std::invalid_argument(source + ": " + one_line(path.empty() ? "/" : path, 160) + ": " +
+                              problem);
 }
 
 // Builds the JSON document through nlohmann's (iterative) SAX parser, refusing nesting deeper
@@ -83,7 +88,8 @@ class DomBuilder {
     if (stack_.back()->contains(k)) fail(source_, path(), "duplicate key");
     return true;
   }
-  bool parse_error(std::size_t position, const std::string& /*last_token*/, const nlohmann::detail::exception& e) {
+  bool parse_error(std::size_t position, const std::string& /*last_token*/,
+                   const nlohmann::detail::exception& e) {
     std::size_t line = 1, column = 1;
     for (std::size_t i = 0; i + 1 < position && i < text_.size(); ++i) {
       if (text_[i] == '\n') {
@@ -96,8 +102,9 @@ class DomBuilder {
     std::string detail = e.what();
     const std::size_t bracket = detail.find("] ");
     if (bracket != std::string::npos) detail = detail.substr(bracket + 2);
-    fail(source_, path(), "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
-                              " (" + one_line(detail, 120) + ")");
+    fail(source_, path(),
+         "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
+             " (" + one_line(detail, 120) + ")");
   }
 
  private:
@@ -134,7 +141,8 @@ class DomBuilder {
   // Counted before the value exists, so a file of many small values stops near the budget.
   void count_value() {
     if (++values_ > kMaxJsonValues) {
-      fail(source_, path(), "more than " + std::to_string(kMaxJsonValues) + " JSON values in the file");
+      fail(source_, path(),
+           "more than " + std::to_string(kMaxJsonValues) + " JSON values in the file");
     }
   }
 
@@ -171,10 +179,12 @@ class DomBuilder {
 
 // validate_description reports "/json/path: problem (value)" with the value it checked, a float;
 // where the file's text for that path was rounded to get it, the text replaces the float.
-std::string with_typed_value(const std::string& message, const std::map<std::string, std::string>& typed_numbers) {
+std::string with_typed_value(const std::string& message,
+                             const std::map<std::string, std::string>& typed_numbers) {
   const std::size_t path_end = message.find(": ");
   const std::size_t value_start = message.rfind(" (");
-  if (path_end == std::string::npos || value_start == std::string::npos || message.back() != ')') return message;
+  if (path_end == std::string::npos || value_start == std::string::npos || message.back() != ')')
+    return message;
   const auto typed = typed_numbers.find(message.substr(0, path_end));
   if (typed == typed_numbers.end()) return message;
   return message.substr(0, value_start) + " (" + typed->second + ")";
@@ -189,10 +199,13 @@ class Reader {
   SceneDescription read(const json& doc) {
     SceneDescription scene;
     expect_object(doc, "");
-    check_keys(doc, "", {"levrt_scene", "name", "level", "camera", "ambient", "background", "materials", "masters", "root"});
+    check_keys(doc, "",
+               {"levrt_scene", "name", "level", "camera", "ambient", "background", "materials",
+                "masters", "root"});
     const json& version = require(doc, "", "levrt_scene");
     if (!version.is_number_integer() || version.get<std::int64_t>() != kSceneFileVersion) {
-      fail(source_, "/levrt_scene", "must be " + std::to_string(kSceneFileVersion) + " (" + value_text(version) + ")");
+      fail(source_, "/levrt_scene",
+           "must be " + std::to_string(kSceneFileVersion) + " (" + value_text(version) + ")");
     }
     if (doc.contains("name")) scene.name = read_string(doc["name"], "/name");
     if (doc.contains("level")) scene.level = read_int(doc["level"], "/level");
@@ -212,7 +225,8 @@ class Reader {
     if (doc.contains("masters")) {
       const json& list = doc["masters"];
       expect_array(list, "/masters");
-      if (list.size() > kMaxMasters) fail(source_, "/masters", "more than " + std::to_string(kMaxMasters) + " masters");
+      if (list.size() > kMaxMasters)
+        fail(source_, "/masters", "more than " + std::to_string(kMaxMasters) + " masters");
       // Names first, so that masters may instance masters defined later in the file.
       for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = "/masters/" + std::to_string(i);
@@ -220,7 +234,8 @@ class Reader {
         check_keys(list[i], path, {"name", "node"});
         const std::string name = read_string(require(list[i], path, "name"), path + "/name");
         if (!master_index_.emplace(name, static_cast<std::uint32_t>(i)).second) {
-          fail(source_, path + "/name", "a master of this name is already defined ('" + one_line(name, 60) + "')");
+          fail(source_, path + "/name",
+               "a master of this name is already defined ('" + one_line(name, 60) + "')");
         }
         scene.masters.push_back({name, SceneNode{}});
       }
@@ -241,14 +256,16 @@ class Reader {
     if (!v.is_array()) fail(source_, path, "must be an array (" + value_text(v) + ")");
   }
 
-  void check_keys(const json& object, const std::string& path, std::initializer_list<const char*> allowed) const {
+  void check_keys(const json& object, const std::string& path,
+                  std::initializer_list<const char*> allowed) const {
     for (const auto& item : object.items()) {
       bool known = false;
       for (const char* k : allowed) known = known || item.key() == k;
       if (!known) {
         std::string list;
         for (const char* k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
-        fail(source_, path + "/" + pointer_segment(item.key()), "unknown key (expected one of: " + list + ")");
+        fail(source_, path + "/" + pointer_segment(item.key()),
+             "unknown key (expected one of: " + list + ")");
       }
     }
   }
@@ -270,9 +287,10 @@ class Reader {
 
   int read_int(const json& v, const std::string& path) const {
     if (!v.is_number_integer()) fail(source_, path, "must be an integer (" + value_text(v) + ")");
-    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<int>::max())
-                               : (v.get<std::int64_t>() > std::numeric_limits<int>::max() ||
-                                  v.get<std::int64_t>() < std::numeric_limits<int>::min())) {
+    if (v.is_number_unsigned()
+            ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+            : (v.get<std::int64_t>() > std::numeric_limits<int>::max() ||
+               v.get<std::int64_t>() < std::numeric_limits<int>::min())) {
       fail(source_, path, "integer out of range (" + value_text(v) + ")");
     }
     return static_cast<int>(v.get<std::int64_t>());
@@ -284,8 +302,10 @@ class Reader {
   }
 
   glm::vec3 read_vec3(const json& v, const std::string& path) const {
-    if (!v.is_array() || v.size() != 3) fail(source_, path, "must be an array of 3 numbers (" + value_text(v) + ")");
-    return {read_float(v[0], path + "/0"), read_float(v[1], path + "/1"), read_float(v[2], path + "/2")};
+    if (!v.is_array() || v.size() != 3)
+      fail(source_, path, "must be an array of 3 numbers (" + value_text(v) + ")");
+    return {read_float(v[0], path + "/0"), read_float(v[1], path + "/1"),
+            read_float(v[2], path + "/2")};
   }
 
   void read_camera(const json& v, renderer::Camera& camera) const {
@@ -294,7 +314,8 @@ class Reader {
     camera.position = read_vec3(require(v, "/camera", "position"), "/camera/position");
     camera.target = read_vec3(require(v, "/camera", "target"), "/camera/target");
     if (v.contains("up")) camera.up = read_vec3(v["up"], "/camera/up");
-    if (v.contains("fov_degrees")) camera.vertical_fov_deg = read_float(v["fov_degrees"], "/camera/fov_degrees");
+    if (v.contains("fov_degrees"))
+      camera.vertical_fov_deg = read_float(v["fov_degrees"], "/camera/fov_degrees");
   }
 
   void read_material(const json& v, const std::string& path, SceneDescription& scene) {
@@ -302,14 +323,16 @@ class Reader {
     check_keys(v, path, {"name", "colour", "ka", "kd", "ks", "shininess", "kr", "kt", "ior"});
     NamedMaterial m;
     m.name = read_string(require(v, path, "name"), path + "/name");
-    if (!material_index_.emplace(m.name, static_cast<std::uint32_t>(scene.materials.size())).second) {
-      fail(source_, path + "/name", "a material of this name is already defined ('" + one_line(m.name, 60) + "')");
+    if (!material_index_.emplace(m.name, static_cast<std::uint32_t>(scene.materials.size()))
+             .second) {
+      fail(source_, path + "/name",
+           "a material of this name is already defined ('" + one_line(m.name, 60) + "')");
     }
     if (v.contains("colour")) m.material.colour = read_vec3(v["colour"], path + "/colour");
     const std::pair<const char*, float renderer::Material::*> scalars[] = {
-        {"ka", &renderer::Material::ka}, {"kd", &renderer::Material::kd},
-        {"ks", &renderer::Material::ks}, {"shininess", &renderer::Material::shininess},
-        {"kr", &renderer::Material::kr}, {"kt", &renderer::Material::kt},
+        {"ka", &renderer::Material::ka},  {"kd", &renderer::Material::kd},
+        {"ks", &renderer::Material::ks},  {"shininess", &renderer::Material::shininess},
+        {"kr", &renderer::Material::kr},  {"kt", &renderer::Material::kt},
         {"ior", &renderer::Material::ior}};
     for (const auto& [key, field] : scalars) {
       if (v.contains(key)) m.material.*field = read_float(v[key], path + "/" + key);
@@ -320,14 +343,16 @@ class Reader {
   std::uint32_t read_material_ref(const json& node, const std::string& path) const {
     const std::string name = read_string(require(node, path, "material"), path + "/material");
     const auto it = material_index_.find(name);
-    if (it == material_index_.end()) fail(source_, path + "/material", "no material named '" + one_line(name, 60) + "'");
+    if (it == material_index_.end())
+      fail(source_, path + "/material", "no material named '" + one_line(name, 60) + "'");
     return it->second;
   }
 
   // Recursion depth is bounded by kMaxJsonDepth (the document is already parsed).
   SceneNode read_node(const json& v, const std::string& path) {
     expect_object(v, path);
-    if (++node_count_ > kMaxSceneNodes) fail(source_, path, "more than " + std::to_string(kMaxSceneNodes) + " nodes");
+    if (++node_count_ > kMaxSceneNodes)
+      fail(source_, path, "more than " + std::to_string(kMaxSceneNodes) + " nodes");
     const std::string type = read_string(require(v, path, "type"), path + "/type");
     SceneNode node;
     if (type == "affine") {
@@ -357,16 +382,19 @@ class Reader {
       check_keys(v, path, {"type", "master"});
       const std::string name = read_string(require(v, path, "master"), path + "/master");
       const auto it = master_index_.find(name);
-      if (it == master_index_.end()) fail(source_, path + "/master", "no master named '" + one_line(name, 60) + "'");
+      if (it == master_index_.end())
+        fail(source_, path + "/master", "no master named '" + one_line(name, 60) + "'");
       node.data = Instance{it->second};
     } else if (type == "sphere") {
       check_keys(v, path, {"type", "material", "centre", "radius"});
-      node.data = SphereShape{read_material_ref(v, path), read_vec3(require(v, path, "centre"), path + "/centre"),
+      node.data = SphereShape{read_material_ref(v, path),
+                              read_vec3(require(v, path, "centre"), path + "/centre"),
                               read_float(require(v, path, "radius"), path + "/radius")};
     } else if (type == "box") {
       check_keys(v, path, {"type", "material", "lo", "hi"});
-      node.data = BoxShape{read_material_ref(v, path), read_vec3(require(v, path, "lo"), path + "/lo"),
-                           read_vec3(require(v, path, "hi"), path + "/hi")};
+      node.data =
+          BoxShape{read_material_ref(v, path), read_vec3(require(v, path, "lo"), path + "/lo"),
+                   read_vec3(require(v, path, "hi"), path + "/hi")};
     } else if (type == "cylinder") {
       check_keys(v, path, {"type", "material", "a", "b", "radius", "segments"});
       CylinderShape c;
@@ -378,7 +406,8 @@ class Reader {
       node.data = c;
     } else if (type == "quad") {
       check_keys(v, path, {"type", "material", "corner", "edge_u", "edge_v"});
-      node.data = QuadShape{read_material_ref(v, path), read_vec3(require(v, path, "corner"), path + "/corner"),
+      node.data = QuadShape{read_material_ref(v, path),
+                            read_vec3(require(v, path, "corner"), path + "/corner"),
                             read_vec3(require(v, path, "edge_u"), path + "/edge_u"),
                             read_vec3(require(v, path, "edge_v"), path + "/edge_v")};
     } else if (type == "point_light") {
@@ -405,8 +434,10 @@ class Reader {
       node.data = s;
     } else {
       fail(source_, path + "/type",
-           "unknown node type (expected one of: affine, union, instance, sphere, box, cylinder, quad, "
-           "point_light, spot_light) (" + value_text(v["type"]) + ")");
+           "unknown node type (expected one of: affine, union, instance, sphere, box, cylinder, "
+           "quad, "
+           "point_light, spot_light) (" +
+               value_text(v["type"]) + ")");
     }
     return node;
   }
@@ -427,11 +458,14 @@ double exact_number(float f) {
   const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), f);
   double d = 0.0;
   const std::from_chars_result back = std::from_chars(buffer, r.ptr, d);
-  if (r.ec != std::errc() || back.ec != std::errc() || static_cast<float>(d) != f) return static_cast<double>(f);
+  if (r.ec != std::errc() || back.ec != std::errc() || static_cast<float>(d) != f)
+    return static_cast<double>(f);
   return d;
 }
 
-ordered vec3_json(const glm::vec3& v) { return ordered::array({exact_number(v.x), exact_number(v.y), exact_number(v.z)}); }
+ordered vec3_json(const glm::vec3& v) {
+  return ordered::array({exact_number(v.x), exact_number(v.y), exact_number(v.z)});
+}
 
 class Writer {
  public:
@@ -463,7 +497,8 @@ class Writer {
                                   {"ior", exact_number(m.ior)}});
     }
     doc["masters"] = ordered::array();
-    for (const Master& m : scene_.masters) doc["masters"].push_back({{"name", m.name}, {"node", node(m.node)}});
+    for (const Master& m : scene_.masters)
+      doc["masters"].push_back({{"name", m.name}, {"node", node(m.node)}});
     doc["root"] = node(scene_.root);
     return doc;
   }
@@ -477,7 +512,8 @@ class Writer {
     if (const auto* a = std::get_if<Affine>(&n.data)) {
       if (a->translate != glm::vec3(0.0f)) j["translate"] = vec3_json(a->translate);
       if (a->rotate_degrees != 0.0f) {
-        j["rotate"] = {{"axis", vec3_json(a->rotate_axis)}, {"degrees", exact_number(a->rotate_degrees)}};
+        j["rotate"] = {{"axis", vec3_json(a->rotate_axis)},
+                       {"degrees", exact_number(a->rotate_degrees)}};
       }
       if (a->scale != 1.0f) j["scale"] = exact_number(a->scale);
       j["child"] = node(n.children[0]);
@@ -596,7 +632,8 @@ bool is_scene_file_name(std::string_view name) {
 SceneDescription parse_scene_json(const std::string& text, const std::string& source) {
   const std::size_t nul = text.find('\0');
   if (nul != std::string::npos) {
-    throw std::invalid_argument(source + ": NUL byte at offset " + std::to_string(nul) + " (a scene file is text)");
+    throw std::invalid_argument(source + ": NUL byte at offset " + std::to_string(nul) +
+                                " (a scene file is text)");
   }
   json doc;
   DomBuilder builder(source, text, doc);
@@ -605,7 +642,9 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(source + ": " + escape_control_characters(with_typed_value(e.what(), builder.typed_numbers())));
+    throw std::invalid_argument(
+        source + ": " +
+        escape_control_characters(with_typed_value(e.what(), builder.typed_numbers())));
   }
   return scene;
 }
@@ -614,8 +653,7 @@ SceneDescription load_scene_file(const std::string& path, const SceneFileOptions
   namespace fs = std::filesystem;
   std::string text;
   read_regular_file(path, kMaxSceneFileBytes, "scene file", text);
-  if (is_gltf_file_name(path))
-    return parse_gltf_scene(text, path, options.camera);
+  if (is_gltf_file_name(path)) return parse_gltf_scene(text, path, options.camera);
   if (options.camera != 0) {
     throw std::invalid_argument(path + ": camera: " + std::to_string(options.camera) +
                                 " (a scene file has one camera, 0)");

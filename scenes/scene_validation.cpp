@@ -17,7 +17,9 @@ namespace scenes {
 namespace {
 
 std::uint64_t add_saturating(std::uint64_t a, std::uint64_t b) {
-  return a > std::numeric_limits<std::uint64_t>::max() - b ? std::numeric_limits<std::uint64_t>::max() : a + b;
+  return a > std::numeric_limits<std::uint64_t>::max() - b
+             ? std::numeric_limits<std::uint64_t>::max()
+             : a + b;
 }
 
 std::string number_text(double v) {
@@ -36,7 +38,8 @@ std::string vec_text(const glm::vec3& v) {
 
 void check_finite(const std::string& path, float v, float max_abs) {
   if (!std::isfinite(v)) fail(path, "must be finite (" + number_text(v) + ")");
-  if (std::abs(v) > max_abs) fail(path, "magnitude above " + number_text(max_abs) + " (" + number_text(v) + ")");
+  if (std::abs(v) > max_abs)
+    fail(path, "magnitude above " + number_text(max_abs) + " (" + number_text(v) + ")");
 }
 
 void check_point(const std::string& path, const glm::vec3& v) {
@@ -76,7 +79,8 @@ int triangles_of(const NodeData& data) {
 }
 
 bool is_light(const NodeData& data) {
-  return std::holds_alternative<PointLightSource>(data) || std::holds_alternative<SpotLightSource>(data);
+  return std::holds_alternative<PointLightSource>(data) ||
+         std::holds_alternative<SpotLightSource>(data);
 }
 
 struct Edge {
@@ -90,7 +94,8 @@ class Analysis {
  public:
   explicit Analysis(const SceneDescription& scene) : scene_(scene) {
     if (scene.masters.size() > kMaxMasters) {
-      fail("/masters", "more than " + std::to_string(kMaxMasters) + " masters (" + std::to_string(scene.masters.size()) + ")");
+      fail("/masters", "more than " + std::to_string(kMaxMasters) + " masters (" +
+                           std::to_string(scene.masters.size()) + ")");
     }
     if (scene.materials.size() > kMaxMaterials) {
       fail("/materials", "more than " + std::to_string(kMaxMaterials) + " materials (" +
@@ -104,7 +109,8 @@ class Analysis {
       if (scene.masters[m].name.empty()) fail(path + "/name", "must not be empty");
       for (std::size_t k = 0; k < m; ++k) {
         if (scene.masters[k].name == scene.masters[m].name) {
-          fail(path + "/name", "a master of this name is already defined ('" + scene.masters[m].name + "')");
+          fail(path + "/name",
+               "a master of this name is already defined ('" + scene.masters[m].name + "')");
         }
       }
       check_node(scene.masters[m].node, path + "/node", 0, edges_[m]);
@@ -145,11 +151,13 @@ class Analysis {
       forward = renderer::robust_normalize(c.target - c.position);
       unit_up = renderer::robust_normalize(c.up);
     }
-    if (forward == glm::vec3(0.0f)) fail("/camera/target", "must differ from the position " + vec_text(c.target));
+    if (forward == glm::vec3(0.0f))
+      fail("/camera/target", "must differ from the position " + vec_text(c.target));
     if (basis.right == glm::vec3(0.0f) || !(glm::length(glm::cross(forward, unit_up)) > 1e-6f)) {
       fail("/camera/up", "must not be zero or parallel to the view direction " + vec_text(c.up));
     }
-    if (!std::isfinite(c.vertical_fov_deg) || !(c.vertical_fov_deg > 0.0f) || !(c.vertical_fov_deg < 180.0f)) {
+    if (!std::isfinite(c.vertical_fov_deg) || !(c.vertical_fov_deg > 0.0f) ||
+        !(c.vertical_fov_deg < 180.0f)) {
       fail("/camera/fov_degrees", "must be in (0, 180) (" + number_text(c.vertical_fov_deg) + ")");
     }
     check_colour("/ambient", scene_.ambient, 1e6f);
@@ -242,26 +250,35 @@ class Analysis {
     }
   }
 
-  void check_node(const SceneNode& node, const std::string& path, int depth, std::vector<Edge>& edges) {
-    if (depth > kMaxNodeDepth) fail(path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth));
-    if (++node_count_ > kMaxSceneNodes) fail(path, "more than " + std::to_string(kMaxSceneNodes) + " nodes");
-    const std::size_t expected_children = std::holds_alternative<Affine>(node.data)  ? 1
-                                          : std::holds_alternative<Union>(node.data) ? node.children.size()
-                                                                                     : 0;
+  void check_node(const SceneNode& node, const std::string& path, int depth,
+                  std::vector<Edge>& edges) {
+    if (depth > kMaxNodeDepth)
+      fail(path, "nodes nested deeper than " + std::to_string(kMaxNodeDepth));
+    if (++node_count_ > kMaxSceneNodes)
+      fail(path, "more than " + std::to_string(kMaxSceneNodes) + " nodes");
+    const std::size_t expected_children = std::holds_alternative<Affine>(node.data) ? 1
+                                          : std::holds_alternative<Union>(node.data)
+                                              ? node.children.size()
+                                              : 0;
     if (node.children.size() != expected_children) {
-      fail(path, std::string(node_type_name(node.data)) + " node needs " + std::to_string(expected_children) +
-                     " children, has " + std::to_string(node.children.size()));
+      fail(path, std::string(node_type_name(node.data)) + " node needs " +
+                     std::to_string(expected_children) + " children, has " +
+                     std::to_string(node.children.size()));
     }
     if (const auto* a = std::get_if<Affine>(&node.data)) {
       check_point(path + "/translate", a->translate);
       check_point(path + "/rotate/axis", a->rotate_axis);
       check_finite(path + "/rotate/degrees", a->rotate_degrees, 1e6f);
-      if (!(glm::length(a->rotate_axis) > 0.0f)) fail(path + "/rotate/axis", "must not be zero " + vec_text(a->rotate_axis));
-      if (!std::isfinite(a->scale)) fail(path + "/scale", "must be finite (" + number_text(a->scale) + ")");
-      if (!(a->scale > 0.0f)) fail(path + "/scale", "must be > 0 to be invertible (" + number_text(a->scale) + ")");
+      if (!(glm::length(a->rotate_axis) > 0.0f))
+        fail(path + "/rotate/axis", "must not be zero " + vec_text(a->rotate_axis));
+      if (!std::isfinite(a->scale))
+        fail(path + "/scale", "must be finite (" + number_text(a->scale) + ")");
+      if (!(a->scale > 0.0f))
+        fail(path + "/scale", "must be > 0 to be invertible (" + number_text(a->scale) + ")");
       if (a->scale < kMinScale || a->scale > kMaxScale) {
-        fail(path + "/scale", "must be in [" + number_text(kMinScale) + ", " + number_text(kMaxScale) +
-                                  "] to stay invertible in floats (" + number_text(a->scale) + ")");
+        fail(path + "/scale", "must be in [" + number_text(kMinScale) + ", " +
+                                  number_text(kMaxScale) + "] to stay invertible in floats (" +
+                                  number_text(a->scale) + ")");
       }
       check_node(node.children[0], path + "/child", depth + 1, edges);
     } else if (std::holds_alternative<Union>(node.data)) {
@@ -270,7 +287,8 @@ class Analysis {
       }
     } else if (const auto* in = std::get_if<Instance>(&node.data)) {
       if (in->master >= scene_.masters.size()) {
-        fail(path + "/master", "instance of an undefined master (" + std::to_string(in->master) + ")");
+        fail(path + "/master",
+             "instance of an undefined master (" + std::to_string(in->master) + ")");
       }
       edges.push_back({in->master, path + "/master"});
     } else if (const auto* s = std::get_if<SphereShape>(&node.data)) {
@@ -288,7 +306,8 @@ class Analysis {
       check_material(path, c->material);
       check_point(path + "/a", c->a);
       check_point(path + "/b", c->b);
-      if (!(glm::length(c->b - c->a) > 0.0f)) fail(path + "/b", "must differ from a " + vec_text(c->b));
+      if (!(glm::length(c->b - c->a) > 0.0f))
+        fail(path + "/b", "must differ from a " + vec_text(c->b));
       check_positive(path + "/radius", c->radius, kMaxCoordinate);
       if (c->segments < 3 || c->segments > kMaxCylinderSegments) {
         fail(path + "/segments", "must be in [3, " + std::to_string(kMaxCylinderSegments) + "] (" +
@@ -316,7 +335,8 @@ class Analysis {
       }
     } else if (const auto* sp = std::get_if<SpotLightSource>(&node.data)) {
       check_colour(path + "/intensity", sp->intensity, kMaxIntensity);
-      if (!std::isfinite(sp->cone_degrees) || !(sp->cone_degrees > 0.0f) || sp->cone_degrees > 180.0f) {
+      if (!std::isfinite(sp->cone_degrees) || !(sp->cone_degrees > 0.0f) ||
+          sp->cone_degrees > 180.0f) {
         fail(path + "/cone_degrees", "must be in (0, 180] (" + number_text(sp->cone_degrees) + ")");
       }
       check_non_negative(path + "/dropoff", sp->dropoff, 1e4f);
@@ -416,20 +436,24 @@ class Analysis {
 
   static void check_totals(const SubtreeTotals& t, const std::string& path) {
     if (t.lights > kMaxSceneLights) {
-      fail(path, "expands to more than " + std::to_string(kMaxSceneLights) + " lights (" + std::to_string(t.lights) + ")");
+      fail(path, "expands to more than " + std::to_string(kMaxSceneLights) + " lights (" +
+                     std::to_string(t.lights) + ")");
     }
     if (t.instance_depth > kMaxInstanceDepth) {
-      fail(path, "instances nested more than " + std::to_string(kMaxInstanceDepth) + " masters deep (" +
-                     std::to_string(t.instance_depth) + ")");
+      fail(path, "instances nested more than " + std::to_string(kMaxInstanceDepth) +
+                     " masters deep (" + std::to_string(t.instance_depth) + ")");
     }
-    const std::uint64_t placements = add_saturating(t.site_placements, t.direct_triangles > 0 ? 1 : 0);
+    const std::uint64_t placements =
+        add_saturating(t.site_placements, t.direct_triangles > 0 ? 1 : 0);
     if (placements > kMaxScenePlacements) {
-      fail(path, "expands to more than " + std::to_string(kMaxScenePlacements) + " geometry instances (" +
-                     std::to_string(placements) + ")");
+      fail(path, "expands to more than " + std::to_string(kMaxScenePlacements) +
+                     " geometry instances (" + std::to_string(placements) + ")");
     }
     if (t.min_log_scale < -kMaxComposedScaleLog10 || t.max_log_scale > kMaxComposedScaleLog10) {
       fail(path, "nested scales multiply to outside [1e-12, 1e12] (10^" +
-                     number_text(t.min_log_scale < -kMaxComposedScaleLog10 ? t.min_log_scale : t.max_log_scale) + ")");
+                     number_text(t.min_log_scale < -kMaxComposedScaleLog10 ? t.min_log_scale
+                                                                           : t.max_log_scale) +
+                     ")");
     }
   }
 
@@ -453,8 +477,8 @@ class Analysis {
       }
     }
     if (total > kMaxPrototypeTriangles) {
-      fail("/root", "geometry needs more than " + std::to_string(kMaxPrototypeTriangles) + " triangles (" +
-                        std::to_string(total) + ")");
+      fail("/root", "geometry needs more than " + std::to_string(kMaxPrototypeTriangles) +
+                        " triangles (" + std::to_string(total) + ")");
     }
   }
 
@@ -469,7 +493,9 @@ class Analysis {
 
 }  // namespace
 
-void validate_description(const SceneDescription& scene) { Analysis analysis(scene); }
+void validate_description(const SceneDescription& scene) {
+  Analysis analysis(scene);
+}
 
 SceneAnalysis analyze_description(const SceneDescription& scene) {
   return Analysis(scene).result();

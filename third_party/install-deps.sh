@@ -10,7 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtinygltf-dev libtinyexr-dev libgtest-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libgl-dev libopengl-dev libegl-dev libx11-dev
   xvfb xauth mesa-utils xdotool
-  clang python3
+  clang clang-format python3
 )
 gltf_validator="gltf-validator@2.0.0-dev.3.10"
 missing=()

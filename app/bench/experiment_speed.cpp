@@ -115,7 +115,8 @@ Section run_speed(BenchRun& run, const std::string& out_dir) {
     chart.series = series;
     charts.push_back({"speed_" + scene + ".png", chart});
     if (scene == "building" || scene == "maze") {
-      const std::uint64_t target = scene == "building" ? scenes::kBuildingHeadlineLights : scenes::kMazeHeadlineLights;
+      const std::uint64_t target =
+          scene == "building" ? scenes::kBuildingHeadlineLights : scenes::kMazeHeadlineLights;
       const bool comparable = !c.quick && last_lights == target;
       const ThesisSpeed& t = thesis_speed(scene).back();
       const std::string where = scene + ", " + format_count(last_lights) + " lights";

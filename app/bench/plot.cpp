@@ -403,7 +403,7 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
 
 void write_chart_png(const std::string& path, const Chart& chart) {
   app::write_png_rgb8(path, kChartWidth, kChartHeight,
-                           render_chart(chart, kChartWidth, kChartHeight));
+                      render_chart(chart, kChartWidth, kChartHeight));
 }
 
 }  // namespace app::bench

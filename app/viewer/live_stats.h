@@ -17,7 +17,7 @@ namespace app::viewer {
 
 struct LiveStats {
   renderer::FramebufferTotals totals;  // of the tiles received
-  std::uint64_t samples = 0;  // primary rays
+  std::uint64_t samples = 0;           // primary rays
   std::uint64_t shading_points = 0;
   std::uint64_t shadow_rays = 0;
   double lights_tested_avg = 0.0;  // per shading point
@@ -42,7 +42,7 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
 
 // What a snapshot's stats JSON says (app/render_stats.h, the keys of `levrt render --stats`); the
 // heatmap ranges are the caller's.
-RenderStats snapshot_stats(const LiveStats& stats, const WorkerStatus& status, const Settings& settings,
-                           const renderer::Camera& camera);
+RenderStats snapshot_stats(const LiveStats& stats, const WorkerStatus& status,
+                           const Settings& settings, const renderer::Camera& camera);
 
 }  // namespace app::viewer

@@ -279,8 +279,7 @@ struct Worker {
     rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it
     const renderer::Camera camera =
         kept_old_scene && view ? view->camera : request.camera.value_or(preset);
-    const ViewKey key{camera, rs.width, rs.height, rs.max_depth,
-                      rs.pixel_stride};
+    const ViewKey key{camera, rs.width, rs.height, rs.max_depth, rs.pixel_stride};
     const bool view_changed = !view || !same_view(key, *view);
     // A method that ignores the tolerance keeps rendering when only the tolerance moves.
     const bool tolerance_matters =

@@ -5,10 +5,11 @@
 // and the actions `window` (resize the window to WIDTHxHEIGHT, as a user dragging its border;
 // the frame count holds until the window has that size), `snapshot` (save into a folder),
 // `screenshot` (write the window to a PNG), `drop` (a file dropped on the window: a scene file
-// opens, app/viewer/scene_opening.h), `copy=camera` (the Copy camera button), `await=idle` (hold the frame count until the render,
-// and the reference if requested, are complete), `await=preview` (hold it until the coarse
-// preview of the latest change is on screen) and `memory=report` (print the process's current
-// resident memory, for the soak test that watches it grow over thousands of changes).
+// opens, app/viewer/scene_opening.h), `copy=camera` (the Copy camera button), `await=idle` (hold
+// the frame count until the render, and the reference if requested, are complete), `await=preview`
+// (hold it until the coarse preview of the latest change is on screen) and `memory=report` (print
+// the process's current resident memory, for the soak test that watches it grow over thousands of
+// changes).
 // `--script FILE` reads the same changes, one per line, for scripts too long for a command line.
 #pragma once
 

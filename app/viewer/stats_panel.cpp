@@ -116,7 +116,8 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   if (st.method_bytes > 0) row("method memory", "%s", bytes_text(st.method_bytes).c_str());
   row("build / refit", "%.3f s / %.4f s", st.build_seconds, st.refit_seconds);
   if (s.error_bound) {
-    row("error bound", "%.4f%% avg, %.3f%% max", s.error_bound->average_pct, s.error_bound->max_pct);
+    row("error bound", "%.4f%% avg, %.3f%% max", s.error_bound->average_pct,
+        s.error_bound->max_pct);
   }
   if (s.error_avg_pct) {
     row("pixel error", "%.4f%% avg, %.3f%% max", *s.error_avg_pct, *s.error_max_pct);

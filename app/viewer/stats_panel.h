@@ -1,6 +1,6 @@
 // Live statistics of the render on screen (time per pass, Mrays/s, shading points, lights tested
-// and nodes visited per point, hierarchy memory, build and render set-up time, pixel error) and the rt
-// reference's controls: compute, progress, cancel.
+// and nodes visited per point, hierarchy memory, build and render set-up time, pixel error) and the
+// rt reference's controls: compute, progress, cancel.
 #pragma once
 
 #include <chrono>

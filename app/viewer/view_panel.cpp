@@ -80,7 +80,8 @@ void draw_view_section(ViewerState& state) {
   }
   const bool rendered =
       state.view == ViewMode::error ? state.error.pixels_compared > 0 : state.image.tiles_seen > 0;
-  draw_heatmap_legend(info, state.heatmap_range, rendered, lev::method_info(state.status.method).name);
+  draw_heatmap_legend(info, state.heatmap_range, rendered,
+                      lev::method_info(state.status.method).name);
 }
 
 }  // namespace app::viewer

@@ -149,7 +149,8 @@ TEST_F(CameraCli, AMovedCameraIsRecordedAndRendersAgainFromItsStats) {
 TEST_F(CameraCli, BadCamerasExitTwoWithOneLineNamingTheFlagAndWriteNothing) {
   std::ofstream(path("no_camera.json")) << R"({"scene": "building"})";
   std::ofstream(path("bad_fov.json"))
-      << R"({"camera": {"position": [0,-10,5], "target": [0,0,0], "up": [0,0,1], "vertical_fov_deg": 0}})";
+      << R"({"camera": {"position": [0,-10,5], "target": [0,0,0], "up": [0,0,1], )"
+         R"("vertical_fov_deg": 0}})";
   std::ofstream(path("text.json")) << "not json";
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--camera-position", "1,2"}, "--camera-position"},

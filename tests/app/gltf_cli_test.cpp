@@ -42,7 +42,8 @@ class GltfCli : public ::testing::Test {
 std::string gltf_with_light(const std::string& light) {
   return R"({"asset": {"version": "2.0"}, "extensions": {"KHR_lights_punctual": {"lights": [)" +
          light +
-         R"(]}}, "scenes": [{"nodes": [0]}], "nodes": [{"extensions": {"KHR_lights_punctual": {"light": 0}}}]})";
+         R"(]}}, "scenes": [{"nodes": [0]}], )"
+         R"("nodes": [{"extensions": {"KHR_lights_punctual": {"light": 0}}}]})";
 }
 
 TEST_F(GltfCli, LightFileRenders) {
@@ -125,9 +126,11 @@ TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
       {"nan.gltf", gltf_with_bin("nan.bin", 36), nan_triangle, "nan"},
       {"bad_uri.gltf", gltf_with_bin("data:application/octet-stream;base64,@@@@", 36), "", ""},
       {"huge.gltf",
-       R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
+       R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12,
+           "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
            "bufferViews": [{"buffer": 0, "byteLength": 12}],
-           "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 4000000000}],
+           "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3",
+                          "count": 4000000000}],
            "scenes": [{"nodes": []}]})",
        "", "4000000000"},
       {"inf_light.gltf", gltf_with_light(R"({"type": "point", "intensity": 1e999})"), "", "1e999"},
@@ -135,7 +138,8 @@ TEST_F(GltfCli, EveryKindOfBrokenFileExitsTwoWithOneLine) {
       {"cone.gltf", gltf_with_light(R"({"type": "spot", "spot": {"outerConeAngle": 1.6}})"), "",
        "outerConeAngle"},
       {"cycle.gltf",
-       R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"children": [1]}, {"children": [0]}]})",
+       R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}],
+            "nodes": [{"children": [1]}, {"children": [0]}]})",
        "", "cycle"},
       {"chunk.glb", glb_wrong_chunk, "", ""},
       {"length.glb", glb_header + word(9999) + word(8) + "JSON" + "{}      ", "", ""},
@@ -200,8 +204,8 @@ TEST_F(GltfCli, NonConformingFilesExitTwoWithOneLineNamingTheGltfPath) {
 TEST_F(GltfCli, AFileWithNothingToRenderShowsTheBackgroundWithOneWarning) {
   const std::string file = path("empty.gltf");
   {
-    std::ofstream(file)
-        << R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
+    std::ofstream(file) << R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12,
+      "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
       "bufferViews": [{"buffer": 0, "byteLength": 12}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 1}],
       "scenes": [{"nodes": [0]}], "nodes": [{"name": "empty"}]})";

@@ -58,7 +58,8 @@ TEST(Interrupt, SignalDuringADepthBombExitsPromptly) {
     "materials": [{"name": "bomb", "kd": 0.1, "kr": 1, "kt": 1, "ior": 1.5}],
     "root": {"type": "union", "children": [
       {"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]},
-      {"type": "affine", "translate": [1, -2, 6], "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
+      {"type": "affine", "translate": [1, -2, 6],
+       "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
   for (int sig : {SIGINT, SIGTERM}) {
     EXPECT_EQ(interrupt_after(
                   {LEVRT_BINARY, "render", "--scene", scene.string(), "--depth", "64", "--width",

@@ -262,7 +262,8 @@ TEST_F(Outputs, AMasterNameWithNewlinesAndEscapesIsReportedOnOneLine) {
   const std::string scene = path("cycle.json");
   std::ofstream(scene)
       << R"({"levrt_scene": 1, "camera": {"position": [0, 1, 5], "target": [0, 0, 0]},
-    "masters": [{"name": "a\nb\nc\u001b[2J", "node": {"type": "instance", "master": "a\nb\nc\u001b[2J"}}],
+    "masters": [{"name": "a\nb\nc\u001b[2J",
+                 "node": {"type": "instance", "master": "a\nb\nc\u001b[2J"}}],
     "root": {"type": "instance", "master": "a\nb\nc\u001b[2J"}})";
   const CommandRun r = run_levrt({"render", "--scene", scene, "--width", "8", "--height", "8"});
   EXPECT_EQ(r.exit_code, 2) << r.output;

@@ -3,8 +3,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,7 +30,8 @@ class SceneFileCli : public ::testing::Test {
  protected:
   void SetUp() override {
     temp_ = std::make_unique<levrt_test::TempDir>(
-        "levrt_scene_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
+        "levrt_scene_cli_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     dir_ = temp_->path();
   }
   void TearDown() override { temp_.reset(); }
@@ -45,8 +46,10 @@ TEST_F(SceneFileCli, ExportedFileRendersTheSamePngAndHierarchy) {
     const CommandRun e = run_levrt({"export", "--scene", scene, "--level", "4", "--out", file});
     ASSERT_EQ(e.exit_code, 0) << e.output;
     const std::vector<std::string> common = {"--width", "40", "--height", "30", "--method", "lev"};
-    std::vector<std::string> a = {"render", "--scene", scene, "--level", "4", "--out", path("a.png"), "--stats", path("a.json")};
-    std::vector<std::string> b = {"render", "--scene", file, "--out", path("b.png"), "--stats", path("b.json")};
+    std::vector<std::string> a = {"render", "--scene",     scene,     "--level",     "4",
+                                  "--out",  path("a.png"), "--stats", path("a.json")};
+    std::vector<std::string> b = {"render",      "--scene", file,          "--out",
+                                  path("b.png"), "--stats", path("b.json")};
     a.insert(a.end(), common.begin(), common.end());
     b.insert(b.end(), common.begin(), common.end());
     ASSERT_EQ(run_levrt(a).exit_code, 0);
@@ -65,37 +68,46 @@ TEST_F(SceneFileCli, ExportedFileRendersTheSamePngAndHierarchy) {
 
 TEST_F(SceneFileCli, BadFilesExitTwoWithOneLineAndNoOutput) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"{\"levrt_scene\": 1, \"camera\": {\"position\": [0, 0, 5], \"target\": [0, 0, 0], \"up\": [0, 1, 0]}, "
-       "\"root\": {\"type\": \"sphere\", \"material\": \"x\", \"centre\": [0, 0, 0], \"radius\": 1}}",
+      {"{\"levrt_scene\": 1, \"camera\": {\"position\": [0, 0, 5], \"target\": [0, 0, 0], \"up\": "
+       "[0, 1, 0]}, "
+       "\"root\": {\"type\": \"sphere\", \"material\": \"x\", \"centre\": [0, 0, 0], \"radius\": "
+       "1}}",
        "/root/material: no material named 'x'"},
-      {"{\"levrt_scene\": 1, \"root\": {\"type\": \"union\", \"children\": []}}", "/camera: missing"},
+      {"{\"levrt_scene\": 1, \"root\": {\"type\": \"union\", \"children\": []}}",
+       "/camera: missing"},
       {"{\"levrt_scene\": 1,", "invalid JSON"},
   };
   for (const auto& [text, problem] : cases) {
     const std::string file = path("bad.json");
     { std::ofstream(file) << text; }
-    const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8", "--out", path("x.png")});
+    const CommandRun r = run_levrt(
+        {"render", "--scene", file, "--width", "8", "--height", "8", "--out", path("x.png")});
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find(file + ": "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(problem), std::string::npos) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_FALSE(fs::exists(path("x.png")));
   }
-  const CommandRun missing = run_levrt({"render", "--scene", path("none.json"), "--out", path("x.png")});
+  const CommandRun missing =
+      run_levrt({"render", "--scene", path("none.json"), "--out", path("x.png")});
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
 TEST_F(SceneFileCli, LevelsAndLightCountsBelongToModels) {
   const std::string file = path("maze.json");
-  ASSERT_EQ(run_levrt({"export", "--scene", "maze", "--lights", "189", "--out", file}).exit_code, 0);
-  const CommandRun level = run_levrt({"render", "--scene", file, "--level", "2", "--out", path("x.png")});
+  ASSERT_EQ(run_levrt({"export", "--scene", "maze", "--lights", "189", "--out", file}).exit_code,
+            0);
+  const CommandRun level =
+      run_levrt({"render", "--scene", file, "--level", "2", "--out", path("x.png")});
   EXPECT_EQ(level.exit_code, 2) << level.output;
   EXPECT_NE(level.output.find("--level"), std::string::npos) << level.output;
-  const CommandRun lights = run_levrt({"render", "--scene", file, "--lights", "189", "--out", path("x.png")});
+  const CommandRun lights =
+      run_levrt({"render", "--scene", file, "--lights", "189", "--out", path("x.png")});
   EXPECT_EQ(lights.exit_code, 2) << lights.output;
   EXPECT_NE(lights.output.find("--lights"), std::string::npos) << lights.output;
-  const CommandRun model = run_levrt({"render", "--scene", "maze", "--lights", "64", "--out", path("x.png")});
+  const CommandRun model =
+      run_levrt({"render", "--scene", "maze", "--lights", "64", "--out", path("x.png")});
   EXPECT_EQ(model.exit_code, 2) << model.output;
   EXPECT_NE(model.output.find("45, 189, 765, 3069, 12285"), std::string::npos) << model.output;
   EXPECT_FALSE(fs::exists(path("x.png")));

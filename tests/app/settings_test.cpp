@@ -20,7 +20,8 @@ float renderer_tolerance_for(const std::string& text) {
 TEST(Settings, ToleranceExtremesReachTheRendererAsTheFloatLimits) {
   const float inf = std::numeric_limits<float>::infinity();
   EXPECT_EQ(renderer_tolerance_for("0"), 0.0f);
-  EXPECT_EQ(renderer_tolerance_for("4.9406564584124654e-324"), 0.0f);  // the smallest positive double
+  EXPECT_EQ(renderer_tolerance_for("4.9406564584124654e-324"),
+            0.0f);  // the smallest positive double
   EXPECT_EQ(renderer_tolerance_for("1e-300"), 0.0f);
   EXPECT_EQ(renderer_tolerance_for("1e-400"), 0.0f);  // underflows to 0 as it is read
   EXPECT_EQ(renderer_tolerance_for("1e-45"), std::numeric_limits<float>::denorm_min());
@@ -38,7 +39,8 @@ TEST(Settings, TheSmallestPositiveDoubleIsKeptAsItself) {
 TEST(Settings, NonFiniteAndNegativeTolerancesAreRefused) {
   app::Settings settings;
   for (const std::string text : {"1e999", "inf", "nan", "-4.9406564584124654e-324", "-1"}) {
-    EXPECT_THROW(app::set_setting(settings, *app::find_setting("tolerance"), text), app::UsageError) << text;
+    EXPECT_THROW(app::set_setting(settings, *app::find_setting("tolerance"), text), app::UsageError)
+        << text;
   }
 }
 

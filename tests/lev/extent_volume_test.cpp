@@ -17,7 +17,8 @@ TEST(ExtentVolume, PointLightBoundaryIrradianceEqualsTolerance) {
     const float r = lev::extent_radius(lev::strength(light), tau);
     EXPECT_FLOAT_EQ(r, std::sqrt(4.0f / tau));
     const glm::vec3 on_boundary = light.position + glm::vec3(0.0f, r, 0.0f);
-    EXPECT_NEAR(lev::strength(light) * lev::irradiance_falloff(light, on_boundary), tau, tau * 1e-5f);
+    EXPECT_NEAR(lev::strength(light) * lev::irradiance_falloff(light, on_boundary), tau,
+                tau * 1e-5f);
     const glm::vec3 outside = light.position + glm::vec3(0.0f, r * 1.001f, 0.0f);
     EXPECT_LT(lev::strength(light) * lev::irradiance_falloff(light, outside), tau);
     EXPECT_FALSE(lev::is_important(light, outside, tau));
@@ -54,10 +55,13 @@ TEST(ExtentVolume, LightOnTheQueryPointIsFiniteAndImportant) {
 
 TEST(ExtentVolume, SpotConeEdges) {
   const float half_angle = 0.5f;  // radians
-  const lev::Light spot = lev::make_spot_light({0, 0, 10}, {0, 0, -1}, {100, 100, 100}, half_angle, 0.0f);
+  const lev::Light spot =
+      lev::make_spot_light({0, 0, 10}, {0, 0, -1}, {100, 100, 100}, half_angle, 0.0f);
   const float d = 5.0f;
-  const glm::vec3 inside = spot.position + d * glm::vec3(std::sin(half_angle - 0.01f), 0.0f, -std::cos(half_angle - 0.01f));
-  const glm::vec3 outside = spot.position + d * glm::vec3(std::sin(half_angle + 0.01f), 0.0f, -std::cos(half_angle + 0.01f));
+  const glm::vec3 inside = spot.position + d * glm::vec3(std::sin(half_angle - 0.01f), 0.0f,
+                                                         -std::cos(half_angle - 0.01f));
+  const glm::vec3 outside = spot.position + d * glm::vec3(std::sin(half_angle + 0.01f), 0.0f,
+                                                          -std::cos(half_angle + 0.01f));
   EXPECT_TRUE(lev::is_important(spot, inside, 0.01f));
   EXPECT_FALSE(lev::is_important(spot, outside, 0.0f));
   EXPECT_EQ(lev::irradiance_falloff(spot, outside), 0.0f);
@@ -70,7 +74,9 @@ TEST(ExtentVolume, SpotConeEdges) {
   EXPECT_NEAR(b.lo.z, 10.0f - r, 1e-3f);
   EXPECT_NEAR(b.hi.z, 10.0f, 1e-3f);
   EXPECT_NEAR(b.hi.x, r * std::sin(half_angle), 1e-2f);
-  const glm::vec3 rim = spot.position + 0.999f * r * glm::vec3(std::sin(half_angle - 1e-3f), 0.0f, -std::cos(half_angle - 1e-3f));
+  const glm::vec3 rim =
+      spot.position +
+      0.999f * r * glm::vec3(std::sin(half_angle - 1e-3f), 0.0f, -std::cos(half_angle - 1e-3f));
   EXPECT_TRUE(lev::contains(b, rim));
   EXPECT_TRUE(lev::is_important(spot, rim, tau));
 }
@@ -90,13 +96,16 @@ TEST(ExtentVolume, ExtentBoxContainsEveryImportantPoint) {
     return static_cast<float>(seed >> 40) / static_cast<float>(1ull << 24);
   };
   for (int light_index = 0; light_index < 50; ++light_index) {
-    const glm::vec3 dir = glm::normalize(glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f));
+    const glm::vec3 dir =
+        glm::normalize(glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f));
     const float angle = 3.1f * uniform();
-    const lev::Light spot = lev::make_spot_light({1, 2, 3}, dir, {5, 5, 5}, angle, 2.0f * uniform());
+    const lev::Light spot =
+        lev::make_spot_light({1, 2, 3}, dir, {5, 5, 5}, angle, 2.0f * uniform());
     const float tau = 0.05f;
     const lev::Bounds b = lev::light_extent_bounds(spot, tau);
     for (int k = 0; k < 2000; ++k) {
-      const glm::vec3 x = spot.position + 12.0f * glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f);
+      const glm::vec3 x =
+          spot.position + 12.0f * glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f);
       if (lev::is_important(spot, x, tau)) {
         ASSERT_TRUE(lev::contains(b, x)) << "light " << light_index;
       }
@@ -109,7 +118,8 @@ TEST(ExtentVolume, ExtentBoxContainsEveryImportantPoint) {
 // face that region gives; compare it with a dense scan over gamma (and the closed form at P = 0).
 TEST(ExtentVolume, SpotExtentReachMatchesAScanOverTheCone) {
   for (double dropoff : {0.0, 0.3, 1.0, 2.0, 7.5, 100.0, 1e4}) {
-    for (double delta : {0.05, 0.5, 1.0471975511965976, 1.5, 1.5707963267948966, 2.0, 3.1415926535897931}) {
+    for (double delta :
+         {0.05, 0.5, 1.0471975511965976, 1.5, 1.5707963267948966, 2.0, 3.1415926535897931}) {
       for (int t = 0; t <= 40; ++t) {
         const double theta = M_PI * t / 40.0;
         // The largest projection on e of r cos(gamma)^(P/2) u over the directions u in the cone
@@ -130,9 +140,11 @@ TEST(ExtentVolume, SpotExtentReachMatchesAScanOverTheCone) {
           scanned = std::max(scanned, projection(gamma));
         }
         const double reach = lev::spot_extent_reach(theta, delta, dropoff);
- // (cos(pi / 2) is 6e-17 in double, not 0: the scan's tail at the rim is rounding.)
-        EXPECT_GE(reach, scanned - 1e-15) << "P " << dropoff << " delta " << delta << " theta " << theta;
-        EXPECT_LE(reach, scanned + 1e-6) << "P " << dropoff << " delta " << delta << " theta " << theta;
+        // (cos(pi / 2) is 6e-17 in double, not 0: the scan's tail at the rim is rounding.)
+        EXPECT_GE(reach, scanned - 1e-15)
+            << "P " << dropoff << " delta " << delta << " theta " << theta;
+        EXPECT_LE(reach, scanned + 1e-6)
+            << "P " << dropoff << " delta " << delta << " theta " << theta;
         if (dropoff == 0.0) {
           EXPECT_NEAR(reach, std::max(0.0, std::cos(std::max(0.0, theta - delta))), 1e-12);
         }
@@ -156,8 +168,9 @@ TEST(ExtentVolume, SpotDropoffShrinksTheBoxSideways) {
   EXPECT_NEAR(b.lo.z, -r, 1e-4f * r);
   EXPECT_NEAR(b.hi.z, 0.0f, 1e-6f * r);
   // The farthest lit point sideways is important, and just beyond the face nothing is.
-  const glm::vec3 x = 0.9999f * r * std::sqrt(static_cast<float>(std::cos(gamma))) *
-                      glm::vec3(static_cast<float>(std::sin(gamma)), 0.0f, -static_cast<float>(std::cos(gamma)));
+  const glm::vec3 x =
+      0.9999f * r * std::sqrt(static_cast<float>(std::cos(gamma))) *
+      glm::vec3(static_cast<float>(std::sin(gamma)), 0.0f, -static_cast<float>(std::cos(gamma)));
   EXPECT_TRUE(lev::is_important(spot, x, tau));
   EXPECT_TRUE(lev::contains(b, x));
 }
@@ -176,11 +189,13 @@ TEST(ExtentVolume, SpotDropoffBoxContainsEveryImportantPoint) {
   const float dropoffs[] = {0.0f, 0.5f, 1.0f, 3.0f, 20.0f, 300.0f, 10000.0f};
   int important_total = 0;
   for (int light_index = 0; light_index < 140; ++light_index) {
-    const glm::vec3 axis = glm::normalize(glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f));
+    const glm::vec3 axis =
+        glm::normalize(glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f));
     const float angle = 3.14159f * uniform();
     const float dropoff = dropoffs[light_index % 7];
     const glm::vec3 position(10.0f * uniform(), -5.0f * uniform(), 3.0f);
-    const lev::Light spot = lev::make_spot_light(position, axis, {2.0f, 5.0f, 1.0f}, angle, dropoff);
+    const lev::Light spot =
+        lev::make_spot_light(position, axis, {2.0f, 5.0f, 1.0f}, angle, dropoff);
     const float tau = 0.02f;
     const float r = lev::extent_radius(lev::strength(spot), tau);
     const auto edge = [&](float cos_gamma) {  // distance to the exact volume's edge
@@ -193,21 +208,25 @@ TEST(ExtentVolume, SpotDropoffBoxContainsEveryImportantPoint) {
         x = position + 2.2f * r * glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f);
       } else {
         // A direction in the cone, and a distance just inside or outside the exact edge.
-        const glm::vec3 u = glm::normalize(glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f));
+        const glm::vec3 u =
+            glm::normalize(glm::vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f));
         const float cos_gamma = glm::dot(u, spot.direction);
         if (cos_gamma < spot.cos_cone_half_angle) continue;
         x = position + (0.995f + 0.01f * uniform()) * edge(cos_gamma) * u;
       }
       if (!lev::is_important(spot, x, tau)) continue;
       ++important_total;
-      ASSERT_TRUE(lev::contains(b, x)) << "light " << light_index << " P " << dropoff << " cone " << angle;
+      ASSERT_TRUE(lev::contains(b, x))
+          << "light " << light_index << " P " << dropoff << " cone " << angle;
     }
     for (int i = 0; i < 3; ++i) {
       for (float sign : {1.0f, -1.0f}) {
         glm::vec3 e(0.0f);
         e[i] = sign;
         glm::vec3 w = e - glm::dot(e, spot.direction) * spot.direction;
-        w = glm::length(w) > 1e-6f ? glm::normalize(w) : glm::normalize(glm::cross(spot.direction, glm::vec3(0.3f, 0.5f, 0.8f)));
+        w = glm::length(w) > 1e-6f
+                ? glm::normalize(w)
+                : glm::normalize(glm::cross(spot.direction, glm::vec3(0.3f, 0.5f, 0.8f)));
         float farthest = 0.0f;  // the apex
         for (int k = 0; k <= 4000; ++k) {
           const float gamma = std::acos(spot.cos_cone_half_angle) * static_cast<float>(k) / 4000.0f;
@@ -218,7 +237,8 @@ TEST(ExtentVolume, SpotDropoffBoxContainsEveryImportantPoint) {
         }
         const float face = sign > 0.0f ? b.hi[i] - position[i] : position[i] - b.lo[i];
         EXPECT_GE(face, farthest) << "light " << light_index << " axis " << i;
-        EXPECT_LT(face - farthest, 0.01f * r) << "light " << light_index << " axis " << i << " P " << dropoff;
+        EXPECT_LT(face - farthest, 0.01f * r)
+            << "light " << light_index << " axis " << i << " P " << dropoff;
       }
     }
   }

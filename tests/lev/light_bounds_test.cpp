@@ -196,9 +196,9 @@ TEST(LightBounds, SmoothSpotsAndRangesStayBelowTheBound) {
             const float spread = bunched ? 0.01f : 1.0f;
             const glm::vec3 p(r.uniform(-spread, spread), r.uniform(-spread, spread),
                               r.uniform(-spread, spread));
-            lev::Light l = lev::make_smooth_spot_light(p, bunched ? shared_axis : r.direction(),
-                                                       glm::vec3(2.0f, 1.0f, 0.5f), 0.9f * outer,
-                                                       outer);
+            lev::Light l =
+                lev::make_smooth_spot_light(p, bunched ? shared_axis : r.direction(),
+                                            glm::vec3(2.0f, 1.0f, 0.5f), 0.9f * outer, outer);
             l.dropoff = dropoff;
             l.range = range;
             spots.push_back(l);

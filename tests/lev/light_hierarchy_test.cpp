@@ -10,7 +10,8 @@ namespace {
 
 bool same_light(const lev::Light& a, const lev::Light& b) {
   return a.position == b.position && a.intensity == b.intensity && a.direction == b.direction &&
-         a.kind == b.kind && a.cos_cone_half_angle == b.cos_cone_half_angle && a.dropoff == b.dropoff;
+         a.kind == b.kind && a.cos_cone_half_angle == b.cos_cone_half_angle &&
+         a.dropoff == b.dropoff;
 }
 
 // A recursively instanced scene in the style of the thesis' building: master 0 holds a point
@@ -20,15 +21,18 @@ lev::LightTree instanced_tree(int levels) {
   tree.masters.push_back(lev::union_node(
       {lev::light_node(lev::make_point_light({1.0f, 2.0f, 3.0f}, {3.0f, 2.0f, 1.0f})),
        lev::affine_node(lev::make_translation({4.0f, 0.5f, 2.0f}),
-                        lev::light_node(lev::make_spot_light({0, 0, 0}, {0.3f, 0.1f, -1.0f}, {6, 6, 6}, 0.7f, 3.0f)))}));
+                        lev::light_node(lev::make_spot_light({0, 0, 0}, {0.3f, 0.1f, -1.0f},
+                                                             {6, 6, 6}, 0.7f, 3.0f)))}));
   for (int k = 1; k <= levels; ++k) {
     std::vector<lev::LightTreeNode> children;
     const float block = 10.0f * static_cast<float>(1 << (k - 1));
     for (int q = 0; q < 4; ++q) {
-      lev::Similarity xf = lev::compose(lev::make_translation({block * (q % 2), block * (q / 2), 0.0f}),
-                                        lev::make_rotation({0, 0, 1}, 0.3f * q));
+      lev::Similarity xf =
+          lev::compose(lev::make_translation({block * (q % 2), block * (q / 2), 0.0f}),
+                       lev::make_rotation({0, 0, 1}, 0.3f * q));
       if (q == 3) xf = lev::compose(xf, lev::make_scale(0.8f));
-      children.push_back(lev::affine_node(xf, lev::instance_node(static_cast<std::uint32_t>(k - 1))));
+      children.push_back(
+          lev::affine_node(xf, lev::instance_node(static_cast<std::uint32_t>(k - 1))));
     }
     tree.masters.push_back(lev::union_node(std::move(children)));
   }
@@ -77,8 +81,8 @@ TEST(LightHierarchy, ToleranceZeroReturnsEveryLight) {
   lev::WalkCounters counters;
   // Point lights light every point; spots only inside their cones. At tolerance 0 the walk must
   // return every light with non-zero irradiance, so all the point lights at least.
-  lev::find_important_lights(h, lev::fit_extent_volumes(h, 0.0f), 0.0f, {5.0f, 5.0f, 1.0f}, scratch, found,
-                             counters);
+  lev::find_important_lights(h, lev::fit_extent_volumes(h, 0.0f), 0.0f, {5.0f, 5.0f, 1.0f}, scratch,
+                             found, counters);
   std::size_t point_lights = 0;
   for (const lev::Light& l : flat) point_lights += l.kind == lev::LightKind::point;
   std::size_t found_points = 0;
@@ -90,8 +94,8 @@ TEST(LightHierarchy, ToleranceZeroReturnsEveryLight) {
 TEST(LightHierarchy, ScaledInstanceShinesWithScaleSquared) {
   lev::LightTree tree;
   tree.masters.push_back(lev::light_node(lev::make_point_light({1, 0, 0}, {2, 2, 2})));
-  tree.root = lev::affine_node(lev::compose(lev::make_translation({5, 0, 0}), lev::make_scale(3.0f)),
-                               lev::instance_node(0));
+  tree.root = lev::affine_node(
+      lev::compose(lev::make_translation({5, 0, 0}), lev::make_scale(3.0f)), lev::instance_node(0));
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
   const std::vector<lev::Light> flat = lev::flatten_lights(h);
   ASSERT_EQ(flat.size(), 1u);
@@ -102,7 +106,8 @@ TEST(LightHierarchy, ScaledInstanceShinesWithScaleSquared) {
 TEST(LightHierarchy, RefitKeepsStructureAndComputesMastersOnce) {
   const lev::LightHierarchy h = lev::build_hierarchy(instanced_tree(4));
   const std::size_t nodes = h.nodes.size(), bytes = lev::hierarchy_bytes(h);
-  const lev::Bounds before = lev::fit_extent_volumes(h, 0.01f).nodes[h.master_ranges[0].begin].volume;
+  const lev::Bounds before =
+      lev::fit_extent_volumes(h, 0.01f).nodes[h.master_ranges[0].begin].volume;
   const lev::ExtentVolumes refit = lev::fit_extent_volumes(h, 0.001f);
   EXPECT_EQ(refit.nodes.size(), nodes);
   EXPECT_EQ(lev::hierarchy_bytes(h), bytes);
@@ -121,7 +126,8 @@ TEST(LightHierarchy, RejectsMalformedTrees) {
   lev::LightTree bad_scale;
   lev::Similarity xf;
   xf.scale = 0.0f;
-  bad_scale.root = lev::affine_node(xf, lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1})));
+  bad_scale.root =
+      lev::affine_node(xf, lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1})));
   EXPECT_THROW(lev::build_hierarchy(bad_scale), std::invalid_argument);
   lev::LightTree deep;
   lev::LightTreeNode n = lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1}));
@@ -141,7 +147,8 @@ TEST(LightBvh, FlatListGetsAHierarchyThatCullsExactly) {
     const glm::vec3 p(200.0f * uniform(), 200.0f * uniform(), 5.0f * uniform());
     if (i % 3 == 0) {
       lights.push_back(lev::make_spot_light(p, {uniform() - 0.5f, uniform() - 0.5f, -1.0f},
-                                            glm::vec3(0.5f + 2.0f * uniform()), 0.2f + uniform(), 4.0f * uniform()));
+                                            glm::vec3(0.5f + 2.0f * uniform()), 0.2f + uniform(),
+                                            4.0f * uniform()));
     } else {
       lights.push_back(lev::make_point_light(p, glm::vec3(0.5f + 2.0f * uniform(), 1.0f, 0.5f)));
     }

@@ -43,7 +43,8 @@ TEST(Property, WalkNeverMissesAndNeverAddsALight) {
         lev::find_important_lights(h, volumes, tau, p, scratch, found, c1);
         lev::find_important_lights(flattened, flattened_volumes, tau, p, scratch, found_flat, c2);
         const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
-        lev_test::expect_same_lights(found, expected, "seed " + std::to_string(seed) + " tau " + std::to_string(tau));
+        lev_test::expect_same_lights(
+            found, expected, "seed " + std::to_string(seed) + " tau " + std::to_string(tau));
         if (HasFatalFailure()) return;
         ASSERT_EQ(found_flat.size(), expected.size()) << "seed " << seed << " tau " << tau;
       }
@@ -59,7 +60,8 @@ TEST(Property, FlattenedHierarchyEqualsThePlainRecursion) {
     const lev::LightTree tree = random_instanced_tree(r);
     const std::vector<lev::Light> plain = lev::flatten_light_tree(tree);
     ASSERT_FALSE(plain.empty());
-    lev_test::expect_same_lights(lev::flatten_lights(lev::build_hierarchy(tree)), plain, "seed " + std::to_string(seed));
+    lev_test::expect_same_lights(lev::flatten_lights(lev::build_hierarchy(tree)), plain,
+                                 "seed " + std::to_string(seed));
     if (HasFatalFailure()) return;
   }
 }
@@ -71,12 +73,13 @@ TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
   const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
   lev::WalkScratch scratch;
   const float tiny = std::numeric_limits<float>::denorm_min();
-  for (float tau : {tiny, std::numeric_limits<float>::min(), 1e-30f, 1e30f, std::numeric_limits<float>::max(),
-                    std::numeric_limits<float>::infinity()}) {
+  for (float tau : {tiny, std::numeric_limits<float>::min(), 1e-30f, 1e30f,
+                    std::numeric_limits<float>::max(), std::numeric_limits<float>::infinity()}) {
     const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
     for (const lev::FittedNode& node : volumes.nodes) {
       for (int a = 0; a < 3; ++a) {
-        ASSERT_FALSE(std::isnan(node.volume.lo[a]) || std::isnan(node.volume.hi[a])) << "tau " << tau;
+        ASSERT_FALSE(std::isnan(node.volume.lo[a]) || std::isnan(node.volume.hi[a]))
+            << "tau " << tau;
       }
     }
     for (int k = 0; k < 50; ++k) {
@@ -84,7 +87,8 @@ TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
       std::vector<lev::Light> found;
       lev::WalkCounters c;
       lev::find_important_lights(h, volumes, tau, p, scratch, found, c);
-      EXPECT_EQ(found.size(), lev::important_lights_brute_force(flat, p, tau).size()) << "tau " << tau;
+      EXPECT_EQ(found.size(), lev::important_lights_brute_force(flat, p, tau).size())
+          << "tau " << tau;
       if (tau >= 1e30f) {
         EXPECT_TRUE(found.empty());
       }
@@ -93,7 +97,8 @@ TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
 }
 
 TEST(Property, ExtremeIntensitiesStayFinite) {
-  for (float intensity : {0.0f, 1e-30f, 1e-10f, 1.0f, 1e10f, 1e30f, std::numeric_limits<float>::max()}) {
+  for (float intensity :
+       {0.0f, 1e-30f, 1e-10f, 1.0f, 1e10f, 1e30f, std::numeric_limits<float>::max()}) {
     const lev::Light l = lev::make_point_light({0, 0, 0}, glm::vec3(intensity, 0.0f, intensity));
     for (float d : {0.0f, 1e-20f, 1e-6f, 1.0f, 1e6f, 1e19f}) {
       const glm::vec3 e = lev::irradiance(l, {d, 0, 0});
@@ -115,15 +120,20 @@ TEST(Property, DegenerateSpotsKeepConservativeVolumes) {
   Random r(5);
   for (float angle : {0.0f, 1e-6f, 1e-3f, 1.5707964f, 3.1415927f}) {
     for (float dropoff : {0.0f, 1.0f, 10000.0f}) {
-      const lev::Light spot = lev::make_spot_light({1, 2, 3}, r.direction(), {2, 2, 2}, angle, dropoff);
+      const lev::Light spot =
+          lev::make_spot_light({1, 2, 3}, r.direction(), {2, 2, 2}, angle, dropoff);
       for (float tau : {1e-4f, 0.01f, 1.0f}) {
         const lev::Bounds b = lev::light_extent_bounds(spot, tau);
         ASSERT_FALSE(std::isnan(b.lo.x) || std::isnan(b.hi.x));
         // Points on and near the axis, where a narrow cone still lights.
         for (int k = 0; k < 2000; ++k) {
-          const glm::vec3 p = spot.position + r.uniform(0.0f, 30.0f) * glm::normalize(spot.direction + r.uniform(0.0f, 0.01f) * r.direction());
+          const glm::vec3 p =
+              spot.position +
+              r.uniform(0.0f, 30.0f) *
+                  glm::normalize(spot.direction + r.uniform(0.0f, 0.01f) * r.direction());
           if (lev::is_important(spot, p, tau)) {
-            ASSERT_TRUE(lev::contains(b, p)) << "angle " << angle << " dropoff " << dropoff << " tau " << tau;
+            ASSERT_TRUE(lev::contains(b, p))
+                << "angle " << angle << " dropoff " << dropoff << " tau " << tau;
           }
           const float e = lev::irradiance_falloff(spot, p);
           ASSERT_TRUE(std::isfinite(e) && e >= 0.0f);

@@ -18,7 +18,9 @@ namespace lev_test {
 struct Random {
   std::mt19937_64 engine;
   explicit Random(std::uint64_t seed) : engine(seed) {}
-  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(engine); }
+  float uniform(float lo, float hi) {
+    return std::uniform_real_distribution<float>(lo, hi)(engine);
+  }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine); }
   glm::vec3 direction() {
     glm::vec3 d;
@@ -32,7 +34,8 @@ struct Random {
 inline lev::Light random_light(Random& r) {
   const glm::vec3 p(r.uniform(-5, 5), r.uniform(-5, 5), r.uniform(-5, 5));
   const float intensity = std::pow(10.0f, r.uniform(-3.0f, 3.0f));
-  if (r.integer(0, 2) == 0) return lev::make_point_light(p, glm::vec3(intensity, 0.5f * intensity, 0.0f));
+  if (r.integer(0, 2) == 0)
+    return lev::make_point_light(p, glm::vec3(intensity, 0.5f * intensity, 0.0f));
   static const float kAngles[] = {0.0f, 1e-4f, 0.3f, 1.5707964f, 2.5f, 3.1415927f};
   static const float kDropoffs[] = {0.0f, 1.0f, 7.5f, 10000.0f};
   return lev::make_spot_light(p, r.direction(), glm::vec3(intensity), kAngles[r.integer(0, 5)],
@@ -41,7 +44,8 @@ inline lev::Light random_light(Random& r) {
 
 inline lev::Similarity random_similarity(Random& r) {
   lev::Similarity xf = lev::make_rotation(r.direction(), r.uniform(0.0f, 6.2831853f));
-  xf = lev::compose(lev::make_translation({r.uniform(-20, 20), r.uniform(-20, 20), r.uniform(-5, 5)}), xf);
+  xf = lev::compose(
+      lev::make_translation({r.uniform(-20, 20), r.uniform(-20, 20), r.uniform(-5, 5)}), xf);
   return lev::compose(xf, lev::make_scale(std::pow(2.0f, r.uniform(-2.0f, 2.0f))));
 }
 
@@ -53,23 +57,29 @@ inline lev::LightTree random_instanced_tree(Random& r) {
     const int count = r.integer(1, 5);
     for (int c = 0; c < count; ++c) {
       if (m > 0 && r.integer(0, 1) == 0) {
-        children.push_back(lev::affine_node(random_similarity(r), lev::instance_node(static_cast<std::uint32_t>(r.integer(0, m - 1)))));
+        children.push_back(
+            lev::affine_node(random_similarity(r),
+                             lev::instance_node(static_cast<std::uint32_t>(r.integer(0, m - 1)))));
       } else {
-        children.push_back(lev::extent_volume_node(lev::affine_node(random_similarity(r), lev::light_node(random_light(r)))));
+        children.push_back(lev::extent_volume_node(
+            lev::affine_node(random_similarity(r), lev::light_node(random_light(r)))));
       }
     }
     tree.masters.push_back(lev::union_node(std::move(children)));
   }
   std::vector<lev::LightTreeNode> roots;
   for (int i = 0; i < 4; ++i) {
-    roots.push_back(lev::affine_node(random_similarity(r), lev::instance_node(static_cast<std::uint32_t>(r.integer(0, masters - 1)))));
+    roots.push_back(lev::affine_node(
+        random_similarity(r),
+        lev::instance_node(static_cast<std::uint32_t>(r.integer(0, masters - 1)))));
   }
   tree.root = lev::union_node(std::move(roots));
   return tree;
 }
 
 // Same count, order, positions, intensities and directions; `context` names the case on failure.
-inline void expect_same_lights(const std::vector<lev::Light>& found, const std::vector<lev::Light>& expected,
+inline void expect_same_lights(const std::vector<lev::Light>& found,
+                               const std::vector<lev::Light>& expected,
                                const std::string& context) {
   ASSERT_EQ(found.size(), expected.size()) << context;
   for (std::size_t i = 0; i < found.size(); ++i) {

@@ -33,7 +33,8 @@ glm::vec3 direction_at(Random& r, const glm::vec3& axis, float cos_angle) {
 std::vector<glm::vec3> points_near_the_edge(Random& r, const lev::Light& light, float tolerance) {
   std::vector<glm::vec3> points;
   const float s = lev::strength(light);
-  for (float e : {-3e-3f, -1e-3f, -3e-4f, -1e-4f, -1e-6f, 0.0f, 1e-6f, 1e-4f, 3e-4f, 1e-3f, 3e-3f}) {
+  for (float e :
+       {-3e-3f, -1e-3f, -3e-4f, -1e-4f, -1e-6f, 0.0f, 1e-6f, 1e-4f, 3e-4f, 1e-3f, 3e-3f}) {
     glm::vec3 u = r.direction();
     if (light.kind == lev::LightKind::spot) {
       // Inside the cone (or anywhere, for a cone of 90 degrees or more).
@@ -46,9 +47,11 @@ std::vector<glm::vec3> points_near_the_edge(Random& r, const lev::Light& light, 
     const float d = std::sqrt(s * falloff / (tolerance * (1.0f + e)));
     if (std::isfinite(d)) points.push_back(light.position + d * u);
   }
-  if (light.kind == lev::LightKind::spot && light.cos_cone_half_angle > -1.0f && light.cos_cone_half_angle < 1.0f) {
+  if (light.kind == lev::LightKind::spot && light.cos_cone_half_angle > -1.0f &&
+      light.cos_cone_half_angle < 1.0f) {
     for (float e : {-2e-3f, -1e-3f, -1e-5f, -1e-7f, 0.0f, 1e-7f, 1e-5f, 1e-3f, 2e-3f}) {
-      const glm::vec3 u = direction_at(r, light.direction, std::clamp(light.cos_cone_half_angle + e, -1.0f, 1.0f));
+      const glm::vec3 u =
+          direction_at(r, light.direction, std::clamp(light.cos_cone_half_angle + e, -1.0f, 1.0f));
       // Well inside the distance the tolerance allows on the axis, so the cone decides.
       const float d = 0.5f * std::sqrt(s / tolerance) * r.uniform(0.1f, 1.0f);
       if (std::isfinite(d)) points.push_back(light.position + d * u);
@@ -58,22 +61,23 @@ std::vector<glm::vec3> points_near_the_edge(Random& r, const lev::Light& light, 
 }
 
 void expect_walk_equals_brute_force(const lev::LightHierarchy& h, const lev::ExtentVolumes& volumes,
-                                    const std::vector<lev::Light>& flat, const glm::vec3& p, float tolerance,
-                                    lev::WalkScratch& scratch, std::uint64_t seed, std::size_t& kept) {
+                                    const std::vector<lev::Light>& flat, const glm::vec3& p,
+                                    float tolerance, lev::WalkScratch& scratch, std::uint64_t seed,
+                                    std::size_t& kept) {
   std::vector<lev::Light> found;
   lev::WalkCounters counters;
   lev::find_important_lights(h, volumes, tolerance, p, scratch, found, counters);
   const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tolerance);
-  lev_test::expect_same_lights(found, expected,
-                               "seed " + std::to_string(seed) + " tolerance " + std::to_string(tolerance));
+  lev_test::expect_same_lights(
+      found, expected, "seed " + std::to_string(seed) + " tolerance " + std::to_string(tolerance));
   kept += found.size();
 }
 
 // Builds the tree's hierarchy, fits its volumes for each tolerance and compares the walk with the
 // brute force (over the tree's plain flattening) at points straddling the edge of every light's
 // extent volume; counts the points and the lights kept.
-void check_every_edge(const lev::LightTree& tree, std::initializer_list<float> tolerances, Random& r,
-                      std::uint64_t seed, std::size_t& points, std::size_t& kept) {
+void check_every_edge(const lev::LightTree& tree, std::initializer_list<float> tolerances,
+                      Random& r, std::uint64_t seed, std::size_t& points, std::size_t& kept) {
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
   const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
   lev::WalkScratch scratch;
@@ -113,10 +117,12 @@ TEST(WalkEdges, MatchesTheBruteForceThroughDeepNesting) {
     for (int i = 0; i < 12; ++i) {
       lev::LightTreeNode node = lev::light_node(lev_test::random_light(r));
       const int depth = r.integer(0, 3);
-      for (int k = 0; k < depth; ++k) node = lev::affine_node(lev_test::random_similarity(r), std::move(node));
+      for (int k = 0; k < depth; ++k)
+        node = lev::affine_node(lev_test::random_similarity(r), std::move(node));
       // Some lights (untransformed ones among them) sit straight in the union, which tests them
       // without a frame of their own.
-      children.push_back(r.integer(0, 1) == 0 ? lev::extent_volume_node(std::move(node)) : std::move(node));
+      children.push_back(r.integer(0, 1) == 0 ? lev::extent_volume_node(std::move(node))
+                                              : std::move(node));
     }
     lev::LightTree tree;
     tree.root = lev::union_node(std::move(children));

@@ -41,10 +41,12 @@ renderer::Scene extreme_scene() {
   const float big = std::numeric_limits<float>::max();
   std::vector<lev::LightTreeNode> lights;
   lights.push_back(lev::light_node(lev::make_point_light({0, 4, 3}, {2, 2, 2})));
-  lights.push_back(lev::light_node(lev::make_point_light({5, 5, 0}, {1, 1, 1})));         // on the floor
-  lights.push_back(lev::light_node(lev::make_point_light({-1, -1, 2}, {1, 1, 1})));       // on the box top
-  lights.push_back(lev::light_node(lev::make_point_light({4, -4, 2}, {0, 0, 0})));        // dark
-  lights.push_back(lev::light_node(lev::make_point_light({-6, 6, 1}, {1e-30f, 0, 0})));  // negligible
+  lights.push_back(lev::light_node(lev::make_point_light({5, 5, 0}, {1, 1, 1})));  // on the floor
+  lights.push_back(
+      lev::light_node(lev::make_point_light({-1, -1, 2}, {1, 1, 1})));  // on the box top
+  lights.push_back(lev::light_node(lev::make_point_light({4, -4, 2}, {0, 0, 0})));  // dark
+  lights.push_back(
+      lev::light_node(lev::make_point_light({-6, 6, 1}, {1e-30f, 0, 0})));  // negligible
   lights.push_back(lev::light_node(lev::make_point_light({6, -6, 0.5f}, {1e30f, 1e30f, 0})));
   lights.push_back(lev::light_node(lev::make_point_light({-7, 0, 0.1f}, {big, big, big})));
   const float angles[] = {0.0f, 1e-5f, 1.5707964f, 3.1415927f};
@@ -52,7 +54,8 @@ renderer::Scene extreme_scene() {
   int i = 0;
   for (float a : angles) {
     for (float p : dropoffs) {
-      lights.push_back(lev::light_node(lev::make_spot_light({-8.0f + 2.0f * i, 8, 4}, {0, 0, -1}, {5, 5, 5}, a, p)));
+      lights.push_back(lev::light_node(
+          lev::make_spot_light({-8.0f + 2.0f * i, 8, 4}, {0, 0, -1}, {5, 5, 5}, a, p)));
       ++i;
     }
   }
@@ -63,7 +66,8 @@ renderer::Scene extreme_scene() {
   return scene;
 }
 
-renderer::Framebuffer render(renderer::Scene& scene, const renderer::RayScene& rays, lev::Method method, float tau) {
+renderer::Framebuffer render(renderer::Scene& scene, const renderer::RayScene& rays,
+                             lev::Method method, float tau) {
   renderer::RenderSettings rs;
   rs.width = 96;
   rs.height = 72;
@@ -86,8 +90,10 @@ TEST(Extremes, NoInfOrNaNReachesAPixel) {
   const renderer::RayScene rays(scene.geometry);
   const float tiny = std::numeric_limits<float>::denorm_min();
   for (lev::Method method : {lev::Method::rt, lev::Method::ast, lev::Method::lev}) {
-    for (float tau : {0.0f, tiny, 1e-30f, 0.01f, 1.0f, 1e30f, std::numeric_limits<float>::infinity()}) {
-      expect_finite(render(scene, rays, method, tau), std::string(lev::method_info(method).name) + " " + std::to_string(tau));
+    for (float tau :
+         {0.0f, tiny, 1e-30f, 0.01f, 1.0f, 1e30f, std::numeric_limits<float>::infinity()}) {
+      expect_finite(render(scene, rays, method, tau),
+                    std::string(lev::method_info(method).name) + " " + std::to_string(tau));
     }
   }
 }
@@ -98,17 +104,21 @@ TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f);
   const renderer::Framebuffer lev = render(scene, rays, lev::Method::lev, 0.0f);
   ASSERT_EQ(rt.radiance_sum.size(), lev.radiance_sum.size());
-  EXPECT_EQ(std::memcmp(rt.radiance_sum.data(), lev.radiance_sum.data(), rt.radiance_sum.size() * sizeof(glm::vec3)), 0);
+  EXPECT_EQ(std::memcmp(rt.radiance_sum.data(), lev.radiance_sum.data(),
+                        rt.radiance_sum.size() * sizeof(glm::vec3)),
+            0);
   // A denormal tolerance reaches the hierarchy as itself: no light is culled that rt shades
   // except those below it, and none of this scene's lights is that dim except the 1e-30 one.
-  const renderer::Framebuffer denormal = render(scene, rays, lev::Method::lev, std::numeric_limits<float>::denorm_min());
+  const renderer::Framebuffer denormal =
+      render(scene, rays, lev::Method::lev, std::numeric_limits<float>::denorm_min());
   EXPECT_EQ(renderer::framebuffer_rgb8(denormal), renderer::framebuffer_rgb8(rt));
 }
 
 TEST(Extremes, InfiniteToleranceTestsNoLight) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene.geometry);
-  const auto totals = renderer::sum_framebuffer(render(scene, rays, lev::Method::lev, std::numeric_limits<float>::infinity()));
+  const auto totals = renderer::sum_framebuffer(
+      render(scene, rays, lev::Method::lev, std::numeric_limits<float>::infinity()));
   EXPECT_EQ(totals.lights_tested, 0u);
   EXPECT_GT(totals.shading_points, 0u);
 }

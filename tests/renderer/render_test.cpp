@@ -22,8 +22,8 @@ struct TestScene {
   }
 };
 
-renderer::Framebuffer render(TestScene& t, lev::Method method, float tolerance, int threads, int passes,
-                             int width = 64, int height = 48) {
+renderer::Framebuffer render(TestScene& t, lev::Method method, float tolerance, int threads,
+                             int passes, int width = 64, int height = 48) {
   return render_test_image(t.scene, *t.rays, method, tolerance, threads, passes, width, height);
 }
 
@@ -73,8 +73,10 @@ TEST(Render, StatesWithDifferentTolerancesAndMethodsRenderOneSceneConcurrently) 
     lev::Method method;
     float tolerance;
   };
-  const std::vector<Job> jobs = {
-      {lev::Method::lev, 0.002f}, {lev::Method::lev, 0.2f}, {lev::Method::ast, 0.05f}, {lev::Method::rt, 0.0f}};
+  const std::vector<Job> jobs = {{lev::Method::lev, 0.002f},
+                                 {lev::Method::lev, 0.2f},
+                                 {lev::Method::ast, 0.05f},
+                                 {lev::Method::rt, 0.0f}};
   auto settings_for = [](const Job& job) {
     renderer::RenderSettings rs;
     rs.width = 48;
@@ -92,7 +94,8 @@ TEST(Render, StatesWithDifferentTolerancesAndMethodsRenderOneSceneConcurrently) 
     alone.push_back(renderer::render_framebuffer(*state));
   }
   std::vector<renderer::RenderStatePtr> states;
-  for (const Job& job : jobs) states.push_back(renderer::make_render_state(t.scene, *t.rays, settings_for(job)));
+  for (const Job& job : jobs)
+    states.push_back(renderer::make_render_state(t.scene, *t.rays, settings_for(job)));
   std::vector<std::thread> threads;
   std::vector<int> complete(jobs.size(), 0);
   for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -105,7 +108,8 @@ TEST(Render, StatesWithDifferentTolerancesAndMethodsRenderOneSceneConcurrently) 
         << lev::method_info(jobs[i].method).name << " at " << jobs[i].tolerance;
   }
   // The two lev states really differ: each walked its own volumes.
-  EXPECT_GT(renderer::sum_framebuffer(alone[0]).nodes_visited, renderer::sum_framebuffer(alone[1]).nodes_visited);
+  EXPECT_GT(renderer::sum_framebuffer(alone[0]).nodes_visited,
+            renderer::sum_framebuffer(alone[1]).nodes_visited);
 }
 
 TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {

@@ -36,10 +36,12 @@ std::string scene_text(const std::string& camera, const std::string& material,
   return R"({"levrt_scene": 1, "camera": )" + camera +
          R"(, "materials": [{"name": "m", "kd": 0.5}, )" + material +
          R"(], "root": {"type": "union", "children": [
-           {"type": "quad", "material": "m", "corner": [-5, -5, 0], "edge_u": [10, 0, 0], "edge_v": [0, 10, 0]},
+           {"type": "quad", "material": "m", "corner": [-5, -5, 0], "edge_u": [10, 0, 0],
+            "edge_v": [0, 10, 0]},
            )" +
          box + R"(,
-           {"type": "affine", "translate": [1, -2, 4], "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
+           {"type": "affine", "translate": [1, -2, 4],
+             "child": {"type": "point_light", "intensity": [20, 20, 20]}}]}})";
 }
 
 const std::string kCamera = R"({"position": [0, -10, 5], "target": [0, 0, 0]})";
@@ -104,9 +106,10 @@ TEST(Robustness, CameraDegenerateInTheRenderFloatModeIsRefused) {
 
 // The box's geometric normal (a cross product of 1e-10 edges, 1e-20) squared to zero before.
 TEST(Robustness, TinyReflectiveBoxRendersFinitePixels) {
-  const Rendered r = render_text(scene_text(
-      R"({"position": [3e-10, -4e-10, 2e-10], "target": [0, 0, 0.5e-10]})", kMirror,
-      R"({"type": "box", "material": "mirror", "lo": [-1e-10, -1e-10, 0], "hi": [1e-10, 1e-10, 1e-10]})"));
+  const Rendered r = render_text(
+      scene_text(R"({"position": [3e-10, -4e-10, 2e-10], "target": [0, 0, 0.5e-10]})", kMirror,
+                 R"({"type": "box", "material": "mirror", "lo": [-1e-10, -1e-10, 0], )"
+                 R"("hi": [1e-10, 1e-10, 1e-10]})"));
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.shading_points, 2u * 48u * 36u / 4u);
 }

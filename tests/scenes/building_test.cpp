@@ -23,7 +23,8 @@ std::uint64_t placed_rooms(const renderer::Scene& scene) {
 
 TEST(Building, LightCountsPerLevel) {
   const std::uint64_t expected[] = {4, 16, 64, 256, 1024, 4096, 16384, 65536, 262144, 1048576};
-  for (int level = 1; level <= 10; ++level) EXPECT_EQ(scenes::building_light_count(level), expected[level - 1]);
+  for (int level = 1; level <= 10; ++level)
+    EXPECT_EQ(scenes::building_light_count(level), expected[level - 1]);
   for (int level = 1; level <= 7; ++level) {
     const renderer::Scene scene = scenes::build_building(level);
     EXPECT_EQ(scene.lights.light_count, expected[level - 1]);
@@ -31,7 +32,8 @@ TEST(Building, LightCountsPerLevel) {
     EXPECT_EQ(placed_rooms(scene), expected[level - 1]);
     // Rooms are baked into prototypes of up to 16 (scene_instantiation.h), so far fewer Embree
     // instances than rooms.
-    EXPECT_LE(scene.geometry.instances.size() * 16, std::max<std::uint64_t>(16, expected[level - 1]));
+    EXPECT_LE(scene.geometry.instances.size() * 16,
+              std::max<std::uint64_t>(16, expected[level - 1]));
   }
   const scenes::SceneModel* model = scenes::find_scene_model("building");
   ASSERT_NE(model, nullptr);
@@ -41,10 +43,12 @@ TEST(Building, LightCountsPerLevel) {
 
 TEST(Building, HierarchyGrowsByAConstantPerLevel) {
   std::vector<std::size_t> bytes;
-  for (int level = 1; level <= 8; ++level) bytes.push_back(lev::hierarchy_bytes(scenes::build_building(level).lights));
+  for (int level = 1; level <= 8; ++level)
+    bytes.push_back(lev::hierarchy_bytes(scenes::build_building(level).lights));
   const std::size_t step = bytes[1] - bytes[0];
   EXPECT_GT(step, 0u);
-  for (std::size_t i = 1; i < bytes.size(); ++i) EXPECT_EQ(bytes[i] - bytes[i - 1], step) << "level " << i + 1;
+  for (std::size_t i = 1; i < bytes.size(); ++i)
+    EXPECT_EQ(bytes[i] - bytes[i - 1], step) << "level " << i + 1;
   EXPECT_LT(bytes.back(), 16u * 1024u);
 }
 

@@ -42,7 +42,8 @@ scenes::SceneDescription shadow_scene(const scenes::Affine& placement) {
   content.push_back(scenes::translate_node({-4, -4, 5}, scenes::point_light_node({6, 5, 4})));
   content.push_back(scenes::translate_node({4, -3, 2}, scenes::point_light_node({2, 2, 3})));
   content.push_back(scenes::translate_node({-5, -1, 0.5f}, scenes::point_light_node({1, 1, 1})));
-  content.push_back(scenes::translate_node({-5, 5, 6}, scenes::spot_light_node({20, 20, 20}, 40.0f, 2.0f)));
+  content.push_back(
+      scenes::translate_node({-5, 5, 6}, scenes::spot_light_node({20, 20, 20}, 40.0f, 2.0f)));
   d.root = scenes::affine_node(placement, scenes::union_node(std::move(content)));
 
   const lev::Similarity xf = scenes::affine_similarity(placement);
@@ -51,7 +52,9 @@ scenes::SceneDescription shadow_scene(const scenes::Affine& placement) {
   return d;
 }
 
-scenes::Affine at_origin() { return {}; }
+scenes::Affine at_origin() {
+  return {};
+}
 
 scenes::Affine far_away() {
   scenes::Affine a;
@@ -85,7 +88,8 @@ struct Difference {
 };
 
 // "Well" above or below: by more than 10% of 765 in total, the size of a shadow's step.
-Difference compare(const std::vector<std::uint8_t>& image, const std::vector<std::uint8_t>& reference) {
+Difference compare(const std::vector<std::uint8_t>& image,
+                   const std::vector<std::uint8_t>& reference) {
   Difference d;
   const std::vector<double> error = renderer::pixel_error_pct(image, reference);
   int differing = 0;
@@ -115,18 +119,28 @@ void expect_same_picture(const scenes::Affine& placement, const std::string& lab
 // Before render space, the translated scene differed from the origin in 5.5% of its pixels (17
 // well darker, 3 well brighter): shadow-ray offsets grow with the coordinates and reached four
 // units at 1e6, and hit points were 0.0625 apart.
-TEST(FarScene, TranslatedNearOneMillionMatchesTheOrigin) { expect_same_picture(far_away(), "translated"); }
+TEST(FarScene, TranslatedNearOneMillionMatchesTheOrigin) {
+  expect_same_picture(far_away(), "translated");
+}
 
-TEST(FarScene, ScaledToOneThousandthMatchesTheOrigin) { expect_same_picture(scaled(1e-3f), "scaled"); }
+TEST(FarScene, ScaledToOneThousandthMatchesTheOrigin) {
+  expect_same_picture(scaled(1e-3f), "scaled");
+}
 
-TEST(FarScene, ScaledToOneMillionthMatchesTheOrigin) { expect_same_picture(scaled(1e-6f), "scaled by 1e-6"); }
+TEST(FarScene, ScaledToOneMillionthMatchesTheOrigin) {
+  expect_same_picture(scaled(1e-6f), "scaled by 1e-6");
+}
 
-TEST(FarScene, ScaledByTenThousandMatchesTheOrigin) { expect_same_picture(scaled(1e4f), "scaled by 1e4"); }
+TEST(FarScene, ScaledByTenThousandMatchesTheOrigin) {
+  expect_same_picture(scaled(1e4f), "scaled by 1e4");
+}
 
 // The largest whole-scene scale the reader lets this scene have: its camera (18 by 9 units from
 // the target at the origin) then stands 9e5 away, inside the 1e6 coordinate limit; scaled by 1e6
 // it would stand beyond it and be refused. The scene spans 1e6.
-TEST(FarScene, ScaledByFiftyThousandMatchesTheOrigin) { expect_same_picture(scaled(5e4f), "scaled by 5e4"); }
+TEST(FarScene, ScaledByFiftyThousandMatchesTheOrigin) {
+  expect_same_picture(scaled(5e4f), "scaled by 5e4");
+}
 
 // A floor quad lit from above and seen at 45 degrees; the quad's edges are `edge` units under an
 // affine scale of `scale` (the camera and light are where the unscaled floor has them).
@@ -139,7 +153,8 @@ scenes::SceneDescription floor_scene(float edge, float scale) {
   std::vector<scenes::SceneNode> content;
   content.push_back(scenes::affine_node(
       placement, scenes::quad_node(grey, {-edge / 2, -edge / 2, 0}, {edge, 0, 0}, {0, edge, 0})));
-  content.push_back(scenes::translate_node({0, 0, 5e4f}, scenes::point_light_node({2.5e9f, 2.5e9f, 2.5e9f})));
+  content.push_back(
+      scenes::translate_node({0, 0, 5e4f}, scenes::point_light_node({2.5e9f, 2.5e9f, 2.5e9f})));
   d.root = scenes::union_node(std::move(content));
   d.camera.position = {0, -1e5f, 1e5f};
   d.camera.target = {0, 0, 0};

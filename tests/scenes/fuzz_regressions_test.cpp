@@ -11,7 +11,8 @@
 namespace {
 
 TEST(FuzzRegressions, EveryKeptInputIsRefusedOrReadCleanly) {
-  const std::filesystem::path dir = std::filesystem::path(LEVRT_SOURCE_DIR) / "tests" / "fuzz" / "regressions";
+  const std::filesystem::path dir =
+      std::filesystem::path(LEVRT_SOURCE_DIR) / "tests" / "fuzz" / "regressions";
   std::size_t inputs = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     std::ifstream in(entry.path(), std::ios::binary);
@@ -20,7 +21,8 @@ TEST(FuzzRegressions, EveryKeptInputIsRefusedOrReadCleanly) {
     try {
       (void)scenes::parse_scene_json(bytes.str(), entry.path().filename().string());
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(entry.path().filename().string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(entry.path().filename().string()), std::string::npos)
+          << e.what();
     }
     ++inputs;
   }

@@ -28,8 +28,8 @@ std::string gltf_with(const std::string& lights, const std::string& nodes,
          extra + "}";
 }
 
-const std::string kSpot =
-    R"({"type": "spot", "color": [1, 0.5, 0.25], "intensity": 8, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}})";
+const std::string kSpot = R"({"type": "spot", "color": [1, 0.5, 0.25], "intensity": 8, )"
+                          R"("spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}})";
 
 // Parent: translate (1, 2, 3), scale 2. Child: translate (1, 0, 0), rotate 90 degrees about +Y.
 const std::string kNestedNodes =
@@ -118,11 +118,12 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
       {gltf_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
        "cycle in the node tree"},
       {gltf_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0].scale: 2 values"},
-      {gltf_with(
-           R"({"type": "point"})", R"({})",
-           R"(, "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
+      {gltf_with(R"({"type": "point"})", R"({})",
+                 R"(, "buffers": [{"byteLength": 12,
+                    "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
                     "bufferViews": [{"buffer": 0, "byteLength": 12}],
-                    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 2}])"),
+                    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3",
+                                   "count": 2}])"),
        "accessors[0]: 2 elements beyond the view's 12 bytes"},
   };
   for (const auto& [text, problem] : cases) levrt_test::expect_gltf_refused(text, kPath, problem);
@@ -171,7 +172,8 @@ TEST(GltfScene, ZeroScaleHidesMeshesButPlacesPointLights) {
          {"translation": [5, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}},
          {"mesh": 0}, {"extensions": {"KHR_lights_punctual": {"light": 1}}})";
   const std::string mesh = R"(, "buffers": [{"byteLength": 36,
-      "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+      "uri":
+      "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
       "bufferViews": [{"buffer": 0, "byteLength": 36}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";

@@ -45,8 +45,8 @@ TEST(GltfSchema, RequiredExtensionsLevrtCannotHonourAreRefusedByName) {
 }
 
 TEST(GltfSchema, HonouredRequiredExtensionsAreRead) {
-  const std::string top =
-      R"(, "extensionsUsed": ["KHR_lights_punctual"], "extensionsRequired": ["KHR_lights_punctual"])";
+  const std::string top = R"(, "extensionsUsed": ["KHR_lights_punctual"], )"
+                          R"("extensionsRequired": ["KHR_lights_punctual"])";
   EXPECT_EQ(warnings_of(gltf(top)), "");
   levrt_test::expect_gltf_refused(
       gltf(R"(, "extensionsRequired": ["KHR_lights_punctual"])"), kPath,

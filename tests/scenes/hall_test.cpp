@@ -24,10 +24,12 @@ TEST(Hall, LightCountsPerLevel) {
 
 TEST(Hall, HierarchyGrowsByAConstantPerLevel) {
   std::vector<std::size_t> bytes;
-  for (int level = 3; level <= 8; ++level) bytes.push_back(lev::hierarchy_bytes(scenes::build_hall(level).lights));
+  for (int level = 3; level <= 8; ++level)
+    bytes.push_back(lev::hierarchy_bytes(scenes::build_hall(level).lights));
   const std::size_t step = bytes[2] - bytes[1];
   EXPECT_GT(step, 0u);
-  for (std::size_t i = 2; i < bytes.size(); ++i) EXPECT_EQ(bytes[i] - bytes[i - 1], step) << "level " << i + 3;
+  for (std::size_t i = 2; i < bytes.size(); ++i)
+    EXPECT_EQ(bytes[i] - bytes[i - 1], step) << "level " << i + 3;
   EXPECT_LT(bytes.back(), 16u * 1024u);
 }
 
@@ -51,7 +53,8 @@ TEST(Hall, EachSplitQuartersTheIntensityAndKeepsTheTotal) {
 TEST(Hall, MostLightsReachTheStageAndManyFallBelowTheTolerance) {
   for (int level : {3, 5, 7}) {
     const std::vector<lev::Light> lights = lev::flatten_lights(scenes::build_hall(level).lights);
-    for (const glm::vec3 p : {glm::vec3(0.0f, 5.0f, 0.8f), glm::vec3(-4.0f, 3.0f, 0.8f), glm::vec3(3.0f, 8.0f, 0.8f)}) {
+    for (const glm::vec3 p :
+         {glm::vec3(0.0f, 5.0f, 0.8f), glm::vec3(-4.0f, 3.0f, 0.8f), glm::vec3(3.0f, 8.0f, 0.8f)}) {
       std::size_t reaching = 0, important = 0;
       for (const lev::Light& l : lights) {
         reaching += lev::irradiance_falloff(l, p) > 0.0f ? 1 : 0;

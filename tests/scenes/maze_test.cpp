@@ -59,10 +59,12 @@ std::set<Wall> expected_walls(int level) {
 }
 
 // Every box of the description in world space, instances expanded.
-void collect_boxes(const scenes::SceneDescription& scene, const scenes::SceneNode& node, const lev::Similarity& xf,
-                   std::uint32_t material, std::vector<std::pair<glm::vec3, glm::vec3>>& boxes) {
+void collect_boxes(const scenes::SceneDescription& scene, const scenes::SceneNode& node,
+                   const lev::Similarity& xf, std::uint32_t material,
+                   std::vector<std::pair<glm::vec3, glm::vec3>>& boxes) {
   if (const auto* a = std::get_if<scenes::Affine>(&node.data)) {
-    collect_boxes(scene, node.children[0], lev::compose(xf, scenes::affine_similarity(*a)), material, boxes);
+    collect_boxes(scene, node.children[0], lev::compose(xf, scenes::affine_similarity(*a)),
+                  material, boxes);
   } else if (const auto* in = std::get_if<scenes::Instance>(&node.data)) {
     collect_boxes(scene, scene.masters[in->master].node, xf, material, boxes);
   } else if (const auto* b = std::get_if<scenes::BoxShape>(&node.data)) {
@@ -84,13 +86,16 @@ std::set<Wall> built_walls(int level) {
   const float c = scenes::kMazeCell;
   for (const auto& [lo, hi] : boxes) {
     const glm::vec3 centre = 0.5f * (lo + hi), size = hi - lo;
-    const int x = static_cast<int>(std::floor(centre.x / c)), y = static_cast<int>(std::floor(centre.y / c));
+    const int x = static_cast<int>(std::floor(centre.x / c)),
+              y = static_cast<int>(std::floor(centre.y / c));
     const bool thin_x = size.x < 0.5f * c;
     EXPECT_NEAR(thin_x ? size.y : size.x, c, 1e-3f);
     EXPECT_NEAR(thin_x ? size.x : size.y, scenes::kMazeHalfWall, 1e-3f);
-    const float fraction = thin_x ? centre.x / c - static_cast<float>(x) : centre.y / c - static_cast<float>(y);
+    const float fraction =
+        thin_x ? centre.x / c - static_cast<float>(x) : centre.y / c - static_cast<float>(y);
     const int side = (thin_x ? 0 : 2) + (fraction > 0.5f ? 1 : 0);
-    EXPECT_TRUE(walls.insert({x, y, side}).second) << "wall twice at " << x << " " << y << " " << side;
+    EXPECT_TRUE(walls.insert({x, y, side}).second)
+        << "wall twice at " << x << " " << y << " " << side;
   }
   return walls;
 }
@@ -115,15 +120,18 @@ TEST(Maze, LightCountsPerLevel) {
 
 TEST(Maze, HierarchyGrowsByAConstantPerLevel) {
   std::vector<std::size_t> bytes;
-  for (int level = 1; level <= 7; ++level) bytes.push_back(lev::hierarchy_bytes(scenes::build_maze(level).lights));
+  for (int level = 1; level <= 7; ++level)
+    bytes.push_back(lev::hierarchy_bytes(scenes::build_maze(level).lights));
   const std::size_t step = bytes[1] - bytes[0];
   EXPECT_GT(step, 0u);
-  for (std::size_t i = 1; i < bytes.size(); ++i) EXPECT_EQ(bytes[i] - bytes[i - 1], step) << "level " << i + 1;
+  for (std::size_t i = 1; i < bytes.size(); ++i)
+    EXPECT_EQ(bytes[i] - bytes[i - 1], step) << "level " << i + 1;
   EXPECT_LT(bytes.back(), 16u * 1024u);
 }
 
 TEST(Maze, WallsStandWhereverTheHilbertCurveDoesNotPass) {
-  for (int level = 1; level <= 3; ++level) EXPECT_EQ(built_walls(level), expected_walls(level)) << "level " << level;
+  for (int level = 1; level <= 3; ++level)
+    EXPECT_EQ(built_walls(level), expected_walls(level)) << "level " << level;
 }
 
 TEST(Maze, EveryStreetlightHangsOverTheCorridorAndShinesDown) {
@@ -132,14 +140,16 @@ TEST(Maze, EveryStreetlightHangsOverTheCorridorAndShinesDown) {
   std::vector<glm::vec2> centres;
   for (int d = 0; d < side * side; ++d) {
     const auto [x, y] = hilbert_cell(side, d);
-    centres.push_back(scenes::kMazeCell * glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+    centres.push_back(scenes::kMazeCell *
+                      glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
   }
   const renderer::Scene scene = scenes::build_maze(level);
   for (const lev::Light& l : lev::flatten_lights(scene.lights)) {
     EXPECT_FLOAT_EQ(l.position.z, scenes::kStreetlightHeight);
     ASSERT_EQ(l.kind, lev::LightKind::spot);
     EXPECT_NEAR(l.direction.z, -1.0f, 1e-6f);
-    EXPECT_NEAR(std::acos(l.cos_cone_half_angle), glm::radians(scenes::kStreetlightConeDegrees), 1e-5f);
+    EXPECT_NEAR(std::acos(l.cos_cone_half_angle), glm::radians(scenes::kStreetlightConeDegrees),
+                1e-5f);
     // Within the lamp's offset (0.3) of the curve through the cell centres.
     float nearest = 1e9f;
     const glm::vec2 p(l.position.x, l.position.y);

@@ -28,9 +28,11 @@ json valid_scene() {
       {"type": "sphere", "material": "m", "centre": [0, 0, 0.3], "radius": 0.2},
       {"type": "point_light", "intensity": [1, 1, 1]}]}}],
     "root": {"type": "union", "children": [
-      {"type": "affine", "translate": [0, 0, 3], "rotate": {"axis": [0, 0, 1], "degrees": 30}, "scale": 2,
+      {"type": "affine", "translate": [0, 0, 3], "rotate": {"axis": [0, 0, 1], "degrees": 30},
+       "scale": 2,
        "child": {"type": "instance", "master": "lamp"}},
-      {"type": "quad", "material": "m", "corner": [-5, -5, 0], "edge_u": [10, 0, 0], "edge_v": [0, 10, 0]}]}
+      {"type": "quad", "material": "m", "corner": [-5, -5, 0], "edge_u": [10, 0, 0],
+       "edge_v": [0, 10, 0]}]}
   })");
 }
 
@@ -124,7 +126,8 @@ TEST(SceneFile, NonFiniteNumbers) {
   std::string text = valid_scene().dump();
   text.replace(text.find("\"radius\":0.2"), 12, "\"radius\":1e999");
   const std::string message = error_of(text);
-  EXPECT_EQ(message.rfind("test.json: /masters/0/node/children/0/radius: invalid JSON", 0), 0u) << message;
+  EXPECT_EQ(message.rfind("test.json: /masters/0/node/children/0/radius: invalid JSON", 0), 0u)
+      << message;
 }
 
 TEST(SceneFile, ZeroScale) {
@@ -167,7 +170,9 @@ TEST(SceneFile, InstanceCycles) {
   // Indirect: a -> b -> c -> a, defined in any order.
   s = valid_scene();
   s["masters"].push_back({{"name", "a"}, {"node", {{"type", "instance"}, {"master", "b"}}}});
-  s["masters"].push_back({{"name", "c"}, {"node", {{"type", "affine"}, {"child", {{"type", "instance"}, {"master", "a"}}}}}});
+  s["masters"].push_back(
+      {{"name", "c"},
+       {"node", {{"type", "affine"}, {"child", {{"type", "instance"}, {"master", "a"}}}}}});
   s["masters"].push_back({{"name", "b"}, {"node", {{"type", "instance"}, {"master", "c"}}}});
   expect_error(s, "/masters/2/node/child/master", "instance cycle: 'a' -> 'b' -> 'c' -> 'a'");
 }
@@ -178,38 +183,50 @@ TEST(SceneFile, AbsurdSizes) {
   for (int k = 1; k <= 10; ++k) {
     json children = json::array();
     for (int i = 0; i < 10; ++i) {
-      children.push_back({{"type", "affine"}, {"translate", {i, 0, 0}},
-                          {"child", {{"type", "instance"}, {"master", k == 1 ? "lamp" : "x" + std::to_string(k - 1)}}}});
+      children.push_back(
+          {{"type", "affine"},
+           {"translate", {i, 0, 0}},
+           {"child",
+            {{"type", "instance"}, {"master", k == 1 ? "lamp" : "x" + std::to_string(k - 1)}}}});
     }
-    s["masters"].push_back({{"name", "x" + std::to_string(k)}, {"node", {{"type", "union"}, {"children", children}}}});
+    s["masters"].push_back(
+        {{"name", "x" + std::to_string(k)}, {"node", {{"type", "union"}, {"children", children}}}});
   }
   s["root"]["children"][0]["child"]["master"] = "x10";
   expect_error(s, "/masters/8", "expands to more than 16777216 lights");
   // A chain of masters deeper than the instancing limit.
   s = valid_scene();
   for (int k = 1; k <= 70; ++k) {
-    s["masters"].push_back({{"name", "c" + std::to_string(k)},
-                            {"node", {{"type", "instance"}, {"master", k == 1 ? "lamp" : "c" + std::to_string(k - 1)}}}});
+    s["masters"].push_back(
+        {{"name", "c" + std::to_string(k)},
+         {"node",
+          {{"type", "instance"}, {"master", k == 1 ? "lamp" : "c" + std::to_string(k - 1)}}}});
   }
   expect_error(s, "/masters/65", "instances nested more than 64 masters deep");
   s = valid_scene();
   s["root"]["children"][1]["corner"] = {1e9, 0, 0};
   expect_error(s, "/root/children/1/corner", "coordinate magnitude above");
   s = valid_scene();
-  s["root"]["children"].push_back({{"type", "cylinder"}, {"material", "m"}, {"a", {0, 0, 0}}, {"b", {0, 0, 1}},
-                                   {"radius", 1}, {"segments", 1000000}});
+  s["root"]["children"].push_back({{"type", "cylinder"},
+                                   {"material", "m"},
+                                   {"a", {0, 0, 0}},
+                                   {"b", {0, 0, 1}},
+                                   {"radius", 1},
+                                   {"segments", 1000000}});
   expect_error(s, "/root/children/2/segments", "must be in [3, 1024]");
 }
 
 TEST(SceneFile, DeepNestingFailsCleanly) {
   // 10,000 nested affine nodes: refused while parsing, long before any recursion.
-  std::string text = R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0]}, "root": )";
+  std::string text =
+      R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0]}, "root": )";
   for (int i = 0; i < 10000; ++i) text += R"({"type": "affine", "child": )";
   text += R"({"type": "point_light", "intensity": [1, 1, 1]})";
   text += std::string(10000, '}') + "}";
   const std::string message = error_of(text);
   EXPECT_EQ(message.rfind("test.json: /root/child/child/", 0), 0u) << message.substr(0, 200);
-  EXPECT_NE(message.find("JSON nested deeper than 256 levels"), std::string::npos) << message.substr(0, 300);
+  EXPECT_NE(message.find("JSON nested deeper than 256 levels"), std::string::npos)
+      << message.substr(0, 300);
   EXPECT_LT(message.size(), 400u);
   // Arrays alone nest as deep.
   const std::string arrays = std::string(10000, '[') + std::string(10000, ']');
@@ -223,8 +240,10 @@ TEST(SceneFile, DeepNestingFailsCleanly) {
 }
 
 TEST(SceneFile, SyntaxErrorsNameTheLineAndPath) {
-  std::string message = error_of("{\n  \"levrt_scene\": 1,\n  \"camera\": {\"position\": [0, 0,, 1]}\n}");
-  EXPECT_EQ(message.rfind("test.json: /camera/position/2: invalid JSON at line 3", 0), 0u) << message;
+  std::string message =
+      error_of("{\n  \"levrt_scene\": 1,\n  \"camera\": {\"position\": [0, 0,, 1]}\n}");
+  EXPECT_EQ(message.rfind("test.json: /camera/position/2: invalid JSON at line 3", 0), 0u)
+      << message;
   message = error_of(R"({"levrt_scene": 1, "levrt_scene": 1})");
   EXPECT_EQ(message.rfind("test.json: /levrt_scene: duplicate key", 0), 0u) << message;
   json s = valid_scene();
@@ -246,7 +265,9 @@ TEST_F(SceneFileOnDisk, HugeFileIsRefusedBeforeReading) {
     scenes::load_scene_file(path);
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("more than the 64 MiB a scene file may have"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than the 64 MiB a scene file may have"),
+              std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(scenes::load_scene_file((dir_ / "missing.json").string()), std::invalid_argument);
   EXPECT_THROW(scenes::load_scene_file(dir_.string()), std::invalid_argument);
@@ -262,15 +283,18 @@ TEST(SceneFile, FlatListOfLightsGetsTheAutomaticHierarchy) {
   json s = valid_scene();
   json lights = json::array();
   for (int i = 0; i < 4000; ++i) {
-    lights.push_back({{"type", "affine"}, {"translate", {(i % 80) * 3.0, (i / 80) * 3.0, 2.5}},
+    lights.push_back({{"type", "affine"},
+                      {"translate", {(i % 80) * 3.0, (i / 80) * 3.0, 2.5}},
                       {"child", {{"type", "point_light"}, {"intensity", {0.5, 0.5, 0.5}}}}});
   }
   s["masters"] = json::array();
   s["root"] = {{"type", "union"}, {"children", lights}};
-  renderer::Scene scene = scenes::instantiate_scene(scenes::parse_scene_json(s.dump(), "flat.json"));
+  renderer::Scene scene =
+      scenes::instantiate_scene(scenes::parse_scene_json(s.dump(), "flat.json"));
   EXPECT_EQ(scene.lights.light_count, 4000u);
   std::size_t volumes = 0;
-  for (const lev::HierarchyNode& n : scene.lights.nodes) volumes += n.kind == lev::NodeKind::extent_volume ? 1 : 0;
+  for (const lev::HierarchyNode& n : scene.lights.nodes)
+    volumes += n.kind == lev::NodeKind::extent_volume ? 1 : 0;
   EXPECT_GT(volumes, 1000u);  // a 4-wide BVH over 4000 lights
   const lev::ExtentVolumes extent_volumes = lev::fit_extent_volumes(scene.lights, 0.01f);
   lev::WalkScratch scratch;
@@ -278,7 +302,8 @@ TEST(SceneFile, FlatListOfLightsGetsTheAutomaticHierarchy) {
   lev::WalkCounters counters;
   const glm::vec3 p(100.0f, 60.0f, 0.0f);
   lev::find_important_lights(scene.lights, extent_volumes, 0.01f, p, scratch, found, counters);
-  EXPECT_EQ(found.size(), lev::important_lights_brute_force(lev::flatten_lights(scene.lights), p, 0.01f).size());
+  EXPECT_EQ(found.size(),
+            lev::important_lights_brute_force(lev::flatten_lights(scene.lights), p, 0.01f).size());
   EXPECT_LT(counters.nodes_visited, 400u);
 }
 

@@ -18,7 +18,9 @@
 
 namespace levrt_test {
 
-inline bool have_xvfb() { return std::system("command -v Xvfb > /dev/null 2>&1") == 0; }
+inline bool have_xvfb() {
+  return std::system("command -v Xvfb > /dev/null 2>&1") == 0;
+}
 
 class XvfbServer {
  public:

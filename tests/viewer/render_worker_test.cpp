@@ -266,9 +266,8 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
   camera.target = {0.5f, 0.5f, 0.0f};
   orbited.camera = camera;
   const std::uint64_t first = ui.worker.post(orbited);
-  ASSERT_TRUE(ui.run_until([&] {
-    return ui.settled(first) && ui.status.reference == ReferencePhase::done;
-  }));
+  ASSERT_TRUE(ui.run_until(
+      [&] { return ui.settled(first) && ui.status.reference == ReferencePhase::done; }));
   const std::vector<std::uint8_t> before = ui.image.rgb;
   const std::uint64_t loads = ui.status.scene_serial;
   const std::uint64_t reference_generation = ui.status.reference_generation;

@@ -67,8 +67,8 @@ TEST(ToleranceSlider, EveryStopRendersFinitePixelsAndTestsNoMoreLightsThanTheOne
     for (double tolerance : stops) {
       settings.tolerance = tolerance;
       const std::string label = method + " at " + std::to_string(tolerance);
-      renderer::RenderStatePtr state =
-          renderer::make_render_state(loaded->scene, *loaded->rays, app::render_settings_from(settings));
+      renderer::RenderStatePtr state = renderer::make_render_state(
+          loaded->scene, *loaded->rays, app::render_settings_from(settings));
       ASSERT_TRUE(renderer::render_pass(*state)) << label;
       const renderer::Framebuffer& fb = renderer::render_framebuffer(*state);
       for (const glm::vec3& c : fb.radiance_sum) {

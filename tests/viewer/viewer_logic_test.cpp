@@ -273,7 +273,8 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
     const double expected = 100.0 * 0.01 * static_cast<double>(i) / 2.0;
     EXPECT_NEAR(image.noise_pct[i], expected, 1e-3 + 1e-3 * expected) << i;
     // The hover read-out shows the same value.
-    const PixelInfo p = pixel_info(image, ErrorImage{}, static_cast<int>(i % 4), static_cast<int>(i / 4));
+    const PixelInfo p =
+        pixel_info(image, ErrorImage{}, static_cast<int>(i % 4), static_cast<int>(i / 4));
     ASSERT_TRUE(p.noise_pct.has_value()) << i;
     EXPECT_FLOAT_EQ(*p.noise_pct, image.noise_pct[i]) << i;
   }

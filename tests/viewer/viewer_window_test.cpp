@@ -35,9 +35,9 @@
 namespace {
 
 using levrt_test::CommandRun;
+using levrt_test::have_xvfb;
 using levrt_test::run_shell;
 using levrt_test::shell_quote;
-using levrt_test::have_xvfb;
 using levrt_test::XvfbServer;
 namespace fs = std::filesystem;
 
@@ -279,17 +279,19 @@ TEST_F(ViewerWindow, AFileOpenedWhileRunningLoadsAndABadOneKeepsTheSceneShown) {
   const auto lit_triangle = [](const std::string& light) {
     return levrt_test::gltf_document(levrt_test::triangle_buffers() + R"(,
         "nodes": [{"mesh": 0, "children": [1]},
-                  {"translation": [0.2, 0.2, 1], "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+                  {"translation": [0.2, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
         "extensionsUsed": ["KHR_lights_punctual"],
-        "extensions": {"KHR_lights_punctual": {"lights": [)" + light + "]}}");
+        "extensions": {"KHR_lights_punctual": {"lights": [)" +
+                                     light + "]}}");
   };
   levrt_test::write_file(dir_ / "good.gltf", lit_triangle(R"({"type": "point", "intensity": 5})"));
   levrt_test::write_file(dir_ / "bad.gltf",
                          lit_triangle(R"({"type": "point", "intensity": 5, "range": 0})"));
-  const CommandRun refused = levrt_test::run_levrt(
-      {"render", "--scene", path("bad.gltf"), "--width", "8", "--height", "8", "--out",
-       path("never.png")});
+  const CommandRun refused =
+      levrt_test::run_levrt({"render", "--scene", path("bad.gltf"), "--width", "8", "--height", "8",
+                             "--out", path("never.png")});
   ASSERT_EQ(refused.exit_code, 2) << refused.output;
   std::string message = refused.output.substr(refused.output.find(": ") + 2);
   message.erase(message.find_last_not_of('\n') + 1);
@@ -311,7 +313,8 @@ TEST_F(ViewerWindow, AFileOpenedWhileRunningLoadsAndABadOneKeepsTheSceneShown) {
   EXPECT_NE(r.output.find("cannot open " + path("bad.gltf") + ": " + message + " (kept " +
                           path("good.gltf") + ")"),
             std::string::npos)
-      << "expected the whole message: " << message << "\n" << r.output;
+      << "expected the whole message: " << message << "\n"
+      << r.output;
   for (const std::string folder : {"good", "kept"}) {
     nlohmann::json stats;
     for (const auto& entry : fs::directory_iterator(dir_ / folder)) {
@@ -331,10 +334,26 @@ TEST_F(ViewerWindow, AFileOpenedWhileRunningLoadsAndABadOneKeepsTheSceneShown) {
 TEST_F(ViewerWindow, TheCameraFlagsSetTheViewAndCopyCameraGivesThemBack) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
-  const CommandRun r = run_viewer({"--lights", "64", "--width", "48", "--height", "36", "--window",
-                                   "800x600", "--frames", "3", "--camera-position", "2,-14,7",
-                                   "--camera-target", "0.5,0,1", "--fov", "35", "--set",
-                                   "await=idle@0", "--set", "copy=camera@1"});
+  const CommandRun r = run_viewer({"--lights",
+                                   "64",
+                                   "--width",
+                                   "48",
+                                   "--height",
+                                   "36",
+                                   "--window",
+                                   "800x600",
+                                   "--frames",
+                                   "3",
+                                   "--camera-position",
+                                   "2,-14,7",
+                                   "--camera-target",
+                                   "0.5,0,1",
+                                   "--fov",
+                                   "35",
+                                   "--set",
+                                   "await=idle@0",
+                                   "--set",
+                                   "copy=camera@1"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("camera: --camera-position 2,-14,7 --camera-target 0.5,0,1 "
                           "--camera-up 0,0,1 --fov 35"),
@@ -501,7 +520,8 @@ TEST_F(ViewerWindow, TheNoiseViewOfASamplingMethodShowsAndSnapshotsItsEstimate) 
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   // clang-format off
   const CommandRun r = run_viewer({
-      "--scene", "hall", "--lights", "64", "--method", "lev_mc", "--tolerance", "0.3", "--samples", "2",
+      "--scene", "hall", "--lights", "64", "--method", "lev_mc", "--tolerance", "0.3",
+      "--samples", "2",
       "--width", "96", "--height", "72", "--spp", "6", "--window", "1024x640", "--frames", "8",
       "--set", "await=idle@0",
       "--set", "screenshot=" + path("image.png") + "@1",
