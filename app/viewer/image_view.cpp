@@ -42,34 +42,34 @@ void move_camera(ViewerState& state, const ImVec2& image_size) {
 
 void draw_hover(const ViewerState& state, int x, int y, const ImVec2& tooltip_at) {
   if (x < 0 || y < 0 || x >= state.image.width || y >= state.image.height) return;
-  const PixelInfo p = pixel_info(state.image, state.error, x, y);
+  const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(state.image.width) +
+                 static_cast<std::size_t>(x);
   ImGui::SetNextWindowPos(tooltip_at);
   ImGui::BeginTooltip();
   ImGui::Text("pixel %d, %d", x, y);
-  if (!p.rendered) {
+  const std::uint32_t samples = state.image.samples[i];
+  if (samples == 0) {
     ImGui::TextDisabled("not rendered yet");
     ImGui::EndTooltip();
     return;
   }
-  ImGui::ColorButton("##colour",
-                     ImVec4(p.rgb[0] / 255.0f, p.rgb[1] / 255.0f, p.rgb[2] / 255.0f, 1.0f),
+  const std::uint8_t* rgb = &state.image.rgb[3 * i];
+  ImGui::ColorButton("##colour", ImVec4(rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f, 1.0f),
                      ImGuiColorEditFlags_NoTooltip, ImVec2(14.0f, 14.0f));
   ImGui::SameLine();
-  ImGui::Text("colour %d %d %d", p.rgb[0], p.rgb[1], p.rgb[2]);
-  ImGui::Text("lights tested  %.1f per sample", p.lights_tested);
-  ImGui::Text("nodes visited  %.1f per sample", p.nodes_visited);
-  if (p.error_pct) {
-    ImGui::Text("error          %.3f%% (pass 0 vs rt)", *p.error_pct);
-  } else {
-    ImGui::TextDisabled("error          needs the rt reference");
+  ImGui::Text("colour %d %d %d", rgb[0], rgb[1], rgb[2]);
+  // One line per view of the table: its read-out, or (greyed) why it has none.
+  const ViewPixels pixels = view_pixels(state.image, state.error, state.mask_threshold_pct);
+  for (const ViewInfo& view : view_table()) {
+    if (view.hover == nullptr) continue;
+    const std::string line = view.hover(pixels, i);
+    if (view.value(pixels, i)) {
+      ImGui::TextUnformatted(line.c_str());
+    } else {
+      ImGui::TextDisabled("%s", line.c_str());
+    }
   }
-  ImGui::Text("error bound    %.3f%% (certified)", p.error_bound_pct);
-  if (p.noise_pct) {
-    ImGui::Text("noise          %.3f%% (std error of the mean)", *p.noise_pct);
-  } else {
-    ImGui::TextDisabled("noise          from the second sample on");
-  }
-  ImGui::Text("samples        %u", p.samples);
+  ImGui::Text("samples        %u", samples);
   ImGui::EndTooltip();
 }
 

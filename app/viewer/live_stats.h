@@ -11,6 +11,7 @@
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
 #include "renderer/camera.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
 
 namespace app::viewer {
@@ -34,6 +35,8 @@ struct LiveStats {
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), averaged over
   // the pixels with two samples or more; none before the second pass reaches a pixel.
   std::optional<double> noise_avg_pct;
+  // The missed-light estimate over the pixels received, while the render estimates it.
+  std::optional<renderer::MissedLightStats> missed;
 };
 
 // `error` is used when it has compared pixels.

@@ -289,9 +289,11 @@ struct Worker {
         rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
     const bool relative_error_matters = rs.relative_error != main_settings.relative_error &&
                                         lev::method_info(rs.method).uses_relative_error;
+    // The missed-light estimate (on while its view is shown) costs shadow rays of its own.
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
                               tolerance_matters || light_samples_matter || relative_error_matters ||
-                              rs.threads != main_settings.threads;
+                              rs.threads != main_settings.threads ||
+                              rs.missed_samples != main_settings.missed_samples;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
@@ -321,6 +323,7 @@ struct Worker {
         st.tile_count = tiles;
         st.method = s.method;
         st.tolerance = s.tolerance;
+        st.missed_samples = rs.missed_samples;
         st.refit_seconds = refit_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
         st.method_bytes = method_bytes;

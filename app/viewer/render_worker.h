@@ -78,6 +78,7 @@ struct WorkerStatus {
   int tile_count = 0;
   lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
+  int missed_samples = 0;      // the missed-light estimate's draws per point (0: off)
   double refit_seconds = 0.0;  // making the render state: refit and selector
   std::size_t method_bytes = 0;
   int passes_done = 0;

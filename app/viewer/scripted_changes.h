@@ -1,9 +1,9 @@
 // Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
 // the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
-// scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y in image pixels,
-// inside a typed-size image: show that pixel's tooltip; scripted mode ignores the real mouse),
-// and the actions `window` (resize the window to WIDTHxHEIGHT, as a user dragging its border;
-// the frame count holds until the window has that size), `snapshot` (save into a folder),
+// scene), `view` (a view name of app/view_table.h), `reference` (on|off), `hover` (X,Y in image
+// pixels, inside a typed-size image: show that pixel's tooltip; scripted mode ignores the real
+// mouse), and the actions `window` (resize the window to WIDTHxHEIGHT, as a user dragging its
+// border; the frame count holds until the window has that size), `snapshot` (save into a folder),
 // `screenshot` (write the window to a PNG), `drop` (a file dropped on the window: a scene file
 // opens, app/viewer/scene_opening.h), `copy=camera` (the Copy camera button), `await=idle` (hold
 // the frame count until the render, and the reference if requested, are complete), `await=preview`

@@ -129,6 +129,13 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   } else {
     row("noise", "from the second pass on");
   }
+  // Always a row, so choosing the view does not change the layout (and with it the fit size).
+  if (s.missed) {
+    row("missed light", "%.4f%% avg (+- %.4f%%), %.3f%% max", s.missed->average_pct,
+        s.missed->std_error_avg_pct, s.missed->max_pct);
+  } else {
+    row("missed light", "with the Missed light view");
+  }
   row("UI", "%.0f fps", state.ui_fps);
   ImGui::EndTable();
 }

@@ -158,6 +158,7 @@ struct Picture {
   std::uint64_t image_version = ~0ull;
   std::uint64_t error_version = ~0ull;
   ViewMode view = ViewMode::image;
+  double mask_threshold_pct = -1.0;
   // The exposure and curve composed with (NaN: none yet).
   renderer::Display display{std::numeric_limits<double>::quiet_NaN(),
                             renderer::DisplayCurve::linear};
@@ -254,24 +255,26 @@ void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::ti
 
 void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clock,
                      Clock::time_point now, bool force) {
-  const bool uses_error = state.view == ViewMode::error;
+  const bool uses_error = view_info(state.view).needs_reference;
   const std::uint64_t error_version = uses_error ? clock.computed : 0;
   const renderer::Display display = display_from(state.settings);
   const bool same_display =
       picture.display.exposure_ev == display.exposure_ev && picture.display.curve == display.curve;
   if (picture.image_version == state.image.version && picture.error_version == error_version &&
-      picture.view == state.view && same_display) {
+      picture.view == state.view && picture.mask_threshold_pct == state.mask_threshold_pct &&
+      same_display) {
     return;
   }
   // A new exposure or curve re-maps at once: it is the user's hand on the control.
   if (!force && same_display && seconds_between(picture.composed, now) < kComposeSeconds) return;
   compose_view_rgba(state.image, state.preview, state.error, state.view, picture.rgba,
-                    state.heatmap_range, display);
+                    state.heatmap_range, display, state.mask_threshold_pct);
   picture.display = display;
   upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
   picture.image_version = state.image.version;
   picture.error_version = error_version;
   picture.view = state.view;
+  picture.mask_threshold_pct = state.mask_threshold_pct;
   picture.composed = now;
 }
 

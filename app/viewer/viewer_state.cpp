@@ -1,5 +1,7 @@
 #include "app/viewer/viewer_state.h"
 
+#include <algorithm>
+
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -28,7 +30,7 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
     if (before.scene == state.status.scene) state.camera_before_scene_change = state.camera;
     state.camera.reset();
   }
-  if (new_view && state.view != ViewMode::error) state.want_reference = false;
+  if (new_view && !view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, label);
 }
 
@@ -45,19 +47,22 @@ void set_fit_size(ViewerState& state, int width, int height) {
 }
 
 void select_view(ViewerState& state, ViewMode mode) {
+  const bool missed_before = view_info(state.view).needs_missed;
   state.view = mode;
-  if (mode == ViewMode::error && !state.want_reference) set_want_reference(state, true);
+  const ViewInfo& info = view_info(mode);
+  if (info.needs_reference && !state.want_reference) set_want_reference(state, true);
+  if (info.needs_missed != missed_before) mark_changed(state, std::string("view ") + info.name);
 }
 
 void set_camera(ViewerState& state, const renderer::Camera& camera) {
   state.camera = camera;
-  if (state.view != ViewMode::error) state.want_reference = false;
+  if (!view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, "");
 }
 
 void reset_camera(ViewerState& state) {
   state.camera.reset();
-  if (state.view != ViewMode::error) state.want_reference = false;
+  if (!view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, "camera reset");
 }
 
@@ -85,6 +90,8 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
 ViewRequest make_request(const ViewerState& state) {
   ViewRequest r;
   r.settings = state.settings;
+  if (view_info(state.view).needs_missed)
+    r.settings.missed_samples = std::max(r.settings.missed_samples, kDefaultMissedSamples);
   r.camera = state.camera;
   r.want_reference = state.want_reference;
   r.inspect_pixel = state.inspect_pixel;

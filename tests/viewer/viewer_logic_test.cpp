@@ -19,6 +19,10 @@
 
 namespace {
 using namespace app::viewer;
+using app::parse_view_mode;
+using app::view_info;
+using app::ViewMode;
+using app::ViewPixels;
 
 renderer::Camera test_camera() {
   renderer::Camera c;
@@ -273,10 +277,10 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
     const double expected = 100.0 * 0.01 * static_cast<double>(i) / 2.0;
     EXPECT_NEAR(image.noise_pct[i], expected, 1e-3 + 1e-3 * expected) << i;
     // The hover read-out shows the same value.
-    const PixelInfo p =
-        pixel_info(image, ErrorImage{}, static_cast<int>(i % 4), static_cast<int>(i / 4));
-    ASSERT_TRUE(p.noise_pct.has_value()) << i;
-    EXPECT_FLOAT_EQ(*p.noise_pct, image.noise_pct[i]) << i;
+    const std::optional<double> hover =
+        view_info(ViewMode::noise).value(view_pixels(image, ErrorImage{}), i);
+    ASSERT_TRUE(hover.has_value()) << i;
+    EXPECT_FLOAT_EQ(static_cast<float>(*hover), image.noise_pct[i]) << i;
   }
   renderer::HeatmapRange range;
   const std::vector<std::uint8_t> rgb = view_rgb8(image, ErrorImage{}, ViewMode::noise, range);
@@ -290,7 +294,7 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
   apply_tile_updates(single, all_tiles(f, 2, 0, 2));
   view_rgb8(single, ErrorImage{}, ViewMode::noise, range);
   EXPECT_EQ(range.max, 0.0);
-  EXPECT_FALSE(pixel_info(single, ErrorImage{}, 3, 2).noise_pct.has_value());
+  EXPECT_FALSE(view_info(ViewMode::noise).value(view_pixels(single, ErrorImage{}), 2 * 4 + 3));
   EXPECT_EQ(parse_view_mode("noise"), ViewMode::noise);
 }
 
@@ -332,7 +336,7 @@ TEST(DisplayImage, ErrorAgainstTheReferenceUsesPassZero) {
   renderer::HeatmapRange range;
   view_rgb8(other, e, ViewMode::error, range);
   EXPECT_GT(range.max, 0.0);
-  EXPECT_TRUE(pixel_info(other, e, 3, 3).error_pct.has_value());
+  EXPECT_TRUE(view_info(ViewMode::error).value(view_pixels(other, e), 3 * 16 + 3).has_value());
 }
 
 // The error bound travels with the tiles: the view, the hover read-out and the totals show the
@@ -345,8 +349,9 @@ TEST(DisplayImage, TheErrorBoundViewShowsEachPixelsBoundWithoutAReference) {
   }
   DisplayImage image;
   apply_tile_updates(image, all_tiles(f, 3, 1, 8));
-  EXPECT_NEAR(pixel_info(image, ErrorImage{}, 3, 0).error_bound_pct, 100.0 * 0.03 / 3.0, 1e-4);
-  EXPECT_FALSE(pixel_info(image, ErrorImage{}, 3, 0).error_pct.has_value());
+  const ViewPixels pixels = view_pixels(image, ErrorImage{});
+  EXPECT_NEAR(*view_info(ViewMode::bound).value(pixels, 3), 100.0 * 0.03 / 3.0, 1e-4);
+  EXPECT_FALSE(view_info(ViewMode::error).value(pixels, 3).has_value());
   renderer::HeatmapRange range;
   const std::vector<std::uint8_t> bound = view_rgb8(image, ErrorImage{}, ViewMode::bound, range);
   EXPECT_DOUBLE_EQ(range.min, 0.0);
