@@ -227,16 +227,12 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   // Every heatmap the view table gives a flag, from the fields this render has; their ranges go
   // into the statistics, so each is drawn before the statistics are encoded, and only the pixels
   // of those asked for are kept.
-  const auto as_float = [](const std::vector<double>& v) {
-    return std::vector<float>(v.begin(), v.end());
-  };
-  const std::vector<float> lights = as_float(per_sample(fb, fb.lights_tested));
-  const std::vector<float> nodes = as_float(per_sample(fb, fb.nodes_visited));
-  const std::vector<float> bound = as_float(renderer::error_bound_pct_image(fb));
-  const std::vector<float> noise = as_float(renderer::pixel_std_error_pct(fb));
-  const std::vector<float> error = as_float(error_pct);
-  std::vector<float> missed;
-  if (stats.missed) missed = as_float(renderer::missed_pct_image(fb));
+  const std::vector<double> lights = per_sample(fb, fb.lights_tested);
+  const std::vector<double> nodes = per_sample(fb, fb.nodes_visited);
+  const std::vector<double> bound = renderer::error_bound_pct_image(fb);
+  const std::vector<double> noise = renderer::pixel_std_error_pct(fb);
+  std::vector<double> missed;
+  if (stats.missed) missed = renderer::missed_pct_image(fb);
   ViewPixels pixels;
   pixels.count = fb.samples.size();
   pixels.samples = fb.samples.data();
@@ -245,7 +241,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   pixels.error_bound_pct = bound.data();
   pixels.noise_pct = noise.data();
   if (stats.missed) pixels.missed_pct = missed.data();
-  if (outputs.reference_rt) pixels.error_pct = error.data();
+  if (outputs.reference_rt) pixels.error_pct = error_pct.data();
   std::map<ViewMode, std::vector<std::uint8_t>> heatmap_rgb;
   for (const ViewInfo& view : view_table()) {
     if (*view.output_flag == '\0' || (view.needs_reference && !outputs.reference_rt) ||

@@ -13,13 +13,13 @@ bool rendered(const ViewPixels& p, std::size_t i) {
 }
 
 // A per-sample field of a rendered pixel.
-Value sampled(const ViewPixels& p, const float* field, std::size_t i) {
-  if (field == nullptr || !rendered(p, i)) return std::nullopt;
+Value sampled(const ViewPixels& p, const PixelField& field, std::size_t i) {
+  if (!field || !rendered(p, i)) return std::nullopt;
   return field[i];
 }
 
 bool compared(const ViewPixels& p, std::size_t i) {
-  return p.error_pct != nullptr && p.error_pct[i] >= 0.0f;
+  return p.error_pct && p.error_pct[i] >= 0.0;
 }
 
 Value lights_value(const ViewPixels& p, std::size_t i) {
@@ -44,7 +44,7 @@ Value error_value(const ViewPixels& p, std::size_t i) {
   return p.error_pct[i];
 }
 Value difference_value(const ViewPixels& p, std::size_t i) {
-  if (!compared(p, i) || p.difference_pct == nullptr) return std::nullopt;
+  if (!compared(p, i) || !p.difference_pct) return std::nullopt;
   return p.difference_pct[i];
 }
 Value mask_value(const ViewPixels& p, std::size_t i) {
@@ -91,7 +91,7 @@ std::string difference_hover(const ViewPixels& p, std::size_t i) {
 std::string missed_hover(const ViewPixels& p, std::size_t i) {
   const Value v = missed_value(p, i);
   if (!v) return "missed light   shown with the Missed light view";
-  const double se = p.missed_std_error_pct != nullptr ? p.missed_std_error_pct[i] : 0.0;
+  const double se = p.missed_std_error_pct ? p.missed_std_error_pct[i] : 0.0;
   return format("missed light   %.3f%% +- %.3f%% (std error)", *v, se);
 }
 std::string mask_hover(const ViewPixels& p, std::size_t i) {

@@ -34,21 +34,39 @@ enum class RangeRule {
   threshold,        // 0 or 1: above the chosen threshold or not
 };
 
+// One per-pixel field, borrowed: floats (the viewer keeps them) or doubles (a headless render's,
+// read at full precision so its heatmap ranges equal its statistics). Empty: not available.
+class PixelField {
+ public:
+  // Implicit: a field is its array (`pixels.noise_pct = image.noise_pct.data()`).
+  PixelField() = default;
+  PixelField(const float* values) : floats_(values) {}
+  PixelField(const double* values) : doubles_(values) {}
+  explicit operator bool() const { return floats_ != nullptr || doubles_ != nullptr; }
+  double operator[](std::size_t i) const {
+    return floats_ != nullptr ? static_cast<double>(floats_[i]) : doubles_[i];
+  }
+
+ private:
+  const float* floats_ = nullptr;
+  const double* doubles_ = nullptr;
+};
+
 // The per-pixel fields a view reads, borrowed from the caller (the viewer's display image or a
 // headless framebuffer), pixel order. A null field is not available (no reference, no
 // missed-light estimate, a preview); the views reading it then have no value anywhere.
 struct ViewPixels {
   std::size_t count = 0;
   const std::uint32_t* samples = nullptr;  // 0: not rendered
-  const float* lights_tested = nullptr;    // per sample
-  const float* nodes_visited = nullptr;    // per sample
-  const float* error_bound_pct = nullptr;
-  const float* noise_pct = nullptr;  // estimated standard error, from the second sample on
-  const float* missed_pct = nullptr;
-  const float* missed_std_error_pct = nullptr;
-  const float* error_pct = nullptr;       // against rt; negative where not compared
-  const float* difference_pct = nullptr;  // signed (method - rt), where error_pct is known
-  double mask_threshold_pct = 1.0;        // the mask view's error threshold
+  PixelField lights_tested;                // per sample
+  PixelField nodes_visited;                // per sample
+  PixelField error_bound_pct;
+  PixelField noise_pct;  // estimated standard error, from the second sample on
+  PixelField missed_pct;
+  PixelField missed_std_error_pct;
+  PixelField error_pct;             // against rt; negative where not compared
+  PixelField difference_pct;        // signed (method - rt), where error_pct is known
+  double mask_threshold_pct = 1.0;  // the mask view's error threshold
 };
 
 struct ViewInfo {

@@ -17,6 +17,23 @@ std::size_t pixel_count(const DisplayImage& image) {
   return static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
 }
 
+// L with 2^L <= n < 2^(L+1), for n >= 1.
+int power_of_two_level(std::uint32_t n) {
+  int level = 0;
+  while (n >>= 1) ++level;
+  return level;
+}
+
+// Pixel i's mean colour over `samples` of its samples (all of them, or a power of two it has
+// kept), or null when it has not kept that one.
+const std::uint8_t* mean_rgb_at(const DisplayImage& image, std::size_t i, std::uint32_t samples) {
+  if (samples == image.samples[i]) return &image.rgb[3 * i];
+  const auto level = static_cast<std::size_t>(power_of_two_level(samples));
+  if (level >= image.rgb_at_power_of_two.size() || image.rgb_at_power_of_two[level].empty())
+    return nullptr;
+  return &image.rgb_at_power_of_two[level][3 * i];
+}
+
 void start_generation(DisplayImage& image, std::uint64_t generation, int width, int height) {
   const bool same_size = width == image.width && height == image.height;
   image.width = width;
@@ -27,7 +44,7 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
     image.rgb.assign(3 * n, 0);
     image.radiance.assign(n, glm::vec3(0.0f));
   }
-  image.first_pass_rgb.assign(3 * n, 0);
+  image.rgb_at_power_of_two.clear();
   image.samples.assign(n, 0);
   image.lights_tested.assign(n, 0.0f);
   image.nodes_visited.assign(n, 0.0f);
@@ -79,8 +96,13 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       if (u.samples[k] == 0) continue;
       for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
       image.radiance[i] = u.radiance[k];
-      if (u.samples[k] == 1) {
-        for (int c = 0; c < 3; ++c) image.first_pass_rgb[3 * i + c] = u.rgb[3 * k + c];
+      const std::uint32_t n = u.samples[k];
+      if ((n & (n - 1)) == 0) {
+        const auto level = static_cast<std::size_t>(power_of_two_level(n));
+        if (image.rgb_at_power_of_two.size() <= level) image.rgb_at_power_of_two.resize(level + 1);
+        std::vector<std::uint8_t>& at = image.rgb_at_power_of_two[level];
+        if (at.empty()) at.assign(3 * pixel_count(image), 0);
+        for (int c = 0; c < 3; ++c) at[3 * i + c] = u.rgb[3 * k + c];
       }
     }
   }
@@ -191,14 +213,22 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
   if (image.width != reference.width || image.height != reference.height) return e;
   std::vector<std::size_t> compared;
   std::vector<std::uint8_t> a, b;
+  std::uint32_t fewest = 0;
   for (std::size_t i = 0; i < e.pct.size(); ++i) {
-    if (image.samples[i] == 0 || reference.samples[i] == 0) continue;
+    const std::uint32_t m = image.samples[i], r = reference.samples[i];
+    if (m > 0) ++e.pixels_rendered;
+    if (m == 0 || r == 0) continue;
+    // All passes when both have as many, else the most passes, a power of two, both kept.
+    const std::uint32_t passes = m == r ? m : 1u << power_of_two_level(std::min(m, r));
+    const std::uint8_t* pa = mean_rgb_at(image, i, passes);
+    const std::uint8_t* pb = mean_rgb_at(reference, i, passes);
+    if (pa == nullptr || pb == nullptr) continue;
     compared.push_back(i);
-    a.insert(a.end(), image.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i),
-             image.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
-    b.insert(b.end(), reference.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i),
-             reference.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+    a.insert(a.end(), pa, pa + 3);
+    b.insert(b.end(), pb, pb + 3);
+    fewest = compared.size() == 1 ? passes : std::min(fewest, passes);
   }
+  e.passes = static_cast<int>(fewest);
   const std::vector<double> pct = renderer::pixel_error_pct(a, b);
   const renderer::PixelErrorStats stats = renderer::summarize_pixel_error(pct);
   for (std::size_t k = 0; k < compared.size(); ++k) {
@@ -361,9 +391,22 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
                        renderer::HeatmapRange& range, const renderer::Display& display,
-                       double mask_threshold_pct) {
-  const std::vector<std::uint8_t> rgb =
+                       double mask_threshold_pct, const AbSplit& ab) {
+  std::vector<std::uint8_t> rgb =
       compose_rgb8(image, &preview, error, mode, display, mask_threshold_pct, range);
+  const DisplayImage* reference = ab.reference;
+  if (view_info(mode).colour_map == ColourMap::image && reference != nullptr &&
+      reference->width == image.width && reference->height == image.height &&
+      ab.rt_from_x < image.width) {
+    std::vector<std::uint8_t> rt(rgb.size());
+    image_rgb8(*reference, nullptr, display, rt);
+    const auto width = static_cast<std::size_t>(image.width);
+    const auto from = static_cast<std::size_t>(std::max(ab.rt_from_x, 0));
+    for (std::size_t i = 0; i < rt.size() / 3; ++i) {
+      if (i % width < from) continue;
+      for (int c = 0; c < 3; ++c) rgb[3 * i + c] = rt[3 * i + c];
+    }
+  }
   const std::size_t n = rgb.size() / 3;
   rgba.resize(4 * n);
   for (std::size_t i = 0; i < n; ++i) {

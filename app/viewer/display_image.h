@@ -22,15 +22,17 @@ struct DisplayImage {
   int width = 0;
   int height = 0;
   std::uint64_t generation = 0;
-  std::vector<std::uint8_t> rgb;             // latest mean colour, exposed linear 8-bit
-  std::vector<glm::vec3> radiance;           // latest mean scene-linear radiance (shown)
-  std::vector<std::uint8_t> first_pass_rgb;  // pass 0 (pixel centres): what the error compares
-  std::vector<std::uint32_t> samples;        // 0: not rendered yet in this generation
-  std::vector<float> lights_tested;          // per sample
-  std::vector<float> nodes_visited;          // per sample
-  std::vector<float> noise_pct;              // estimated standard error; 0 below two samples
-  std::vector<TileTotals> tile_totals;       // by tile index
-  std::vector<std::uint8_t> tile_seen;       // by tile index
+  std::vector<std::uint8_t> rgb;    // latest mean colour, exposed linear 8-bit
+  std::vector<glm::vec3> radiance;  // latest mean scene-linear radiance (shown)
+  // The mean colour after 1, 2, 4, ... samples (level L: 2^L), kept so that an error against a
+  // reference that is further along compares the same passes (compute_error_image).
+  std::vector<std::vector<std::uint8_t>> rgb_at_power_of_two;
+  std::vector<std::uint32_t> samples;   // 0: not rendered yet in this generation
+  std::vector<float> lights_tested;     // per sample
+  std::vector<float> nodes_visited;     // per sample
+  std::vector<float> noise_pct;         // estimated standard error; 0 below two samples
+  std::vector<TileTotals> tile_totals;  // by tile index
+  std::vector<std::uint8_t> tile_seen;  // by tile index
   int tiles_seen = 0;
   int pass = 0;                // the pass the latest tile belongs to
   int tiles_done_in_pass = 0;  // tiles of that pass received so far
@@ -76,13 +78,17 @@ TileTotals sum_tile_totals(const DisplayImage& image);
 
 // Pixel error of the image against the reference (docs/design.md: |dR|+|dG|+|dB| of 765, in
 // percent), over the pixels both have rendered, and the signed difference (dR+dG+dB of 765,
-// method - rt) the difference view shows.
+// method - rt) the difference view shows. Each pixel compares the two means over the same
+// passes: all of them where both have as many, else the first 2^L, the most both have done (a
+// method changed while the reference went on starts again from one pass).
 struct ErrorImage {
   std::vector<float> pct;  // per pixel; negative where not comparable (yet)
   std::vector<float> difference_pct;
   double average_pct = 0.0;
   double max_pct = 0.0;
   std::size_t pixels_compared = 0;
+  std::size_t pixels_rendered = 0;  // of the image: all compared when equal
+  int passes = 0;                   // the fewest passes a compared pixel's means are over
   std::uint64_t image_version = 0;
   std::uint64_t reference_version = 0;
 };
@@ -106,10 +112,17 @@ ViewPixels view_pixels(const DisplayImage& image, const ErrorImage& error,
 // dimmed colour of the previous render (image).
 // The image view maps the radiance through `display` (exposure and curve), so a change of those
 // is a new composition, never a new render.
+// A/B against rt: the image view's columns from `rt_from_x` on show `reference` (rt's image of
+// the same view and size) instead of the method's.
+struct AbSplit {
+  const DisplayImage* reference = nullptr;
+  int rt_from_x = 0;
+};
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
                        renderer::HeatmapRange& range, const renderer::Display& display = {},
-                       double mask_threshold_pct = kDefaultMaskThresholdPct);
+                       double mask_threshold_pct = kDefaultMaskThresholdPct,
+                       const AbSplit& ab = {});
 
 // 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview.
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,

@@ -69,6 +69,7 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
     s.error_avg_pct = error.average_pct;
     s.error_max_pct = error.max_pct;
     s.error_pixels = error.pixels_compared;
+    s.error_passes = error.passes;
   }
   return s;
 }
@@ -100,7 +101,8 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   r.error_bound = s.error_bound;
   if (s.error_avg_pct) {
     r.error = RenderPixelError{*s.error_avg_pct, *s.error_max_pct, s.error_pixels,
-                               "pass 0 against the rt reference, pixels both have rendered",
+                               "the mean over the same passes (" + std::to_string(s.error_passes) +
+                                   ") against the rt reference's, pixels both have rendered",
                                status.reference_seconds};
   }
   r.std_error_avg_pct = s.noise_avg_pct;

@@ -30,6 +30,7 @@ struct LiveStats {
   std::optional<double> error_avg_pct;
   std::optional<double> error_max_pct;
   std::size_t error_pixels = 0;
+  int error_passes = 0;  // the means compared are over this many passes (ErrorImage::passes)
   // The certified bound of that error over the pixels received, known without the reference.
   std::optional<renderer::PixelErrorStats> error_bound;
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), averaged over

@@ -1,6 +1,7 @@
 #include "app/viewer/viewer_state.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scenes/scene_models.h"
 
@@ -69,6 +70,26 @@ void reset_camera(ViewerState& state) {
 void set_want_reference(ViewerState& state, bool want) {
   state.want_reference = want;
   mark_changed(state, "");
+}
+
+void set_ab_rt(ViewerState& state, bool rt) {
+  state.ab_rt = rt;
+  if (rt && !state.want_reference) set_want_reference(state, true);
+}
+
+void set_swipe(ViewerState& state, std::optional<double> divider) {
+  if (divider) divider = std::clamp(*divider, 0.0, 1.0);
+  state.swipe = divider;
+  if (divider && !state.want_reference) set_want_reference(state, true);
+}
+
+int rt_from_column(const ViewerState& state) {
+  const int width = state.image.width;
+  const bool reference = state.want_reference && state.reference.width == width &&
+                         state.reference.height == state.image.height && width > 0;
+  if (!reference) return width;
+  if (state.swipe) return static_cast<int>(std::lround(*state.swipe * width));
+  return state.ab_rt ? 0 : width;
 }
 
 bool scene_ready(const ViewerState& state) {

@@ -34,6 +34,11 @@ struct ViewerState {
   ViewMode view = ViewMode::image;
   bool want_reference = false;
   double mask_threshold_pct = kDefaultMaskThresholdPct;  // the mask view's
+  // A/B against rt (the image view): show rt's picture instead of the method's, or split the
+  // picture at a divider (fraction of its width from the left: the method left, rt right).
+  bool ab_rt = false;
+  std::optional<double> swipe;
+  bool swipe_dragging = false;  // the mouse holds the divider
 
   bool request_dirty = true;  // post a request at the end of this frame
   std::string change_label;   // what changed, for the latency report (empty: not reported)
@@ -101,6 +106,12 @@ void select_view(ViewerState& state, ViewMode mode);
 void set_camera(ViewerState& state, const renderer::Camera& camera);
 void reset_camera(ViewerState& state);
 void set_want_reference(ViewerState& state, bool want);
+// A/B: show rt's image (asking for the reference) or the method's; split at a divider or not.
+void set_ab_rt(ViewerState& state, bool rt);
+void set_swipe(ViewerState& state, std::optional<double> divider);
+// The first column of the image view that shows rt's picture: 0 for rt, the width for the method
+// (or while there is no reference), the divider's column while swiping.
+int rt_from_column(const ViewerState& state);
 // Pins the inspector on a pixel (image pixels from the top left), or clears it.
 void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2>>& pixel);
 

@@ -127,9 +127,9 @@ TEST(ViewTable, EveryViewIsDrawnWithALegendAHoverReadOutAndASnapshotName) {
     EXPECT_GT(colours.size(), 1u);
     // Without the fields it reads, no value, and the read-out says why.
     app::ViewPixels empty = pixels;
-    empty.error_pct = nullptr;
-    empty.difference_pct = nullptr;
-    empty.missed_pct = nullptr;
+    empty.error_pct = {};
+    empty.difference_pct = {};
+    empty.missed_pct = {};
     std::vector<std::uint32_t> unrendered(pixels.count, 0);
     empty.samples = unrendered.data();
     EXPECT_FALSE(view.value(empty, 0).has_value());
