@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <stb/stb_image.h>
 #include "tests/support/exr_file.h"
-#include "tests/support/png_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/xvfb_server.h"
 
@@ -24,10 +24,19 @@ namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::have_xvfb;
 
-using Png = levrt_test::PngImage;
+struct Png {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
 
 Png read_png(const fs::path& path) {
-  return levrt_test::read_png_image(path);
+  Png png;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
+  if (!data) return {};
+  png.rgb.assign(data, data + 3 * static_cast<std::size_t>(png.width) * png.height);
+  stbi_image_free(data);
+  return png;
 }
 
 // Pixels that differ inside the picture (right of the panel, above the statistics).
