@@ -133,6 +133,7 @@ struct Worker {
       WorkerStatus& st = shared.status;
       st.reference_passes_done = passes;
       st.reference_seconds = seconds;
+      if (passes == 1) st.reference_first_pass_seconds = seconds;
       if (!error.empty()) {
         st.reference = ReferencePhase::failed;
         st.error = "rt reference: " + error;
@@ -169,6 +170,7 @@ struct Worker {
       s.reference_generation = 0;
       s.reference_tile_count = 0;
       s.reference_passes_done = 0;
+      s.reference_first_pass_seconds = 0.0;
     });
   }
 
@@ -372,6 +374,7 @@ struct Worker {
           st.reference_started = Clock::now();
           st.reference_seconds = 0.0;
           st.reference_passes_done = 0;
+          st.reference_first_pass_seconds = 0.0;
         });
       }
       if (reference_due()) reference.resume();

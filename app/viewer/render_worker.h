@@ -102,6 +102,7 @@ struct WorkerStatus {
   // It renders as many passes as the method (the settings' passes), taking turns with it.
   int reference_passes_done = 0;
   int reference_passes_target = 0;
+  double reference_first_pass_seconds = 0.0;  // its pass 0 (0: not done yet)
 
   // The inspection of the pinned pixel in the render shown (null: none asked for, or the pixel
   // is outside the image).

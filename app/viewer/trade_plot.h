@@ -27,7 +27,23 @@ struct TradePoint {
 struct TradePlot {
   std::uint64_t reference_generation = 0;  // the view the points belong to
   std::vector<TradePoint> points;
+  double reference_pass0_seconds = 0.0;  // rt's pass 0 (0: not known yet): the speedups' base
 };
+
+// Both axes are logarithmic, so small tolerances (fast, tiny errors) spread out instead of
+// crowding a corner: a decade of time or error is the same length anywhere. An error of 0 (the
+// image equals rt) sits on the floor, a decade below the smallest error above 0.
+struct TradeAxes {
+  double min_seconds = 0.0, max_seconds = 0.0;
+  double min_error_pct = 0.0, max_error_pct = 0.0;  // the floor and the top
+};
+TradeAxes trade_axes(const std::vector<TradePoint>& points);
+// A point's position in [0, 1] on each axis (0: left, bottom).
+double trade_x(const TradeAxes& axes, double seconds);
+double trade_y(const TradeAxes& axes, double error_pct);
+// The label drawn beside a point: its tolerance (its method's when it ignores the tolerance) and
+// its speedup over rt's pass 0 when that is known ("0.01, 12x").
+std::string trade_label(const TradePoint& point, double reference_pass0_seconds);
 
 // Forgets the points when the reference (the view) changed.
 void follow_reference(TradePlot& plot, std::uint64_t reference_generation);

@@ -216,6 +216,7 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
   apply_tile_updates(state.reference, reference.updates);
   state.in_flight = worker.tiles_in_flight();
   follow_reference(state.trade, state.status.reference_generation);
+  state.trade.reference_pass0_seconds = state.status.reference_first_pass_seconds;
 }
 
 void update_error(ViewerState& state, ErrorClock& clock, Clock::time_point now, bool force) {

@@ -438,6 +438,34 @@ TEST(DisplayImage, APreviewCoversTheFrameOnScreenButNeverTheSavedViews) {
   EXPECT_FALSE(apply_preview_updates(preview, image, preview_tiles(coarse, 4, w, h, 3, 8)));
 }
 
+// Log axes: equal ratios are equal distances, an error of 0 sits on the floor below every other
+// point, and each point is labelled with its tolerance and its speedup over rt's pass 0.
+TEST(TradePlot, LogAxesSpreadDecadesEvenlyAndLabelsNameToleranceAndSpeedup) {
+  std::vector<TradePoint> points = {{lev::Method::lev, 0.1, 0.01, 1.0, 5.0, false, 1, 1},
+                                    {lev::Method::lev, 0.01, 0.1, 0.1, 1.0, false, 1, 2},
+                                    {lev::Method::lev, 0.001, 1.0, 0.01, 0.1, false, 1, 3},
+                                    {lev::Method::rt, 0.01, 10.0, 0.0, 0.0, false, 1, 4}};
+  const TradeAxes axes = trade_axes(points);
+  const double x0 = trade_x(axes, 0.01), x1 = trade_x(axes, 0.1), x2 = trade_x(axes, 1.0);
+  const double x3 = trade_x(axes, 10.0);
+  EXPECT_GT(x0, 0.0);
+  EXPECT_LT(x3, 1.0);
+  EXPECT_NEAR(x1 - x0, x2 - x1, 1e-12);
+  EXPECT_NEAR(x2 - x1, x3 - x2, 1e-12);
+  const double y0 = trade_y(axes, 1.0), y1 = trade_y(axes, 0.1), y2 = trade_y(axes, 0.01);
+  EXPECT_NEAR(y0 - y1, y1 - y2, 1e-12);
+  EXPECT_LT(y0, 1.0);
+  EXPECT_EQ(trade_y(axes, 0.0), 0.0);  // the floor
+  EXPECT_GT(y2, 0.0);                  // above it
+  EXPECT_EQ(trade_label(points[1], 2.0), "0.01, 20x");
+  EXPECT_EQ(trade_label(points[1], 0.0), "0.01");  // rt's pass 0 not known yet
+  EXPECT_EQ(trade_label(points[3], 10.0), "rt, 1x");
+  // One point: a range around it, inside the plot.
+  const TradeAxes single = trade_axes({points[1]});
+  EXPECT_GT(trade_x(single, 0.1), 0.0);
+  EXPECT_LT(trade_x(single, 0.1), 1.0);
+}
+
 TEST(TradePlot, PointsBelongToOneReferenceAndReplaceTheSameSetting) {
   TradePlot plot;
   follow_reference(plot, 4);
