@@ -196,6 +196,13 @@ int run_cli(int argc, char** argv) {
         render->add_option(view.output_flag, outputs.heatmaps[view.mode], view.output_help)
             ->type_name("FILE.png"));
   }
+  std::string heatmap_range;
+  CLI::Option* heatmap_range_option =
+      render
+          ->add_option("--heatmap-range", heatmap_range,
+                       "draw every heatmap over LO..HI (log scale above LO) instead of its own "
+                       "min..max, to compare renders on one scale")
+          ->type_name("LO,HI");
   std::string fail_above;
   CLI::Option* fail_above_option =
       render
@@ -276,6 +283,8 @@ int run_cli(int argc, char** argv) {
       outputs.reference_rt = true;
     }
     if (fail_above_option->count() > 0) outputs.fail_above = parse_accuracy_gate(fail_above);
+    if (heatmap_range_option->count() > 0)
+      outputs.heatmap_range = parse_heatmap_range(heatmap_range);
     return run_render(settings, outputs);
   }
   if (inspect->parsed()) {

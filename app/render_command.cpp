@@ -2,8 +2,11 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -64,6 +67,22 @@ std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& fb
   if (!fb.missed_sum.empty()) add("missed_pct", renderer::missed_pct_image(fb));
   if (!error_pct.empty()) add("error_pct", error_pct);
   return channels;
+}
+
+renderer::HeatmapRange parse_heatmap_range(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  const auto number = [&](const std::string& part, double& v) {
+    char* end = nullptr;
+    errno = 0;
+    v = std::strtod(part.c_str(), &end);
+    return !part.empty() && *end == '\0' && errno == 0 && std::isfinite(v);
+  };
+  renderer::HeatmapRange range;
+  if (comma == std::string::npos || !number(text.substr(0, comma), range.min) ||
+      !number(text.substr(comma + 1), range.max) || range.min < 0.0 || !(range.max > range.min)) {
+    throw UsageError("--heatmap-range: must be LO,HI with 0 <= LO < HI, got '" + text + "'");
+  }
+  return range;
 }
 
 std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
@@ -249,7 +268,9 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
       continue;
     }
     renderer::HeatmapRange& range = stats.heatmap_ranges[view.mode];
-    std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(view_values(view, pixels), range);
+    if (outputs.heatmap_range) range = *outputs.heatmap_range;
+    std::vector<std::uint8_t> rgb =
+        renderer::heatmap_rgb8(view_values(view, pixels), range, outputs.heatmap_range.has_value());
     if (!heatmap_path(outputs, view.mode).empty()) heatmap_rgb[view.mode] = std::move(rgb);
   }
   const nlohmann::ordered_json json = render_stats_json(stats);

@@ -15,6 +15,7 @@
 #include "app/scene_loading.h"
 #include "app/settings.h"
 #include "app/view_table.h"
+#include "renderer/heatmap.h"
 #include "renderer/render_service.h"
 
 namespace app {
@@ -27,11 +28,18 @@ struct RenderOutputs {
   // --missed-samples says); the error heatmap, the reference's own image PNG and the accuracy
   // gate (exit 3 above it) need reference_rt.
   std::map<ViewMode, std::string> heatmaps;
+  // --heatmap-range: every heatmap drawn over this range (renderer::heatmap_position's scale)
+  // instead of its own min..max, so renders are compared on one scale.
+  std::optional<renderer::HeatmapRange> heatmap_range;
   std::string reference_image;
   std::optional<AccuracyGate> fail_above;
   bool reference_rt = false;
   bool quiet = false;  // no progress, no summary, no "wrote" line
 };
+
+// --heatmap-range LO,HI: two finite numbers, 0 <= LO < HI; throws UsageError (naming the flag
+// and the text) otherwise.
+renderer::HeatmapRange parse_heatmap_range(const std::string& text);
 
 // The outputs render writes, in the order of the "wrote" line.
 std::vector<OutputPath> render_output_paths(const RenderOutputs& outputs);

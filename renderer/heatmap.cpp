@@ -28,13 +28,25 @@ std::vector<std::uint8_t> heatmap_rgb8(const std::vector<double>& values, Heatma
   const double denominator = std::log1p(std::max(range.max, 0.0));
   std::vector<std::uint8_t> rgb(values.size() * 3);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    const double t = denominator > 0.0 ? std::log1p(std::max(values[i], 0.0)) / denominator : 0.0;
+    double t = denominator > 0.0 ? std::log1p(std::max(values[i], 0.0)) / denominator : 0.0;
+    if (use_given_range) t = heatmap_position(values[i], range);
     const glm::u8vec3 c = viridis(static_cast<float>(t));
     rgb[3 * i] = c.x;
     rgb[3 * i + 1] = c.y;
     rgb[3 * i + 2] = c.z;
   }
   return rgb;
+}
+
+double heatmap_position(double value, const HeatmapRange& range) {
+  const double span = range.max - range.min;
+  if (!(span > 0.0)) return 0.0;
+  return std::clamp(std::log1p(std::max(value - range.min, 0.0)) / std::log1p(span), 0.0, 1.0);
+}
+
+double heatmap_value_at(double t, const HeatmapRange& range) {
+  const double span = std::max(range.max - range.min, 0.0);
+  return range.min + std::expm1(std::clamp(t, 0.0, 1.0) * std::log1p(span));
 }
 
 }  // namespace renderer

@@ -17,9 +17,17 @@ struct HeatmapRange {
   double max = 0.0;
 };
 
-// Maps values >= 0 to colours with t = log(1 + v) / log(1 + range.max). The range is the data's
-// min and max unless given (the viewer pins a range to compare frames).
+// Maps values >= 0 to colours with t = log(1 + v) / log(1 + range.max), range the data's min and
+// max. With a given range (`--heatmap-range`, the viewer's range lock: two renders compared on
+// one scale) the scale is the viewer's, from the given minimum: heatmap_position.
 std::vector<std::uint8_t> heatmap_rgb8(const std::vector<double>& values, HeatmapRange& range,
                                        bool use_given_range = false);
+
+// In [0, 1]: t = log(1 + v - min) / log(1 + max - min), clamped; 0 for a constant range and for
+// values at or below min.
+double heatmap_position(double value, const HeatmapRange& range);
+
+// The value at position t in [0, 1] (a legend's ticks).
+double heatmap_value_at(double t, const HeatmapRange& range);
 
 }  // namespace renderer

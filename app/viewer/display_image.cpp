@@ -290,10 +290,10 @@ renderer::HeatmapRange view_range(const ViewInfo& info, const std::vector<double
   throw std::logic_error("range rule missing from view_range");
 }
 
-std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewImage* preview,
-                                       const ErrorImage& error, ViewMode mode,
-                                       const renderer::Display& display, double mask_threshold_pct,
-                                       renderer::HeatmapRange& range) {
+std::vector<std::uint8_t> compose_rgb8(
+    const DisplayImage& image, const PreviewImage* preview, const ErrorImage& error, ViewMode mode,
+    const renderer::Display& display, double mask_threshold_pct, renderer::HeatmapRange& range,
+    const std::optional<renderer::HeatmapRange>& locked_range = std::nullopt) {
   const std::size_t n = pixel_count(image);
   if (preview != nullptr && (preview->generation != image.generation ||
                              preview->width != image.width || preview->height != image.height)) {
@@ -326,7 +326,8 @@ std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewI
     known[i] = v.has_value();
     if (v) values[i] = *v;
   }
-  range = view_range(info, values, known);
+  range = locked_range && info.range_rule == RangeRule::data ? *locked_range
+                                                             : view_range(info, values, known);
   for (std::size_t i = 0; i < n; ++i) {
     std::uint8_t* out = &rgb[3 * i];
     if (!known[i]) {
@@ -391,9 +392,10 @@ std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage&
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
                        renderer::HeatmapRange& range, const renderer::Display& display,
-                       double mask_threshold_pct, const AbSplit& ab) {
+                       double mask_threshold_pct, const AbSplit& ab,
+                       const std::optional<renderer::HeatmapRange>& locked_range) {
   std::vector<std::uint8_t> rgb =
-      compose_rgb8(image, &preview, error, mode, display, mask_threshold_pct, range);
+      compose_rgb8(image, &preview, error, mode, display, mask_threshold_pct, range, locked_range);
   const DisplayImage* reference = ab.reference;
   if (view_info(mode).colour_map == ColourMap::image && reference != nullptr &&
       reference->width == image.width && reference->height == image.height &&

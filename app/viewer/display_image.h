@@ -118,11 +118,12 @@ struct AbSplit {
   const DisplayImage* reference = nullptr;
   int rt_from_x = 0;
 };
+// A locked range (the legend's lock) replaces a min..max range rule's.
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
                        renderer::HeatmapRange& range, const renderer::Display& display = {},
-                       double mask_threshold_pct = kDefaultMaskThresholdPct,
-                       const AbSplit& ab = {});
+                       double mask_threshold_pct = kDefaultMaskThresholdPct, const AbSplit& ab = {},
+                       const std::optional<renderer::HeatmapRange>& locked_range = std::nullopt);
 
 // 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview.
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,

@@ -14,11 +14,9 @@
 
 namespace app::viewer {
 
-// In [0, 1]; 0 for a constant range and for values at or below min.
-double heatmap_position(double value, const renderer::HeatmapRange& range);
-
-// The value at position t in [0, 1] (the legend's ticks).
-double heatmap_value_at(double t, const renderer::HeatmapRange& range);
+// The scale itself is renderer/heatmap.h's (`levrt render --heatmap-range` draws with it too).
+using renderer::heatmap_position;
+using renderer::heatmap_value_at;
 
 // t in [-1, 1] (clamped): -1 blue, 0 near-white, 1 red.
 glm::u8vec3 diverging_rgb8(double t);

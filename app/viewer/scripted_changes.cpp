@@ -116,6 +116,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "mask_threshold") {
     const std::optional<double> t = parse_number(c.value, 0.0, kMaxMaskThresholdPct);
     if (!t || *t <= 0.0) reject(text, "mask_threshold needs a percentage in (0, 100]");
+  } else if (c.key == "range_lock") {
+    if (c.value != "on" && c.value != "off") reject(text, "range_lock must be on or off");
   } else if (c.key == "trade") {
     if (c.value != "report") reject(text, "trade must be report");
   } else if (c.key == "hover") {
@@ -143,9 +145,10 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
-    reject(text, "key must be one of " + keys +
-                     "lights|view|reference|ab|swipe|mask_threshold|hover|inspect|inspect_row|"
-                     "window|snapshot|screenshot|drop|copy|await|memory|trade");
+    reject(text,
+           "key must be one of " + keys +
+               "lights|view|reference|ab|swipe|mask_threshold|range_lock|hover|inspect|inspect_row|"
+               "window|snapshot|screenshot|drop|copy|await|memory|trade");
   }
   return c;
 }
@@ -267,6 +270,10 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "mask_threshold") {
     state.mask_threshold_pct = *parse_number(c.value, 0.0, kMaxMaskThresholdPct);
+    return ScriptAction::none;
+  }
+  if (c.key == "range_lock") {
+    set_range_lock(state, c.value == "on");
     return ScriptAction::none;
   }
   if (c.key == "trade") {

@@ -155,10 +155,21 @@ void draw_view_section(ViewerState& state) {
           "being traced now.");
       ImGui::PopStyleColor();
       return;
-    case ColourMap::sequential:
+    case ColourMap::sequential: {
+      // The lock keeps this range while renders change, so two compare on one scale.
+      bool locked = locked_range(state).has_value();
+      if (ImGui::Checkbox("lock range", &locked)) set_range_lock(state, locked);
+      if (state.record_controls) record_item(&state.control_rects, "range_lock");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("keep this heatmap's range for every render");
+      if (locked) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%.4g .. %.4g (locked)", state.heatmap_range.min,
+                            state.heatmap_range.max);
+      }
       draw_heatmap_legend(info, state.heatmap_range, rendered,
                           lev::method_info(state.status.method).name);
       return;
+    }
     case ColourMap::diverging:
       draw_diverging_legend(info);
       return;

@@ -160,6 +160,7 @@ struct Picture {
   ViewMode view = ViewMode::image;
   double mask_threshold_pct = -1.0;
   int rt_from_x = -1;  // A/B: the first column showing rt
+  std::optional<renderer::HeatmapRange> locked_range;
   std::uint64_t reference_version = ~0ull;
   // The exposure and curve composed with (NaN: none yet).
   renderer::Display display{std::numeric_limits<double>::quiet_NaN(),
@@ -263,10 +264,17 @@ void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::ti
   add_trade_point(state.trade, p);
 }
 
+bool same_range(const std::optional<renderer::HeatmapRange>& a,
+                const std::optional<renderer::HeatmapRange>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || (a->min == b->min && a->max == b->max);
+}
+
 void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clock,
                      Clock::time_point now, bool force) {
   const bool uses_error = view_info(state.view).needs_reference;
   const int rt_from_x = rt_from_column(state);
+  const std::optional<renderer::HeatmapRange> locked = locked_range(state);
   // rt's picture counts while any of it is shown.
   const std::uint64_t reference_version =
       rt_from_x < state.image.width ? state.reference.version : 0;
@@ -277,14 +285,14 @@ void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clo
   if (picture.image_version == state.image.version && picture.error_version == error_version &&
       picture.view == state.view && picture.mask_threshold_pct == state.mask_threshold_pct &&
       picture.rt_from_x == rt_from_x && picture.reference_version == reference_version &&
-      same_display) {
+      same_range(picture.locked_range, locked) && same_display) {
     return;
   }
   // A new exposure or curve re-maps at once: it is the user's hand on the control.
   if (!force && same_display && seconds_between(picture.composed, now) < kComposeSeconds) return;
   compose_view_rgba(state.image, state.preview, state.error, state.view, picture.rgba,
                     state.heatmap_range, display, state.mask_threshold_pct,
-                    AbSplit{&state.reference, rt_from_x});
+                    AbSplit{&state.reference, rt_from_x}, locked);
   picture.display = display;
   upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
   picture.image_version = state.image.version;
@@ -292,6 +300,7 @@ void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clo
   picture.view = state.view;
   picture.mask_threshold_pct = state.mask_threshold_pct;
   picture.rt_from_x = rt_from_x;
+  picture.locked_range = locked;
   picture.reference_version = reference_version;
   picture.composed = now;
 }

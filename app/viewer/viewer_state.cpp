@@ -72,6 +72,20 @@ void set_want_reference(ViewerState& state, bool want) {
   mark_changed(state, "");
 }
 
+void set_range_lock(ViewerState& state, bool locked) {
+  if (!locked) {
+    state.locked_ranges.erase(state.view);
+  } else if (view_info(state.view).range_rule == RangeRule::data) {
+    state.locked_ranges[state.view] = state.heatmap_range;
+  }
+}
+
+std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state) {
+  const auto it = state.locked_ranges.find(state.view);
+  if (it == state.locked_ranges.end()) return std::nullopt;
+  return it->second;
+}
+
 void set_ab_rt(ViewerState& state, bool rt) {
   state.ab_rt = rt;
   if (rt && !state.want_reference) set_want_reference(state, true);

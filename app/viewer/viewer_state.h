@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,8 @@ struct ViewerState {
   bool ab_rt = false;
   std::optional<double> swipe;
   bool swipe_dragging = false;  // the mouse holds the divider
+  // Heatmap ranges locked by the legend's lock, by view, so renders compare on one scale.
+  std::map<ViewMode, renderer::HeatmapRange> locked_ranges;
 
   bool request_dirty = true;  // post a request at the end of this frame
   std::string change_label;   // what changed, for the latency report (empty: not reported)
@@ -106,6 +109,10 @@ void select_view(ViewerState& state, ViewMode mode);
 void set_camera(ViewerState& state, const renderer::Camera& camera);
 void reset_camera(ViewerState& state);
 void set_want_reference(ViewerState& state, bool want);
+// Locks the view on screen's heatmap range as shown now (a min..max range), or unlocks it.
+void set_range_lock(ViewerState& state, bool locked);
+// The locked range of the view on screen, if any.
+std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state);
 // A/B: show rt's image (asking for the reference) or the method's; split at a divider or not.
 void set_ab_rt(ViewerState& state, bool rt);
 void set_swipe(ViewerState& state, std::optional<double> divider);

@@ -440,6 +440,32 @@ TEST(DisplayImage, APreviewCoversTheFrameOnScreenButNeverTheSavedViews) {
 
 // Log axes: equal ratios are equal distances, an error of 0 sits on the floor below every other
 // point, and each point is labelled with its tolerance and its speedup over rt's pass 0.
+// The legend's lock keeps a heatmap's range for later renders: the composition draws over it
+// and returns it, until unlocked; views that are not min..max ranges have no lock.
+TEST(DisplayImage, ALockedRangeIsKeptForLaterRenders) {
+  DisplayImage image;
+  apply_tile_updates(image, all_tiles(test_framebuffer(16, 8, 0.5f, 1), 3, 0, 8));
+  ViewerState state;
+  state.view = ViewMode::lights;
+  state.heatmap_range = {0.0, 40.0};
+  set_range_lock(state, true);
+  ASSERT_TRUE(locked_range(state).has_value());
+  PreviewImage preview;
+  std::vector<std::uint8_t> locked_rgba, own_rgba;
+  renderer::HeatmapRange range;
+  compose_view_rgba(image, preview, ErrorImage{}, ViewMode::lights, locked_rgba, range, {},
+                    kDefaultMaskThresholdPct, {}, locked_range(state));
+  EXPECT_EQ(range.max, 40.0);
+  compose_view_rgba(image, preview, ErrorImage{}, ViewMode::lights, own_rgba, range);
+  EXPECT_EQ(range.max, 4.0);  // lights tested i % 5: its own maximum
+  EXPECT_NE(locked_rgba, own_rgba);
+  set_range_lock(state, false);
+  EXPECT_FALSE(locked_range(state).has_value());
+  state.view = ViewMode::difference;
+  set_range_lock(state, true);
+  EXPECT_FALSE(locked_range(state).has_value());
+}
+
 TEST(TradePlot, LogAxesSpreadDecadesEvenlyAndLabelsNameToleranceAndSpeedup) {
   std::vector<TradePoint> points = {{lev::Method::lev, 0.1, 0.01, 1.0, 5.0, false, 1, 1},
                                     {lev::Method::lev, 0.01, 0.1, 0.1, 1.0, false, 1, 2},
