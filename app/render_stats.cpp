@@ -73,7 +73,8 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
                  {"position", vec(s.camera.position)},
                  {"target", vec(s.camera.target)},
                  {"up", vec(s.camera.up)},
-                 {"vertical_fov_deg", s.camera.vertical_fov_deg}};
+                 {"vertical_fov_deg", s.camera.vertical_fov_deg},
+                 {"orthographic_half_height", s.camera.orthographic_half_height}};
   j["heatmap_lights_range"] = {s.heatmap_lights_range.min, s.heatmap_lights_range.max};
   j["heatmap_nodes_range"] = {s.heatmap_nodes_range.min, s.heatmap_nodes_range.max};
   if (s.error) j["heatmap_error_range"] = {s.heatmap_error_range.min, s.heatmap_error_range.max};

@@ -56,7 +56,7 @@ struct RenderStats {
   // absent when the render did not compute it.
   std::optional<renderer::PixelErrorStats> error_bound;
   renderer::Camera camera;
-  int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
+  int camera_index = 0;  // which of the scene file's cameras (--camera)
   renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
   renderer::HeatmapRange heatmap_bound_range;  // percent, the error scale
   renderer::HeatmapRange heatmap_error_range;  // percent: the error against the reference
