@@ -163,9 +163,9 @@ int run_snapshot() {
   Settings settings;
   RenderOutputs outputs;
   outputs.image = "out/building.png";
-  outputs.heatmap_lights = "out/building_lights_tested.png";
-  outputs.heatmap_nodes = "out/building_nodes_visited.png";
-  outputs.heatmap_bound = "out/building_error_bound.png";
+  outputs.heatmaps[ViewMode::lights] = "out/building_lights_tested.png";
+  outputs.heatmaps[ViewMode::nodes] = "out/building_nodes_visited.png";
+  outputs.heatmaps[ViewMode::bound] = "out/building_error_bound.png";
   outputs.stats = "out/building_stats.json";
   outputs.reference_rt = true;
   return run_render(settings, outputs);
@@ -182,39 +182,24 @@ int run_cli(int argc, char** argv) {
   SceneFlags render_flags;
   add_scene_flags(*render, render_flags, Settings{});
   RenderOutputs outputs;
-  const std::vector<CLI::Option*> output_options = {
+  std::vector<CLI::Option*> output_options = {
       render
           ->add_option("--out", outputs.image,
                        "image: PNG (displayed; - for standard output) or EXR (scene-linear "
                        "radiance as float, with the per-pixel counters and errors as channels)")
           ->type_name("FILE.png|FILE.exr"),
-      render->add_option("--heatmap-lights", outputs.heatmap_lights, "lights-tested heatmap PNG")
-          ->type_name("FILE.png"),
-      render->add_option("--heatmap-nodes", outputs.heatmap_nodes, "nodes-visited heatmap PNG")
-          ->type_name("FILE.png"),
       render->add_option("--stats", outputs.stats, "statistics JSON")->type_name("FILE.json"),
-      render
-          ->add_option("--heatmap-bound", outputs.heatmap_bound,
-                       "certified error bound heatmap PNG (percent)")
-          ->type_name("FILE.png"),
-      render
-          ->add_option("--heatmap-noise", outputs.heatmap_noise,
-                       "estimated standard error per pixel (noise across passes) heatmap PNG")
-          ->type_name("FILE.png"),
-      render
-          ->add_option(
-              "--heatmap-error", outputs.heatmap_error,
-              "per-pixel error against the reference heatmap PNG (percent; needs --reference)")
-          ->type_name("FILE.png"),
-      render
-          ->add_option("--heatmap-missed", outputs.heatmap_missed,
-                       "missed-light estimate per pixel heatmap PNG (percent; turns the estimate "
-                       "on)")
-          ->type_name("FILE.png"),
       render
           ->add_option("--reference-out", outputs.reference_image,
                        "the reference's image, PNG or EXR (needs --reference)")
           ->type_name("FILE.png|FILE.exr")};
+  // A heatmap flag for every view the table gives one (app/view_table.h).
+  for (const ViewInfo& view : view_table()) {
+    if (*view.output_flag == '\0') continue;
+    output_options.push_back(
+        render->add_option(view.output_flag, outputs.heatmaps[view.mode], view.output_help)
+            ->type_name("FILE.png"));
+  }
   std::string fail_above;
   CLI::Option* fail_above_option =
       render

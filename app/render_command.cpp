@@ -38,6 +38,12 @@ std::vector<double> per_sample(const renderer::Framebuffer& fb,
   return v;
 }
 
+// The heatmap file asked for the view; empty when none is.
+std::string heatmap_path(const RenderOutputs& o, ViewMode view) {
+  const auto path = o.heatmaps.find(view);
+  return path == o.heatmaps.end() ? std::string() : path->second;
+}
+
 }  // namespace
 
 std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& fb,
@@ -61,15 +67,14 @@ std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& fb
 }
 
 std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
-  return {{"--out", o.image, ".png|.exr", "PNG or EXR"},
-          {"--heatmap-lights", o.heatmap_lights, ".png", "PNG"},
-          {"--heatmap-nodes", o.heatmap_nodes, ".png", "PNG"},
-          {"--stats", o.stats, ".json", "JSON"},
-          {"--heatmap-bound", o.heatmap_bound, ".png", "PNG"},
-          {"--heatmap-noise", o.heatmap_noise, ".png", "PNG"},
-          {"--heatmap-error", o.heatmap_error, ".png", "PNG"},
-          {"--heatmap-missed", o.heatmap_missed, ".png", "PNG"},
-          {"--reference-out", o.reference_image, ".png|.exr", "PNG or EXR"}};
+  std::vector<OutputPath> paths = {{"--out", o.image, ".png|.exr", "PNG or EXR"},
+                                   {"--stats", o.stats, ".json", "JSON"}};
+  for (const ViewInfo& view : view_table()) {
+    if (*view.output_flag != '\0')
+      paths.push_back({view.output_flag, heatmap_path(o, view.mode), ".png", "PNG"});
+  }
+  paths.push_back({"--reference-out", o.reference_image, ".png|.exr", "PNG or EXR"});
+  return paths;
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
@@ -163,14 +168,16 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
 
 int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   Settings settings = typed_settings;
-  if (!outputs.heatmap_missed.empty() && settings.missed_samples == 0) {
+  if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.missed_samples == 0) {
     settings.missed_samples = kDefaultMissedSamples;
   }
   render_settings_from(settings);  // validates the combination of settings before any work
   if (!outputs.reference_rt) {
     const std::string rt = lev::method_info(lev::reference_method()).name;
-    if (!outputs.heatmap_error.empty())
-      throw UsageError("--heatmap-error: needs --reference " + rt);
+    for (const ViewInfo& view : view_table()) {
+      if (view.needs_reference && !heatmap_path(outputs, view.mode).empty())
+        throw UsageError(std::string(view.output_flag) + ": needs --reference " + rt);
+    }
     if (!outputs.reference_image.empty())
       throw UsageError("--reference-out: needs --reference " + rt);
     if (outputs.fail_above) throw UsageError("--fail-above: needs --reference " + rt);
@@ -209,35 +216,42 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   watchdog.reset();
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
   const renderer::Framebuffer& fb = result.framebuffer;
-  // The heatmaps' ranges go into the statistics, so every heatmap is drawn before the statistics
-  // are encoded; only the pixels of those asked for are kept.
-  const auto heatmap = [](const std::vector<double>& values, renderer::HeatmapRange& range,
-                          const std::string& path) {
-    std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(values, range);
-    return path.empty() ? std::vector<std::uint8_t>{} : rgb;
-  };
-  const std::vector<std::uint8_t> lights_rgb =
-      heatmap(per_sample(fb, fb.lights_tested), stats.heatmap_lights_range, outputs.heatmap_lights);
-  const std::vector<std::uint8_t> nodes_rgb =
-      heatmap(per_sample(fb, fb.nodes_visited), stats.heatmap_nodes_range, outputs.heatmap_nodes);
-  const std::vector<std::uint8_t> bound_rgb = heatmap(
-      renderer::error_bound_pct_image(fb), stats.heatmap_bound_range, outputs.heatmap_bound);
-  const std::vector<std::uint8_t> noise_rgb =
-      heatmap(renderer::pixel_std_error_pct(fb), stats.heatmap_noise_range, outputs.heatmap_noise);
   std::vector<std::uint8_t> reference_rgb;
-  std::vector<std::uint8_t> error_rgb;
   std::vector<double> error_pct;
   if (outputs.reference_rt) {
     reference_rgb =
         renderer::display_framebuffer_rgb8(reference.framebuffer, display_from(settings));
     error_pct = renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb),
                                           renderer::framebuffer_rgb8(reference.framebuffer));
-    error_rgb = heatmap(error_pct, stats.heatmap_error_range, outputs.heatmap_error);
   }
-  const std::vector<std::uint8_t> missed_rgb =
-      stats.missed ? heatmap(renderer::missed_pct_image(fb), stats.heatmap_missed_range,
-                             outputs.heatmap_missed)
-                   : std::vector<std::uint8_t>{};
+  // Every heatmap the view table gives a flag, from the fields this render has; their ranges go
+  // into the statistics, so each is drawn before the statistics are encoded, and only the pixels
+  // of those asked for are kept.
+  const std::vector<double> lights = per_sample(fb, fb.lights_tested);
+  const std::vector<double> nodes = per_sample(fb, fb.nodes_visited);
+  const std::vector<double> bound = renderer::error_bound_pct_image(fb);
+  const std::vector<double> noise = renderer::pixel_std_error_pct(fb);
+  std::vector<double> missed;
+  if (stats.missed) missed = renderer::missed_pct_image(fb);
+  ViewPixels pixels;
+  pixels.count = fb.samples.size();
+  pixels.samples = fb.samples.data();
+  pixels.lights_tested = lights.data();
+  pixels.nodes_visited = nodes.data();
+  pixels.error_bound_pct = bound.data();
+  pixels.noise_pct = noise.data();
+  if (stats.missed) pixels.missed_pct = missed.data();
+  if (outputs.reference_rt) pixels.error_pct = error_pct.data();
+  std::map<ViewMode, std::vector<std::uint8_t>> heatmap_rgb;
+  for (const ViewInfo& view : view_table()) {
+    if (*view.output_flag == '\0' || (view.needs_reference && !outputs.reference_rt) ||
+        (view.needs_missed && !stats.missed)) {
+      continue;
+    }
+    renderer::HeatmapRange& range = stats.heatmap_ranges[view.mode];
+    std::vector<std::uint8_t> rgb = renderer::heatmap_rgb8(view_values(view, pixels), range);
+    if (!heatmap_path(outputs, view.mode).empty()) heatmap_rgb[view.mode] = std::move(rgb);
+  }
   const nlohmann::ordered_json json = render_stats_json(stats);
   std::vector<OutputFile> files;
   const auto add = [&files](const std::string& path, std::function<std::string()> bytes) {
@@ -252,12 +266,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   const auto png_of = [&fb](const std::vector<std::uint8_t>& rgb) {
     return [&fb, &rgb] { return png_rgb8_bytes(fb.width, fb.height, rgb); };
   };
-  add(outputs.heatmap_lights, png_of(lights_rgb));
-  add(outputs.heatmap_nodes, png_of(nodes_rgb));
-  add(outputs.heatmap_bound, png_of(bound_rgb));
-  add(outputs.heatmap_noise, png_of(noise_rgb));
-  add(outputs.heatmap_error, png_of(error_rgb));
-  add(outputs.heatmap_missed, png_of(missed_rgb));
+  for (const auto& [view, rgb] : heatmap_rgb) add(heatmap_path(outputs, view), png_of(rgb));
   add(outputs.reference_image, [&reference, &reference_rgb, &outputs, &fb] {
     if (is_exr_path(outputs.reference_image)) {
       const renderer::Framebuffer& rf = reference.framebuffer;

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,23 +14,19 @@
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "app/settings.h"
+#include "app/view_table.h"
 #include "renderer/render_service.h"
 
 namespace app {
 
 struct RenderOutputs {
-  std::string image;           // PNG (the displayed image) or EXR (radiance and channels)
-  std::string heatmap_lights;  // PNG
-  std::string heatmap_nodes;   // PNG
-  std::string heatmap_bound;   // PNG: the certified error bound per pixel (renderer/error_bound.h)
-  std::string stats;           // JSON
-  std::string heatmap_noise;   // PNG: the estimated standard error per pixel (pixel_noise.h)
-  // With reference_rt only: the per-pixel error against the reference (pixel_error.h) as a
-  // heatmap PNG, the reference's own image PNG, and the accuracy gate (exit 3 above it).
-  // The missed-light estimate per pixel (renderer/missed_light.h) as a heatmap PNG; turns the
-  // estimate on (kDefaultMissedSamples draws unless --missed-samples says).
-  std::string heatmap_missed;
-  std::string heatmap_error;
+  std::string image;  // PNG (the displayed image) or EXR (radiance and channels)
+  std::string stats;  // JSON
+  // The heatmap PNGs asked for, by view (app/view_table.h: the rows with an output flag). The
+  // missed-light heatmap turns the estimate on (kDefaultMissedSamples draws unless
+  // --missed-samples says); the error heatmap, the reference's own image PNG and the accuracy
+  // gate (exit 3 above it) need reference_rt.
+  std::map<ViewMode, std::string> heatmaps;
   std::string reference_image;
   std::optional<AccuracyGate> fail_above;
   bool reference_rt = false;

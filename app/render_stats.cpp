@@ -75,11 +75,11 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
                  {"up", vec(s.camera.up)},
                  {"vertical_fov_deg", s.camera.vertical_fov_deg},
                  {"orthographic_half_height", s.camera.orthographic_half_height}};
-  j["heatmap_lights_range"] = {s.heatmap_lights_range.min, s.heatmap_lights_range.max};
-  j["heatmap_nodes_range"] = {s.heatmap_nodes_range.min, s.heatmap_nodes_range.max};
-  if (s.error) j["heatmap_error_range"] = {s.heatmap_error_range.min, s.heatmap_error_range.max};
-  if (s.error_bound)
-    j["heatmap_bound_range"] = {s.heatmap_bound_range.min, s.heatmap_bound_range.max};
+  for (const ViewInfo& view : view_table()) {
+    const auto range = s.heatmap_ranges.find(view.mode);
+    if (range == s.heatmap_ranges.end()) continue;
+    j[std::string("heatmap_") + view.name + "_range"] = {range->second.min, range->second.max};
+  }
   j["heatmap_scale"] = "log(1 + value per sample), viridis";
   // null before a second pass: no spread between passes is known yet.
   if (s.std_error_avg_pct) {
@@ -87,13 +87,11 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   } else {
     j["std_error_avg_pct"] = nullptr;
   }
-  j["heatmap_noise_range"] = {s.heatmap_noise_range.min, s.heatmap_noise_range.max};
   if (s.missed) {
     j["missed_samples"] = s.missed_samples;
     j["missed_estimate_avg_pct"] = s.missed->average_pct;
     j["missed_estimate_max_pct"] = s.missed->max_pct;
     j["missed_estimate_std_error_avg_pct"] = s.missed->std_error_avg_pct;
-    j["heatmap_missed_range"] = {s.heatmap_missed_range.min, s.heatmap_missed_range.max};
   }
   return j;
 }

@@ -5,12 +5,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "app/view_table.h"
 #include "renderer/camera.h"
 #include "renderer/framebuffer.h"
 #include "renderer/heatmap.h"
@@ -57,18 +59,15 @@ struct RenderStats {
   std::optional<renderer::PixelErrorStats> error_bound;
   renderer::Camera camera;
   int camera_index = 0;  // which of the scene file's cameras (--camera)
-  renderer::HeatmapRange heatmap_lights_range, heatmap_nodes_range;
-  renderer::HeatmapRange heatmap_bound_range;  // percent, the error scale
-  renderer::HeatmapRange heatmap_error_range;  // percent: the error against the reference
+  // The range of every heatmap drawn (app/view_table.h), by view: heatmap_NAME_range.
+  std::map<ViewMode, renderer::HeatmapRange> heatmap_ranges;
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), from two
-  // passes on (null in the JSON before), and the range of its heatmap.
+  // passes on (null in the JSON before).
   std::optional<double> std_error_avg_pct;
-  renderer::HeatmapRange heatmap_noise_range;
   // The missed-light estimate (renderer/missed_light.h), when asked for, its draws per shading
-  // point and its heatmap's range.
+  // point.
   std::optional<renderer::MissedLightStats> missed;
   int missed_samples = 0;
-  renderer::HeatmapRange heatmap_missed_range;
 };
 
 // The fields the settings decide alone, the same for `render` and a viewer snapshot: threads

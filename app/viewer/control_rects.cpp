@@ -34,7 +34,7 @@ std::string controls_json(const ControlRects& rects, const Settings& settings, V
     if (const char* why = spec.unused_because ? spec.unused_because(settings) : nullptr)
       out["unused"][spec.name] = why;
   }
-  out["view"] = view_mode_info(view).name;
+  out["view"] = view_info(view).name;
   out["mouse_busy"] = mouse_busy;
   return out.dump(1) + "\n";
 }

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/settings.h"
-#include "app/viewer/view_mode.h"
+#include "app/view_table.h"
 
 namespace app::viewer {
 

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "renderer/error_bound.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_noise.h"
 
 namespace app::viewer {
@@ -42,6 +43,11 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   u.nodes_visited.resize(count);
   u.error_bound_pct.resize(count);
   u.noise_pct.resize(count);
+  const bool missed = !f.missed_sum.empty();
+  if (missed) {
+    u.missed_pct.resize(count);
+    u.missed_std_error_pct.resize(count);
+  }
   std::size_t k = 0;
   for (int y = rect.y0; y < rect.y1; ++y) {
     for (int x = rect.x0; x < rect.x1; ++x, ++k) {
@@ -57,6 +63,10 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
           n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
       u.error_bound_pct[k] = static_cast<float>(renderer::pixel_error_bound_pct(f, i));
       u.noise_pct[k] = static_cast<float>(renderer::pixel_std_error_pct(f, i));
+      if (missed) {
+        u.missed_pct[k] = static_cast<float>(renderer::pixel_missed_pct(f, i));
+        u.missed_std_error_pct[k] = static_cast<float>(renderer::pixel_missed_std_error_pct(f, i));
+      }
       renderer::add_pixel_totals(f, i, u.totals);
     }
   }

@@ -45,6 +45,10 @@ struct TileUpdate {
   TileTotals totals;
   // The certified error bound per pixel, % of 765 (renderer/error_bound.h).
   std::vector<float> error_bound_pct;
+  // The missed-light estimate and its standard error (renderer/missed_light.h), % of 765; empty
+  // when the render does not estimate it.
+  std::vector<float> missed_pct;
+  std::vector<float> missed_std_error_pct;
 };
 
 // 8-bit colour of a mean radiance exactly as renderer::framebuffer_rgb8 computes it, so that

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include "renderer/pixel_error.h"
 
@@ -16,6 +17,23 @@ std::size_t pixel_count(const DisplayImage& image) {
   return static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
 }
 
+// L with 2^L <= n < 2^(L+1), for n >= 1.
+int power_of_two_level(std::uint32_t n) {
+  int level = 0;
+  while (n >>= 1) ++level;
+  return level;
+}
+
+// Pixel i's mean colour over `samples` of its samples (all of them, or a power of two it has
+// kept), or null when it has not kept that one.
+const std::uint8_t* mean_rgb_at(const DisplayImage& image, std::size_t i, std::uint32_t samples) {
+  if (samples == image.samples[i]) return &image.rgb[3 * i];
+  const auto level = static_cast<std::size_t>(power_of_two_level(samples));
+  if (level >= image.rgb_at_power_of_two.size() || image.rgb_at_power_of_two[level].empty())
+    return nullptr;
+  return &image.rgb_at_power_of_two[level][3 * i];
+}
+
 void start_generation(DisplayImage& image, std::uint64_t generation, int width, int height) {
   const bool same_size = width == image.width && height == image.height;
   image.width = width;
@@ -26,12 +44,15 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
     image.rgb.assign(3 * n, 0);
     image.radiance.assign(n, glm::vec3(0.0f));
   }
-  image.first_pass_rgb.assign(3 * n, 0);
+  image.rgb_at_power_of_two.clear();
   image.samples.assign(n, 0);
   image.lights_tested.assign(n, 0.0f);
   image.nodes_visited.assign(n, 0.0f);
   image.error_bound_pct.assign(n, 0.0f);
   image.noise_pct.assign(n, 0.0f);
+  image.missed_pct.assign(n, 0.0f);
+  image.missed_std_error_pct.assign(n, 0.0f);
+  image.has_missed = false;
   image.tile_totals.clear();
   image.tile_seen.clear();
   image.tiles_seen = 0;
@@ -55,6 +76,8 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
     image.tiles_done_in_pass = 0;
   }
   image.tiles_done_in_pass += 1;
+  const bool missed = !u.missed_pct.empty();
+  if (missed) image.has_missed = true;
   std::size_t k = 0;
   for (int y = u.rect.y0; y < u.rect.y1; ++y) {
     for (int x = u.rect.x0; x < u.rect.x1; ++x, ++k) {
@@ -65,12 +88,21 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       image.nodes_visited[i] = u.nodes_visited[k];
       image.error_bound_pct[i] = u.error_bound_pct[k];
       image.noise_pct[i] = u.noise_pct[k];
+      if (missed) {
+        image.missed_pct[i] = u.missed_pct[k];
+        image.missed_std_error_pct[i] = u.missed_std_error_pct[k];
+      }
       // Pixels skipped by a subsample keep the backdrop.
       if (u.samples[k] == 0) continue;
       for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
       image.radiance[i] = u.radiance[k];
-      if (u.samples[k] == 1) {
-        for (int c = 0; c < 3; ++c) image.first_pass_rgb[3 * i + c] = u.rgb[3 * k + c];
+      const std::uint32_t n = u.samples[k];
+      if ((n & (n - 1)) == 0) {
+        const auto level = static_cast<std::size_t>(power_of_two_level(n));
+        if (image.rgb_at_power_of_two.size() <= level) image.rgb_at_power_of_two.resize(level + 1);
+        std::vector<std::uint8_t>& at = image.rgb_at_power_of_two[level];
+        if (at.empty()) at.assign(3 * pixel_count(image), 0);
+        for (int c = 0; c < 3; ++c) at[3 * i + c] = u.rgb[3 * k + c];
       }
     }
   }
@@ -177,20 +209,36 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
   e.image_version = image.version;
   e.reference_version = reference.version;
   e.pct.assign(pixel_count(image), -1.0f);
+  e.difference_pct.assign(pixel_count(image), 0.0f);
   if (image.width != reference.width || image.height != reference.height) return e;
   std::vector<std::size_t> compared;
   std::vector<std::uint8_t> a, b;
+  std::uint32_t fewest = 0;
   for (std::size_t i = 0; i < e.pct.size(); ++i) {
-    if (image.samples[i] == 0 || reference.samples[i] == 0) continue;
+    const std::uint32_t m = image.samples[i], r = reference.samples[i];
+    if (m > 0) ++e.pixels_rendered;
+    if (m == 0 || r == 0) continue;
+    // All passes when both have as many, else the most passes, a power of two, both kept.
+    const std::uint32_t passes = m == r ? m : 1u << power_of_two_level(std::min(m, r));
+    const std::uint8_t* pa = mean_rgb_at(image, i, passes);
+    const std::uint8_t* pb = mean_rgb_at(reference, i, passes);
+    if (pa == nullptr || pb == nullptr) continue;
     compared.push_back(i);
-    a.insert(a.end(), image.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i),
-             image.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
-    b.insert(b.end(), reference.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i),
-             reference.first_pass_rgb.begin() + static_cast<std::ptrdiff_t>(3 * i + 3));
+    a.insert(a.end(), pa, pa + 3);
+    b.insert(b.end(), pb, pb + 3);
+    fewest = compared.size() == 1 ? passes : std::min(fewest, passes);
   }
+  e.passes = static_cast<int>(fewest);
   const std::vector<double> pct = renderer::pixel_error_pct(a, b);
   const renderer::PixelErrorStats stats = renderer::summarize_pixel_error(pct);
-  for (std::size_t k = 0; k < compared.size(); ++k) e.pct[compared[k]] = static_cast<float>(pct[k]);
+  for (std::size_t k = 0; k < compared.size(); ++k) {
+    const std::size_t i = compared[k];
+    e.pct[i] = static_cast<float>(pct[k]);
+    int signed_sum = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+      signed_sum += static_cast<int>(a[3 * k + c]) - static_cast<int>(b[3 * k + c]);
+    e.difference_pct[i] = static_cast<float>(100.0 * signed_sum / 765.0);
+  }
   e.average_pct = stats.average_pct;
   e.max_pct = stats.max_pct;
   e.pixels_compared = compared.size();
@@ -199,94 +247,166 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
 
 namespace {
 
-// The per-sample field a heatmap view shows at pixel i (of a DisplayImage or a PreviewImage).
-template <typename Image>
-double sample_value(const Image& image, ViewMode mode, std::size_t i) {
-  switch (mode) {
-    case ViewMode::lights:
-      return image.lights_tested[i];
-    case ViewMode::nodes:
-      return image.nodes_visited[i];
-    default:
-      return image.error_bound_pct[i];
+// The image as displayed (colours not rendered yet dimmed, or the preview's).
+void image_rgb8(const DisplayImage& image, const PreviewImage* preview,
+                const renderer::Display& display, std::vector<std::uint8_t>& rgb) {
+  const float scale = renderer::exposure_scale(display.exposure_ev);
+  for (std::size_t i = 0; i < pixel_count(image); ++i) {
+    // Colours of the previous render (same size) stay visible, dimmed, until redrawn.
+    if (shows_preview(image, preview, i)) {
+      renderer::display_rgb8(preview->radiance[i], scale, display.curve, &rgb[3 * i]);
+      continue;
+    }
+    renderer::display_rgb8(image.radiance[i], scale, display.curve, &rgb[3 * i]);
+    if (image.samples[i] == 0) {
+      for (int c = 0; c < 3; ++c)
+        rgb[3 * i + c] = static_cast<std::uint8_t>(rgb[3 * i + c] * 2 / 5);
+    }
   }
+}
+
+// The value range the row's rule gives over the known values.
+renderer::HeatmapRange view_range(const ViewInfo& info, const std::vector<double>& values,
+                                  const std::vector<std::uint8_t>& known) {
+  switch (info.range_rule) {
+    case RangeRule::none:
+      return {};
+    case RangeRule::symmetric_fixed:
+      return {-info.fixed_range, info.fixed_range};
+    case RangeRule::threshold:
+      return {0.0, 1.0};
+    case RangeRule::data: {
+      double lo = std::numeric_limits<double>::max(), hi = 0.0;
+      bool any = false;
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!known[i]) continue;
+        any = true;
+        lo = std::min(lo, values[i]);
+        hi = std::max(hi, values[i]);
+      }
+      return any ? renderer::HeatmapRange{lo, hi} : renderer::HeatmapRange{};
+    }
+  }
+  throw std::logic_error("range rule missing from view_range");
 }
 
 std::vector<std::uint8_t> compose_rgb8(const DisplayImage& image, const PreviewImage* preview,
                                        const ErrorImage& error, ViewMode mode,
-                                       const renderer::Display& display,
+                                       const renderer::Display& display, double mask_threshold_pct,
                                        renderer::HeatmapRange& range) {
   const std::size_t n = pixel_count(image);
   if (preview != nullptr && (preview->generation != image.generation ||
                              preview->width != image.width || preview->height != image.height)) {
     preview = nullptr;
   }
+  const ViewInfo& info = view_info(mode);
   std::vector<std::uint8_t> rgb(3 * n);
   range = {};
-  if (mode == ViewMode::image) {
-    const float scale = renderer::exposure_scale(display.exposure_ev);
-    for (std::size_t i = 0; i < n; ++i) {
-      // Colours of the previous render (same size) stay visible, dimmed, until redrawn.
-      const bool fresh = image.samples[i] > 0;
-      if (shows_preview(image, preview, i)) {
-        renderer::display_rgb8(preview->radiance[i], scale, display.curve, &rgb[3 * i]);
-        continue;
-      }
-      renderer::display_rgb8(image.radiance[i], scale, display.curve, &rgb[3 * i]);
-      if (!fresh) {
-        for (int c = 0; c < 3; ++c)
-          rgb[3 * i + c] = static_cast<std::uint8_t>(rgb[3 * i + c] * 2 / 5);
-      }
-    }
-    return rgb;
+  if (info.colour_map == ColourMap::image || info.colour_map == ColourMap::mask)
+    image_rgb8(image, preview, display, rgb);
+  if (info.colour_map == ColourMap::image) return rgb;
+  const ViewPixels pixels = view_pixels(image, error, mask_threshold_pct);
+  // The preview's own fields (a preview sample counts as one sample).
+  std::vector<std::uint32_t> preview_samples;
+  ViewPixels preview_pixels;
+  if (preview != nullptr) {
+    preview_samples.resize(n);
+    for (std::size_t i = 0; i < n; ++i) preview_samples[i] = preview->step[i] != 0 ? 1 : 0;
+    preview_pixels.count = n;
+    preview_pixels.samples = preview_samples.data();
+    preview_pixels.lights_tested = preview->lights_tested.data();
+    preview_pixels.nodes_visited = preview->nodes_visited.data();
+    preview_pixels.error_bound_pct = preview->error_bound_pct.data();
   }
   std::vector<double> values(n, 0.0);
   std::vector<std::uint8_t> known(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (mode == ViewMode::error) {
-      known[i] = i < error.pct.size() && error.pct[i] >= 0.0f;
-      if (known[i]) values[i] = error.pct[i];
-    } else if (mode == ViewMode::noise) {
-      // Known from the second pass on; a preview has no spread.
-      known[i] = image.samples[i] >= 2;
-      if (known[i]) values[i] = image.noise_pct[i];
-    } else if (shows_preview(image, preview, i)) {
-      known[i] = 1;
-      values[i] = sample_value(*preview, mode, i);
-    } else {
-      known[i] = image.samples[i] > 0;
-      if (known[i]) values[i] = sample_value(image, mode, i);
+    const std::optional<double> v =
+        shows_preview(image, preview, i) ? info.value(preview_pixels, i) : info.value(pixels, i);
+    known[i] = v.has_value();
+    if (v) values[i] = *v;
+  }
+  range = view_range(info, values, known);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint8_t* out = &rgb[3 * i];
+    if (!known[i]) {
+      for (int c = 0; c < 3; ++c) out[c] = kNotRenderedRgb[c];
+      continue;
     }
-  }
-  double lo = std::numeric_limits<double>::max(), hi = 0.0;
-  bool any = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!known[i]) continue;
-    any = true;
-    lo = std::min(lo, values[i]);
-    hi = std::max(hi, values[i]);
-  }
-  if (any) range = {lo, hi};
-  for (std::size_t i = 0; i < n; ++i) {
-    const glm::u8vec3 heat =
-        renderer::viridis(static_cast<float>(heatmap_position(values[i], range)));
-    for (int c = 0; c < 3; ++c) rgb[3 * i + c] = known[i] ? heat[c] : kNotRenderedRgb[c];
+    switch (info.colour_map) {
+      case ColourMap::image:
+        break;
+      case ColourMap::sequential: {
+        const glm::u8vec3 heat =
+            renderer::viridis(static_cast<float>(heatmap_position(values[i], range)));
+        for (int c = 0; c < 3; ++c) out[c] = heat[c];
+        break;
+      }
+      case ColourMap::diverging: {
+        const glm::u8vec3 c3 = diverging_rgb8(values[i] / info.fixed_range);
+        for (int c = 0; c < 3; ++c) out[c] = c3[c];
+        break;
+      }
+      case ColourMap::mask:
+        if (values[i] > 0.0) {
+          for (int c = 0; c < 3; ++c) out[c] = kMaskRgb[c];
+        } else {
+          for (int c = 0; c < 3; ++c) out[c] = static_cast<std::uint8_t>(out[c] / 3);
+        }
+        break;
+    }
   }
   return rgb;
 }
 
 }  // namespace
 
+ViewPixels view_pixels(const DisplayImage& image, const ErrorImage& error,
+                       double mask_threshold_pct) {
+  ViewPixels p;
+  p.count = pixel_count(image);
+  p.samples = image.samples.data();
+  p.lights_tested = image.lights_tested.data();
+  p.nodes_visited = image.nodes_visited.data();
+  p.error_bound_pct = image.error_bound_pct.data();
+  p.noise_pct = image.noise_pct.data();
+  if (image.has_missed) {
+    p.missed_pct = image.missed_pct.data();
+    p.missed_std_error_pct = image.missed_std_error_pct.data();
+  }
+  if (error.pct.size() == p.count && p.count > 0) {
+    p.error_pct = error.pct.data();
+    p.difference_pct = error.difference_pct.data();
+  }
+  p.mask_threshold_pct = mask_threshold_pct;
+  return p;
+}
+
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
                                     ViewMode mode, renderer::HeatmapRange& range,
-                                    const renderer::Display& display) {
-  return compose_rgb8(image, nullptr, error, mode, display, range);
+                                    const renderer::Display& display, double mask_threshold_pct) {
+  return compose_rgb8(image, nullptr, error, mode, display, mask_threshold_pct, range);
 }
 
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
-                       renderer::HeatmapRange& range, const renderer::Display& display) {
-  const std::vector<std::uint8_t> rgb = compose_rgb8(image, &preview, error, mode, display, range);
+                       renderer::HeatmapRange& range, const renderer::Display& display,
+                       double mask_threshold_pct, const AbSplit& ab) {
+  std::vector<std::uint8_t> rgb =
+      compose_rgb8(image, &preview, error, mode, display, mask_threshold_pct, range);
+  const DisplayImage* reference = ab.reference;
+  if (view_info(mode).colour_map == ColourMap::image && reference != nullptr &&
+      reference->width == image.width && reference->height == image.height &&
+      ab.rt_from_x < image.width) {
+    std::vector<std::uint8_t> rt(rgb.size());
+    image_rgb8(*reference, nullptr, display, rt);
+    const auto width = static_cast<std::size_t>(image.width);
+    const auto from = static_cast<std::size_t>(std::max(ab.rt_from_x, 0));
+    for (std::size_t i = 0; i < rt.size() / 3; ++i) {
+      if (i % width < from) continue;
+      for (int c = 0; c < 3; ++c) rgb[3 * i + c] = rt[3 * i + c];
+    }
+  }
   const std::size_t n = rgb.size() / 3;
   rgba.resize(4 * n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -295,22 +415,6 @@ void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
     rgba[4 * i + 2] = rgb[3 * i + 2];
     rgba[4 * i + 3] = 255;
   }
-}
-
-PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y) {
-  PixelInfo p;
-  if (x < 0 || y < 0 || x >= image.width || y >= image.height) return p;
-  const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                 static_cast<std::size_t>(x);
-  p.samples = image.samples[i];
-  p.rendered = p.samples > 0;
-  for (int c = 0; c < 3; ++c) p.rgb[c] = image.rgb[3 * i + c];
-  p.lights_tested = image.lights_tested[i];
-  p.nodes_visited = image.nodes_visited[i];
-  if (i < error.pct.size() && error.pct[i] >= 0.0f) p.error_pct = error.pct[i];
-  p.error_bound_pct = image.error_bound_pct[i];
-  if (p.samples >= 2) p.noise_pct = image.noise_pct[i];
-  return p;
 }
 
 }  // namespace app::viewer

@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
+#include "app/view_table.h"
 #include "app/viewer/display_buffer.h"
-#include "app/viewer/view_mode.h"
 #include "renderer/display_transform.h"
 #include "renderer/heatmap.h"
 
@@ -22,15 +22,17 @@ struct DisplayImage {
   int width = 0;
   int height = 0;
   std::uint64_t generation = 0;
-  std::vector<std::uint8_t> rgb;             // latest mean colour, exposed linear 8-bit
-  std::vector<glm::vec3> radiance;           // latest mean scene-linear radiance (shown)
-  std::vector<std::uint8_t> first_pass_rgb;  // pass 0 (pixel centres): what the error compares
-  std::vector<std::uint32_t> samples;        // 0: not rendered yet in this generation
-  std::vector<float> lights_tested;          // per sample
-  std::vector<float> nodes_visited;          // per sample
-  std::vector<float> noise_pct;              // estimated standard error; 0 below two samples
-  std::vector<TileTotals> tile_totals;       // by tile index
-  std::vector<std::uint8_t> tile_seen;       // by tile index
+  std::vector<std::uint8_t> rgb;    // latest mean colour, exposed linear 8-bit
+  std::vector<glm::vec3> radiance;  // latest mean scene-linear radiance (shown)
+  // The mean colour after 1, 2, 4, ... samples (level L: 2^L), kept so that an error against a
+  // reference that is further along compares the same passes (compute_error_image).
+  std::vector<std::vector<std::uint8_t>> rgb_at_power_of_two;
+  std::vector<std::uint32_t> samples;   // 0: not rendered yet in this generation
+  std::vector<float> lights_tested;     // per sample
+  std::vector<float> nodes_visited;     // per sample
+  std::vector<float> noise_pct;         // estimated standard error; 0 below two samples
+  std::vector<TileTotals> tile_totals;  // by tile index
+  std::vector<std::uint8_t> tile_seen;  // by tile index
   int tiles_seen = 0;
   int pass = 0;                // the pass the latest tile belongs to
   int tiles_done_in_pass = 0;  // tiles of that pass received so far
@@ -38,6 +40,11 @@ struct DisplayImage {
   // The certified bound of the error against rt per pixel, % of 765, of the mean colour (every
   // pass so far, as `levrt render` reports it).
   std::vector<float> error_bound_pct;
+  // The missed-light estimate and its standard error, % of 765, where the render estimates it
+  // (has_missed: some tile of this generation carried it).
+  std::vector<float> missed_pct;
+  std::vector<float> missed_std_error_pct;
+  bool has_missed = false;
 };
 
 // The coarse preview of the render in `generation`: per image pixel, the value of the preview
@@ -69,13 +76,19 @@ bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
 
 TileTotals sum_tile_totals(const DisplayImage& image);
 
-// Pixel error of the pass-0 image against the reference (docs/design.md: |dR|+|dG|+|dB| of 765, in
-// percent), over the pixels both have rendered.
+// Pixel error of the image against the reference (docs/design.md: |dR|+|dG|+|dB| of 765, in
+// percent), over the pixels both have rendered, and the signed difference (dR+dG+dB of 765,
+// method - rt) the difference view shows. Each pixel compares the two means over the same
+// passes: all of them where both have as many, else the first 2^L, the most both have done (a
+// method changed while the reference went on starts again from one pass).
 struct ErrorImage {
   std::vector<float> pct;  // per pixel; negative where not comparable (yet)
+  std::vector<float> difference_pct;
   double average_pct = 0.0;
   double max_pct = 0.0;
   std::size_t pixels_compared = 0;
+  std::size_t pixels_rendered = 0;  // of the image: all compared when equal
+  int passes = 0;                   // the fewest passes a compared pixel's means are over
   std::uint64_t image_version = 0;
   std::uint64_t reference_version = 0;
 };
@@ -84,31 +97,37 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
 // The colour of a heatmap pixel that no sample covers yet.
 extern const std::uint8_t kNotRenderedRgb[3];
 
-// RGBA texels of one view. Heatmaps are viridis over the shown pixels' range, min to max
-// (returned in `range`; heatmap_scale.h); pixels the render has not reached show the preview of
-// the same generation where it has a sample, else dark grey (heatmaps) or the dimmed colour of
-// the previous render (image).
+// The mask view's error threshold until the user picks one, % of 765.
+inline constexpr double kDefaultMaskThresholdPct = 1.0;
+
+// The per-pixel fields of the image and its comparison with rt, for the view table's readers.
+ViewPixels view_pixels(const DisplayImage& image, const ErrorImage& error,
+                       double mask_threshold_pct = kDefaultMaskThresholdPct);
+
+// RGBA texels of one view, drawn by its row of the view table (app/view_table.h): sequential
+// heatmaps are viridis over the shown pixels' range, min to max (returned in `range`;
+// heatmap_scale.h), the diverging map spans the row's symmetric fixed range, the mask marks the
+// pixels above `mask_threshold_pct` over the dimmed image. Pixels the render has not reached show
+// the preview of the same generation where it has a sample, else dark grey (heatmaps) or the
+// dimmed colour of the previous render (image).
 // The image view maps the radiance through `display` (exposure and curve), so a change of those
 // is a new composition, never a new render.
+// A/B against rt: the image view's columns from `rt_from_x` on show `reference` (rt's image of
+// the same view and size) instead of the method's.
+struct AbSplit {
+  const DisplayImage* reference = nullptr;
+  int rt_from_x = 0;
+};
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        const ErrorImage& error, ViewMode mode, std::vector<std::uint8_t>& rgba,
-                       renderer::HeatmapRange& range, const renderer::Display& display = {});
+                       renderer::HeatmapRange& range, const renderer::Display& display = {},
+                       double mask_threshold_pct = kDefaultMaskThresholdPct,
+                       const AbSplit& ab = {});
 
 // 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview.
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
                                     ViewMode mode, renderer::HeatmapRange& range,
-                                    const renderer::Display& display = {});
-
-struct PixelInfo {
-  bool rendered = false;
-  std::uint8_t rgb[3] = {0, 0, 0};
-  std::uint32_t samples = 0;
-  float lights_tested = 0.0f;
-  float nodes_visited = 0.0f;
-  std::optional<float> error_pct;
-  float error_bound_pct = 0.0f;
-  std::optional<float> noise_pct;  // the estimated standard error, from the second sample on
-};
-PixelInfo pixel_info(const DisplayImage& image, const ErrorImage& error, int x, int y);
+                                    const renderer::Display& display = {},
+                                    double mask_threshold_pct = kDefaultMaskThresholdPct);
 
 }  // namespace app::viewer

@@ -14,6 +14,7 @@ namespace {
 
 constexpr float kOrbitRadiansPerPixel = 0.006f;
 constexpr float kZoomPerWheelStep = 0.88f;
+constexpr float kDividerGrabPixels = 8.0f;
 
 void move_camera(ViewerState& state, const ImVec2& image_size) {
   if (!scene_ready(state) || !state.mouse_input) return;
@@ -42,35 +43,55 @@ void move_camera(ViewerState& state, const ImVec2& image_size) {
 
 void draw_hover(const ViewerState& state, int x, int y, const ImVec2& tooltip_at) {
   if (x < 0 || y < 0 || x >= state.image.width || y >= state.image.height) return;
-  const PixelInfo p = pixel_info(state.image, state.error, x, y);
+  const auto i = static_cast<std::size_t>(y) * static_cast<std::size_t>(state.image.width) +
+                 static_cast<std::size_t>(x);
   ImGui::SetNextWindowPos(tooltip_at);
   ImGui::BeginTooltip();
   ImGui::Text("pixel %d, %d", x, y);
-  if (!p.rendered) {
+  const std::uint32_t samples = state.image.samples[i];
+  if (samples == 0) {
     ImGui::TextDisabled("not rendered yet");
     ImGui::EndTooltip();
     return;
   }
-  ImGui::ColorButton("##colour",
-                     ImVec4(p.rgb[0] / 255.0f, p.rgb[1] / 255.0f, p.rgb[2] / 255.0f, 1.0f),
+  const std::uint8_t* rgb = &state.image.rgb[3 * i];
+  ImGui::ColorButton("##colour", ImVec4(rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f, 1.0f),
                      ImGuiColorEditFlags_NoTooltip, ImVec2(14.0f, 14.0f));
   ImGui::SameLine();
-  ImGui::Text("colour %d %d %d", p.rgb[0], p.rgb[1], p.rgb[2]);
-  ImGui::Text("lights tested  %.1f per sample", p.lights_tested);
-  ImGui::Text("nodes visited  %.1f per sample", p.nodes_visited);
-  if (p.error_pct) {
-    ImGui::Text("error          %.3f%% (pass 0 vs rt)", *p.error_pct);
-  } else {
-    ImGui::TextDisabled("error          needs the rt reference");
+  ImGui::Text("colour %d %d %d", rgb[0], rgb[1], rgb[2]);
+  // One line per view of the table: its read-out, or (greyed) why it has none.
+  const ViewPixels pixels = view_pixels(state.image, state.error, state.mask_threshold_pct);
+  for (const ViewInfo& view : view_table()) {
+    if (view.hover == nullptr) continue;
+    const std::string line = view.hover(pixels, i);
+    if (view.value(pixels, i)) {
+      ImGui::TextUnformatted(line.c_str());
+    } else {
+      ImGui::TextDisabled("%s", line.c_str());
+    }
   }
-  ImGui::Text("error bound    %.3f%% (certified)", p.error_bound_pct);
-  if (p.noise_pct) {
-    ImGui::Text("noise          %.3f%% (std error of the mean)", *p.noise_pct);
-  } else {
-    ImGui::TextDisabled("noise          from the second sample on");
-  }
-  ImGui::Text("samples        %u", p.samples);
+  ImGui::Text("samples        %u", samples);
   ImGui::EndTooltip();
+}
+
+// A/B: which side shows what, and the swipe's divider.
+void draw_ab_marks(const ViewerState& state, ImDrawList* draw, const ImVec2& image_min,
+                   const ImVec2& image_max, float scale) {
+  const int rt_from = rt_from_column(state);
+  if (view_info(state.view).colour_map != ColourMap::image || rt_from >= state.image.width) return;
+  const float x = image_min.x + static_cast<float>(rt_from) * scale;
+  const ImU32 white = IM_COL32(255, 255, 255, 230);
+  if (state.swipe) {
+    draw->AddLine(ImVec2(x, image_min.y), ImVec2(x, image_max.y), white, 2.0f);
+    const float mid = 0.5f * (image_min.y + image_max.y);
+    draw->AddTriangleFilled(ImVec2(x - 7.0f, mid), ImVec2(x - 1.0f, mid - 6.0f),
+                            ImVec2(x - 1.0f, mid + 6.0f), white);
+    draw->AddTriangleFilled(ImVec2(x + 7.0f, mid), ImVec2(x + 1.0f, mid - 6.0f),
+                            ImVec2(x + 1.0f, mid + 6.0f), white);
+    if (rt_from > 0) draw->AddText(ImVec2(image_min.x + 6.0f, image_min.y + 4.0f), white, "method");
+  }
+  const float text_width = ImGui::CalcTextSize("rt").x;
+  draw->AddText(ImVec2(image_max.x - text_width - 6.0f, image_min.y + 4.0f), white, "rt");
 }
 
 }  // namespace
@@ -108,7 +129,21 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
     const int y = static_cast<int>(std::floor((mouse.y - image_min.y) / scale));
     if (x >= 0 && y >= 0 && x < w && y < h) set_inspect_pixel(state, std::array<int, 2>{x, y});
   }
-  move_camera(state, ImVec2(image_max.x - image_min.x, image_max.y - image_min.y));
+  // The swipe's divider: a press near it drags it instead of the camera.
+  if (state.swipe && state.mouse_input && w > 0) {
+    const float span = image_max.x - image_min.x;
+    const float mouse_x = ImGui::GetIO().MousePos.x;
+    const float divider_x = image_min.x + static_cast<float>(*state.swipe) * span;
+    if (ImGui::IsItemActivated() && std::abs(mouse_x - divider_x) <= kDividerGrabPixels)
+      state.swipe_dragging = true;
+    if (!ImGui::IsItemActive()) state.swipe_dragging = false;
+    if (state.swipe_dragging && span > 0.0f)
+      state.swipe = std::clamp(static_cast<double>((mouse_x - image_min.x) / span), 0.0, 1.0);
+  } else {
+    state.swipe_dragging = false;
+  }
+  if (!state.swipe_dragging)
+    move_camera(state, ImVec2(image_max.x - image_min.x, image_max.y - image_min.y));
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   if (texture.id != 0 && w > 0) {
@@ -123,6 +158,10 @@ void draw_image_view(ViewerState& state, const GlTexture& texture) {
       }
     }
   }
+  if (w > 0) draw_ab_marks(state, draw, image_min, image_max, scale);
+  // Where the picture is, for tests that read the window's pixels.
+  if (w > 0 && state.record_controls)
+    record_rect(&state.control_rects, "image", image_min.x, image_min.y, image_max.x, image_max.y);
   if (w > 0) draw_inspector_overlay(state, draw, image_min, image_max, scale);
   const WorkerStatus& st = state.status;
   if (st.phase == WorkerPhase::loading || st.phase == WorkerPhase::preparing) {

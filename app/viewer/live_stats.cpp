@@ -1,5 +1,7 @@
 #include "app/viewer/live_stats.h"
 
+#include <algorithm>
+
 #include "renderer/error_bound.h"
 
 namespace app::viewer {
@@ -15,6 +17,24 @@ std::optional<double> noise_average_pct(const DisplayImage& image) {
   }
   if (pixels == 0) return std::nullopt;
   return sum / static_cast<double>(pixels);
+}
+
+// Over the rendered pixels, as renderer::missed_light_stats does over a framebuffer.
+std::optional<renderer::MissedLightStats> missed_light_stats(const DisplayImage& image) {
+  if (!image.has_missed) return std::nullopt;
+  renderer::MissedLightStats s;
+  std::size_t pixels = 0;
+  for (std::size_t i = 0; i < image.missed_pct.size(); ++i) {
+    if (image.samples[i] == 0) continue;
+    s.average_pct += image.missed_pct[i];
+    s.max_pct = std::max(s.max_pct, static_cast<double>(image.missed_pct[i]));
+    s.std_error_avg_pct += image.missed_std_error_pct[i];
+    ++pixels;
+  }
+  if (pixels == 0) return std::nullopt;
+  s.average_pct /= static_cast<double>(pixels);
+  s.std_error_avg_pct /= static_cast<double>(pixels);
+  return s;
 }
 
 }  // namespace
@@ -43,11 +63,13 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
       s.mrays_per_second = static_cast<double>(s.samples + s.shadow_rays) / s.render_seconds * 1e-6;
     }
     s.noise_avg_pct = noise_average_pct(image);
+    s.missed = missed_light_stats(image);
   }
   if (error.pixels_compared > 0) {
     s.error_avg_pct = error.average_pct;
     s.error_max_pct = error.max_pct;
     s.error_pixels = error.pixels_compared;
+    s.error_passes = error.passes;
   }
   return s;
 }
@@ -79,10 +101,15 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   r.error_bound = s.error_bound;
   if (s.error_avg_pct) {
     r.error = RenderPixelError{*s.error_avg_pct, *s.error_max_pct, s.error_pixels,
-                               "pass 0 against the rt reference, pixels both have rendered",
+                               "the mean over the same passes (" + std::to_string(s.error_passes) +
+                                   ") against the rt reference's, pixels both have rendered",
                                status.reference_seconds};
   }
   r.std_error_avg_pct = s.noise_avg_pct;
+  if (s.missed) {
+    r.missed = s.missed;
+    r.missed_samples = status.missed_samples;
+  }
   r.camera = camera;
   return r;
 }

@@ -11,6 +11,7 @@
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
 #include "renderer/camera.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
 
 namespace app::viewer {
@@ -29,11 +30,14 @@ struct LiveStats {
   std::optional<double> error_avg_pct;
   std::optional<double> error_max_pct;
   std::size_t error_pixels = 0;
+  int error_passes = 0;  // the means compared are over this many passes (ErrorImage::passes)
   // The certified bound of that error over the pixels received, known without the reference.
   std::optional<renderer::PixelErrorStats> error_bound;
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), averaged over
   // the pixels with two samples or more; none before the second pass reaches a pixel.
   std::optional<double> noise_avg_pct;
+  // The missed-light estimate over the pixels received, while the render estimates it.
+  std::optional<renderer::MissedLightStats> missed;
 };
 
 // `error` is used when it has compared pixels.

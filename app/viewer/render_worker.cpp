@@ -114,8 +114,9 @@ struct Worker {
   std::uint64_t inspected_generation = 0;
 
   explicit Worker(WorkerShared& s)
-      : shared(s), reference(s.reference_tiles, [this](double seconds, const std::string& error) {
-          reference_finished(seconds, error);
+      : shared(s),
+        reference(s.reference_tiles, [this](int passes, double seconds, const std::string& error) {
+          reference_pass_done(passes, seconds, error);
         }) {}
   Worker(const Worker&) = delete;
   Worker& operator=(const Worker&) = delete;
@@ -126,13 +127,19 @@ struct Worker {
     change(shared.status);
   }
 
-  // Runs on the reference thread.
-  void reference_finished(double seconds, const std::string& error) {
+  // Runs on the reference thread, after each of its passes.
+  void reference_pass_done(int passes, double seconds, const std::string& error) {
     {
       const std::lock_guard<std::mutex> lock(shared.mutex);
-      shared.status.reference = error.empty() ? ReferencePhase::done : ReferencePhase::failed;
-      shared.status.reference_seconds = seconds;
-      if (!error.empty()) shared.status.error = "rt reference: " + error;
+      WorkerStatus& st = shared.status;
+      st.reference_passes_done = passes;
+      st.reference_seconds = seconds;
+      if (!error.empty()) {
+        st.reference = ReferencePhase::failed;
+        st.error = "rt reference: " + error;
+      } else if (passes >= reference.target()) {
+        st.reference = ReferencePhase::done;
+      }
     }
     shared.wake.notify_all();
   }
@@ -162,6 +169,7 @@ struct Worker {
       s.reference = ReferencePhase::none;
       s.reference_generation = 0;
       s.reference_tile_count = 0;
+      s.reference_passes_done = 0;
     });
   }
 
@@ -175,12 +183,22 @@ struct Worker {
   int passes_done() const { return main ? renderer::render_passes_done(main->state()) : 0; }
   bool wants_preview() const { return main && preview_levels_done < preview_steps.size(); }
 
-  // Refinement passes wait while the reference renders: they would share its cores, and the
-  // user asked for the reference.
+  // With the reference on, the two renders take turns pass by pass, the reference first: the
+  // method's refinement pass k waits for the reference's pass k, so the error compares the means
+  // over the same passes as soon as a tile arrives, and neither shares the other's cores (pass 0
+  // alone runs beside the reference's, as it always has: the trade plot marks it).
   bool wants_pass() const {
     if (wants_preview()) return true;
     if (!main || passes_done() >= passes_target) return false;
-    return passes_done() == 0 || !reference.running();
+    if (passes_done() == 0 || !reference.has_state() || reference.failed()) return true;
+    return !reference.running() &&
+           (reference.complete() || reference.passes_done() > passes_done());
+  }
+
+  // The reference's next pass is due while it is not ahead of the method's next pass.
+  bool reference_due() const {
+    return reference.has_state() && !reference.running() && !reference.failed() &&
+           !reference.complete() && (!main || reference.passes_done() <= passes_done());
   }
 
   WorkerPhase resting_phase() const {
@@ -290,9 +308,11 @@ struct Worker {
         rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
     const bool relative_error_matters = rs.relative_error != main_settings.relative_error &&
                                         lev::method_info(rs.method).uses_relative_error;
+    // The missed-light estimate (on while its view is shown) costs shadow rays of its own.
     const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
                               tolerance_matters || light_samples_matter || relative_error_matters ||
-                              rs.threads != main_settings.threads;
+                              rs.threads != main_settings.threads ||
+                              rs.missed_samples != main_settings.missed_samples;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
@@ -322,6 +342,7 @@ struct Worker {
         st.tile_count = tiles;
         st.method = s.method;
         st.tolerance = s.tolerance;
+        st.missed_samples = rs.missed_samples;
         st.refit_seconds = refit_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
         st.method_bytes = method_bytes;
@@ -337,10 +358,12 @@ struct Worker {
     }
     update_status([&](WorkerStatus& st) { st.passes_target = s.spp; });
 
+    reference.set_target(s.spp);
     if (request.want_reference && !reference.complete()) {
       if (!reference.has_state()) {
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;
+        ref.missed_samples = 0;  // rt leaves nothing out
         shared.reference_tiles.raise_floor(serial);
         reference.begin(std::make_unique<renderer::RenderJob>(sc, *loaded->rays, ref), serial);
         update_status([&](WorkerStatus& st) {
@@ -349,10 +372,18 @@ struct Worker {
           st.reference_tile_count = reference.tile_count();
           st.reference_started = Clock::now();
           st.reference_seconds = 0.0;
+          st.reference_passes_done = 0;
         });
       }
-      reference.resume();
+      if (reference_due()) reference.resume();
     }
+    // A new number of passes makes a complete reference go on, or one ahead complete.
+    if (reference.has_state() && !reference.failed()) {
+      const ReferencePhase phase =
+          reference.complete() ? ReferencePhase::done : ReferencePhase::rendering;
+      update_status([&](WorkerStatus& st) { st.reference = phase; });
+    }
+    update_status([&](WorkerStatus& st) { st.reference_passes_target = s.spp; });
     inspect(request.inspect_pixel);
   }
 
@@ -475,11 +506,16 @@ void run_worker(WorkerShared& shared) {
   lower_this_thread_priority();
   Worker w(shared);
   for (;;) {
+    // Outside the lock: resuming joins the reference's previous thread, which takes the lock
+    // to report its pass.
+    if (w.reference_due()) w.reference.resume();
     std::optional<ViewRequest> request;
     std::uint64_t serial = 0;
     {
       std::unique_lock<std::mutex> lock(shared.mutex);
-      shared.wake.wait(lock, [&] { return shared.quit || shared.pending || w.wants_pass(); });
+      shared.wake.wait(lock, [&] {
+        return shared.quit || shared.pending || w.wants_pass() || w.reference_due();
+      });
       if (shared.quit) break;
       if (shared.pending) {
         request = std::move(shared.pending);
@@ -488,6 +524,7 @@ void run_worker(WorkerShared& shared) {
         shared.cancel.store(false);
       }
     }
+    if (!request && !w.wants_pass()) continue;  // the reference's turn
     try {
       if (request) {
         w.apply(*request, serial);

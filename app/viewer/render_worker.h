@@ -5,11 +5,11 @@
 // wants), reads a status snapshot and takes tiles; posting sets the cancel flag, so the pass in
 // flight stops between tiles and the worker picks the request up at once. A render state whose
 // settings did not change is kept, and its interrupted pass resumes. The `rt` reference of the same
-// view renders on a second thread (ReferenceRender); it keeps rendering through method and
-// tolerance changes (the scene is only read) and is dropped when the view (camera, size, depth,
-// subsample) changes. Every new render state starts with preview passes (pixel steps 8, 4, 2:
-// renderer::render_pass's preview_step) posted to a display buffer of their own, so preview samples
-// never mix with the render's tiles.
+// view renders on a second thread (ReferenceRender), as many passes as the method, the two taking
+// turns pass by pass; it keeps rendering through method and tolerance changes (the scene is only
+// read) and is dropped when the view (camera, size, depth, subsample) changes. Every new render
+// state starts with preview passes (pixel steps 8, 4, 2: renderer::render_pass's preview_step)
+// posted to a display buffer of their own, so preview samples never mix with the render's tiles.
 #pragma once
 
 #include <array>
@@ -78,6 +78,7 @@ struct WorkerStatus {
   int tile_count = 0;
   lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
+  int missed_samples = 0;      // the missed-light estimate's draws per point (0: off)
   double refit_seconds = 0.0;  // making the render state: refit and selector
   std::size_t method_bytes = 0;
   int passes_done = 0;
@@ -98,6 +99,9 @@ struct WorkerStatus {
   int reference_tile_count = 0;
   std::chrono::steady_clock::time_point reference_started;
   double reference_seconds = 0.0;
+  // It renders as many passes as the method (the settings' passes), taking turns with it.
+  int reference_passes_done = 0;
+  int reference_passes_target = 0;
 
   // The inspection of the pinned pixel in the render shown (null: none asked for, or the pixel
   // is outside the image).

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "app/scene_loading.h"
 #include "app/viewer/scene_opening.h"
@@ -56,6 +58,19 @@ bool parse_pixel(const std::string& text, int& x, int& y) {
   return parse_int_pair(text, ',', 0, 0, x, y);
 }
 
+// A finite number in [lo, hi], the whole text.
+std::optional<double> parse_number(const std::string& text, double lo, double hi) {
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v) || v < lo || v > hi)
+    return std::nullopt;
+  return v;
+}
+
+// The error mask's largest threshold, in the error unit.
+constexpr double kMaxMaskThresholdPct = 100.0;
+
 }  // namespace
 
 bool parse_window_size(const std::string& text, int& width, int& height) {
@@ -93,6 +108,16 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     if (!parse_view_mode(c.value)) reject(text, "view must be one of " + view_mode_names("|"));
   } else if (c.key == "reference") {
     if (c.value != "on" && c.value != "off") reject(text, "reference must be on or off");
+  } else if (c.key == "ab") {
+    if (c.value != "rt" && c.value != "method") reject(text, "ab must be rt or method");
+  } else if (c.key == "swipe") {
+    if (c.value != "off" && !parse_number(c.value, 0.0, 1.0))
+      reject(text, "swipe needs a divider position in [0, 1] or off");
+  } else if (c.key == "mask_threshold") {
+    const std::optional<double> t = parse_number(c.value, 0.0, kMaxMaskThresholdPct);
+    if (!t || *t <= 0.0) reject(text, "mask_threshold needs a percentage in (0, 100]");
+  } else if (c.key == "trade") {
+    if (c.value != "report") reject(text, "trade must be report");
   } else if (c.key == "hover") {
     int x = 0, y = 0;
     if (!parse_pixel(c.value, x, y)) reject(text, "hover needs a pixel X,Y");
@@ -119,8 +144,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";
     reject(text, "key must be one of " + keys +
-                     "lights|view|reference|hover|inspect|inspect_row|window|snapshot|screenshot|"
-                     "drop|copy|await|memory");
+                     "lights|view|reference|ab|swipe|mask_threshold|hover|inspect|inspect_row|"
+                     "window|snapshot|screenshot|drop|copy|await|memory|trade");
   }
   return c;
 }
@@ -230,6 +255,30 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "reference") {
     set_want_reference(state, c.value == "on");
+    return ScriptAction::none;
+  }
+  if (c.key == "ab") {
+    set_ab_rt(state, c.value == "rt");
+    return ScriptAction::none;
+  }
+  if (c.key == "swipe") {
+    set_swipe(state, c.value == "off" ? std::nullopt : parse_number(c.value, 0.0, 1.0));
+    return ScriptAction::none;
+  }
+  if (c.key == "mask_threshold") {
+    state.mask_threshold_pct = *parse_number(c.value, 0.0, kMaxMaskThresholdPct);
+    return ScriptAction::none;
+  }
+  if (c.key == "trade") {
+    // For tests: the trade plot's points and the reference they belong to.
+    std::printf("levrt view: trade plot at frame %d: %zu points, reference %llu, rt passes %d\n",
+                c.frame, state.trade.points.size(),
+                static_cast<unsigned long long>(state.trade.reference_generation),
+                state.status.reference_passes_done);
+    for (const TradePoint& p : state.trade.points) {
+      std::printf("levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
+                  lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
+    }
     return ScriptAction::none;
   }
   if (c.key == "hover") {

@@ -1,15 +1,17 @@
 // Scripted mode for tests and CI: `--set key=value@frame` changes a control at a UI frame, as if
 // the user had done it. Keys are the settings table's names, plus `lights` (a light count of the
-// scene), `view` (image|lights|nodes|error), `reference` (on|off), `hover` (X,Y in image pixels,
-// inside a typed-size image: show that pixel's tooltip; scripted mode ignores the real mouse),
-// and the actions `window` (resize the window to WIDTHxHEIGHT, as a user dragging its border;
-// the frame count holds until the window has that size), `snapshot` (save into a folder),
-// `screenshot` (write the window to a PNG), `drop` (a file dropped on the window: a scene file
-// opens, app/viewer/scene_opening.h), `copy=camera` (the Copy camera button), `await=idle` (hold
-// the frame count until the render, and the reference if requested, are complete), `await=preview`
-// (hold it until the coarse preview of the latest change is on screen) and `memory=report` (print
-// the process's current resident memory, for the soak test that watches it grow over thousands of
-// changes).
+// scene), `view` (a view name of app/view_table.h), `reference` (on|off), `ab` (rt|method: the
+// picture A/B shows), `swipe` (a divider position in [0, 1], or off), `mask_threshold` (the error
+// mask's, in percent), `hover` (X,Y in image pixels, inside a typed-size image: show that pixel's
+// tooltip; scripted mode ignores the real mouse), and the actions `window` (resize the window to
+// WIDTHxHEIGHT, as a user dragging its border; the frame count holds until the window has that
+// size), `snapshot` (save into a folder), `screenshot` (write the window to a PNG), `drop` (a file
+// dropped on the window: a scene file opens, app/viewer/scene_opening.h), `copy=camera` (the Copy
+// camera button), `await=idle` (hold the frame count until the render, and the reference if
+// requested, are complete), `await=preview` (hold it until the coarse preview of the latest change
+// is on screen), `memory=report` (print the process's current resident memory, for the soak test
+// that watches it grow over thousands of changes) and `trade=report` (print the trade plot's
+// points, with the reference they belong to).
 // `--script FILE` reads the same changes, one per line, for scripts too long for a command line.
 #pragma once
 

@@ -26,29 +26,38 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   RenderStats stats = snapshot_stats(collect_live_stats(state.image, st, state.error, now), st,
                                      state.settings, current_camera(state));
   renderer::HeatmapRange range;
-  job.image_rgb =
-      view_rgb8(state.image, state.error, ViewMode::image, range, display_from(state.settings));
-  // The ranges of both counters' heatmaps, as `levrt render` reports them; the file holds the
-  // one on screen (lights when the image is).
-  view_rgb8(state.image, state.error, ViewMode::lights, stats.heatmap_lights_range);
-  view_rgb8(state.image, state.error, ViewMode::nodes, stats.heatmap_nodes_range);
-  view_rgb8(state.image, state.error, ViewMode::bound, stats.heatmap_bound_range);
-  view_rgb8(state.image, state.error, ViewMode::noise, stats.heatmap_noise_range);
-  if (stats.error) view_rgb8(state.image, state.error, ViewMode::error, stats.heatmap_error_range);
-  const ViewMode heat = state.view == ViewMode::image ? ViewMode::lights : state.view;
-  job.heatmap_name = view_mode_info(heat).name;
-  job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range);
-  job.stats_json = render_stats_json(stats).dump(2) + "\n";
+  const renderer::Display display = display_from(state.settings);
+  job.image_rgb = view_rgb8(state.image, state.error, ViewMode::image, range, display);
+  // The range of every heatmap `levrt render` would write for these settings goes into the stats
+  // (the same keys: app/view_table.h's rows with a flag, those needing the reference or the
+  // missed-light estimate only with it); every view with a value somewhere becomes an EXR
+  // channel; the heatmap file holds the view on screen (lights when the image is).
   job.exr_channels = rgb_channels(state.image.radiance);
-  const auto add = [&job](const char* name, std::vector<float> values) {
-    job.exr_channels.push_back({name, std::move(values)});
-  };
-  add("samples", std::vector<float>(state.image.samples.begin(), state.image.samples.end()));
-  add("lights_tested", state.image.lights_tested);
-  add("nodes_visited", state.image.nodes_visited);
-  add("error_bound_pct", state.image.error_bound_pct);
-  add("noise_pct", state.image.noise_pct);
-  if (stats.error) add("error_pct", state.error.pct);
+  job.exr_channels.push_back(
+      {"samples", std::vector<float>(state.image.samples.begin(), state.image.samples.end())});
+  const ViewPixels pixels = view_pixels(state.image, state.error, state.mask_threshold_pct);
+  for (const ViewInfo& view : view_table()) {
+    if (view.value == nullptr) continue;
+    const bool in_stats = *view.output_flag != '\0' && (!view.needs_reference || stats.error) &&
+                          (!view.needs_missed || stats.missed);
+    if (in_stats) {
+      view_rgb8(state.image, state.error, view.mode, stats.heatmap_ranges[view.mode], display,
+                state.mask_threshold_pct);
+    }
+    std::vector<float> values(pixels.count, 0.0f);
+    bool any = false;
+    for (std::size_t i = 0; i < pixels.count; ++i) {
+      const std::optional<double> v = view.value(pixels, i);
+      any = any || v.has_value();
+      if (v) values[i] = static_cast<float>(*v);
+    }
+    if (any) job.exr_channels.push_back({view.channel, std::move(values)});
+  }
+  const ViewMode heat = state.view == ViewMode::image ? ViewMode::lights : state.view;
+  job.heatmap_name = view_info(heat).name;
+  job.heatmap_rgb =
+      view_rgb8(state.image, state.error, heat, range, display, state.mask_threshold_pct);
+  job.stats_json = render_stats_json(stats).dump(2) + "\n";
   job.inputs = settings_input_files(state.settings);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;

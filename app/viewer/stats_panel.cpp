@@ -1,5 +1,6 @@
 #include "app/viewer/stats_panel.h"
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <optional>
@@ -120,7 +121,8 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
         s.error_bound->max_pct);
   }
   if (s.error_avg_pct) {
-    row("pixel error", "%.4f%% avg, %.3f%% max", *s.error_avg_pct, *s.error_max_pct);
+    row("pixel error", "%.4f%% avg, %.3f%% max (%d passes)", *s.error_avg_pct, *s.error_max_pct,
+        s.error_passes);
   } else {
     row("pixel error", "needs the rt reference");
   }
@@ -129,9 +131,39 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   } else {
     row("noise", "from the second pass on");
   }
+  // Always a row, so choosing the view does not change the layout (and with it the fit size).
+  if (s.missed) {
+    row("missed light", "%.4f%% avg (+- %.4f%%), %.3f%% max", s.missed->average_pct,
+        s.missed->std_error_avg_pct, s.missed->max_pct);
+  } else {
+    row("missed light", "with the Missed light view");
+  }
   row("UI", "%.0f fps", state.ui_fps);
   ImGui::EndTable();
 }
+
+namespace {
+
+// A/B against rt: which picture the image view shows (B flips it), and the swipe split.
+void draw_ab_controls(ViewerState& state) {
+  ControlRects* rects = state.record_controls ? &state.control_rects : nullptr;
+  ImGui::TextUnformatted("show");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("method", !state.ab_rt)) set_ab_rt(state, false);
+  record_item(rects, "ab:method");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("rt (key B)", state.ab_rt)) set_ab_rt(state, true);
+  record_item(rects, "ab:rt");
+  ImGui::SameLine();
+  bool swipe = state.swipe.has_value();
+  if (ImGui::Checkbox("swipe", &swipe))
+    set_swipe(state, swipe ? std::optional<double>(0.5) : std::nullopt);
+  record_item(rects, "swipe");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("method left, rt right of a divider; drag the divider on the image");
+}
+
+}  // namespace
 
 void draw_reference_section(ViewerState& state, std::chrono::steady_clock::time_point now) {
   const WorkerStatus& st = state.status;
@@ -143,26 +175,34 @@ void draw_reference_section(ViewerState& state, std::chrono::steady_clock::time_
     return;
   }
   if (st.reference == ReferencePhase::rendering) {
-    const int done =
-        state.reference.generation == st.reference_generation ? state.reference.tiles_seen : 0;
+    // Passes done, and the tiles of the pass in flight.
+    const DisplayImage& ref = state.reference;
+    const bool shown = ref.generation == st.reference_generation;
+    const int tiles = shown && ref.pass == st.reference_passes_done ? ref.tiles_done_in_pass : 0;
+    const int passes = std::max(st.reference_passes_target, 1);
     const float fraction =
         st.reference_tile_count > 0
-            ? static_cast<float>(done) / static_cast<float>(st.reference_tile_count)
+            ? (static_cast<float>(st.reference_passes_done) +
+               static_cast<float>(tiles) / static_cast<float>(st.reference_tile_count)) /
+                  static_cast<float>(passes)
             : 0.0f;
     const double seconds = std::chrono::duration<double>(now - st.reference_started).count();
     char text[96];
-    std::snprintf(text, sizeof text, "rt: %d/%d tiles, %.1f s", done, st.reference_tile_count,
-                  seconds);
+    std::snprintf(text, sizeof text, "rt: pass %d/%d, %d/%d tiles, %.1f s",
+                  std::min(st.reference_passes_done + 1, passes), passes, tiles,
+                  st.reference_tile_count, seconds);
     ImGui::ProgressBar(fraction, ImVec2(ImGui::GetContentRegionAvail().x - 70.0f, 0.0f), text);
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) set_want_reference(state, false);
   } else if (st.reference == ReferencePhase::done) {
-    ImGui::Text("rt reference done in %.2f s", st.reference_seconds);
+    ImGui::Text("rt reference done: %d passes, %.2f s", st.reference_passes_done,
+                st.reference_seconds);
     ImGui::SameLine();
     if (ImGui::SmallButton("Drop")) set_want_reference(state, false);
   } else {
     ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "rt reference failed");
   }
+  draw_ab_controls(state);
   if (state.error.pixels_compared > 0) {
     const std::size_t total = state.error.pct.size();
     ImGui::Text("error avg %.4f%%, max %.3f%% over %.0f%% of pixels", state.error.average_pct,

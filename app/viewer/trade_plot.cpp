@@ -24,9 +24,11 @@ void add_trade_point(TradePlot& plot, const TradePoint& point) {
   plot.points.push_back(point);
 }
 
-bool has_trade_point(const TradePlot& plot, std::uint64_t generation) {
-  return std::any_of(plot.points.begin(), plot.points.end(),
-                     [&](const TradePoint& p) { return p.generation == generation; });
+int trade_point_passes(const TradePlot& plot, std::uint64_t generation) {
+  for (const TradePoint& p : plot.points) {
+    if (p.generation == generation) return p.passes;
+  }
+  return 0;
 }
 
 namespace {
@@ -44,7 +46,8 @@ ImU32 method_colour(lev::Method method) {
 void draw_trade_plot(const TradePlot& plot, std::uint64_t current) {
   if (plot.points.empty()) {
     ImGui::TextDisabled("Compute the rt reference, then try tolerances:");
-    ImGui::TextDisabled("each finished pass 0 adds a (time, error) point.");
+    ImGui::TextDisabled("each render adds a (pass-0 time, error) point, its error updated");
+    ImGui::TextDisabled("over more passes as both renders go on.");
     return;
   }
   double max_time = 0.0, max_error = 0.0;
@@ -100,7 +103,8 @@ void draw_trade_plot(const TradePlot& plot, std::uint64_t current) {
     ImGui::BeginTooltip();
     ImGui::Text("%s, tolerance %g", lev::method_info(nearest->method).name, nearest->tolerance);
     ImGui::Text("pass 0: %.3f s", nearest->seconds);
-    ImGui::Text("error avg %.4f%%, max %.3f%%", nearest->error_avg_pct, nearest->error_max_pct);
+    ImGui::Text("error avg %.4f%%, max %.3f%% (over %d passes)", nearest->error_avg_pct,
+                nearest->error_max_pct, nearest->passes);
     if (nearest->shared_cpu) ImGui::TextDisabled("measured while the reference rendered");
     ImGui::EndTooltip();
   }

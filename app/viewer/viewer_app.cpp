@@ -158,6 +158,9 @@ struct Picture {
   std::uint64_t image_version = ~0ull;
   std::uint64_t error_version = ~0ull;
   ViewMode view = ViewMode::image;
+  double mask_threshold_pct = -1.0;
+  int rt_from_x = -1;  // A/B: the first column showing rt
+  std::uint64_t reference_version = ~0ull;
   // The exposure and curve composed with (NaN: none yet).
   renderer::Display display{std::numeric_limits<double>::quiet_NaN(),
                             renderer::DisplayCurve::linear};
@@ -231,47 +234,64 @@ void update_error(ViewerState& state, ErrorClock& clock, Clock::time_point now, 
   }
 }
 
-// A finished pass 0 and a finished reference of the same view make one trade point.
+// A render whose pass 0 is done makes one trade point once every pixel it rendered is compared
+// with the reference of the same view, and the point follows the error as both render more passes.
 void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::time_point now) {
   const WorkerStatus& st = state.status;
-  const bool reference_done = st.reference == ReferencePhase::done &&
-                              state.reference.generation == st.reference_generation &&
-                              state.reference.tiles_seen == st.reference_tile_count;
+  const bool reference_shown =
+      st.reference_generation != 0 && state.reference.generation == st.reference_generation;
   const bool pass0_done =
       st.generation != 0 && state.image.generation == st.generation && st.first_pass_seconds >= 0.0;
-  if (!reference_done || !pass0_done || has_trade_point(state.trade, st.generation)) return;
-  update_error(state, clock, now, true);
+  if (!reference_shown || !pass0_done) return;
+  // The first point at once, and the last once both renders are done; the updates between at
+  // the error's own pace.
+  const bool settled = st.phase == WorkerPhase::idle && st.reference == ReferencePhase::done;
+  update_error(state, clock, now, settled || trade_point_passes(state.trade, st.generation) == 0);
+  const ErrorImage& e = state.error;
+  const bool all_compared = e.pixels_compared > 0 && e.pixels_compared == e.pixels_rendered;
+  if (!all_compared || e.passes <= trade_point_passes(state.trade, st.generation)) return;
   TradePoint p;
   p.method = st.method;
   p.tolerance = st.tolerance;
   p.seconds = st.first_pass_seconds;
-  p.error_avg_pct = state.error.average_pct;
-  p.error_max_pct = state.error.max_pct;
+  p.error_avg_pct = e.average_pct;
+  p.error_max_pct = e.max_pct;
   p.shared_cpu = st.first_pass_shared;
+  p.passes = e.passes;
   p.generation = st.generation;
   add_trade_point(state.trade, p);
 }
 
 void compose_picture(ViewerState& state, Picture& picture, const ErrorClock& clock,
                      Clock::time_point now, bool force) {
-  const bool uses_error = state.view == ViewMode::error;
+  const bool uses_error = view_info(state.view).needs_reference;
+  const int rt_from_x = rt_from_column(state);
+  // rt's picture counts while any of it is shown.
+  const std::uint64_t reference_version =
+      rt_from_x < state.image.width ? state.reference.version : 0;
   const std::uint64_t error_version = uses_error ? clock.computed : 0;
   const renderer::Display display = display_from(state.settings);
   const bool same_display =
       picture.display.exposure_ev == display.exposure_ev && picture.display.curve == display.curve;
   if (picture.image_version == state.image.version && picture.error_version == error_version &&
-      picture.view == state.view && same_display) {
+      picture.view == state.view && picture.mask_threshold_pct == state.mask_threshold_pct &&
+      picture.rt_from_x == rt_from_x && picture.reference_version == reference_version &&
+      same_display) {
     return;
   }
   // A new exposure or curve re-maps at once: it is the user's hand on the control.
   if (!force && same_display && seconds_between(picture.composed, now) < kComposeSeconds) return;
   compose_view_rgba(state.image, state.preview, state.error, state.view, picture.rgba,
-                    state.heatmap_range, display);
+                    state.heatmap_range, display, state.mask_threshold_pct,
+                    AbSplit{&state.reference, rt_from_x});
   picture.display = display;
   upload_texture(picture.texture, state.image.width, state.image.height, picture.rgba);
   picture.image_version = state.image.version;
   picture.error_version = error_version;
   picture.view = state.view;
+  picture.mask_threshold_pct = state.mask_threshold_pct;
+  picture.rt_from_x = rt_from_x;
+  picture.reference_version = reference_version;
   picture.composed = now;
 }
 
@@ -373,6 +393,9 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
   const bool compact = layout.panel_size.y < kRoomyHeight;
   if (compact) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(8.0f, 2.0f));
   ImGui::Begin("levrt", nullptr, kFixedWindow);
+  // B flips the picture between the method's and rt's (not while a text field has the keys).
+  if (!ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_B, false))
+    set_ab_rt(state, !state.ab_rt);
   draw_status_line(state, now);
   if (ImGui::CollapsingHeader("Scene and method", ImGuiTreeNodeFlags_DefaultOpen))
     draw_settings_section(state);
@@ -607,6 +630,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       } else {
         results_content_height = std::max(results_content_height, content_height);
       }
+      // A screenshot shows the error of every tile received (the difference and mask views).
+      if (screenshot_now) update_error(state, error_clock, now, true);
       compose_picture(state, picture, error_clock, now, screenshot_now);
       draw_picture_window(state, picture, layout);
       follow_image_area(state, fit, now);

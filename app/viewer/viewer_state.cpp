@@ -1,5 +1,8 @@
 #include "app/viewer/viewer_state.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -28,7 +31,7 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
     if (before.scene == state.status.scene) state.camera_before_scene_change = state.camera;
     state.camera.reset();
   }
-  if (new_view && state.view != ViewMode::error) state.want_reference = false;
+  if (new_view && !view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, label);
 }
 
@@ -45,25 +48,48 @@ void set_fit_size(ViewerState& state, int width, int height) {
 }
 
 void select_view(ViewerState& state, ViewMode mode) {
+  const bool missed_before = view_info(state.view).needs_missed;
   state.view = mode;
-  if (mode == ViewMode::error && !state.want_reference) set_want_reference(state, true);
+  const ViewInfo& info = view_info(mode);
+  if (info.needs_reference && !state.want_reference) set_want_reference(state, true);
+  if (info.needs_missed != missed_before) mark_changed(state, std::string("view ") + info.name);
 }
 
 void set_camera(ViewerState& state, const renderer::Camera& camera) {
   state.camera = camera;
-  if (state.view != ViewMode::error) state.want_reference = false;
+  if (!view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, "");
 }
 
 void reset_camera(ViewerState& state) {
   state.camera.reset();
-  if (state.view != ViewMode::error) state.want_reference = false;
+  if (!view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, "camera reset");
 }
 
 void set_want_reference(ViewerState& state, bool want) {
   state.want_reference = want;
   mark_changed(state, "");
+}
+
+void set_ab_rt(ViewerState& state, bool rt) {
+  state.ab_rt = rt;
+  if (rt && !state.want_reference) set_want_reference(state, true);
+}
+
+void set_swipe(ViewerState& state, std::optional<double> divider) {
+  if (divider) divider = std::clamp(*divider, 0.0, 1.0);
+  state.swipe = divider;
+  if (divider && !state.want_reference) set_want_reference(state, true);
+}
+
+int rt_from_column(const ViewerState& state) {
+  const int width = state.image.width;
+  const bool reference = state.want_reference && state.reference.width == width &&
+                         state.reference.height == state.image.height && width > 0;
+  if (!reference) return width;
+  if (state.swipe) return static_cast<int>(std::lround(*state.swipe * width));
+  return state.ab_rt ? 0 : width;
 }
 
 bool scene_ready(const ViewerState& state) {
@@ -85,6 +111,8 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
 ViewRequest make_request(const ViewerState& state) {
   ViewRequest r;
   r.settings = state.settings;
+  if (view_info(state.view).needs_missed)
+    r.settings.missed_samples = std::max(r.settings.missed_samples, kDefaultMissedSamples);
   r.camera = state.camera;
   r.want_reference = state.want_reference;
   r.inspect_pixel = state.inspect_pixel;

@@ -12,11 +12,11 @@
 
 #include "app/output_files.h"
 #include "app/settings.h"
+#include "app/view_table.h"
 #include "app/viewer/control_rects.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
 #include "app/viewer/trade_plot.h"
-#include "app/viewer/view_mode.h"
 #include "renderer/camera.h"
 #include "renderer/heatmap.h"
 
@@ -33,6 +33,12 @@ struct ViewerState {
   std::optional<renderer::Camera> camera;  // empty: the scene's preset
   ViewMode view = ViewMode::image;
   bool want_reference = false;
+  double mask_threshold_pct = kDefaultMaskThresholdPct;  // the mask view's
+  // A/B against rt (the image view): show rt's picture instead of the method's, or split the
+  // picture at a divider (fraction of its width from the left: the method left, rt right).
+  bool ab_rt = false;
+  std::optional<double> swipe;
+  bool swipe_dragging = false;  // the mouse holds the divider
 
   bool request_dirty = true;  // post a request at the end of this frame
   std::string change_label;   // what changed, for the latency report (empty: not reported)
@@ -88,17 +94,24 @@ void mark_changed(ViewerState& state, const std::string& label);
 
 // Call after editing state.settings: a new scene gets its default level, a new scene or level
 // its preset camera, a typed width or height selects the typed resolution, and a new view drops
-// the reference unless the error view needs it.
+// the reference unless the view on screen compares with it.
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label);
 
 // The image area asks for a new render size (fit resolution): like a typed size, but the
 // resolution stays fit and a reference asked for is kept asking for (at the new size).
 void set_fit_size(ViewerState& state, int width, int height);
 
+// Shows a view; one that compares with rt asks for the reference.
 void select_view(ViewerState& state, ViewMode mode);
 void set_camera(ViewerState& state, const renderer::Camera& camera);
 void reset_camera(ViewerState& state);
 void set_want_reference(ViewerState& state, bool want);
+// A/B: show rt's image (asking for the reference) or the method's; split at a divider or not.
+void set_ab_rt(ViewerState& state, bool rt);
+void set_swipe(ViewerState& state, std::optional<double> divider);
+// The first column of the image view that shows rt's picture: 0 for rt, the width for the method
+// (or while there is no reference), the divider's column while swiping.
+int rt_from_column(const ViewerState& state);
 // Pins the inspector on a pixel (image pixels from the top left), or clears it.
 void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2>>& pixel);
 
@@ -106,6 +119,8 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
 bool scene_ready(const ViewerState& state);
 renderer::Camera current_camera(const ViewerState& state);
 
+// The worker's request: the settings, with the missed-light estimate on (at least
+// kDefaultMissedSamples draws) while a view reading it is on screen.
 ViewRequest make_request(const ViewerState& state);
 
 }  // namespace app::viewer

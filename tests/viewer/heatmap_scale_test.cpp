@@ -48,7 +48,7 @@ std::vector<std::uint8_t> error_view(const std::vector<float>& pct, renderer::He
   image.height = 1;
   app::viewer::ErrorImage error;
   error.pct = pct;
-  return app::viewer::view_rgb8(image, error, app::viewer::ViewMode::error, range);
+  return app::viewer::view_rgb8(image, error, app::ViewMode::error, range);
 }
 
 glm::u8vec3 pixel(const std::vector<std::uint8_t>& rgb, int i) {

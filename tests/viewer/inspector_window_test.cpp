@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include <stb/stb_image.h>
+#include "tests/support/png_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/xvfb_server.h"
@@ -17,19 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Png {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-};
+using Png = levrt_test::PngImage;
 
 Png read_png(const fs::path& path) {
-  Png png;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
-  if (!data) return {};
-  png.rgb.assign(data, data + 3 * static_cast<std::size_t>(png.width) * png.height);
-  stbi_image_free(data);
-  return png;
+  return levrt_test::read_png_image(path);
 }
 
 // Pixels of about the inspector's marker colour (app/viewer/inspector_panel.h: 255, 0, 255).

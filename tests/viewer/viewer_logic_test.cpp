@@ -19,6 +19,10 @@
 
 namespace {
 using namespace app::viewer;
+using app::parse_view_mode;
+using app::view_info;
+using app::ViewMode;
+using app::ViewPixels;
 
 renderer::Camera test_camera() {
   renderer::Camera c;
@@ -273,10 +277,10 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
     const double expected = 100.0 * 0.01 * static_cast<double>(i) / 2.0;
     EXPECT_NEAR(image.noise_pct[i], expected, 1e-3 + 1e-3 * expected) << i;
     // The hover read-out shows the same value.
-    const PixelInfo p =
-        pixel_info(image, ErrorImage{}, static_cast<int>(i % 4), static_cast<int>(i / 4));
-    ASSERT_TRUE(p.noise_pct.has_value()) << i;
-    EXPECT_FLOAT_EQ(*p.noise_pct, image.noise_pct[i]) << i;
+    const std::optional<double> hover =
+        view_info(ViewMode::noise).value(view_pixels(image, ErrorImage{}), i);
+    ASSERT_TRUE(hover.has_value()) << i;
+    EXPECT_FLOAT_EQ(static_cast<float>(*hover), image.noise_pct[i]) << i;
   }
   renderer::HeatmapRange range;
   const std::vector<std::uint8_t> rgb = view_rgb8(image, ErrorImage{}, ViewMode::noise, range);
@@ -290,7 +294,7 @@ TEST(DisplayImage, TheNoiseViewShowsEachPixelsStandardErrorFromTheSecondPassOn) 
   apply_tile_updates(single, all_tiles(f, 2, 0, 2));
   view_rgb8(single, ErrorImage{}, ViewMode::noise, range);
   EXPECT_EQ(range.max, 0.0);
-  EXPECT_FALSE(pixel_info(single, ErrorImage{}, 3, 2).noise_pct.has_value());
+  EXPECT_FALSE(view_info(ViewMode::noise).value(view_pixels(single, ErrorImage{}), 2 * 4 + 3));
   EXPECT_EQ(parse_view_mode("noise"), ViewMode::noise);
 }
 
@@ -312,27 +316,49 @@ TEST(DisplayImage, OlderGenerationsAreDroppedAndNewerOnesKeepADimmedBackdrop) {
   EXPECT_LT(shown[stale + 1], before[stale + 1]);  // dimmed
 }
 
-TEST(DisplayImage, ErrorAgainstTheReferenceUsesPassZero) {
+// Each pixel compares the two means over the same passes: all of them when both have as many,
+// else the first 2^L both have (a reference ahead of a method that started again).
+TEST(DisplayImage, ErrorAgainstTheReferenceComparesTheSamePasses) {
   DisplayImage image, reference;
   const renderer::Framebuffer pass0 = test_framebuffer(16, 8, 0.5f, 1);
   apply_tile_updates(reference, all_tiles(pass0, 7, 0, 8));
   apply_tile_updates(image, all_tiles(pass0, 9, 0, 8));
   ErrorImage e = compute_error_image(image, reference);
   EXPECT_EQ(e.pixels_compared, 128u);
+  EXPECT_EQ(e.pixels_rendered, 128u);
+  EXPECT_EQ(e.passes, 1);
   EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
-  // A later pass changes the colour shown but not the pass-0 image the error compares.
-  apply_tile_updates(image, all_tiles(test_framebuffer(16, 8, 0.9f, 2), 9, 1, 8));
+  // The image's second pass while the reference has one: pass 0 against pass 0.
+  const renderer::Framebuffer two = test_framebuffer(16, 8, 0.9f, 2);
+  apply_tile_updates(image, all_tiles(two, 9, 1, 8));
   e = compute_error_image(image, reference);
+  EXPECT_EQ(e.passes, 1);
   EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
+  // The reference's second pass: the means over both passes, equal again.
+  apply_tile_updates(reference, all_tiles(two, 7, 1, 8));
+  e = compute_error_image(image, reference);
+  EXPECT_EQ(e.passes, 2);
+  EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
+  // Three passes against two compare the first two; a different third pass of the reference
+  // shows as an error once both have three.
+  apply_tile_updates(image, all_tiles(test_framebuffer(16, 8, 0.9f, 3), 9, 2, 8));
+  e = compute_error_image(image, reference);
+  EXPECT_EQ(e.passes, 2);
+  EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
+  apply_tile_updates(reference, all_tiles(test_framebuffer(16, 8, 0.3f, 3), 7, 2, 8));
+  e = compute_error_image(image, reference);
+  EXPECT_EQ(e.passes, 3);
+  EXPECT_GT(e.average_pct, 0.0);
   // A different pass 0 has an error, and the error view colours every compared pixel.
   DisplayImage other;
   apply_tile_updates(other, all_tiles(test_framebuffer(16, 8, 0.4f, 1), 11, 0, 8));
   e = compute_error_image(other, reference);
+  EXPECT_EQ(e.passes, 1);
   EXPECT_GT(e.average_pct, 0.0);
   renderer::HeatmapRange range;
   view_rgb8(other, e, ViewMode::error, range);
   EXPECT_GT(range.max, 0.0);
-  EXPECT_TRUE(pixel_info(other, e, 3, 3).error_pct.has_value());
+  EXPECT_TRUE(view_info(ViewMode::error).value(view_pixels(other, e), 3 * 16 + 3).has_value());
 }
 
 // The error bound travels with the tiles: the view, the hover read-out and the totals show the
@@ -345,8 +371,9 @@ TEST(DisplayImage, TheErrorBoundViewShowsEachPixelsBoundWithoutAReference) {
   }
   DisplayImage image;
   apply_tile_updates(image, all_tiles(f, 3, 1, 8));
-  EXPECT_NEAR(pixel_info(image, ErrorImage{}, 3, 0).error_bound_pct, 100.0 * 0.03 / 3.0, 1e-4);
-  EXPECT_FALSE(pixel_info(image, ErrorImage{}, 3, 0).error_pct.has_value());
+  const ViewPixels pixels = view_pixels(image, ErrorImage{});
+  EXPECT_NEAR(*view_info(ViewMode::bound).value(pixels, 3), 100.0 * 0.03 / 3.0, 1e-4);
+  EXPECT_FALSE(view_info(ViewMode::error).value(pixels, 3).has_value());
   renderer::HeatmapRange range;
   const std::vector<std::uint8_t> bound = view_rgb8(image, ErrorImage{}, ViewMode::bound, range);
   EXPECT_DOUBLE_EQ(range.min, 0.0);
@@ -414,12 +441,12 @@ TEST(DisplayImage, APreviewCoversTheFrameOnScreenButNeverTheSavedViews) {
 TEST(TradePlot, PointsBelongToOneReferenceAndReplaceTheSameSetting) {
   TradePlot plot;
   follow_reference(plot, 4);
-  add_trade_point(plot, {lev::Method::lev, 0.01, 0.5, 0.2, 3.0, false, 10});
-  add_trade_point(plot, {lev::Method::lev, 0.1, 0.2, 1.2, 9.0, false, 11});
-  add_trade_point(plot, {lev::Method::lev, 0.01, 0.4, 0.2, 3.0, false, 12});
+  add_trade_point(plot, {lev::Method::lev, 0.01, 0.5, 0.2, 3.0, false, 1, 10});
+  add_trade_point(plot, {lev::Method::lev, 0.1, 0.2, 1.2, 9.0, false, 1, 11});
+  add_trade_point(plot, {lev::Method::lev, 0.01, 0.4, 0.2, 3.0, false, 4, 12});
   EXPECT_EQ(plot.points.size(), 2u);
-  EXPECT_TRUE(has_trade_point(plot, 12));
-  EXPECT_FALSE(has_trade_point(plot, 10));
+  EXPECT_EQ(trade_point_passes(plot, 12), 4);
+  EXPECT_EQ(trade_point_passes(plot, 10), 0);
   follow_reference(plot, 4);
   EXPECT_EQ(plot.points.size(), 2u);
   follow_reference(plot, 5);

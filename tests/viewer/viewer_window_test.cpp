@@ -25,8 +25,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <stb/stb_image.h>
 #include "tests/support/gltf_files.h"
+#include "tests/support/png_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/signal_process.h"
 #include "tests/support/slow_gltf.h"
@@ -45,23 +45,10 @@ CommandRun run_viewer(const std::vector<std::string>& args) {
   return levrt_test::run_viewer_on_xvfb(args);
 }
 
-struct Png {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-  bool ok() const { return width > 0; }
-  const unsigned char* at(int x, int y) const {
-    return &rgb[3 * (static_cast<std::size_t>(y) * width + x)];
-  }
-};
+using Png = levrt_test::PngImage;
 
 Png read_png(const fs::path& path) {
-  Png png;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
-  if (!data) return {};
-  png.rgb.assign(data, data + 3 * static_cast<std::size_t>(png.width) * png.height);
-  stbi_image_free(data);
-  return png;
+  return levrt_test::read_png_image(path);
 }
 
 bool uniform(const Png& png) {
