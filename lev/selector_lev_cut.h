@@ -1,4 +1,4 @@
-// `lev_cut`: LEV with a relative criterion (issue 23). LEV's extent volumes drop the lights that
+// `lev_cut`: LEV with a relative criterion. LEV's extent volumes drop the lights that
 // cannot reach the display (below the tolerance), and what they keep is cut relative to the
 // shading point, as Lightcuts cuts (Walter et al. 2005): a subtree whose cluster bound
 // (light_bounds.h's radiance_bound) is within the relative error of the point's running total

@@ -1,4 +1,4 @@
-// From scene-linear radiance to the displayed image (issue 26). The renderer's radiance stays
+// From scene-linear radiance to the displayed image. The renderer's radiance stays
 // scene-linear; a display step turns it into what is shown and written: multiply by the
 // exposure, 2^EV, then apply a display curve and round to 8 bits. The curves: `linear` (the
 // exposed value clipped to [0, 1], 1.0 = 255: the images levrt always wrote, so linear at EV 0 is

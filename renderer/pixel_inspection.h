@@ -1,4 +1,4 @@
-// The pixel inspector's query (docs/design.md, issue 25): one pixel's pass-0 sample traced as a
+// The pixel inspector's query (docs/design.md): one pixel's pass-0 sample traced as a
 // render traces it (the same primary ray, random streams, selector and recursion), with each
 // shading point's selector asked to record what it shaded, culled and clustered
 // (lev/inspect_record.h). From the records, per hit and for the pixel: what the tested lights

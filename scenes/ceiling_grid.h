@@ -1,4 +1,4 @@
-// Scene class "ceiling grid" (issue 23): a car park (or an open-plan office) lit by a flat grid of
+// Scene class "ceiling grid": a car park (or an open-plan office) lit by a flat grid of
 // dim ceiling lights, one per parking bay, written as one flat list of lights, with full-height
 // partition walls between rows of bays (gaps for the driving lanes), pillars and parked cars.
 // A point on the floor is lit by the hundreds of lights around it, each a little, and walls hide

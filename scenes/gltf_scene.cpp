@@ -902,9 +902,10 @@ bool is_gltf_file_name(std::string_view name) {
   return ends_with(name, ".gltf") || ends_with(name, ".glb");
 }
 
-SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path, int camera) {
+SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path, int camera,
+                                  std::uint64_t budget_bytes) {
   if (camera < 0) fail(path, "camera", std::to_string(camera));
-  GltfBudget budget(path, kMaxGltfSceneBytes);
+  GltfBudget budget(path, budget_bytes);
   const bool binary = is_glb(bytes);
   FolderReader reader;
   reader.gltf_path = path;

@@ -21,6 +21,7 @@
 #include <string>
 #include <string_view>
 
+#include "scenes/gltf_budget.h"
 #include "scenes/scene_description.h"
 
 namespace scenes {
@@ -37,7 +38,9 @@ bool is_gltf_file_name(std::string_view name);
 // Light intensities are used as authored (candela for point and spot lights, lux for
 // directional ones, as irradiance at distance 1): photometric, usually far above levrt's 1.0 =
 // 255, and brought to the display by the exposure (glTF files open at --exposure auto).
-SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path,
-                                  int camera = 0);
+// budget_bytes caps the scene's memory as gltf_budget.h charges it; the glTF fuzz target passes a
+// few MiB so that scenes near the cap stay fast under the sanitizers.
+SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& path, int camera = 0,
+                                  std::uint64_t budget_bytes = kMaxGltfSceneBytes);
 
 }  // namespace scenes

@@ -1,4 +1,4 @@
-// Scene class "lamp street" (issue 23): a town of parallel streets lit by one lamp design placed
+// Scene class "lamp street": a town of parallel streets lit by one lamp design placed
 // thousands of times, each lamp an `instance` of one master (post, arm, head and a spotlight
 // shining down) under a translation and a turn, all of them children of one union. The scene
 // format puts no box above them; light_tree_conversion gives the union its automatic hierarchy

@@ -17,7 +17,7 @@ const std::vector<SceneModel>& scene_models() {
        maze_light_count, build_maze, describe_maze},
       {"hall", "Hall (Scene Model 3)", kHallMinLevel, kHallMaxLevel, kDefaultSceneLevel,
        hall_light_count, build_hall, describe_hall},
-      // The classes of many dim lights (issue 23); each file is a generator with parameters.
+      // The classes of many dim lights; each file is a generator with parameters.
       {"stage", "Stage rig (coloured spots, mirror, glass)", kStageRigMinLevel, kStageRigMaxLevel,
        kDefaultSceneLevel, stage_rig_light_count, build_stage_rig, describe_stage_rig},
       {"carpark", "Car park (ceiling grid, partitions)", kCeilingGridMinLevel, kCeilingGridMaxLevel,

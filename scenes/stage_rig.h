@@ -1,4 +1,4 @@
-// Scene class "stage rig" (issue 23): thousands of coloured spotlights, overlapping, all aimed at
+// Scene class "stage rig": thousands of coloured spotlights, overlapping, all aimed at
 // one stage on which a mirror and glass objects stand, written as one flat list of lights (the
 // automatic hierarchy of light_tree_conversion is all the structure they get). Every point on the
 // stage is lit by a large share of the rig and each spot gives it little: the many-dim-lights

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A flat grid of dim ceiling lights over an office floor with partitions, as a levrt scene file
 (scenes/README.md): every light adds a little to every point and none dominates, the case where
-an absolute tolerance is either slow or wrong and a cut relative to the pixel is not (issue 23).
+an absolute tolerance is either slow or wrong and a cut relative to the pixel is not.
 
     tools/make_dim_ceiling.py --side 100 --out dim_ceiling.json   # 100 x 100 = 10,000 lights
 """

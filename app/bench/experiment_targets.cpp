@@ -1,4 +1,4 @@
-// targets (issue 23, new): per scene, rt's time and, for two error targets, the fastest method
+// targets: per scene, rt's time and, for two error targets, the fastest method
 // and setting of the method table that meets it: its speedup over rt and its lights tested per
 // point. Every row of the table is swept over its bench tolerances, in turns with rt on the same
 // pixels, as control does; the whole sweep is written beside the summary. The same sweep is

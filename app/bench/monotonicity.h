@@ -1,4 +1,4 @@
-// The bench's monotonicity check (issue 23): a tighter setting of a deterministic method must
+// The bench's monotonicity check: a tighter setting of a deterministic method must
 // never make its average or maximum pixel error against rt larger. Given one method's sweep on
 // one scene, loosest setting first (the order of its bench_tolerances), it lists every pair of
 // settings where the tighter one erred more, for the targets experiment to print.

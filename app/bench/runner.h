@@ -76,7 +76,7 @@ struct SuiteConfig {
   // about as much as rt's.
   std::vector<std::pair<std::string, double>> converge_methods{
       {"lev", 0.01}, {"lev_est", 0.01}, {"lev_mc", 0.01}, {"lev_mc", 0.1}, {"light_tree", 0.01}};
-  // targets (issue 23): the (scene, light count) renders where each error target's fastest
+  // targets: the (scene, light count) renders where each error target's fastest
   // method and setting is found: the thesis scenes and the classes of many dim lights, the lamp
   // street twice (instanced and bare, whose lev times the section compares).
   std::vector<std::pair<std::string, std::uint64_t>> target_renders{

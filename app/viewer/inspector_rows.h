@@ -1,4 +1,4 @@
-// The viewer's inspector (issue 25): one pinned pixel's inspection (renderer/pixel_inspection.h),
+// The viewer's inspector: one pinned pixel's inspection (renderer/pixel_inspection.h),
 // made by the render worker with the render's own settings, as the rows the inspector panel lists
 // and the image overlays mark: the lights that give or would give the pixel the most, over every
 // hit of its path, largest first, and the outline of a light's extent volume on the image.

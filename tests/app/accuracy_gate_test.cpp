@@ -1,4 +1,4 @@
-// The CI uses of `levrt render` (issue 25, item 6): --fail-above gates on the pixel error against
+// The CI uses of `levrt render`: --fail-above gates on the pixel error against
 // the rt reference (exit 3 with one line above, 0 at or below, 2 for a bad value or without
 // --reference), --heatmap-error draws that error per pixel, --reference-out writes rt's image.
 #include "app/accuracy_gate.h"

@@ -1,4 +1,4 @@
-// Monotonicity (issue 23): for each LEV method on a small hall, where every light adds a little
+// Monotonicity: for each LEV method on a small hall, where every light adds a little
 // and the culled rest matters most, the average and maximum pixel error against rt never grow as
 // the method's setting tightens (its tolerance, or lev_cut's relative error), over a sequence of
 // settings two decades wide: each tighter setting against every looser one.

@@ -136,6 +136,23 @@ TEST_F(GltfLimits, AnAccessorReusedByFortyPrimitivesIsChargedFortyTimes) {
   EXPECT_EQ(message.find("meshes[0].primitives[0] "), std::string::npos) << message;
 }
 
+// The budget a caller passes is the one charged (the fuzz target passes 16 MiB): a mesh of
+// 300,000 vertices as built (14.4 MB) fits 1 GiB and not 4 MiB, and the refusal names that budget.
+TEST_F(GltfLimits, ACallersSmallerBudgetIsTheOneCharged) {
+  const std::string text = gltf_document(R"("accessors": [{"componentType": 5126, "type": "VEC3",
+      "count": 300000}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "nodes": [{"mesh": 0}])");
+  EXPECT_NO_THROW((void)scenes::parse_gltf_scene(text, "small.gltf"));
+  try {
+    (void)scenes::parse_gltf_scene(text, "small.gltf", 0, std::uint64_t{4} << 20);
+    FAIL() << "a 4 MiB budget accepted 300,000 vertices";
+  } catch (const std::invalid_argument& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("meshes[0].primitives[0]"), std::string::npos) << message;
+    EXPECT_NE(message.find("memory budget of 4 MiB"), std::string::npos) << message;
+  }
+}
+
 TEST_F(GltfLimits, AHugeExternalBufferIsRefusedByItsSizeBeforeReading) {
   {
     write_file(file("big.bin"), "");

@@ -1,4 +1,4 @@
-// The viewer's exposure slider and display switch (issue 26): under Xvfb, a scripted change of
+// The viewer's exposure slider and display switch: under Xvfb, a scripted change of
 // `exposure` or `display` re-maps the window's image at once from the radiance the UI holds,
 // without a new render: the snapshot statistics before and after show the same render (passes,
 // render and refit times), with the new exposure and curve recorded, and the snapshot writes
