@@ -91,6 +91,15 @@ CameraFlags read_camera_file(const std::string& path) {
   if (!(fov > 0.0f && fov < 180.0f))
     throw UsageError(flag + ": " + path + ": camera.vertical_fov_deg: must be in (0, 180)");
   flags.vertical_fov_deg = fov;
+  // Older stats files have no such member: a perspective camera.
+  flags.orthographic_half_height = 0.0f;
+  if (camera.contains("orthographic_half_height")) {
+    const nlohmann::json& h = camera["orthographic_half_height"];
+    if (!h.is_number() || !std::isfinite(h.get<float>()) || !(h.get<float>() >= 0.0f))
+      throw UsageError(flag + ": " + path +
+                       ": camera.orthographic_half_height: must be a finite number >= 0");
+    flags.orthographic_half_height = h.get<float>();
+  }
   return flags;
 }
 
@@ -116,7 +125,21 @@ CameraFlags parse_camera_flags(const CameraFlagTexts& texts) {
   if (!texts.position.empty()) flags.position = parse_vec3("--camera-position", texts.position);
   if (!texts.target.empty()) flags.target = parse_vec3("--camera-target", texts.target);
   if (!texts.up.empty()) flags.up = parse_vec3("--camera-up", texts.up);
-  if (!texts.fov_deg.empty()) flags.vertical_fov_deg = parse_fov("--fov", texts.fov_deg);
+  if (!texts.fov_deg.empty() && !texts.ortho_half_height.empty())
+    throw UsageError(
+        "--ortho-half-height: give --fov (perspective) or --ortho-half-height "
+        "(orthographic), not both");
+  if (!texts.fov_deg.empty()) {
+    flags.vertical_fov_deg = parse_fov("--fov", texts.fov_deg);
+    flags.orthographic_half_height = 0.0f;
+  }
+  if (!texts.ortho_half_height.empty()) {
+    float h = 0.0f;
+    if (!parse_float(texts.ortho_half_height, h) || !(h > 0.0f))
+      throw UsageError("--ortho-half-height: must be a positive number of scene units, got '" +
+                       texts.ortho_half_height + "'");
+    flags.orthographic_half_height = h;
+  }
   return flags;
 }
 
@@ -126,6 +149,8 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
   if (flags.target) camera.target = *flags.target;
   if (flags.up) camera.up = *flags.up;
   if (flags.vertical_fov_deg) camera.vertical_fov_deg = *flags.vertical_fov_deg;
+  if (flags.orthographic_half_height)
+    camera.orthographic_half_height = *flags.orthographic_half_height;
   if (flags.empty()) return camera;
   const renderer::CameraBasis basis = renderer::camera_basis(camera);
   if (basis.forward == glm::vec3(0.0f)) {
@@ -139,8 +164,10 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
 
 std::string camera_flags_text(const renderer::Camera& camera) {
   return "--camera-position " + vec3_text(camera.position) + " --camera-target " +
-         vec3_text(camera.target) + " --camera-up " + vec3_text(camera.up) + " --fov " +
-         float_text(camera.vertical_fov_deg);
+         vec3_text(camera.target) + " --camera-up " + vec3_text(camera.up) +
+         (camera.orthographic()
+              ? " --ortho-half-height " + float_text(camera.orthographic_half_height)
+              : " --fov " + float_text(camera.vertical_fov_deg));
 }
 
 }  // namespace app

@@ -82,6 +82,10 @@ void add_camera_flags(CLI::App& command, CameraFlagTexts& texts) {
   command.add_option("--fov", texts.fov_deg, "vertical field of view, degrees in (0, 180)")
       ->type_name("DEG");
   command
+      .add_option("--ortho-half-height", texts.ortho_half_height,
+                  "an orthographic view this many scene units above and below its axis")
+      ->type_name("UNITS");
+  command
       .add_option("--camera-from", texts.from_file,
                   "the camera of a stats JSON levrt wrote (the flags above override its parts)")
       ->type_name("STATS.json");

@@ -73,7 +73,8 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
                  {"position", vec(s.camera.position)},
                  {"target", vec(s.camera.target)},
                  {"up", vec(s.camera.up)},
-                 {"vertical_fov_deg", s.camera.vertical_fov_deg}};
+                 {"vertical_fov_deg", s.camera.vertical_fov_deg},
+                 {"orthographic_half_height", s.camera.orthographic_half_height}};
   for (const ViewInfo& view : view_table()) {
     const auto range = s.heatmap_ranges.find(view.mode);
     if (range == s.heatmap_ranges.end()) continue;

@@ -58,7 +58,7 @@ struct RenderStats {
   // absent when the render did not compute it.
   std::optional<renderer::PixelErrorStats> error_bound;
   renderer::Camera camera;
-  int camera_index = 0;  // which of the scene file's perspective cameras (--camera)
+  int camera_index = 0;  // which of the scene file's cameras (--camera)
   // The range of every heatmap drawn (app/view_table.h), by view: heatmap_NAME_range.
   std::map<ViewMode, renderer::HeatmapRange> heatmap_ranges;
   // The estimated standard error of the mean over passes (renderer/pixel_noise.h), from two

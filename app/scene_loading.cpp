@@ -96,7 +96,7 @@ std::unique_ptr<LoadedScene> load_scene(const Settings& settings, const std::ato
   loaded->scene = scenes::instantiate_scene(description);
   loaded->scene.camera = apply_camera_flags(loaded->scene.camera, settings.camera_flags);
   poll();
-  loaded->rays = std::make_unique<renderer::RayScene>(loaded->scene.geometry);
+  loaded->rays = std::make_unique<renderer::RayScene>(loaded->scene);
   poll();
   loaded->build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

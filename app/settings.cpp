@@ -119,9 +119,8 @@ const std::vector<SettingSpec>& setting_table() {
       {"subsample", "Subsample", "render every n-th pixel in x and y",
        IntRange{&Settings::subsample, 1, 64}},
       {"camera", "Camera",
-       "glTF scenes: the perspective camera to look through, in node order (0: the first, or a "
-       "view "
-       "framing the scene when there is none)",
+       "glTF scenes: the camera (perspective or orthographic) to look through, in node order "
+       "(0: the first, or a view framing the scene when there is none)",
        IntRange{&Settings::camera, 0, 1000000}, camera_unused},
       {"exposure", "Exposure",
        "exposure in EV: the displayed image is the radiance x 2^EV through the display curve; "

@@ -38,7 +38,7 @@ struct Settings {
   int depth = 5;                   // reflection/refraction depth
   int threads = 0;                 // 0 = all cores
   int subsample = 1;               // render every n-th pixel in x and y (for slow references)
-  int camera = 0;                  // a glTF file's perspective camera, in node order
+  int camera = 0;                  // a glTF file's camera, in node order
   // --camera-position/-target/-up, --fov, --camera-from: parts of the preset camera replaced
   // (app/camera_flags.h). They belong to the scene they were given with: the viewer drops them
   // when another scene opens.

@@ -1,4 +1,5 @@
-// A pinhole camera and the primary ray through a point of the image plane.
+// A pinhole camera, or an orthographic one (glTF's orthographic cameras), and the primary ray
+// through a point of the image plane.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -10,6 +11,11 @@ struct Camera {
   glm::vec3 target{0.0f};
   glm::vec3 up{0.0f, 0.0f, 1.0f};
   float vertical_fov_deg = 45.0f;
+  // Above 0: an orthographic camera seeing this half height (scene units) around the view axis,
+  // every ray parallel to it and starting on the camera's plane; the field of view is then
+  // unused. 0: perspective.
+  float orthographic_half_height = 0.0f;
+  bool orthographic() const { return orthographic_half_height > 0.0f; }
 };
 
 struct Ray {

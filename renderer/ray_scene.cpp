@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "renderer/direction.h"
+#include "renderer/texture.h"
 
 namespace renderer {
 
@@ -39,8 +40,81 @@ void RayScene::throw_if_error(const char* stage) const {
   }
 }
 
-RayScene::RayScene(const Geometry& geometry)
-    : errors_(std::make_unique<ErrorLog>()), geometry_(geometry), instances_(geometry.instances) {
+namespace {
+
+// Embree's context with what the filters need to know about the ray (Embree hands the filter the
+// context the query was given, so it may be extended).
+struct RayContext {
+  RTCIntersectContext embree;
+  bool camera_ray = false;
+};
+
+RayContext make_context(bool camera_ray) {
+  RayContext context;
+  rtcInitIntersectContext(&context.embree);
+  context.camera_ray = camera_ray;
+  return context;
+}
+
+}  // namespace
+
+// Rejects a hit on a culled back face (camera rays only) or in a cut-out's hole. Embree's Ng
+// points to the side the triangle's vertices wind counter-clockwise on, glTF's front face; the
+// ray and Ng are both in the instance's frame, where a similarity keeps the side.
+void RayScene::filter_hit(const RTCFilterFunctionNArguments* args) {
+  const auto& filter = *static_cast<const SurfaceFilter*>(args->geometryUserPtr);
+  const Material& material = *filter.material;
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    if (material.cull_back_faces &&
+        reinterpret_cast<const RayContext*>(args->context)->camera_ray) {
+      const float facing =
+          RTCHitN_Ng_x(args->hit, args->N, i) * RTCRayN_dir_x(args->ray, args->N, i) +
+          RTCHitN_Ng_y(args->hit, args->N, i) * RTCRayN_dir_y(args->ray, args->N, i) +
+          RTCHitN_Ng_z(args->hit, args->N, i) * RTCRayN_dir_z(args->ray, args->N, i);
+      if (facing > 0.0f) {
+        args->valid[i] = 0;
+        continue;
+      }
+    }
+    if (!material.is_cut_out()) continue;
+    float alpha = material.alpha_factor;
+    const TriangleMesh& mesh = *filter.mesh;
+    if (filter.alpha_texture && !mesh.uvs.empty()) {
+      const glm::uvec3 tri = mesh.triangles[RTCHitN_primID(args->hit, args->N, i)];
+      const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+      const glm::vec2 uv =
+          (1.0f - u - v) * mesh.uvs[tri.x] + u * mesh.uvs[tri.y] + v * mesh.uvs[tri.z];
+      alpha *= sample_texture(*filter.alpha_texture, uv).x;
+    }
+    if (alpha < material.alpha_cutoff) args->valid[i] = 0;
+  }
+}
+
+void RayScene::attach_filter(RTCGeometry geometry, const TriangleMesh& mesh) {
+  const Material& material = scene_.materials.at(mesh.material);
+  if (!material.cull_back_faces && !material.is_cut_out()) return;
+  if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) == 0)
+    throw std::runtime_error(
+        "embree: built without filter functions, which cut-outs and "
+        "single-sided materials need");
+  SurfaceFilter& filter = filters_.emplace_back();
+  filter.mesh = &mesh;
+  filter.material = &material;
+  if (material.is_cut_out() && material.alpha_texture >= 0)
+    filter.alpha_texture = &scene_.textures.at(static_cast<std::size_t>(material.alpha_texture));
+  rtcSetGeometryUserData(geometry, &filter);
+  rtcSetGeometryIntersectFilterFunction(geometry, &RayScene::filter_hit);
+  // Shadow rays meet both sides: only a cut-out's holes let them through.
+  if (material.is_cut_out()) rtcSetGeometryOccludedFilterFunction(geometry, &RayScene::filter_hit);
+}
+
+RayScene::RayScene(const Scene& scene)
+    : errors_(std::make_unique<ErrorLog>()),
+      geometry_(scene.geometry),
+      scene_(scene),
+      instances_(scene.geometry.instances) {
+  const Geometry& geometry = scene.geometry;
   device_ = rtcNewDevice(nullptr);
   if (!device_) {
     throw std::runtime_error("embree: cannot create a device (error " +
@@ -49,8 +123,8 @@ RayScene::RayScene(const Geometry& geometry)
   rtcSetDeviceErrorFunction(device_, &RayScene::record_error, errors_.get());
 
   for (const Prototype& prototype : geometry.prototypes) {
-    RTCScene scene = rtcNewScene(device_);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    RTCScene prototype_scene = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(prototype_scene, RTC_BUILD_QUALITY_HIGH);
     for (const TriangleMesh& mesh : prototype.meshes) {
       RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
       auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
@@ -70,8 +144,9 @@ RayScene::RayScene(const Geometry& geometry)
       for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         for (int c = 0; c < 3; ++c) t[3 * i + c] = mesh.triangles[i][c];
       }
+      attach_filter(g, mesh);
       rtcCommitGeometry(g);
-      rtcAttachGeometry(scene, g);  // geomID = index in prototype.meshes
+      rtcAttachGeometry(prototype_scene, g);  // geomID = index in prototype.meshes
       rtcReleaseGeometry(g);
     }
     if (!prototype.spheres.empty()) {
@@ -92,11 +167,11 @@ RayScene::RayScene(const Geometry& geometry)
         v[4 * i + 3] = s.radius;
       }
       rtcCommitGeometry(g);
-      rtcAttachGeometry(scene, g);  // geomID = meshes.size()
+      rtcAttachGeometry(prototype_scene, g);  // geomID = meshes.size()
       rtcReleaseGeometry(g);
     }
-    rtcCommitScene(scene);
-    prototype_scenes_.push_back(scene);
+    rtcCommitScene(prototype_scene);
+    prototype_scenes_.push_back(prototype_scene);
     throw_if_error("embree prototype build");
   }
 
@@ -163,21 +238,19 @@ RTCRayHit make_ray_hit(const Ray& ray) {
 float RayScene::closest_distance(const Ray& ray) const {
   assert(castable(ray.origin, ray.direction));
   if (!castable(ray.origin, ray.direction)) return std::numeric_limits<float>::infinity();
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context = make_context(false);
   RTCRayHit rh = make_ray_hit(ray);
-  rtcIntersect1(top_, &context, &rh);
+  rtcIntersect1(top_, &context.embree, &rh);
   return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
                                                   : rh.ray.tfar;
 }
 
-bool RayScene::intersect(const Ray& ray, SurfaceHit& hit) const {
+bool RayScene::intersect(const Ray& ray, SurfaceHit& hit, bool camera_ray) const {
   assert(castable(ray.origin, ray.direction));
   if (!castable(ray.origin, ray.direction)) return false;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context = make_context(camera_ray);
   RTCRayHit rh = make_ray_hit(ray);
-  rtcIntersect1(top_, &context, &rh);
+  rtcIntersect1(top_, &context.embree, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
 
   const PlacedPrototype& placed = instances_[rh.hit.instID[0]];
@@ -218,8 +291,7 @@ bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction,
   // A shadow ray that cannot be cast lets no light through: it contributes nothing.
   assert(castable(origin, direction) && !std::isnan(max_distance));
   if (!castable(origin, direction) || std::isnan(max_distance)) return true;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context = make_context(false);
   RTCRay r;
   r.org_x = origin.x;
   r.org_y = origin.y;
@@ -233,7 +305,7 @@ bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction,
   r.mask = 0xFFFFFFFFu;
   r.id = 0;
   r.flags = 0;
-  rtcOccluded1(top_, &context, &r);
+  rtcOccluded1(top_, &context.embree, &r);
   return r.tfar < 0.0f;  // Embree writes -inf on a hit
 }
 

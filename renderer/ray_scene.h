@@ -1,9 +1,13 @@
 // Every ray of levrt goes through Embree 3 here: the scene's prototypes become Embree scenes,
 // placed once each by single-level instances. Embree reports errors through one callback that
 // records the message; construction throws it, so a failure is never a silent black image.
+// Meshes whose material culls back faces or cuts out holes (material.h) get an Embree filter
+// function that rejects those hits during traversal, so every ray still makes one Embree query;
+// other meshes have no filter and cost nothing more.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -14,6 +18,7 @@
 
 #include "renderer/camera.h"
 #include "renderer/geometry.h"
+#include "renderer/scene.h"
 
 namespace renderer {
 
@@ -40,13 +45,14 @@ float offset_floor_for_extent(float extent);
 
 class RayScene {
  public:
-  explicit RayScene(const Geometry& geometry);
+  // Keeps references to the scene's geometry, materials and textures: the scene outlives it.
+  explicit RayScene(const Scene& scene);
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
 
-  // Closest hit along the ray, or false.
-  bool intersect(const Ray& ray, SurfaceHit& hit) const;
+  // Closest hit along the ray, or false. A camera ray does not see culled back faces.
+  bool intersect(const Ray& ray, SurfaceHit& hit, bool camera_ray = false) const;
   // True when something lies on the segment origin + t * direction, t in (0, max_distance).
   bool occluded(const glm::vec3& origin, const glm::vec3& direction, float max_distance) const;
   // The bare Embree query behind intersect: the closest hit's distance (+inf for a miss), with
@@ -61,7 +67,15 @@ class RayScene {
     std::mutex mutex;
     std::string first_message;
   };
+  // What the filter of one mesh needs (its user data); kept in a deque, so addresses stay.
+  struct SurfaceFilter {
+    const TriangleMesh* mesh = nullptr;
+    const Material* material = nullptr;
+    const Texture* alpha_texture = nullptr;
+  };
   static void record_error(void* user, RTCError code, const char* message);
+  static void filter_hit(const RTCFilterFunctionNArguments* args);
+  void attach_filter(RTCGeometry geometry, const TriangleMesh& mesh);
   void throw_if_error(const char* stage) const;
 
   std::unique_ptr<ErrorLog> errors_;
@@ -70,6 +84,8 @@ class RayScene {
   std::vector<RTCScene> prototype_scenes_;
   float offset_floor_ = 1e-5f;
   const Geometry& geometry_;
+  const Scene& scene_;
+  std::deque<SurfaceFilter> filters_;
   std::vector<PlacedPrototype> instances_;
 };
 

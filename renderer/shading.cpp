@@ -96,6 +96,13 @@ class SurfacePoint final : public lev::ShadingPoint {
   std::vector<LoggedRay>* ray_log_;
 };
 
+// What the surface emits toward the ray: its emission times the emission texture at uv.
+glm::vec3 emitted_radiance(const Scene& scene, const Material& material, const glm::vec2& uv) {
+  if (material.emission_texture < 0) return material.emission;
+  return material.emission *
+         sample_texture(scene.textures[static_cast<std::size_t>(material.emission_texture)], uv);
+}
+
 }  // namespace
 
 glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathCounters& counters,
@@ -107,13 +114,15 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   SurfaceHit hit;
   if (context.ray_log)
     context.ray_log->push_back({ray.origin, 0.0f, ray.direction, RayKind::closest_hit});
-  if (!context.rays.intersect(ray, hit)) return context.scene.background;
+  // Depth 0 is the camera's ray: the one that does not see culled back faces.
+  if (!context.rays.intersect(ray, hit, depth == 0)) return context.scene.background;
   ++counters.shading_points;
   Material material = context.scene.materials[hit.material];
   if (material.colour_texture >= 0) {
     material.colour *= sample_texture(
         context.scene.textures[static_cast<std::size_t>(material.colour_texture)], hit.uv);
   }
+  if (material.unlit) return material.colour;
   const bool entering = glm::dot(hit.geometric_normal, ray.direction) < 0.0f;
   // Surfaces are two-sided: shade with the normal that faces the incoming ray.
   const glm::vec3 facing = entering ? hit.shading_normal : -hit.shading_normal;
@@ -121,6 +130,7 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   const glm::vec3 to_viewer = -ray.direction;
 
   glm::vec3 radiance = material.ka * context.scene.ambient * material.colour;
+  if (material.has_emission()) radiance += emitted_radiance(context.scene, material, hit.uv);
   SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
   lev::MissedLight missed;
   if (context.missed_samples > 0) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
@@ -108,6 +109,7 @@ class DocumentCheck {
   bool key(std::string& k) {
     Level& level = stack_.back();
     level.key = k;
+    if (is_camera_object(level)) level.camera_members.emplace_back(k, std::string());
     for (std::size_t i = 0; i < level.missing.size(); ++i) {
       if (level.missing[i] == k) level.missing.erase(level.missing.begin() + static_cast<long>(i));
     }
@@ -159,6 +161,8 @@ class DocumentCheck {
     std::string pattern;                    // gltf_schema.h: the path with every index written []
     const GltfFieldRule* rule = nullptr;    // the container's own rule, if levrt reads it
     std::vector<std::string_view> missing;  // required members not met yet
+    // A camera's members (and the text of scalar ones), for the checks between members.
+    std::vector<std::pair<std::string, std::string>> camera_members;
   };
 
   // An index field, checked against its array's length once the whole document is read.
@@ -221,11 +225,20 @@ class DocumentCheck {
     if (!rule->indexes.empty())
       references_.push_back({where(), static_cast<std::uint64_t>(value.number), rule->indexes});
     if (rule->special == GltfSpecialCheck::used_extension) {
+      // glTF lists each extension once (uniqueItems).
+      if (std::find(used_extensions_.begin(), used_extensions_.end(), value.text) !=
+          used_extensions_.end())
+        fail("'" + shortened(std::string(value.text), 100) + "'", "listed twice in extensionsUsed");
       used_extensions_.emplace_back(value.text);
       if (!is_honoured_gltf_extension(value.text)) ignored_extensions_.emplace_back(value.text);
     }
-    if (rule->special == GltfSpecialCheck::required_extension)
+    if (rule->special == GltfSpecialCheck::required_extension) {
+      for (const auto& [earlier_where, name] : required_extensions_) {
+        if (name == value.text)
+          fail("'" + shortened(name, 100) + "'", "listed twice in extensionsRequired");
+      }
       required_extensions_.emplace_back(where(), value.text);
+    }
     return rule;
   }
 
@@ -255,6 +268,8 @@ class DocumentCheck {
   bool scalar(const GltfJsonValue& value) {
     begin_value();
     check_rule(value);
+    if (!stack_.empty() && is_camera_object(stack_.back()))
+      stack_.back().camera_members.back().second = std::string(value.text);
     return checking();
   }
 
@@ -264,7 +279,7 @@ class DocumentCheck {
       fail("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
            "the limit a scene file has too");
     const GltfJsonKind kind = array ? GltfJsonKind::array : GltfJsonKind::object;
-    Level level{array, {}, 0, 0, {}, nullptr, {}};
+    Level level{array, {}, 0, 0, {}, nullptr, {}, {}};
     level.rule = check_rule({kind, 0.0, array ? "an array" : "an object"});
     if (unchecked_from_ == kNone && !stack_.empty() && unchecked_member(stack_.size() - 1))
       unchecked_from_ = stack_.size();
@@ -279,11 +294,47 @@ class DocumentCheck {
     return true;
   }
 
+  static bool is_camera_object(const Level& level) {
+    return !level.array &&
+           (level.pattern == "cameras[]" || level.pattern == "cameras[].orthographic");
+  }
+
+  static const std::string* camera_member(const Level& level, std::string_view name) {
+    for (const auto& [key, text] : level.camera_members) {
+      if (key == name) return &text;
+    }
+    return nullptr;
+  }
+
+  // What the schema says between a camera's members: the object its type names is there, and an
+  // orthographic zfar lies beyond znear.
+  void check_camera(const Level& level) const {
+    const std::string where = where_of(stack_.size() - 1);
+    if (level.pattern == "cameras[]") {
+      const std::string* type = camera_member(level, "type");
+      if (type && (*type == "perspective" || *type == "orthographic") &&
+          !camera_member(level, *type))
+        fail_at(where + "." + *type, "missing", "a member a camera of type " + *type + " requires");
+      return;
+    }
+    const std::string* znear = camera_member(level, "znear");
+    const std::string* zfar = camera_member(level, "zfar");
+    if (znear && zfar &&
+        !(std::strtod(zfar->c_str(), nullptr) > std::strtod(znear->c_str(), nullptr)))
+      fail_at(where + ".zfar", *zfar, "beyond znear " + *znear + " is expected");
+  }
+
   bool close() {
     const Level& level = stack_.back();
+    if (is_camera_object(level)) check_camera(level);
     if (!level.missing.empty()) {
       fail_at(where_of(stack_.size() - 1) + "." + std::string(level.missing.front()), "missing",
               "a member glTF requires");
+    }
+    if (level.rule && level.next < level.rule->min_length) {
+      fail_at(where_of(stack_.size() - 1), "an empty array",
+              "glTF asks for at least " + std::to_string(level.rule->min_length) +
+                  " element(s) or no member");
     }
     if (level.rule && level.rule->length != 0 && level.next != level.rule->length) {
       fail_at(where_of(stack_.size() - 1), std::to_string(level.next) + " values",

@@ -5,7 +5,8 @@
 // kMaxJsonValues values), refusing a NUL byte and anything after the JSON, and checks as it reads:
 // every index is a whole number in [0, 2^31 - 1], every offset, length, stride and count a whole
 // number in [0, 2^53], `mode` one of the seven modes, `componentType` one of the six types; every
-// field levrt reads of the type, range and length gltf_schema.h's table gives, every index inside
+// field levrt reads of the type, range and length gltf_schema.h's table gives (no empty array where
+// glTF asks for elements, no extension listed twice), every index inside
 // its array, asset.version 2.x, no minVersion above 2.0, no required extension levrt cannot
 // honour; and every buffer and image URI either a data URI or a regular file inside the glTF's
 // folder (scene_folder.h), charged to the scene's budget by its size before anything reads it. The

@@ -16,7 +16,6 @@
 #include <utility>
 #include <vector>
 
-#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -24,7 +23,9 @@
 #include "renderer/direction.h"
 #include "scenes/gltf_budget.h"
 #include "scenes/gltf_document.h"
+#include "scenes/gltf_materials.h"
 #include "scenes/gltf_node_tree.h"
+#include "scenes/gltf_refusal.h"
 #include "scenes/gltf_schema.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_folder.h"
@@ -36,14 +37,11 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::string number_text(double value) {
-  std::ostringstream out;
-  out.precision(9);
-  out << value;
-  return out.str();
+  return gltf_number_text(value);
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, const std::string& value) {
-  throw std::invalid_argument(path + ": " + what + ": " + value);
+  fail_gltf(path, what, value);
 }
 
 std::string first_line(const std::string& text) {
@@ -100,21 +98,14 @@ bool write_nothing(std::string* error, const std::string&, const std::vector<uns
   return false;
 }
 
-renderer::TextureWrap texture_wrap(int gltf_wrap) {
-  switch (gltf_wrap) {
-    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
-      return renderer::TextureWrap::clamp_to_edge;
-    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
-      return renderer::TextureWrap::mirrored_repeat;
-    default:
-      return renderer::TextureWrap::repeat;
-  }
-}
-
 class Importer {
  public:
   Importer(const tinygltf::Model& model, const std::string& path, int camera, GltfBudget& budget)
-      : model_(model), path_(path), wanted_camera_(camera), budget_(budget) {}
+      : model_(model),
+        path_(path),
+        wanted_camera_(camera),
+        budget_(budget),
+        materials_(model, path, budget, scene_) {}
 
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -150,9 +141,10 @@ class Importer {
     if (!has_camera_ && wanted_camera_ > 0) {
       fail(path_, "camera",
            std::to_string(wanted_camera_) + " (the file has " + std::to_string(cameras_seen_) +
-               " perspective cameras in its scene)");
+               " cameras in its scene)");
     }
     scene_.camera = has_camera_ ? camera_ : framing_camera();
+    for (std::string& line : materials_.warnings()) warnings_.push_back(std::move(line));
     return std::move(scene_);
   }
 
@@ -492,172 +484,11 @@ class Importer {
                                 " triangles as built)";
       budget_.charge(built, kGltfBytesPerVertex, where);
       budget_.charge(triangles, kGltfBytesPerTriangle, where);
-      if (primitive.material >= 0 &&
-          static_cast<std::size_t>(primitive.material) < model_.materials.size()) {
-        const tinygltf::TextureInfo& info =
-            model_.materials[static_cast<std::size_t>(primitive.material)]
-                .pbrMetallicRoughness.baseColorTexture;
-        if (info.index >= 0 && info.texCoord == 0) charge_texture(info.index);
-      }
+      materials_.charge_material(primitive.material);
     }
-  }
-
-  // A texture's texels as decoded, from its image's header (stb reads only the header): every
-  // texture that samples an image decodes it anew, so each is charged.
-  void charge_texture(int index) {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.textures.size()) return;
-    if (charged_textures_.empty()) charged_textures_.assign(model_.textures.size(), false);
-    if (charged_textures_[static_cast<std::size_t>(index)]) return;
-    charged_textures_[static_cast<std::size_t>(index)] = true;
-    const int source = model_.textures[static_cast<std::size_t>(index)].source;
-    if (source < 0 || static_cast<std::size_t>(source) >= model_.images.size()) return;
-    const auto [bytes, size] = image_bytes(source);
-    int width = 0, height = 0, channels = 0;
-    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
-        !stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
-      return;  // refused, by name, when the texture is decoded
-    const std::uint64_t texels =
-        static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
-    budget_.charge(texels, kGltfBytesPerTexel,
-                   "textures[" + std::to_string(index) + "] (images[" + std::to_string(source) +
-                       "], " + std::to_string(width) + "x" + std::to_string(height) +
-                       " texels as decoded)");
   }
 
   // --- meshes -----------------------------------------------------------------------------------
-
-  std::uint32_t scene_material(int index, const std::string& where) {
-    if (index >= static_cast<int>(model_.materials.size()))
-      fail(path_, where + ".material", std::to_string(index));
-    const std::size_t slot = static_cast<std::size_t>(index + 1);  // 0: the default material
-    if (material_of_.empty()) material_of_.assign(model_.materials.size() + 1, kNoIndex);
-    if (material_of_[slot] != kNoIndex) return material_of_[slot];
-    tinygltf::Material fallback;  // the spec's default: white, metallic 1, roughness 1
-    const tinygltf::Material& source =
-        index >= 0 ? model_.materials[static_cast<std::size_t>(index)] : fallback;
-    const std::string name =
-        index >= 0 ? "gltf material " + std::to_string(index) : "gltf default material";
-    material_of_[slot] =
-        add_material(scene_, name,
-                     phong_from_gltf(source, index >= 0 ? "materials[" + std::to_string(index) + "]"
-                                                        : "default material"));
-    return material_of_[slot];
-  }
-
-  // The mapping scenes/README.md tabulates.
-  renderer::Material phong_from_gltf(const tinygltf::Material& source, const std::string& where) {
-    const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() != 4)
-      fail(path_, where + ".baseColorFactor",
-           std::to_string(pbr.baseColorFactor.size()) + " values");
-    for (const double c : pbr.baseColorFactor) {
-      if (!std::isfinite(c) || c < 0.0 || c > 1.0)
-        fail(path_, where + ".baseColorFactor", number_text(c));
-    }
-    const double metallic = pbr.metallicFactor;
-    const double roughness = pbr.roughnessFactor;
-    if (!std::isfinite(metallic) || metallic < 0.0 || metallic > 1.0)
-      fail(path_, where + ".metallicFactor", number_text(metallic));
-    if (!std::isfinite(roughness) || roughness < 0.0 || roughness > 1.0)
-      fail(path_, where + ".roughnessFactor", number_text(roughness));
-    const double gloss = 1.0 - roughness;
-    renderer::Material m;
-    m.colour = glm::vec3(static_cast<float>(pbr.baseColorFactor[0]),
-                         static_cast<float>(pbr.baseColorFactor[1]),
-                         static_cast<float>(pbr.baseColorFactor[2]));
-    if (pbr.baseColorTexture.index >= 0)
-      m.colour_texture = scene_texture(pbr.baseColorTexture, where);
-    m.kd = static_cast<float>(1.0 - metallic * gloss);
-    m.ks = static_cast<float>(gloss * (0.04 + 0.96 * metallic));
-    const double alpha = std::max(roughness * roughness, 0.01);
-    m.shininess = static_cast<float>(std::clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 10000.0));
-    m.kr = static_cast<float>(metallic * gloss * gloss);
-    const auto transmission = source.extensions.find("KHR_materials_transmission");
-    if (transmission != source.extensions.end()) {
-      const tinygltf::Value& factor = transmission->second.Get("transmissionFactor");
-      const double kt = factor.IsNumber() ? factor.GetNumberAsDouble() : 0.0;
-      if (!std::isfinite(kt) || kt < 0.0 || kt > 1.0)
-        fail(path_, where + ".KHR_materials_transmission.transmissionFactor", number_text(kt));
-      m.kt = static_cast<float>(kt);
-      m.kd *= static_cast<float>(1.0 - kt);
-    }
-    const auto ior = source.extensions.find("KHR_materials_ior");
-    if (ior != source.extensions.end()) {
-      const tinygltf::Value& value = ior->second.Get("ior");
-      if (value.IsNumber()) {
-        const double v = value.GetNumberAsDouble();
-        if (!std::isfinite(v) || v < 1.0 || v > 100.0)
-          fail(path_, where + ".KHR_materials_ior.ior", number_text(v));
-        m.ior = static_cast<float>(v);
-      }
-    }
-    return m;
-  }
-
-  // The scene texture of a material's base colour texture (each glTF texture decoded once).
-  std::int32_t scene_texture(const tinygltf::TextureInfo& info, const std::string& where) {
-    const std::string info_where = where + ".baseColorTexture";
-    if (info.index >= static_cast<int>(model_.textures.size()))
-      fail(path_, info_where + ".index", std::to_string(info.index));
-    if (info.texCoord != 0) {
-      warnings_.push_back(info_where + ": texCoord " + std::to_string(info.texCoord) +
-                          " is not read; untextured");
-      return -1;
-    }
-    if (texture_of_.empty()) texture_of_.assign(model_.textures.size(), kUnconverted);
-    std::uint32_t& slot = texture_of_[static_cast<std::size_t>(info.index)];
-    if (slot != kUnconverted) return static_cast<std::int32_t>(slot);
-    const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(info.index)];
-    const std::string texture_where = "textures[" + std::to_string(info.index) + "]";
-    if (texture.source < 0 || texture.source >= static_cast<int>(model_.images.size()))
-      fail(path_, texture_where + ".source", std::to_string(texture.source));
-    charge_texture(info.index);
-    renderer::Texture out = decode_image(texture.source);
-    if (texture.sampler >= 0) {
-      if (texture.sampler >= static_cast<int>(model_.samplers.size()))
-        fail(path_, texture_where + ".sampler", std::to_string(texture.sampler));
-      const tinygltf::Sampler& sampler = model_.samplers[static_cast<std::size_t>(texture.sampler)];
-      out.wrap_u = texture_wrap(sampler.wrapS);
-      out.wrap_v = texture_wrap(sampler.wrapT);
-    }
-    scene_.textures.push_back(std::move(out));
-    slot = static_cast<std::uint32_t>(scene_.textures.size() - 1);
-    return static_cast<std::int32_t>(slot);
-  }
-
-  // The image's bytes (its buffer view, or the file or data URI tinygltf read) through stb_image.
-  // An image's encoded bytes: its buffer view's, or those of the file or data URI tinygltf read.
-  std::pair<const unsigned char*, std::size_t> image_bytes(int index) const {
-    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(index)];
-    const std::string where = "images[" + std::to_string(index) + "]";
-    if (image.bufferView >= 0) {
-      const tinygltf::BufferView& view = view_at(image.bufferView, where);
-      return {view_bytes(view), view.byteLength};
-    }
-    return {image.image.data(), image.image.size()};
-  }
-
-  renderer::Texture decode_image(int index) const {
-    const std::string where = "images[" + std::to_string(index) + "]";
-    const auto [bytes, size] = image_bytes(index);
-    if (size == 0 || size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-      fail(path_, where, "no image data (" + std::to_string(size) + " bytes)");
-    int width = 0, height = 0, channels = 0;
-    unsigned char* pixels =
-        stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, 3);
-    // Out of memory is no fault of the file: exit 1 as everywhere, not 2.
-    if (!pixels && std::strcmp(stbi_failure_reason(), "outofmem") == 0) throw std::bad_alloc();
-    if (!pixels) fail(path_, where, std::string("cannot decode: ") + stbi_failure_reason());
-    renderer::Texture texture;
-    texture.width = width;
-    texture.height = height;
-    texture.texels.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-    for (std::size_t i = 0; i < texture.texels.size(); ++i) {
-      texture.texels[i] = glm::vec3(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2]) / 255.0f;
-    }
-    stbi_image_free(pixels);
-    return texture;
-  }
 
   static std::vector<glm::vec3> as_vec3(const std::vector<double>& values) {
     std::vector<glm::vec3> out(values.size() / 3);
@@ -783,7 +614,7 @@ class Importer {
         continue;
       }
       renderer::TriangleMesh part = read_primitive(primitive, primitive_where);
-      part.material = scene_material(primitive.material, primitive_where);
+      part.material = materials_.scene_material(primitive.material, primitive_where);
       if (!part.triangles.empty()) data.parts.push_back(std::move(part));
     }
     if (!skipped_modes.empty()) {
@@ -982,11 +813,19 @@ class Importer {
     if (node.camera >= static_cast<int>(model_.cameras.size()))
       fail(path_, where + ".camera", std::to_string(node.camera));
     const tinygltf::Camera& camera = model_.cameras[static_cast<std::size_t>(node.camera)];
-    if (camera.type != "perspective") return;
+    const std::string camera_where = "cameras[" + std::to_string(node.camera) + "]";
+    const bool orthographic = camera.type == "orthographic";
+    if (camera.type != "perspective" && !orthographic) return;
     const double yfov = camera.perspective.yfov;
-    if (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)
+    if (!orthographic && (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi))
       fail(path_, where + ".camera.yfov", number_text(yfov));
-    // --camera N: the N-th perspective camera met in the node tree, depth first.
+    // glTF's ymag is the half height seen (a negative one, which the spec advises against, as
+    // its magnitude); the width follows the image's aspect ratio, as a perspective camera's does
+    // (xmag, like aspectRatio, is not read: scenes/README.md).
+    const double ymag = std::abs(camera.orthographic.ymag);
+    if (orthographic && (!std::isfinite(ymag) || !(ymag > 0.0) || !(ymag < 1e30)))
+      fail(path_, camera_where + ".orthographic.ymag", number_text(ymag));
+    // --camera N: the N-th camera met in the node tree, depth first.
     if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
     const glm::dvec3 forward = -glm::dvec3(world[2]);
@@ -1000,7 +839,11 @@ class Importer {
     camera_.position = glm::vec3(position);
     camera_.target = glm::vec3(position + glm::normalize(forward));
     camera_.up = glm::vec3(glm::normalize(up));
-    camera_.vertical_fov_deg = static_cast<float>(yfov * 180.0 / kPi);
+    if (orthographic) {
+      camera_.orthographic_half_height = static_cast<float>(ymag);
+    } else {
+      camera_.vertical_fov_deg = static_cast<float>(yfov * 180.0 / kPi);
+    }
     has_camera_ = true;
   }
 
@@ -1036,11 +879,9 @@ class Importer {
   static constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
   static constexpr std::uint32_t kUnconverted = kNoIndex - 1;
   SceneDescription scene_;
-  std::vector<std::uint32_t> material_of_;  // [0]: the default material, [i + 1]: glTF material i
-  std::vector<std::uint32_t> mesh_of_;      // per glTF mesh: its scene mesh
-  std::vector<std::uint32_t> texture_of_;   // per glTF texture: its scene texture
-  std::vector<bool> charged_meshes_;        // per glTF mesh: charged to the budget
-  std::vector<bool> charged_textures_;      // per glTF texture: charged to the budget
+  GltfMaterials materials_;             // adds the materials and textures to scene_
+  std::vector<std::uint32_t> mesh_of_;  // per glTF mesh: its scene mesh
+  std::vector<bool> charged_meshes_;    // per glTF mesh: charged to the budget
   std::vector<std::pair<glm::vec3, glm::vec3>> mesh_bounds_;  // per scene mesh, in its frame
   std::map<std::pair<std::uint32_t, std::array<float, 9>>, std::uint32_t> master_of_;
   std::vector<SceneNode> mesh_nodes_;

@@ -14,11 +14,12 @@ using Kind = GltfJsonKind;
 
 constexpr double kHalfPi = 1.57079632679489661923;
 
-// The extensions levrt honours (gltf_scene.cpp reads the first three; accessors of every
-// component type are decoded, which is what KHR_mesh_quantization asks).
-constexpr std::string_view kHonouredExtensions[] = {"KHR_lights_punctual",
-                                                    "KHR_materials_transmission",
-                                                    "KHR_materials_ior", "KHR_mesh_quantization"};
+// The extensions levrt honours (gltf_scene.cpp and gltf_materials.cpp read the first five;
+// accessors of every component type are decoded, which is what KHR_mesh_quantization asks).
+constexpr std::string_view kHonouredExtensions[] = {
+    "KHR_lights_punctual", "KHR_materials_transmission",
+    "KHR_materials_ior",   "KHR_materials_emissive_strength",
+    "KHR_materials_unlit", "KHR_mesh_quantization"};
 
 GltfFieldRule field(std::string_view pattern, Kind kind) {
   GltfFieldRule rule;
@@ -32,6 +33,16 @@ GltfFieldRule object(std::string_view pattern) {
 GltfFieldRule array(std::string_view pattern, std::size_t length = 0) {
   GltfFieldRule rule = field(pattern, Kind::array);
   rule.length = length;
+  return rule;
+}
+// An array the schema gives minItems 1.
+GltfFieldRule listing(std::string_view pattern) {
+  GltfFieldRule rule = array(pattern);
+  rule.min_length = 1;
+  return rule;
+}
+GltfFieldRule nonzero(GltfFieldRule rule) {
+  rule.nonzero = true;
   return rule;
 }
 GltfFieldRule number(std::string_view pattern, double minimum, double maximum,
@@ -74,19 +85,19 @@ const std::vector<GltfFieldRule>& rules() {
       required(object("asset")),
       required(special("asset.version", GltfSpecialCheck::version)),
       special("asset.minVersion", GltfSpecialCheck::min_version),
-      array("extensionsUsed"),
+      listing("extensionsUsed"),
       special("extensionsUsed[]", GltfSpecialCheck::used_extension),
-      array("extensionsRequired"),
+      listing("extensionsRequired"),
       special("extensionsRequired[]", GltfSpecialCheck::required_extension),
       index("scene", "scenes"),
-      array("scenes"),
+      listing("scenes"),
       object("scenes[]"),
-      array("scenes[].nodes"),
+      listing("scenes[].nodes"),
       index("scenes[].nodes[]", "nodes"),
       // Nodes.
-      array("nodes"),
+      listing("nodes"),
       object("nodes[]"),
-      array("nodes[].children"),
+      listing("nodes[].children"),
       index("nodes[].children[]", "nodes"),
       index("nodes[].mesh", "meshes"),
       index("nodes[].camera", "cameras"),
@@ -104,7 +115,7 @@ const std::vector<GltfFieldRule>& rules() {
                      "extensions.KHR_lights_punctual.lights")),
       // KHR_lights_punctual.
       object("extensions.KHR_lights_punctual"),
-      array("extensions.KHR_lights_punctual.lights"),
+      listing("extensions.KHR_lights_punctual.lights"),
       object("extensions.KHR_lights_punctual.lights[]"),
       required(one_of("extensions.KHR_lights_punctual.lights[].type", Kind::string,
                       "point spot directional")),
@@ -116,20 +127,20 @@ const std::vector<GltfFieldRule>& rules() {
       number("extensions.KHR_lights_punctual.lights[].spot.innerConeAngle", 0.0, kHalfPi),
       number("extensions.KHR_lights_punctual.lights[].spot.outerConeAngle", 0.0, kHalfPi, true),
       // Meshes.
-      array("meshes"),
+      listing("meshes"),
       object("meshes[]"),
-      required(array("meshes[].primitives")),
+      required(listing("meshes[].primitives")),
       object("meshes[].primitives[]"),
       required(object("meshes[].primitives[].attributes")),
       index("meshes[].primitives[].attributes.*", "accessors"),
       index("meshes[].primitives[].indices", "accessors"),
       index("meshes[].primitives[].material", "materials"),
       whole("meshes[].primitives[].mode", 0.0, 6.0),
-      array("meshes[].primitives[].targets"),
+      listing("meshes[].primitives[].targets"),
       object("meshes[].primitives[].targets[]"),
       index("meshes[].primitives[].targets[].*", "accessors"),
       // Accessors, buffer views, buffers.
-      array("accessors"),
+      listing("accessors"),
       object("accessors[]"),
       index("accessors[].bufferView", "bufferViews"),
       whole("accessors[].byteOffset", 0.0),
@@ -146,18 +157,18 @@ const std::vector<GltfFieldRule>& rules() {
       required(object("accessors[].sparse.values")),
       required(index("accessors[].sparse.values.bufferView", "bufferViews")),
       whole("accessors[].sparse.values.byteOffset", 0.0),
-      array("bufferViews"),
+      listing("bufferViews"),
       object("bufferViews[]"),
       required(index("bufferViews[].buffer", "buffers")),
       whole("bufferViews[].byteOffset", 0.0),
       required(whole("bufferViews[].byteLength", 1.0)),
       whole("bufferViews[].byteStride", 4.0, 252.0),
-      array("buffers"),
+      listing("buffers"),
       object("buffers[]"),
       field("buffers[].uri", Kind::string),
       required(whole("buffers[].byteLength", 1.0)),
       // Materials, textures, images, samplers.
-      array("materials"),
+      listing("materials"),
       object("materials[]"),
       object("materials[].pbrMetallicRoughness"),
       array("materials[].pbrMetallicRoughness.baseColorFactor", 4),
@@ -172,30 +183,35 @@ const std::vector<GltfFieldRule>& rules() {
       required(index("materials[].normalTexture.index", "textures")),
       required(index("materials[].occlusionTexture.index", "textures")),
       required(index("materials[].emissiveTexture.index", "textures")),
+      whole("materials[].emissiveTexture.texCoord", 0.0),
       array("materials[].emissiveFactor", 3),
       number("materials[].emissiveFactor[]", 0.0, 1.0),
-      one_of("materials[].alphaMode", Kind::string, "OPAQUE MASK BLEND"),
+      // An unknown alpha mode is the validator's warning: levrt draws it opaque, with a warning.
+      field("materials[].alphaMode", Kind::string),
       number("materials[].alphaCutoff", 0.0, 1e300),
       field("materials[].doubleSided", Kind::boolean),
       number("materials[].extensions.KHR_materials_transmission.transmissionFactor", 0.0, 1.0),
       number("materials[].extensions.KHR_materials_ior.ior", 0.0, 1e300),
-      array("textures"),
+      object("materials[].extensions.KHR_materials_emissive_strength"),
+      number("materials[].extensions.KHR_materials_emissive_strength.emissiveStrength", 0.0, 1e300),
+      object("materials[].extensions.KHR_materials_unlit"),
+      listing("textures"),
       object("textures[]"),
       index("textures[].source", "images"),
       index("textures[].sampler", "samplers"),
-      array("images"),
+      listing("images"),
       object("images[]"),
       field("images[].uri", Kind::string),
       index("images[].bufferView", "bufferViews"),
       one_of("images[].mimeType", Kind::string, "image/jpeg image/png"),
-      array("samplers"),
+      listing("samplers"),
       object("samplers[]"),
       // An unknown wrap mode is the validator's warning, not an error: levrt repeats.
       whole("samplers[].wrapS", 0.0),
       whole("samplers[].wrapT", 0.0),
       // Cameras. A perspective zfar is not read (rays have no far plane), and tinygltf's writer
       // puts 0 there: docs/gltf_conformance.md lists it.
-      array("cameras"),
+      listing("cameras"),
       object("cameras[]"),
       // Another camera type is only the validator's warning, but tinygltf cannot read one
       // (docs/gltf_conformance.md): refused here, by its glTF path.
@@ -205,14 +221,17 @@ const std::vector<GltfFieldRule>& rules() {
       required(number("cameras[].perspective.znear", 0.0, 1e300, true)),
       number("cameras[].perspective.aspectRatio", 0.0, 1e300, true),
       object("cameras[].orthographic"),
-      required(number("cameras[].orthographic.xmag", -1e300, 1e300)),
-      required(number("cameras[].orthographic.ymag", -1e300, 1e300)),
+      // Zero is the validator's error; a negative magnitude only its warning (levrt reads |ymag|).
+      required(nonzero(number("cameras[].orthographic.xmag", -1e300, 1e300))),
+      required(nonzero(number("cameras[].orthographic.ymag", -1e300, 1e300))),
       required(number("cameras[].orthographic.zfar", 0.0, 1e300, true)),
       required(number("cameras[].orthographic.znear", 0.0, 1e300)),
+      // Animations (not read: levrt draws the first frame), for the schema's minItems.
+      listing("animations"),
       // Skins (not drawn, but their node and accessor indices are references).
-      array("skins"),
+      listing("skins"),
       object("skins[]"),
-      required(array("skins[].joints")),
+      required(listing("skins[].joints")),
       index("skins[].joints[]", "nodes"),
       index("skins[].skeleton", "nodes"),
       index("skins[].inverseBindMatrices", "accessors"),
@@ -336,6 +355,8 @@ std::string gltf_field_problem(const GltfFieldRule& rule, const GltfJsonValue& v
     if (!std::isfinite(value.number) || below || value.number > rule.maximum)
       return kind_name(rule.kind) + interval_text(rule) + " is expected";
   }
+  if (rule.nonzero && value.number == 0.0)
+    return kind_name(rule.kind) + " other than 0 is expected";
   if (!rule.choices.empty() && !is_choice(rule.choices, value.text))
     return "one of " + std::string(rule.choices) + " is expected";
   switch (rule.special) {

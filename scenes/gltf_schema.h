@@ -36,6 +36,8 @@ struct GltfFieldRule {
   std::string_view choices;    // strings and integers: the allowed values, space-separated
   std::string_view indexes;    // an index: the pattern of the array it points into
   std::size_t length = 0;      // an array: its exact number of elements (0: any)
+  std::size_t min_length = 0;  // an array: its least number of elements (glTF's minItems)
+  bool nonzero = false;        // a number: 0 is refused (an orthographic camera's xmag, ymag)
   bool required = false;       // the member must be in its object
   GltfSpecialCheck special = GltfSpecialCheck::none;
 };

@@ -310,12 +310,17 @@ class Reader {
 
   void read_camera(const json& v, renderer::Camera& camera) const {
     expect_object(v, "/camera");
-    check_keys(v, "/camera", {"position", "target", "up", "fov_degrees"});
+    check_keys(v, "/camera",
+               {"position", "target", "up", "fov_degrees", "orthographic_half_height"});
     camera.position = read_vec3(require(v, "/camera", "position"), "/camera/position");
     camera.target = read_vec3(require(v, "/camera", "target"), "/camera/target");
     if (v.contains("up")) camera.up = read_vec3(v["up"], "/camera/up");
     if (v.contains("fov_degrees"))
       camera.vertical_fov_deg = read_float(v["fov_degrees"], "/camera/fov_degrees");
+    if (v.contains("orthographic_half_height")) {
+      camera.orthographic_half_height =
+          read_float(v["orthographic_half_height"], "/camera/orthographic_half_height");
+    }
   }
 
   void read_material(const json& v, const std::string& path, SceneDescription& scene) {
@@ -481,6 +486,8 @@ class Writer {
                      {"target", vec3_json(c.target)},
                      {"up", vec3_json(c.up)},
                      {"fov_degrees", exact_number(c.vertical_fov_deg)}};
+    if (c.orthographic())
+      doc["camera"]["orthographic_half_height"] = exact_number(c.orthographic_half_height);
     doc["ambient"] = vec3_json(scene_.ambient);
     doc["background"] = vec3_json(scene_.background);
     doc["materials"] = ordered::array();

@@ -160,6 +160,10 @@ class Analysis {
         !(c.vertical_fov_deg < 180.0f)) {
       fail("/camera/fov_degrees", "must be in (0, 180) (" + number_text(c.vertical_fov_deg) + ")");
     }
+    if (!std::isfinite(c.orthographic_half_height) || !(c.orthographic_half_height >= 0.0f)) {
+      fail("/camera/orthographic_half_height", "must be >= 0, 0 for a perspective camera (" +
+                                                   number_text(c.orthographic_half_height) + ")");
+    }
     check_colour("/ambient", scene_.ambient, 1e6f);
     check_colour("/background", scene_.background, 1e6f);
     if (scene_.level < 0) fail("/level", "must be >= 0 (" + std::to_string(scene_.level) + ")");

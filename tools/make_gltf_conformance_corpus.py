@@ -82,6 +82,25 @@ def mesh_document(uri=True):
     }
 
 
+def material_document():
+    """The mesh document with a material using what levrt reads of materials: emission with its
+    strength, a cut-out (MASK), doubleSided, and an orthographic camera."""
+    document = mesh_document()
+    document["extensionsUsed"] = document["extensionsUsed"] + ["KHR_materials_emissive_strength"]
+    material = document["materials"][0]
+    material["emissiveFactor"] = [1.0, 0.5, 0.0]
+    material["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": 2.0}}
+    material["alphaMode"] = "MASK"
+    material["alphaCutoff"] = 0.4
+    material["doubleSided"] = True
+    document["cameras"] = [{"type": "orthographic",
+                            "orthographic": {"xmag": 1.0, "ymag": 1.0, "znear": 0.0,
+                                             "zfar": 10.0}}]
+    document["nodes"].append({"translation": [0.3, 0.3, 3.0], "camera": 0})
+    document["scenes"][0]["nodes"].append(2)
+    return document
+
+
 def glb(document, binary=b"", version=2, length_delta=0):
     text = json.dumps(document).encode()
     text += b" " * (-len(text) % 4)
@@ -131,7 +150,12 @@ LIGHTS = ["extensions", "KHR_lights_punctual", "lights"]
 
 def cases():
     """(name, bytes) for every file: valid ones first, then the mutants."""
-    L, M = light_document(), mesh_document()
+    L, M, T = light_document(), mesh_document(), material_document()
+    unlit = edit(M, setter(["materials", 0, "extensions"], {"KHR_materials_unlit": {}}))
+    unlit["extensionsUsed"].append("KHR_materials_unlit")
+    # The mesh and its light without the light: for an empty list of lights.
+    unlit_lightless = edit(M, setter(["nodes"], [{"mesh": 0}]))
+    unlit_lightless["scenes"][0]["nodes"] = [0]
     files = {
         "valid_lights.gltf": L,
         "valid_mesh.gltf": M,
@@ -149,7 +173,14 @@ def cases():
                                                  {"NORMAL": 1})),
         "valid_range_absent.gltf": edit(L, remover(LIGHTS + [0, "range"])),
         "valid_forest.gltf": edit(L, setter(["scenes"], [{"nodes": [0, 4]}, {"nodes": [4]}])),
+        "valid_material_features.gltf": T,
+        "valid_unlit.gltf": unlit,
+        "valid_blend.gltf": edit(M, setter(["materials", 0, "alphaMode"], "BLEND")),
+        "valid_single_sided.gltf": edit(T, setter(["materials", 0, "doubleSided"], False)),
+        "valid_orthographic_xmag_negative.gltf": edit(T, setter(["cameras", 0, "orthographic",
+                                                                  "xmag"], -1.0)),
     }
+    ortho = ["cameras", 0, "orthographic"]
     mutants = {
         # Wrong JSON types.
         "intensity_string": (L, setter(LIGHTS + [0, "intensity"], "50")),
@@ -193,6 +224,59 @@ def cases():
         "accessor_count_past_view": (M, setter(["accessors", 0, "count"], 30)),
         "byte_stride_three": (M, setter(["bufferViews", 0, "byteStride"], 3)),
         "sampler_wrap_unknown": (M, setter(["samplers"], [{"wrapS": 1}])),
+        # Materials and cameras as authored.
+        "emissive_string": (T, setter(["materials", 0, "emissiveFactor"], "red")),
+        "emissive_above_one": (T, setter(["materials", 0, "emissiveFactor"], [2.0, 0.0, 0.0])),
+        "emissive_two_values": (T, setter(["materials", 0, "emissiveFactor"], [1.0, 0.0])),
+        "emissive_strength_negative": (T, setter(["materials", 0, "extensions",
+                                                  "KHR_materials_emissive_strength",
+                                                  "emissiveStrength"], -1.0)),
+        "emissive_strength_string": (T, setter(["materials", 0, "extensions",
+                                                "KHR_materials_emissive_strength",
+                                                "emissiveStrength"], "2")),
+        "emissive_texture_past": (T, setter(["materials", 0, "emissiveTexture"], {"index": 3})),
+        "alpha_mode_unknown": (T, setter(["materials", 0, "alphaMode"], "CUTOUT")),
+        "alpha_mode_number": (T, setter(["materials", 0, "alphaMode"], 1)),
+        "alpha_cutoff_negative": (T, setter(["materials", 0, "alphaCutoff"], -1.0)),
+        "alpha_cutoff_string": (T, setter(["materials", 0, "alphaCutoff"], "0.5")),
+        "double_sided_string": (T, setter(["materials", 0, "doubleSided"], "true")),
+        "double_sided_number": (T, setter(["materials", 0, "doubleSided"], 1)),
+        "ortho_xmag_string": (T, setter(ortho + ["xmag"], "1")),
+        "ortho_ymag_string": (T, setter(ortho + ["ymag"], "1")),
+        "ortho_xmag_zero": (T, setter(ortho + ["xmag"], 0.0)),
+        "ortho_ymag_zero": (T, setter(ortho + ["ymag"], 0.0)),
+        "ortho_ymag_negative": (T, setter(ortho + ["ymag"], -1.0)),
+        "ortho_znear_negative": (T, setter(ortho + ["znear"], -1.0)),
+        "ortho_zfar_zero": (T, setter(ortho + ["zfar"], 0.0)),
+        "ortho_zfar_below_znear": (T, setter(ortho, {"xmag": 1.0, "ymag": 1.0, "znear": 2.0,
+                                                     "zfar": 1.0})),
+        "ortho_zfar_string": (T, setter(ortho + ["zfar"], "10")),
+        "ortho_xmag_missing": (T, remover(ortho + ["xmag"])),
+        "ortho_missing": (T, remover(ortho)),
+        # Empty arrays where the schema asks for at least one element, and repeated extensions.
+        "nodes_empty": (M, setter(["nodes"], [])),
+        "scenes_empty": (L, setter(["scenes"], [])),
+        "scene_nodes_empty": (L, setter(["scenes", 0, "nodes"], [])),
+        "children_empty": (L, setter(["nodes", 4, "children"], [])),
+        "lights_empty": (unlit_lightless, setter(LIGHTS, [])),
+        "materials_empty": (L, setter(["materials"], [])),
+        "meshes_empty": (L, setter(["meshes"], [])),
+        "primitives_empty": (M, setter(["meshes", 0, "primitives"], [])),
+        "accessors_empty": (L, setter(["accessors"], [])),
+        "buffer_views_empty": (L, setter(["bufferViews"], [])),
+        "buffers_empty": (L, setter(["buffers"], [])),
+        "cameras_empty": (M, setter(["cameras"], [])),
+        "textures_empty": (M, setter(["textures"], [])),
+        "images_empty": (M, setter(["images"], [])),
+        "samplers_empty": (M, setter(["samplers"], [])),
+        "skins_empty": (M, setter(["skins"], [])),
+        "animations_empty": (M, setter(["animations"], [])),
+        "extensions_used_empty": (M, setter(["extensionsUsed"], [])),
+        "extensions_required_empty": (L, setter(["extensionsRequired"], [])),
+        "extensions_used_twice": (L, setter(["extensionsUsed"], ["KHR_lights_punctual",
+                                                                 "KHR_lights_punctual"])),
+        "extensions_required_twice": (L, setter(["extensionsRequired"],
+                                                ["KHR_lights_punctual", "KHR_lights_punctual"])),
         # Indices past their array.
         "light_index_three": (L, setter(["nodes", 1, "extensions", "KHR_lights_punctual",
                                          "light"], 3)),

@@ -55,7 +55,9 @@ renderer::Camera pan_camera(const renderer::Camera& camera, float right, float u
   right_axis = r > 1e-6f ? right_axis / r : perpendicular(forward);
   const glm::vec3 up_axis = glm::cross(right_axis, forward);
   const float visible_height =
-      2.0f * distance * std::tan(glm::radians(camera.vertical_fov_deg) * 0.5f);
+      camera.orthographic()
+          ? 2.0f * camera.orthographic_half_height
+          : 2.0f * distance * std::tan(glm::radians(camera.vertical_fov_deg) * 0.5f);
   const glm::vec3 move = visible_height * (right * right_axis + up * up_axis);
   renderer::Camera result = camera;
   result.position += move;
@@ -70,6 +72,8 @@ renderer::Camera zoom_camera(const renderer::Camera& camera, float factor) {
   const float new_distance = std::max(distance * factor, kMinDistance);
   renderer::Camera result = camera;
   result.position = camera.target + offset * (new_distance / distance);
+  // An orthographic view does not change with distance: zooming narrows what it sees instead.
+  if (camera.orthographic()) result.orthographic_half_height *= new_distance / distance;
   return result;
 }
 

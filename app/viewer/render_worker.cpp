@@ -79,7 +79,8 @@ std::vector<int> preview_steps_for(int width, int height, int pixel_stride) {
 
 bool same_camera(const renderer::Camera& a, const renderer::Camera& b) {
   return a.position == b.position && a.target == b.target && a.up == b.up &&
-         a.vertical_fov_deg == b.vertical_fov_deg;
+         a.vertical_fov_deg == b.vertical_fov_deg &&
+         a.orthographic_half_height == b.orthographic_half_height;
 }
 
 bool same_view(const ViewKey& a, const ViewKey& b) {

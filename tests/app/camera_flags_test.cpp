@@ -146,6 +146,38 @@ TEST_F(CameraCli, AMovedCameraIsRecordedAndRendersAgainFromItsStats) {
   EXPECT_NE(read_file(path("wide.png")), read_file(path("moved.png")));
 }
 
+TEST_F(CameraCli, AnOrthographicCameraIsRecordedCopiedAndRendersAgainFromItsStats) {
+  const CommandRun ortho = render(
+      {"--ortho-half-height", "6", "--out", path("ortho.png"), "--stats", path("ortho.json")});
+  ASSERT_EQ(ortho.exit_code, 0) << ortho.output;
+  ASSERT_EQ(render({"--out", path("preset.png")}).exit_code, 0);
+  EXPECT_NE(read_file(path("ortho.png")), read_file(path("preset.png")));
+  const nlohmann::json stats = nlohmann::json::parse(read_file(path("ortho.json")));
+  EXPECT_EQ(stats["camera"]["orthographic_half_height"], 6.0);
+  const CommandRun again =
+      render({"--camera-from", path("ortho.json"), "--out", path("again.png")});
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(read_file(path("again.png")), read_file(path("ortho.png")));
+  // --fov over it is perspective again: the preset's image.
+  ASSERT_EQ(render({"--camera-from", path("ortho.json"), "--fov", "45", "--out", path("p.png")})
+                .exit_code,
+            0);
+  EXPECT_EQ(read_file(path("p.png")), read_file(path("preset.png")));
+
+  renderer::Camera camera;
+  camera.orthographic_half_height = 0.3f;
+  const std::string text = app::camera_flags_text(camera);
+  EXPECT_NE(text.find(" --ortho-half-height 0.300000012"), std::string::npos) << text;
+  EXPECT_EQ(text.find("--fov"), std::string::npos) << text;
+  CameraFlagTexts both;
+  both.fov_deg = "30";
+  both.ortho_half_height = "2";
+  EXPECT_EQ(refusal(both).rfind("--ortho-half-height: ", 0), 0u) << refusal(both);
+  CameraFlagTexts zero;
+  zero.ortho_half_height = "0";
+  EXPECT_EQ(refusal(zero).rfind("--ortho-half-height: must be a positive number", 0), 0u);
+}
+
 TEST_F(CameraCli, BadCamerasExitTwoWithOneLineNamingTheFlagAndWriteNothing) {
   std::ofstream(path("no_camera.json")) << R"({"scene": "building"})";
   std::ofstream(path("bad_fov.json"))

@@ -39,7 +39,7 @@ TEST(AutoExposure, PutsThePercentileAtTheDisplayedTarget) {
 // Deterministic, and within the range it may pick, on a built-in scene.
 TEST(AutoExposure, IsDeterministic) {
   const renderer::Scene scene = scenes::build_building(3);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings settings;
   settings.width = 64;
   settings.height = 48;

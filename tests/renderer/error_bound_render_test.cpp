@@ -45,7 +45,7 @@ renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RaySc
 // Returns the largest pixel error seen (to show the check was not vacuous).
 double expect_bound_holds(const renderer::Scene& scene, const std::vector<float>& tolerances,
                           const std::string& label) {
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer rt = render(scene, rays, lev::reference_method(), 0.0f);
   for (const glm::vec3& b : rt.error_bound_sum) EXPECT_EQ(b, glm::vec3(0.0f)) << label;
   const std::vector<std::uint8_t> rt_rgb = renderer::framebuffer_rgb8(rt);
@@ -163,7 +163,7 @@ TEST(ErrorBoundRender, RandomSceneFilesAreWithinTheirBound) {
 
 TEST(ErrorBoundRender, NothingIsComputedUnlessAsked) {
   const renderer::Scene scene = scenes::find_scene_model("hall")->build(3);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   // At 0.1, where lev leaves light out (at 0.01 it culls only lights that cannot reach the
   // stage, and its tightened bound is 0 there, as is its error).
   const renderer::Framebuffer without = render(scene, rays, lev::Method::lev, 0.1f, false);
@@ -192,7 +192,7 @@ TEST(ErrorBoundRender, LevBoundedStaysWithinToleranceTimesTheMaterialResponse) {
   const levrt_test::UnitCulledSelector unit;
   for (const char* name : {"hall", "building"}) {
     const renderer::Scene scene = scenes::find_scene_model(name)->build(4);
-    const renderer::RayScene rays(scene.geometry);
+    const renderer::RayScene rays(scene);
     for (float tolerance : {0.1f, 0.01f}) {
       const auto bounded = lev::make_selector(scene.lights, {lev::Method::lev_bounded, tolerance});
       const auto plain = lev::make_selector(scene.lights, {lev::Method::lev, tolerance});

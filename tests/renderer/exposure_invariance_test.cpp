@@ -41,7 +41,7 @@ struct Rendered {
 Rendered render(const scenes::SceneDescription& description, lev::Method method,
                 double exposure_ev) {
   const renderer::Scene scene = scenes::instantiate_scene(description);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings settings = test_render_settings(method, 48, 36);
   settings.tolerance = 0.01f;
   settings.exposure_ev = exposure_ev;

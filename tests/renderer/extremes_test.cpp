@@ -87,7 +87,7 @@ void expect_finite(const renderer::Framebuffer& fb, const std::string& label) {
 
 TEST(Extremes, NoInfOrNaNReachesAPixel) {
   renderer::Scene scene = extreme_scene();
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const float tiny = std::numeric_limits<float>::denorm_min();
   for (lev::Method method : {lev::Method::rt, lev::Method::ast, lev::Method::lev}) {
     for (float tau :
@@ -100,7 +100,7 @@ TEST(Extremes, NoInfOrNaNReachesAPixel) {
 
 TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   renderer::Scene scene = extreme_scene();
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f);
   const renderer::Framebuffer lev = render(scene, rays, lev::Method::lev, 0.0f);
   ASSERT_EQ(rt.radiance_sum.size(), lev.radiance_sum.size());
@@ -116,7 +116,7 @@ TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
 
 TEST(Extremes, InfiniteToleranceTestsNoLight) {
   renderer::Scene scene = extreme_scene();
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const auto totals = renderer::sum_framebuffer(
       render(scene, rays, lev::Method::lev, std::numeric_limits<float>::infinity()));
   EXPECT_EQ(totals.lights_tested, 0u);

@@ -19,7 +19,7 @@ renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RaySc
 
 TEST(LevBoundedRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
   const renderer::Scene scene = scenes::build_building(3);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 0);
   const renderer::Framebuffer exact = render(scene, rays, lev::Method::lev_bounded, 0.0f, 0);
   EXPECT_TRUE(bitwise_equal(rt, exact));

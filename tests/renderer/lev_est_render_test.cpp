@@ -30,7 +30,7 @@ renderer::PixelErrorStats error_against(const renderer::Framebuffer& image,
 
 TEST(LevEstRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
   const renderer::Scene scene = scenes::build_building(3);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 0);
   const renderer::Framebuffer exact = render(scene, rays, lev::Method::lev_est, 0.0f, 0);
   EXPECT_TRUE(bitwise_equal(rt, exact));
@@ -46,7 +46,7 @@ class LevEstHall : public ::testing::TestWithParam<int> {};
 
 TEST_P(LevEstHall, DeterministicAndFarCloserToRtThanLev) {
   const renderer::Scene scene = scenes::build_hall(GetParam());
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   constexpr int kWidth = 40, kHeight = 30;  // rt shoots hundreds to thousands of rays per pixel
   // rt, by far the longest render, comes last: under ThreadSanitizer the renders after a long
   // one are where TBB's task memory, handed between threads unseen, outlives TSan's history

@@ -35,7 +35,7 @@ glm::dvec3 sum(const std::vector<glm::vec3>& values) {
 
 TEST(MissedLightRender, ItsMeanOverSeedsIsRtMinusLev) {
   const renderer::Scene scene = scenes::build_maze(1);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   constexpr int kWidth = 24, kHeight = 18;
   constexpr float kTolerance = 0.05f;
   const glm::dvec3 lost =
@@ -59,7 +59,7 @@ TEST(MissedLightRender, ItsMeanOverSeedsIsRtMinusLev) {
 
 TEST(MissedLightRender, ReadsAboutZeroWhereWallsHideTheCulledLights) {
   const renderer::Scene scene = scenes::build_building(4);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer fb = render(scene, rays, lev::Method::lev, 0.01f, 16, 0, 0, 48, 36);
   const renderer::MissedLightStats s = renderer::missed_light_stats(fb);
   EXPECT_LT(s.average_pct, 0.05);
@@ -69,7 +69,7 @@ TEST(MissedLightRender, ReadsAboutZeroWhereWallsHideTheCulledLights) {
 
 TEST(MissedLightRender, SameForAnyThreadCountAndTheImageIsUntouched) {
   const renderer::Scene scene = scenes::build_maze(1);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer one =
       render(scene, rays, lev::Method::lev_est, 0.05f, 8, 3, 1, 32, 24);
   const renderer::Framebuffer two =

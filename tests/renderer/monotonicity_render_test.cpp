@@ -34,7 +34,7 @@ std::vector<std::uint8_t> render_rgb8(const renderer::Scene& scene, const render
 
 TEST(Monotonicity, ErrorNeverGrowsAsTheSettingTightens) {
   const renderer::Scene scene = scenes::build_hall(5);  // 1,024 spots
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const std::vector<std::uint8_t> rt = render_rgb8(scene, rays, lev::Method::rt, 0.0f);
   const std::vector<float> loosest_first{0.1f, 0.03f, 0.01f, 0.003f, 0.001f};
   for (const lev::Method method :

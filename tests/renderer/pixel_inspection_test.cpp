@@ -28,7 +28,7 @@ struct ScenePair {
   renderer::Scene scene;
   renderer::RayScene rays;
   explicit ScenePair(const char* model, int level)
-      : scene(scenes::find_scene_model(model)->build(level)), rays(scene.geometry) {}
+      : scene(scenes::find_scene_model(model)->build(level)), rays(scene) {}
 };
 
 renderer::RenderSettings settings_for(lev::Method method, float tolerance) {

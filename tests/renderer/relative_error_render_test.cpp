@@ -45,7 +45,7 @@ TEST(RelativeErrorMethods, LightcutsAndLevCutReadIt) {
 TEST_P(RelativeErrorRender, EqualsRtAtRelativeErrorZero) {
   for (const bool hall : {false, true}) {
     const renderer::Scene scene = hall ? scenes::build_hall(4) : scenes::build_building(3);
-    const renderer::RayScene rays(scene.geometry);
+    const renderer::RayScene rays(scene);
     const renderer::Framebuffer exact = render(scene, rays, GetParam(), 0.0f, 2);
     const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
     EXPECT_TRUE(bitwise_equal(rt, exact)) << (hall ? "hall" : "building");
@@ -56,7 +56,7 @@ TEST_P(RelativeErrorRender, EqualsRtAtRelativeErrorZero) {
 
 TEST_P(RelativeErrorRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
   const renderer::Scene scene = scenes::build_hall(5);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const auto default_error = static_cast<float>(lev::kDefaultRelativeError);
   const renderer::Framebuffer one = render(scene, rays, GetParam(), default_error, 1);
   const renderer::Framebuffer two = render(scene, rays, GetParam(), default_error, 2);

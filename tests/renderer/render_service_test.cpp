@@ -25,7 +25,7 @@ renderer::RenderSettings small_settings(lev::Method method, int stride) {
 
 TEST(RenderService, TheResultIsTheRenderStepsFramebufferWithItsTotalsAndPixels) {
   const renderer::Scene scene = scenes::build_building(2);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   for (int stride : {1, 3}) {
     const renderer::RenderSettings rs = small_settings(lev::Method::ast, stride);
     renderer::RenderStatePtr state = renderer::make_render_state(scene, rays, rs);
@@ -56,7 +56,7 @@ TEST(RenderService, TheResultIsTheRenderStepsFramebufferWithItsTotalsAndPixels) 
 
 TEST(RenderService, ACancelledRenderHasNoResult) {
   const renderer::Scene scene = scenes::build_building(2);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const std::atomic<bool> cancel{true};
   renderer::RenderResult result;
   int passes_reported = 0;

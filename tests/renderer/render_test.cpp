@@ -18,7 +18,7 @@ struct TestScene {
   renderer::Scene scene;
   std::unique_ptr<renderer::RayScene> rays;
   explicit TestScene(int level) : scene(scenes::build_building(level)) {
-    rays = std::make_unique<renderer::RayScene>(scene.geometry);
+    rays = std::make_unique<renderer::RayScene>(scene);
   }
 };
 

@@ -56,7 +56,7 @@ struct Rendered {
 
 Rendered render_text(const std::string& text, int depth = 5) {
   renderer::Scene scene = scenes::instantiate_scene(scenes::parse_scene_json(text, "test.json"));
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
   rs.width = 48;
   rs.height = 36;
@@ -167,7 +167,7 @@ TEST(Robustness, DepthBombCancelsPromptlyAndLeavesNoPartialTile) {
       scene_text(kCamera, glass,
                  R"({"type": "box", "material": "bomb", "lo": [-3, -3, 0], "hi": [3, 3, 4]})"),
       "test.json"));
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
   rs.width = 32;
   rs.height = 32;
@@ -188,7 +188,7 @@ TEST(Robustness, RtOverMillionsOfLightsCancelsPromptly) {
   }
   ASSERT_NE(building, nullptr);
   renderer::Scene scene = scenes::instantiate_scene(building->describe(building->max_level));
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
   rs.width = 64;
   rs.height = 48;

@@ -130,7 +130,7 @@ double mean_error(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3
 // are seen often enough for the measured variance to stand for the true one.
 void expect_converges_to_rt(lev::Method method, float tolerance, std::uint64_t seed) {
   const renderer::Scene scene = random_scene(seed);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   auto rt = renderer::make_render_state(scene, rays, settings_for(lev::Method::rt, 0.0f));
   auto sampled = renderer::make_render_state(scene, rays,
                                              settings_for(method, tolerance, 2, 8, kLightSamples));
@@ -202,7 +202,7 @@ TEST(SamplingRender, LightTreeConvergesToRt) {
 
 TEST(SamplingRender, ImagesDoNotDependOnThreadsOrTiles) {
   const renderer::Scene scene = random_scene(5);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
     for (int k : {1, 3, 4}) {  // 4: the parts are opened (light_sampling.h)
       renderer::RenderSettings rs = settings_for(method, 0.05f, 1, 8);
@@ -221,7 +221,7 @@ TEST(SamplingRender, ImagesDoNotDependOnThreadsOrTiles) {
 
 TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
   const renderer::Scene scene = random_scene(6);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
     renderer::RenderSettings rs = settings_for(method, 0.05f);
     const renderer::FramebufferTotals one = renderer::sum_framebuffer(render(scene, rays, rs, 1));
@@ -238,7 +238,7 @@ TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
 
 TEST(SamplingRender, LevMcAtToleranceZeroEqualsRtBitForBit) {
   for (const renderer::Scene& scene : {random_scene(7), scenes::build_building(3)}) {
-    const renderer::RayScene rays(scene.geometry);
+    const renderer::RayScene rays(scene);
     const renderer::Framebuffer rt = render(scene, rays, settings_for(lev::Method::rt, 0.0f), 2);
     renderer::RenderSettings rs = settings_for(lev::Method::lev_mc, 0.0f);
     rs.light_samples = 3;
@@ -249,7 +249,7 @@ TEST(SamplingRender, LevMcAtToleranceZeroEqualsRtBitForBit) {
 
 TEST(SamplingRender, NoiseEstimateIsTheSpreadOfThePasses) {
   const renderer::Scene scene = random_scene(8);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const renderer::Framebuffer fb =
       render(scene, rays, settings_for(lev::Method::light_tree, 0.0f), 16);
   const std::vector<double> noise = renderer::pixel_std_error_pct(fb);

@@ -87,7 +87,7 @@ TEST(ShadingErrorBound, AMirrorAddsTheReflectedPointWeighedByKr) {
   mirror.kr = 0.7f;
   // The ray meets the mirror at y = 5 head on and comes back to the wall behind it at y = -5.
   const renderer::Scene scene = quad_scene({wall_at(5.0f, mirror), wall_at(-5.0f, matte_wall())});
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const levrt_test::UnitCulledSelector unit;
   const glm::vec3 mirror_response = renderer::largest_response(mirror);
   const glm::vec3 wall_response = renderer::largest_response(matte_wall());
@@ -109,7 +109,7 @@ TEST(ShadingErrorBound, GlassAddsBothOfItsFacesAndWhatIsBehindWeighedByKt) {
   // (kt) and the wall behind (kt^2); a straight ray refracts straight.
   const renderer::Scene scene =
       quad_scene({wall_at(2.0f, glass), wall_at(3.0f, glass), wall_at(8.0f, matte_wall())});
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   const levrt_test::UnitCulledSelector unit;
   const glm::vec3 glass_response = renderer::largest_response(glass);
   const glm::vec3 wall_response = renderer::largest_response(matte_wall());
@@ -219,7 +219,7 @@ TEST(ShadingErrorBound, DroppingLightsStaysWithinTheBoundThroughMirrorsAndGlass)
   int rays_with_error = 0, rays_needing_the_recursion = 0;
   for (int s = 0; s < 3; ++s) {
     const renderer::Scene scene = mirror_and_glass_scene(engine);
-    const renderer::RayScene rays(scene.geometry);
+    const renderer::RayScene rays(scene);
     const auto rt = lev::make_selector(scene.lights, {lev::reference_method(), 0.0f});
     const DropOddLights drop(scene.lights);
     for (int i = 0; i < 400; ++i) {

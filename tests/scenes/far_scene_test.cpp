@@ -70,7 +70,7 @@ scenes::Affine scaled(float scale) {
 
 std::vector<std::uint8_t> render(const scenes::SceneDescription& description, lev::Method method) {
   renderer::Scene scene = scenes::instantiate_scene(description);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
   rs.width = 160;
   rs.height = 120;

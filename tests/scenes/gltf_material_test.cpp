@@ -75,7 +75,7 @@ TEST(GltfMaterial, BaseColourTextureIsSampledAtTheHitsUv) {
   EXPECT_EQ(decoded.wrap_v, renderer::TextureWrap::repeat);
 
   const renderer::Scene scene = scenes::instantiate_scene(description);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
   rs.width = rs.height = 48;
   rs.method = lev::Method::rt;

@@ -42,7 +42,7 @@ TEST(GltfNodeTree, ANodeReachableTwiceIsRefusedNamingIt) {
 
 TEST(GltfNodeTree, SeparateTreesAreReadOnceEach) {
   const scenes::SceneDescription scene = scenes::parse_gltf_scene(
-      gltf_with("[1, 3]", R"(, {"children": [0, 2]}, {}, {"children": []})"), kPath);
+      gltf_with("[1, 3]", R"(, {"children": [0, 2]}, {}, {"children": [4]}, {})"), kPath);
   EXPECT_EQ(scene.root.children.size(), 1u);  // the light, once
 }
 

@@ -43,7 +43,7 @@ std::unique_ptr<Rendered> render_sample(const std::string& relative,
   auto r = std::make_unique<Rendered>();
   r->scene =
       scenes::instantiate_scene(scenes::load_scene_file((samples_dir() / relative).string()));
-  r->rays = std::make_unique<renderer::RayScene>(r->scene.geometry);
+  r->rays = std::make_unique<renderer::RayScene>(r->scene);
   renderer::RenderSettings rs;
   rs.width = r->width;
   rs.height = r->height;

@@ -1,8 +1,10 @@
 // The schema the pre-parse pass checks (scenes/gltf_schema.h) through parse_gltf_scene: required
 // extensions levrt cannot honour, versions it cannot read, wrong JSON types, values out of range,
-// missing required members and indices past their array are refused with one line naming the
-// glTF path and the value; extensions used but ignored give one warning line; files that conform
-// (versions 2.x, honoured extensions required, whole numbers written as 3.0) are read.
+// missing required members, indices past their array, empty arrays where glTF asks for elements,
+// extensions listed twice and cameras without their type's object or with zfar not beyond znear
+// are refused with one line naming the glTF path and the value; extensions used but ignored give
+// one warning line; files that conform (versions 2.x, honoured extensions required, whole numbers
+// written as 3.0) are read.
 #include "scenes/gltf_schema.h"
 
 #include <algorithm>
@@ -42,6 +44,37 @@ TEST(GltfSchema, RequiredExtensionsLevrtCannotHonourAreRefusedByName) {
     levrt_test::expect_gltf_refused(gltf(top), kPath,
                                     "extensionsRequired[1]: '" + name + "' (an extension");
   }
+}
+
+TEST(GltfSchema, EmptyArraysAndRepeatedExtensionsAreRefusedByPath) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"(, "materials": [])", "materials: an empty array (glTF asks for at least 1"},
+      {R"(, "animations": [])", "animations: an empty array"},
+      {R"(, "extensionsRequired": [])", "extensionsRequired: an empty array"},
+      {R"(, "extensionsUsed": ["KHR_lights_punctual", "KHR_lights_punctual"])",
+       "extensionsUsed[1]: 'KHR_lights_punctual' (listed twice in extensionsUsed)"},
+      {R"(, "extensionsUsed": ["KHR_lights_punctual"], )"
+       R"("extensionsRequired": ["KHR_lights_punctual", "KHR_lights_punctual"])",
+       "extensionsRequired[1]: 'KHR_lights_punctual' (listed twice in extensionsRequired)"},
+      {R"(, "cameras": [{"type": "orthographic"}])",
+       "cameras[0].orthographic: missing (a member a camera of type orthographic requires)"},
+      {R"(, "cameras": [{"type": "orthographic", "orthographic": )"
+       R"({"xmag": 1, "ymag": 1, "znear": 2, "zfar": 1.5}}])",
+       "cameras[0].orthographic.zfar: 1.5 (beyond znear 2 is expected)"},
+      {R"(, "cameras": [{"type": "orthographic", "orthographic": )"
+       R"({"xmag": 1, "ymag": 0, "znear": 0, "zfar": 1}}])",
+       "cameras[0].orthographic.ymag: 0 (a number other than 0 is expected)"},
+      {R"(, "materials": [{"alphaCutoff": -1}])", "materials[0].alphaCutoff: -1 (a number"},
+      {R"(, "materials": [{"doubleSided": "yes"}])",
+       "materials[0].doubleSided: 'yes' (a boolean is expected)"},
+      {R"(, "materials": [{"emissiveFactor": [2, 0, 0]}])", "materials[0].emissiveFactor[0]: 2"},
+  };
+  for (const auto& [top, problem] : cases)
+    levrt_test::expect_gltf_refused(gltf(top), kPath, problem);
+  // The light list itself.
+  levrt_test::expect_gltf_refused(
+      R"({"asset": {"version": "2.0"}, "extensions": {"KHR_lights_punctual": {"lights": []}}})",
+      kPath, "extensions.KHR_lights_punctual.lights: an empty array");
 }
 
 TEST(GltfSchema, HonouredRequiredExtensionsAreRead) {

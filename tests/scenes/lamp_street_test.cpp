@@ -36,7 +36,7 @@ TEST(LampStreet, LevelsPlaceFourToTheLevelLampsOfOneSharedMaster) {
 TEST(LampStreet, InstancedAndBareRenderTheSameImageWithShortWalks) {
   const renderer::Scene instanced = scenes::build_lamp_street(5);
   const renderer::Scene bare = scenes::build_bare_lamp_street(5);
-  const renderer::RayScene instanced_rays(instanced.geometry), bare_rays(bare.geometry);
+  const renderer::RayScene instanced_rays(instanced), bare_rays(bare);
   for (const auto& [method, tolerance] :
        {std::pair{lev::Method::rt, 0.0f}, std::pair{lev::Method::lev, 0.01f}}) {
     const renderer::Framebuffer a =

@@ -86,8 +86,8 @@ TEST(LightTreeConversion, InstancedLampsRenderLikeTheSameLightsWrittenBare) {
     ASSERT_EQ(instanced_lights[i].intensity, bare_lights[i].intensity) << i;
   }
 
-  const renderer::RayScene instanced_rays(instanced.geometry);
-  const renderer::RayScene bare_rays(bare.geometry);
+  const renderer::RayScene instanced_rays(instanced);
+  const renderer::RayScene bare_rays(bare);
   // rt, and lev at tolerance 0 and at a working tolerance: the same lights tested in the same
   // order, so the same image bit for bit.
   for (const auto& [method, tolerance] :

@@ -18,7 +18,7 @@
 namespace {
 
 renderer::Framebuffer render(renderer::Scene& scene, lev::Method method, float tolerance) {
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs = test_render_settings(method, 48, 36);
   rs.tolerance = tolerance;
   return render_test_image(scene, rays, rs);

@@ -102,10 +102,11 @@ class GltfBuilder {
     return node;
   }
 
-  // A PNG image of width x height RGB texels (row 0 first) stored in a buffer view, sampled by
-  // a new texture with the given glTF wrap modes; returns the texture's index.
+  // A PNG image of width x height texels of `channels` 8-bit values each (RGB, or RGBA with 4),
+  // row 0 first, stored in a buffer view, sampled by a new texture with the given glTF wrap
+  // modes; returns the texture's index.
   int add_png_texture(int width, int height, const std::vector<std::uint8_t>& rgb, int wrap_s,
-                      int wrap_t) {
+                      int wrap_t, int channels = 3) {
     std::vector<std::uint8_t> png;
     stbi_write_png_to_func(
         [](void* context, void* data, int size) {
@@ -113,7 +114,7 @@ class GltfBuilder {
           out->insert(out->end(), static_cast<std::uint8_t*>(data),
                       static_cast<std::uint8_t*>(data) + size);
         },
-        &png, width, height, 3, rgb.data(), width * 3);
+        &png, width, height, channels, rgb.data(), width * channels);
     tinygltf::Image image;
     image.bufferView = add_view(png);
     image.mimeType = "image/png";

@@ -25,7 +25,7 @@ float brightest_abs(const glm::vec3& v) {
 
 TEST(InspectorRows, LargestFirstOverEveryHitAndCutToTheCountAsked) {
   const renderer::Scene scene = scenes::find_scene_model("hall")->build(3);
-  const renderer::RayScene rays(scene.geometry);
+  const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
   rs.width = 64;
   rs.height = 48;
