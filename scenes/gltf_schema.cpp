@@ -58,8 +58,10 @@ GltfFieldRule whole(std::string_view pattern, double minimum, double maximum = 1
   rule.kind = Kind::integer;
   return rule;
 }
+// An index is at most 2^53 - 1, the largest whole number a double holds exactly: beyond it no
+// array can reach and the index could not be converted to an integer for the range check.
 GltfFieldRule index(std::string_view pattern, std::string_view target) {
-  GltfFieldRule rule = whole(pattern, 0.0);
+  GltfFieldRule rule = whole(pattern, 0.0, 9007199254740991.0);
   rule.indexes = target;
   return rule;
 }

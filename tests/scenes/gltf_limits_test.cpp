@@ -201,6 +201,9 @@ TEST_F(GltfLimits, ConformanceHolesAreRefusedWithTheGltfPathOfTheField) {
            [{"attributes": {"POSITION": 0}, "mode": -1}]}])"),
        "meshes[0].primitives[0].mode: -1"},
       {"child.gltf", gltf_document(R"("nodes": [{"children": [-1]}])"), "nodes[0].children[0]: -1"},
+      // Found by the fuzzer: converting 1e30 to an index was undefined behaviour.
+      {"huge_child.gltf", gltf_document(R"("nodes": [{"children": [1e30]}])"),
+       "nodes[0].children[0]: 1e30 (a whole number from 0 to 9007199254740991 is expected)"},
       {"component.gltf",
        gltf_document(R"("accessors": [{"componentType": 5124, "type": "VEC3", "count": 3}],
            "nodes": [{}])"),
