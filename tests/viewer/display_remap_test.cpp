@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <stb/stb_image.h>
 #include "tests/support/exr_file.h"
+#include "tests/support/png_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/xvfb_server.h"
 
@@ -24,20 +24,8 @@ namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::have_xvfb;
 
-struct Png {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgb;
-};
-
-Png read_png(const fs::path& path) {
-  Png png;
-  int channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
-  if (!data) return {};
-  png.rgb.assign(data, data + 3 * static_cast<std::size_t>(png.width) * png.height);
-  stbi_image_free(data);
-  return png;
-}
+using Png = levrt_test::PngImage;
+using levrt_test::read_png_image;
 
 // Pixels that differ inside the picture (right of the panel, above the statistics).
 int picture_differences(const Png& a, const Png& b) {
@@ -105,8 +93,9 @@ TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
       "--set",    "snapshot=" + path("after") + "@7",          //
   });
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Png linear = read_png(path("linear.png")), exposed = read_png(path("exposed.png")),
-            neutral = read_png(path("neutral.png"));
+  const Png linear = read_png_image(path("linear.png")),
+            exposed = read_png_image(path("exposed.png")),
+            neutral = read_png_image(path("neutral.png"));
   ASSERT_GT(linear.width, 0);
   EXPECT_GT(picture_differences(linear, exposed), 100);
   EXPECT_GT(picture_differences(exposed, neutral), 100);
