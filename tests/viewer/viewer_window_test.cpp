@@ -125,7 +125,9 @@ TEST_F(ViewerWindow, WithoutADisplayExitsTwoNamingTheHeadlessRoute) {
 }
 
 TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
-  for (const char* change : {"tolerance=abc@3", "view=sideways@1", "colour=red@2", "method=lev"}) {
+  for (const char* change :
+       {"tolerance=abc@3", "view=sideways@1", "colour=red@2", "method=lev", "ab=x@0", "swipe=2@0",
+        "swipe=nan@0", "mask_threshold=-1@0", "mask_threshold=nan@0", "range_lock=maybe@0"}) {
     const CommandRun r = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
                                    " view --frames 3 --set " + shell_quote(change));
     EXPECT_EQ(r.exit_code, 2) << change << ": " << r.output;
