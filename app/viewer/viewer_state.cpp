@@ -119,7 +119,7 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
   if (state.inspect_pixel == pixel) return;
   state.inspect_pixel = pixel;
   state.inspect_row = -1;
-  mark_changed(state, "");  // no new render: the worker inspects between passes
+  mark_changed(state, "");  // no new render: the worker starts its inspection task
 }
 
 ViewRequest make_request(const ViewerState& state) {
