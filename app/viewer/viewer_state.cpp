@@ -81,7 +81,11 @@ void set_range_lock(ViewerState& state, bool locked) {
 }
 
 std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state) {
-  const auto it = state.locked_ranges.find(state.view);
+  return locked_range(state, state.view);
+}
+
+std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state, ViewMode mode) {
+  const auto it = state.locked_ranges.find(mode);
   if (it == state.locked_ranges.end()) return std::nullopt;
   return it->second;
 }
