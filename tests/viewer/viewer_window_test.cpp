@@ -30,6 +30,7 @@
 #include "tests/support/run_command.h"
 #include "tests/support/signal_process.h"
 #include "tests/support/slow_gltf.h"
+#include "tests/support/trade_report.h"
 #include "tests/support/xvfb_server.h"
 
 namespace {
@@ -287,7 +288,8 @@ TEST_F(ViewerWindow, AFileOpenedWhileRunningLoadsAndABadOneKeepsTheSceneShown) {
 
   // clang-format off
   const CommandRun r = run_viewer({
-      "--lights", "64", "--width", "64", "--height", "48", "--window", "800x600", "--frames", "10",
+      "--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--window", "800x600",
+      "--frames", "10",
       "--set", "await=idle@0",
       "--set", "drop=" + path("good.gltf") + "@1",
       "--set", "await=idle@2",
@@ -329,6 +331,8 @@ TEST_F(ViewerWindow, TheCameraFlagsSetTheViewAndCopyCameraGivesThemBack) {
                                    "48",
                                    "--height",
                                    "36",
+                                   "--spp",
+                                   "1",
                                    "--window",
                                    "800x600",
                                    "--frames",
@@ -377,8 +381,10 @@ TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   std::ofstream(path("file.txt")) << "a file, not a folder";
   const auto before = files_in(dir_);
-  const CommandRun r = run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--frames",
-                                   "3", "--set", "snapshot=" + path("file.txt") + "/snap@1"});
+  // One pass: the snapshot waits for the whole render, whose size does not matter here.
+  const CommandRun r =
+      run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--frames",
+                  "3", "--set", "snapshot=" + path("file.txt") + "/snap@1"});
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("snapshot failed"), std::string::npos) << r.output;
@@ -649,7 +655,10 @@ TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
   const std::vector<std::string> settings = {"--lights", "64", "--width",   "48",
                                              "--height", "32", "--threads", "0"};
   std::vector<std::string> view_args = settings;
-  for (const char* a : {"--window", "800x600", "--frames", "3", "--set", "await=idle@0", "--set"})
+  // The viewer renders two passes, not its 64 (await=idle waits for them all), the headless
+  // render its one: the spread between passes is a number in one file and null in the other.
+  for (const char* a :
+       {"--spp", "2", "--window", "800x600", "--frames", "3", "--set", "await=idle@0", "--set"})
     view_args.emplace_back(a);
   view_args.push_back("snapshot=" + path("keys") + "@1");
   const CommandRun view = run_viewer(view_args);
@@ -683,11 +692,11 @@ TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
   const std::string controls = path("controls.json");
   // clang-format off
   const CommandRun r = run_viewer({
-      "--lights", "64", "--spp", "1", "--window", "800x600", "--frames", "9",
+      "--lights", "64", "--spp", "1", "--window", "640x480", "--frames", "9",
       "--controls", controls,
       "--set", "await=idle@0",
       "--set", "snapshot=" + path("small") + "@1",
-      "--set", "window=1100x760@2",          // as a user dragging the border
+      "--set", "window=760x540@2",           // as a user dragging the border
       "--set", "await=idle@3",
       "--set", "snapshot=" + path("large") + "@4",
       "--set", "resolution=fit/2@5",
@@ -719,6 +728,50 @@ TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
   EXPECT_EQ(half["width"].get<int>(), area_width / 2);
   EXPECT_EQ(half["height"].get<int>(), area_height / 2);
   EXPECT_EQ(c["settings"]["resolution"], "fit/2");
+}
+
+// A layout change never restarts a render: at a fit resolution the render's size follows the
+// window alone. lev -> ast adds what the statistics show (ast's method memory), which used to
+// grow the statistics pane by a row, shrink the picture and so restart the render, the rt
+// reference and the trade plot. Small and cheap: 16 lights, one pass.
+TEST_F(ViewerWindow, AMethodChangeKeepsTheFitSizeTheReferenceAndTheTradePlot) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--lights", "16", "--spp", "1", "--method", "lev", "--window", "900x640",
+      "--frames", "8",
+      "--set", "reference=on@0",
+      "--set", "await=idle@1",
+      "--set", "snapshot=" + path("lev") + "@2",
+      "--set", "trade=report@3",
+      "--set", "method=ast@4",
+      "--set", "await=idle@5",
+      "--set", "snapshot=" + path("ast") + "@6",
+      "--set", "trade=report@7",
+  });
+  // clang-format on
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto stats = [&](const char* folder) {
+    for (const auto& entry : fs::directory_iterator(dir_ / folder)) {
+      const std::string name = entry.path().filename().string();
+      if (name.find("_stats.json") != std::string::npos) return read_json(entry.path());
+    }
+    return nlohmann::json();
+  };
+  const nlohmann::json lev = stats("lev"), ast = stats("ast");
+  ASSERT_TRUE(lev.is_object() && ast.is_object()) << r.output;
+  EXPECT_EQ(lev["method"], "lev");
+  EXPECT_EQ(ast["method"], "ast");
+  EXPECT_EQ(ast["width"], lev["width"]) << r.output;
+  EXPECT_EQ(ast["height"], lev["height"]) << r.output;
+  // The same reference, never restarted, and the plot holds both methods.
+  const std::vector<levrt_test::TradeReport> reports = levrt_test::trade_reports(r.output);
+  ASSERT_EQ(reports.size(), 2u) << r.output;
+  EXPECT_NE(reports[0].reference, 0u) << r.output;
+  EXPECT_EQ(reports[1].reference, reports[0].reference) << r.output;
+  EXPECT_EQ(reports[0].points, 1) << r.output;
+  EXPECT_EQ(reports[1].points, 2) << r.output;
 }
 
 }  // namespace
