@@ -594,8 +594,9 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   const nlohmann::json b = read_json(path("headless_stats.json"));
   ASSERT_FALSE(a.is_discarded() || b.is_discarded());
   for (const char* key :
-       {"lights", "method", "tolerance", "width", "height", "spp", "shading_points", "shadow_rays",
-        "lights_tested_avg", "lights_tested_max", "nodes_visited_avg", "hierarchy_bytes"}) {
+       {"lights", "method", "tolerance", "relative_error", "light_samples", "width", "height",
+        "spp", "shading_points", "shadow_rays", "lights_tested_avg", "lights_tested_max",
+        "nodes_visited_avg", "hierarchy_bytes"}) {
     ASSERT_TRUE(a.contains(key) && b.contains(key)) << key;
     EXPECT_EQ(a[key], b[key]) << key;
   }
