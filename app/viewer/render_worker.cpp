@@ -1,3 +1,7 @@
+// The worker's state machine (render_worker.h). Over 600 lines on purpose: one class, Worker,
+// owns the scene, the render jobs, the reference and the inspection, and every member reads and
+// changes that state under the same rules (the shared lock, the cancel flag, the serials);
+// split over files, those rules would have to be read in several places to change one.
 #include "app/viewer/render_worker.h"
 
 #include <sys/resource.h>
