@@ -1,11 +1,15 @@
 // The viewer soak: thousands of scripted changes (method, tolerance, light count up to 65,536,
 // scene, view, reference on/off, snapshots) in one window under Xvfb, one change per UI frame so
 // most renders are cancelled by the next change and some run to the end. The viewer must exit 0
-// and its resident memory after the last change must stay within 1.5x of its value after the
-// first 100: a leak or an unbounded history grows it with every change.
+// and its resident memory after the last change must stay within LEVRT_SOAK_GROWTH_PCT of its
+// value after the first 100: a leak or an unbounded history grows it with every change.
 //
-// The change count is LEVRT_SOAK_CHANGES (tests/CMakeLists.txt): 2,000 in the release suite, 200
-// under the sanitizer presets, where every change costs ten times more.
+// The change count and the growth allowed are LEVRT_SOAK_CHANGES and LEVRT_SOAK_GROWTH_PCT
+// (tests/CMakeLists.txt): 1,000 changes and 25 % in the release suite, where the resident memory
+// after change 100 is about 150 MB and grew by 4 to 9 % over 2,000 changes (docs/extremes.md), so
+// a leak of about 40 KB per change fails it (as 2,000 changes and 50 % did); 200 changes and 50 %
+// under the sanitizer presets, where every change costs ten times more and ASan's quarantine
+// holds freed memory (its LeakSanitizer reports unreachable blocks at exit).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -26,8 +30,8 @@ namespace {
 using levrt_test::CommandRun;
 namespace fs = std::filesystem;
 
-constexpr int kWarmUpChanges = 100;           // memory is compared with its value after these
-constexpr double kAllowedMemoryGrowth = 1.5;  // the bound for the last change
+constexpr int kWarmUpChanges = 100;  // memory is compared with its value after these
+constexpr double kAllowedMemoryGrowth = 1.0 + LEVRT_SOAK_GROWTH_PCT / 100.0;  // for the last change
 constexpr std::uint64_t kMaxSoakLights = 65536;
 
 struct SceneLights {

@@ -287,7 +287,8 @@ TEST_F(ViewerWindow, AFileOpenedWhileRunningLoadsAndABadOneKeepsTheSceneShown) {
 
   // clang-format off
   const CommandRun r = run_viewer({
-      "--lights", "64", "--width", "64", "--height", "48", "--window", "800x600", "--frames", "10",
+      "--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--window", "800x600",
+      "--frames", "10",
       "--set", "await=idle@0",
       "--set", "drop=" + path("good.gltf") + "@1",
       "--set", "await=idle@2",
@@ -329,6 +330,8 @@ TEST_F(ViewerWindow, TheCameraFlagsSetTheViewAndCopyCameraGivesThemBack) {
                                    "48",
                                    "--height",
                                    "36",
+                                   "--spp",
+                                   "1",
                                    "--window",
                                    "800x600",
                                    "--frames",
@@ -377,8 +380,10 @@ TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   std::ofstream(path("file.txt")) << "a file, not a folder";
   const auto before = files_in(dir_);
-  const CommandRun r = run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--frames",
-                                   "3", "--set", "snapshot=" + path("file.txt") + "/snap@1"});
+  // One pass: the snapshot waits for the whole render, whose size does not matter here.
+  const CommandRun r =
+      run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--frames",
+                  "3", "--set", "snapshot=" + path("file.txt") + "/snap@1"});
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("snapshot failed"), std::string::npos) << r.output;
@@ -648,7 +653,10 @@ TEST_F(ViewerWindow, RenderStatsAndSnapshotStatsHaveTheSameKeys) {
   const std::vector<std::string> settings = {"--lights", "64", "--width",   "48",
                                              "--height", "32", "--threads", "0"};
   std::vector<std::string> view_args = settings;
-  for (const char* a : {"--window", "800x600", "--frames", "3", "--set", "await=idle@0", "--set"})
+  // The viewer renders two passes, not its 64 (await=idle waits for them all), the headless
+  // render its one: the spread between passes is a number in one file and null in the other.
+  for (const char* a :
+       {"--spp", "2", "--window", "800x600", "--frames", "3", "--set", "await=idle@0", "--set"})
     view_args.emplace_back(a);
   view_args.push_back("snapshot=" + path("keys") + "@1");
   const CommandRun view = run_viewer(view_args);
@@ -682,11 +690,11 @@ TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
   const std::string controls = path("controls.json");
   // clang-format off
   const CommandRun r = run_viewer({
-      "--lights", "64", "--spp", "1", "--window", "800x600", "--frames", "9",
+      "--lights", "64", "--spp", "1", "--window", "640x480", "--frames", "9",
       "--controls", controls,
       "--set", "await=idle@0",
       "--set", "snapshot=" + path("small") + "@1",
-      "--set", "window=1100x760@2",          // as a user dragging the border
+      "--set", "window=760x540@2",           // as a user dragging the border
       "--set", "await=idle@3",
       "--set", "snapshot=" + path("large") + "@4",
       "--set", "resolution=fit/2@5",
