@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/output_files.h"
@@ -67,8 +68,8 @@ double brightest(const glm::dvec3& v) {
 
 // One row of the table: a shaded term or a culled light, with its value for the pixel.
 struct Row {
-  glm::dvec3 pixel{0.0};    // contribution, or the light lost
-  double unshadowed = 0.0;  // brightest channel, for the order among equal contributions
+  glm::dvec3 pixel{0.0};  // contribution, or the light lost
+  renderer::ContributionRank rank;
   std::string text;
 };
 
@@ -154,14 +155,18 @@ nlohmann::ordered_json inspection_json(const renderer::PixelInspection& inspecti
       shaded.push_back(std::move(e));
     }
     h["shaded"] = std::move(shaded);
-    std::vector<const lev::InspectedLight*> culled;
-    for (const lev::InspectedLight& c : hit.record.culled) culled.push_back(&c);
-    std::stable_sort(culled.begin(), culled.end(), [](const auto* a, const auto* b) {
-      return brightest(glm::dvec3(a->visible_radiance())) >
-             brightest(glm::dvec3(b->visible_radiance()));
+    std::vector<std::pair<renderer::ContributionRank, const lev::InspectedLight*>> culled;
+    for (const lev::InspectedLight& c : hit.record.culled) {
+      culled.emplace_back(
+          renderer::contribution_rank(glm::dvec3(c.visible_radiance()),
+                                      glm::dvec3(c.unshadowed_radiance), culled.size()),
+          &c);
+    }
+    std::sort(culled.begin(), culled.end(), [](const auto& a, const auto& b) {
+      return renderer::ranks_before(a.first, b.first);
     });
     nlohmann::ordered_json culled_json = nlohmann::ordered_json::array();
-    for (const lev::InspectedLight* c : culled) culled_json.push_back(inspected_json(*c, weight));
+    for (const auto& c : culled) culled_json.push_back(inspected_json(*c.second, weight));
     h["culled"] = std::move(culled_json);
     h["totals"] = totals_json(renderer::hit_totals(hit));
     hits.push_back(std::move(h));
@@ -189,7 +194,8 @@ std::string inspection_table(const renderer::PixelInspection& inspection, int to
     for (const lev::ShadedLight& s : hit.record.shaded) {
       Row& row = rows.emplace_back();
       row.pixel = glm::dvec3(s.contribution) * weight;
-      row.unshadowed = brightest(glm::dvec3(s.unshadowed_radiance) * weight);
+      row.rank = renderer::contribution_rank(row.pixel, glm::dvec3(s.unshadowed_radiance) * weight,
+                                             rows.size() - 1);
       std::string role = lev::role_name(s.role);
       if (s.role == lev::InspectRole::cluster || s.role == lev::InspectRole::estimated)
         role += "(" + std::to_string(s.members.size()) + ")";
@@ -205,7 +211,8 @@ std::string inspection_table(const renderer::PixelInspection& inspection, int to
     for (const lev::InspectedLight& c : hit.record.culled) {
       Row& row = rows.emplace_back();
       row.pixel = glm::dvec3(c.visible_radiance()) * weight;
-      row.unshadowed = brightest(glm::dvec3(c.unshadowed_radiance) * weight);
+      row.rank = renderer::contribution_rank(row.pixel, glm::dvec3(c.unshadowed_radiance) * weight,
+                                             rows.size() - 1);
       std::snprintf(line, sizeof line, "%-14s %-5s %-28s %-12s %12.6f %-4s %9s %12.6f\n", "culled",
                     c.light.kind == lev::LightKind::spot ? "spot" : "point",
                     position_text(c.light.position).c_str(), node_text(c.node).c_str(),
@@ -214,10 +221,8 @@ std::string inspection_table(const renderer::PixelInspection& inspection, int to
                     "-", brightest(row.pixel));
       row.text = line;
     }
-    std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
-      const double pa = std::abs(brightest(a.pixel)), pb = std::abs(brightest(b.pixel));
-      return pa > pb || (pa == pb && a.unshadowed > b.unshadowed);
-    });
+    std::sort(rows.begin(), rows.end(),
+              [](const Row& a, const Row& b) { return renderer::ranks_before(a.rank, b.rank); });
     std::snprintf(line, sizeof line, "%-14s %-5s %-28s %-12s %12s %-4s %9s %12s\n", "role", "kind",
                   "position", "node", "unshadowed", "seen", "weight", "to pixel");
     out += line;

@@ -321,14 +321,26 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
-  std::fprintf(
-      summary,
-      "%s level %d, %llu lights, %s, tolerance %g: %.3f s render, %.2f lights tested/point, "
-      "%.2f nodes visited/point",
-      scenes::escape_control_characters(loaded.scene.name).c_str(), loaded.scene.level,
-      static_cast<unsigned long long>(loaded.scene.lights.light_count),
-      lev::method_info(settings.method).name, settings.tolerance, result.render_seconds,
-      json["lights_tested_avg"].get<double>(), json["nodes_visited_avg"].get<double>());
+  // The method and the settings it reads ("rt", "lev, tolerance 0.01").
+  const lev::MethodInfo& method = lev::method_info(settings.method);
+  std::string method_text = method.name;
+  char setting[64];
+  if (method.uses_tolerance) {
+    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.tolerance);
+    method_text += setting;
+  }
+  if (method.uses_relative_error) {
+    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.relative_error);
+    method_text += setting;
+  }
+  if (method.samples) method_text += ", " + std::to_string(settings.samples) + " light samples";
+  std::fprintf(summary,
+               "%s level %d, %llu lights, %s: %.3f s render, %.2f lights tested/point, "
+               "%.2f nodes visited/point",
+               scenes::escape_control_characters(loaded.scene.name).c_str(), loaded.scene.level,
+               static_cast<unsigned long long>(loaded.scene.lights.light_count),
+               method_text.c_str(), result.render_seconds, json["lights_tested_avg"].get<double>(),
+               json["nodes_visited_avg"].get<double>());
   std::fprintf(summary, ", error bound avg %.4f%% max %.4f%%",
                json["error_bound_avg_pct"].get<double>(),
                json["error_bound_max_pct"].get<double>());

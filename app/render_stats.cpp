@@ -1,5 +1,8 @@
 #include "app/render_stats.h"
 
+#include <optional>
+
+#include "lev/methods.h"
 #include "renderer/tile_workers.h"
 
 namespace app {
@@ -12,6 +15,8 @@ void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
   stats.exposure_auto = settings.exposure_auto;
   stats.display = renderer::display_curve_name(settings.display);
   stats.camera_index = settings.camera;
+  stats.relative_error = settings.relative_error;
+  stats.light_samples = settings.samples;
 }
 
 nlohmann::ordered_json render_stats_json(const RenderStats& s) {
@@ -22,7 +27,18 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["level"] = s.level;
   j["lights"] = s.lights;
   j["method"] = s.method;
-  j["tolerance"] = s.tolerance;
+  // A setting the method does not read is null: its images do not depend on it.
+  const std::optional<lev::Method> method = lev::parse_method(s.method);
+  const auto reads = [&](bool lev::MethodInfo::*flag) {
+    return !method || lev::method_info(*method).*flag;
+  };
+  const auto read_or_null = [](bool read, auto value) {
+    return read ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+  };
+  j["tolerance"] = read_or_null(reads(&lev::MethodInfo::uses_tolerance), s.tolerance);
+  j["relative_error"] =
+      read_or_null(reads(&lev::MethodInfo::uses_relative_error), s.relative_error);
+  j["light_samples"] = read_or_null(reads(&lev::MethodInfo::samples), s.light_samples);
   j["width"] = s.width;
   j["height"] = s.height;
   j["spp"] = s.spp;
@@ -34,7 +50,7 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["display"] = s.display;
   j["directional_lights"] = s.directional_lights;
   j["time_build_s"] = s.build_seconds;
-  j["time_refit_s"] = s.setup_seconds;
+  j["time_setup_s"] = s.setup_seconds;
   j["time_render_s"] = s.render_seconds;
   j["time_pass_s"] = s.pass_seconds;
   if (s.subsample > 1) {

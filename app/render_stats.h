@@ -34,7 +34,10 @@ struct RenderStats {
   int level = 0;
   std::uint64_t lights = 0;
   std::string method;
+  // The method's settings; the JSON writes null for one the method does not read (lev/methods.h).
   double tolerance = 0.0;
+  double relative_error = 0.0;
+  int light_samples = 0;  // lights a sampling method draws per shading point and pass
   int width = 0;
   int height = 0;
   int spp = 0;      // passes done

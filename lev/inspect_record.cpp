@@ -10,10 +10,11 @@ namespace lev {
 namespace {
 
 // Every light of the subtree at `node`, entered with world_from_local, in world space (instances
-// expanded), each recorded as culled (or clustered) by `by`.
+// expanded), each recorded as culled (or clustered) by `by`. Stops early once *cancel is raised
+// (read every kCancelCheckLights lights).
 void inspect_subtree(const LightHierarchy& h, std::uint32_t node,
                      const Similarity& world_from_local, std::uint32_t by, ShadingPoint& point,
-                     std::vector<InspectedLight>& out) {
+                     std::vector<InspectedLight>& out, const std::atomic<bool>* cancel) {
   struct Part {
     std::uint32_t node;
     Similarity world_from_local;
@@ -28,6 +29,9 @@ void inspect_subtree(const LightHierarchy& h, std::uint32_t node,
       case NodeKind::spot_light:
         out.push_back(
             inspect_light(transform_light(h.lights[n.payload], part.world_from_local), by, point));
+        if (cancel && out.size() % kCancelCheckLights == 0 &&
+            cancel->load(std::memory_order_relaxed))
+          return;
         break;
       case NodeKind::affine:
         parts.push_back({part.node + 1, compose(part.world_from_local, h.transforms[n.payload])});
@@ -88,11 +92,11 @@ InspectedLight inspect_light(const Light& world_light, std::uint32_t node, Shadi
 }
 
 void complete_inspection(const LightHierarchy& hierarchy, ShadingPoint& point,
-                         InspectRecord& record) {
+                         InspectRecord& record, const std::atomic<bool>* cancel) {
   record.culled.clear();
   for (const SubtreeRef& subtree : record.culled_subtrees) {
     inspect_subtree(hierarchy, subtree.node, subtree.world_from_local, subtree.node, point,
-                    record.culled);
+                    record.culled, cancel);
   }
   for (const Light& light : record.culled_lights)
     record.culled.push_back(inspect_light(light, kOwnTest, point));
@@ -108,7 +112,7 @@ void complete_inspection(const LightHierarchy& hierarchy, ShadingPoint& point,
         record.walk_clusters[static_cast<std::size_t>(shaded.walk_cluster)];
     if (cluster.whole_subtree) {
       inspect_subtree(hierarchy, cluster.subtree.node, cluster.subtree.world_from_local,
-                      cluster.subtree.node, point, shaded.members);
+                      cluster.subtree.node, point, shaded.members, cancel);
     } else {
       shaded.members.push_back(inspect_light(cluster.single, kOwnTest, point));
     }

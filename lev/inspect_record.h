@@ -8,6 +8,7 @@
 // method lost, with shadows.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -92,9 +93,10 @@ struct InspectRecord {
 // Expands what `record` holds as culled subtrees, culled lights and clusters into single lights
 // (InspectRecord::culled, ShadedLight::members), each with its unshadowed radiance at `point` and
 // a shadow ray where that is not zero. hierarchy: the one the walk culled (subtree nodes refer to
-// it). The rays are the inspector's own: nothing the method counted.
+// it). The rays are the inspector's own: nothing the method counted. cancel (may be null) is
+// read every kCancelCheckLights lights; once raised the lists are left incomplete.
 void complete_inspection(const LightHierarchy& hierarchy, ShadingPoint& point,
-                         InspectRecord& record);
+                         InspectRecord& record, const std::atomic<bool>* cancel = nullptr);
 
 // A light of the scene as InspectedLight, measured at `point` (one shadow ray when it adds).
 InspectedLight inspect_light(const Light& world_light, std::uint32_t node, ShadingPoint& point);

@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
+#include "lev/method_rows.h"
 #include "lev/selector_ast.h"
 #include "lev/selector_lev.h"
 #include "lev/selector_lev_bounded.h"
@@ -17,16 +20,13 @@ namespace lev {
 
 namespace {
 
-std::vector<MethodInfo>& table_rows() {
-  static std::vector<MethodInfo> table = {
+std::vector<MethodInfo> built_in_rows() {
+  return {
       {Method::rt,
        "rt",
        "RT (every light)",
        "a shadow ray to every light with non-zero irradiance",
-       false,
-       true,
-       false,
-       true,
+       kIsReference | kScansEveryLight,
        {},
        [](const LightHierarchy& h, const MethodParams&) -> std::unique_ptr<LightSelector> {
          return std::make_unique<RtSelector>(h);
@@ -36,10 +36,7 @@ std::vector<MethodInfo>& table_rows() {
        "AST (Ward 1991)",
        "adaptive shadow testing: test the largest potential contributions until the untested "
        "rest is below the tolerance, estimate the rest from hit ratios",
-       true,
-       false,
-       false,
-       true,
+       kUsesTolerance | kScansEveryLight,
        {1.0, 0.3, 0.1, 0.03, 0.01},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<AstSelector>(h, scene_tolerance(p));
@@ -48,10 +45,7 @@ std::vector<MethodInfo>& table_rows() {
        "lev",
        "LEV (extent volumes)",
        "walk the light extent volume hierarchy; shadow rays only to the lights returned",
-       true,
-       false,
-       false,
-       false,
+       kUsesTolerance,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevSelector>(h, scene_tolerance(p));
@@ -61,11 +55,8 @@ std::vector<MethodInfo>& table_rows() {
        "LEV bounded (guaranteed)",
        "LEV that culls only while the summed irradiance bound of what it culled at the point stays "
        "within the tolerance",
-       true,
-       false,
-       false,
        // Where many lights add up it shadow-tests nearly all of them (building: 3,998 of 4,096).
-       true,
+       kUsesTolerance | kScansEveryLight,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevBoundedSelector>(h, scene_tolerance(p));
@@ -75,10 +66,7 @@ std::vector<MethodInfo>& table_rows() {
        "LEV estimated (clusters)",
        "LEV, plus an estimate of what it culled: the culled subtrees cut into clusters, each a "
        "representative light with the cluster's intensity and one shadow ray (Lightcuts)",
-       true,
-       false,
-       false,
-       false,
+       kUsesTolerance,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevEstSelector>(h, scene_tolerance(p), p.display_scale);
@@ -88,10 +76,7 @@ std::vector<MethodInfo>& table_rows() {
        "LEV + sampled rest (unbiased)",
        "LEV's shadow rays, plus k lights (--samples) drawn from what the walk culled by their "
        "irradiance bound, weighed by 1/probability: passes converge to rt",
-       true,
-       false,
-       true,
-       false,
+       kUsesTolerance | kSamples,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevMcSelector>(h, scene_tolerance(p), p.light_samples);
@@ -101,10 +86,7 @@ std::vector<MethodInfo>& table_rows() {
        "Light tree (pbrt-v4, Cycles)",
        "k lights (--samples) drawn from the whole hierarchy by importance (pbrt-v4's "
        "BVHLightSampler, Cycles' light tree), weighed by 1/probability: passes converge to rt",
-       false,
-       false,
-       true,
-       false,
+       kSamples,
        {},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LightTreeSelector>(h, p.light_samples);
@@ -115,15 +97,11 @@ std::vector<MethodInfo>& table_rows() {
        "a cut through a binary light tree, refined until every cluster's error bound is below "
        "the relative error (--relative-error) times the point's estimate; one shadow ray per "
        "cluster's representative",
-       false,
-       false,
-       false,
-       false,
+       kUsesRelativeError,
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LightcutsSelector>(h, p.relative_error);
-       },
-       true},
+       }},
       {Method::lev_cut,
        "lev_cut",
        "LEV cut (relative)",
@@ -131,23 +109,56 @@ std::vector<MethodInfo>& table_rows() {
        "times one 8-bit step), what they keep cut into clusters whose error bound is below the "
        "relative error (--relative-error) times the point's running total; one shadow ray per "
        "cluster",
-       false,
-       false,
-       false,
-       false,
+       kUsesRelativeError,
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevCutSelector>(h, p.relative_error, p.display_scale);
-       },
-       true},
+       }},
   };
+}
+
+// The built-in rows and then the program's own (their ids the next values), checked once.
+std::vector<MethodInfo> make_method_table() {
+  std::vector<MethodInfo> table = built_in_rows();
+  for (MethodInfo& row : extra_method_rows()) {
+    for (const MethodInfo& known : table) {
+      if (std::string_view(known.name) == row.name)
+        throw std::logic_error(std::string("method '") + row.name + "' exists already");
+    }
+    if (row.is_reference) throw std::logic_error("method_table has its reference method already");
+    row.id = static_cast<Method>(table.size());
+    table.push_back(std::move(row));
+  }
   return table;
 }
 
 }  // namespace
 
+// The library's default: no rows beyond the built-in ones. Weak, so a program that defines its
+// own extra_method_rows (a test binary's method) replaces it at link time, and the table stays
+// one constant built once.
+__attribute__((weak)) std::vector<MethodInfo> extra_method_rows() {
+  return {};
+}
+
+MethodInfo::MethodInfo(Method id_, const char* name_, const char* label_, const char* summary_,
+                       unsigned traits, std::vector<double> bench_tolerances_,
+                       MakeSelector make_selector_)
+    : id(id_),
+      name(name_),
+      label(label_),
+      summary(summary_),
+      uses_tolerance((traits & kUsesTolerance) != 0),
+      uses_relative_error((traits & kUsesRelativeError) != 0),
+      is_reference((traits & kIsReference) != 0),
+      samples((traits & kSamples) != 0),
+      scans_every_light((traits & kScansEveryLight) != 0),
+      bench_tolerances(std::move(bench_tolerances_)),
+      make_selector(make_selector_) {}
+
 const std::vector<MethodInfo>& method_table() {
-  return table_rows();
+  static const std::vector<MethodInfo> table = make_method_table();
+  return table;
 }
 
 const MethodInfo& method_info(Method method) {
@@ -164,31 +175,11 @@ std::optional<Method> parse_method(std::string_view name) {
   return std::nullopt;
 }
 
-std::string method_names(const char* separator) {
-  std::string s;
-  for (const MethodInfo& info : method_table()) {
-    if (!s.empty()) s += separator;
-    s += info.name;
-  }
-  return s;
-}
-
 Method reference_method() {
   for (const MethodInfo& info : method_table()) {
     if (info.is_reference) return info.id;
   }
   throw std::logic_error("method_table has no reference method");
-}
-
-Method register_method(MethodInfo row) {
-  std::vector<MethodInfo>& table = table_rows();
-  if (parse_method(row.name))
-    throw std::invalid_argument(std::string("method '") + row.name + "' exists already");
-  if (row.is_reference)
-    throw std::invalid_argument("method_table has its reference method already");
-  row.id = static_cast<Method>(table.size());
-  table.push_back(std::move(row));
-  return table.back().id;
 }
 
 std::unique_ptr<LightSelector> make_selector(const LightHierarchy& hierarchy,

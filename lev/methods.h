@@ -5,12 +5,13 @@
 // Adding a method:
 //   1. its selector, lev/selector_NAME.{h,cpp}: a LightSelector (with make_scratch when it keeps
 //      per-thread buffers, and reading SelectorScratch::random when it samples);
-//   2. one row in method_table() (lev/methods.cpp): name, label, summary, the flags below, the
-//      values the bench's trade experiment sweeps, and the function that makes its selector from
-//      the MethodParams (the settings it reads).
+//   2. its enum value in Method below, and its row in lev/methods.cpp: name, label, summary, its
+//      traits (MethodTrait), the values the bench's trade experiment sweeps, and the function
+//      that makes its selector from the MethodParams (the settings it reads).
 // It then appears in `--method`, the viewer's method switch and trade plot, and the benchmarks
-// that compare methods (speed, trade); nothing else names methods. (A test binary may add a row
-// with register_method instead.)
+// that compare methods (speed, trade); nothing else names methods. A selector whose class no
+// one else needs can be one file, selector_NAME.cpp, its make function declared beside its row:
+// three files in all.
 #pragma once
 
 #include <cstdint>
@@ -28,8 +29,8 @@ namespace lev {
 // The tolerance a render uses unless told otherwise (colour units, 1.0 = 255): thesis Test 1.1.
 inline constexpr double kDefaultTolerance = 0.01;
 
-// A row of method_table(), by position. The named values are the built-in rows; further rows
-// (register_method) take the next values.
+// A row of method_table(), by position. The named values are the built-in rows; the rows a
+// program adds (extra_method_rows, lev/method_rows.h) take the next values.
 enum class Method : std::uint8_t {
   rt,
   ast,
@@ -67,34 +68,42 @@ float scene_tolerance(const MethodParams& params);
 using MakeSelector = std::unique_ptr<LightSelector> (*)(const LightHierarchy& hierarchy,
                                                         const MethodParams& params);
 
+// What a row says of its method, or'ed together in the row (named, so a row reads as what it
+// is).
+enum MethodTrait : unsigned {
+  kNoTraits = 0,
+  kUsesTolerance = 1u << 0,      // reads MethodParams::tolerance
+  kUsesRelativeError = 1u << 1,  // reads MethodParams::relative_error
+  kIsReference = 1u << 2,        // exact: what every other method's errors are measured against
+  kSamples = 1u << 3,            // draws from the per-sample random stream
+  kScansEveryLight = 1u << 4,    // its time per point grows with the light count
+};
+
 struct MethodInfo {
+  MethodInfo(Method id, const char* name, const char* label, const char* summary, unsigned traits,
+             std::vector<double> bench_tolerances, MakeSelector make_selector);
+
   Method id;
   const char* name;     // CLI value and stats JSON
   const char* label;    // viewer
   const char* summary;  // CLI help and viewer tooltip
   bool uses_tolerance;  // false: the images do not depend on the tolerance (no restart, no refit)
-  bool is_reference;    // exact: the images every other method's pixel errors are measured against
-  bool samples;         // draws from the per-sample random stream (images depend on the passes)
+  // Reads MethodParams::relative_error (--relative-error); images then depend on it.
+  bool uses_relative_error;
+  bool is_reference;  // exact: the images every other method's pixel errors are measured against
+  bool samples;       // draws from the per-sample random stream (images depend on the passes)
   bool scans_every_light;  // its time per point grows with the light count: the bench subsamples it
   // The trade experiment's sweep, largest first: of the tolerance, or of the relative error for a
   // method that uses that and not the tolerance (swept_setting).
   std::vector<double> bench_tolerances;
   MakeSelector make_selector;
-  // Reads MethodParams::relative_error (--relative-error); images then depend on it.
-  bool uses_relative_error = false;
 };
 
 const std::vector<MethodInfo>& method_table();
 const MethodInfo& method_info(Method method);
 std::optional<Method> parse_method(std::string_view name);
-std::string method_names(const char* separator);  // "rt|ast|lev"
 // The one row with is_reference (rt).
 Method reference_method();
-
-// Appends a row (its id is set to the next value) and returns its id. For methods outside the
-// built-in table, such as a test's; call it before anything reads the table from another thread
-// (the table is not guarded), typically from a static initialiser.
-Method register_method(MethodInfo row);
 
 // The selector for one render (params.light_samples in [1, kMaxLightSamples], the relative error
 // in [0, 1]; else std::invalid_argument). It reads the hierarchy (which it never changes, so any

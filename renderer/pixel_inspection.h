@@ -5,6 +5,7 @@
 // added, what the method lost against `rt` with shadows, and the certified bound.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -51,12 +52,30 @@ struct PixelInspection {
   InspectedTotals totals;  // over the hits
 };
 
+// The order of the inspector's lists, largest first by what a row gives the pixel: a total order
+// even where a value is NaN or infinite (a comparator that is not a strict weak order makes
+// std::sort undefined). Rows compare by their largest |channel| to the pixel, then by their
+// largest unshadowed channel (both descending, +inf first, NaN last), then by their place in the
+// record (`order`: the order the method met the lights), so equal rows keep that order.
+struct ContributionRank {
+  double to_pixel = 0.0;    // largest |channel|; NaN when any channel is NaN
+  double unshadowed = 0.0;  // the same of the unshadowed radiance
+  std::size_t order = 0;
+};
+
+ContributionRank contribution_rank(const glm::dvec3& to_pixel, const glm::dvec3& unshadowed,
+                                   std::size_t order);
+// True when `a` is listed before `b`.
+bool ranks_before(const ContributionRank& a, const ContributionRank& b);
+
 // Traces pixel (x, y)'s pass-0 sample with `selector` (made for `settings`, as a render state
 // makes it; a viewer passes its render's) and records every shading point. The certified bound is
 // asked for as `levrt render` asks for it. Throws std::invalid_argument for a pixel outside the
-// image.
+// image. cancel (may be null) is read as a render reads it (the trace, the selector's loops) and
+// between the inspector's own shadow rays; once raised the inspection returns early with lists
+// the caller must discard.
 PixelInspection inspect_pixel(const Scene& scene, const RayScene& rays,
                               const RenderSettings& settings, const lev::LightSelector& selector,
-                              int x, int y);
+                              int x, int y, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace renderer

@@ -59,7 +59,6 @@ class RayScene {
   // none of the hit record work. For measuring Embree alone (ray_log.h).
   float closest_distance(const Ray& ray) const;
 
-  std::size_t instance_count() const { return instances_.size(); }
   float offset_floor() const { return offset_floor_; }
 
  private:

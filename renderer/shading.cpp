@@ -171,7 +171,7 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
     InspectedHit& inspection = (*context.inspection)[inspected];
     inspection.direct_radiance = direct;
     inspection.error_bound = hit_error_bound;
-    lev::complete_inspection(context.scene.lights, point, inspection.record);
+    lev::complete_inspection(context.scene.lights, point, inspection.record, context.cancel);
   }
   if (missed.estimated) {
     counters.missed += path_weight * missed.radiance;

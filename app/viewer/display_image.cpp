@@ -385,8 +385,10 @@ ViewPixels view_pixels(const DisplayImage& image, const ErrorImage& error,
 
 std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
                                     ViewMode mode, renderer::HeatmapRange& range,
-                                    const renderer::Display& display, double mask_threshold_pct) {
-  return compose_rgb8(image, nullptr, error, mode, display, mask_threshold_pct, range);
+                                    const renderer::Display& display, double mask_threshold_pct,
+                                    const std::optional<renderer::HeatmapRange>& locked_range) {
+  return compose_rgb8(image, nullptr, error, mode, display, mask_threshold_pct, range,
+                      locked_range);
 }
 
 void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,

@@ -125,10 +125,13 @@ void compose_view_rgba(const DisplayImage& image, const PreviewImage& preview,
                        double mask_threshold_pct = kDefaultMaskThresholdPct, const AbSplit& ab = {},
                        const std::optional<renderer::HeatmapRange>& locked_range = std::nullopt);
 
-// 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview.
-std::vector<std::uint8_t> view_rgb8(const DisplayImage& image, const ErrorImage& error,
-                                    ViewMode mode, renderer::HeatmapRange& range,
-                                    const renderer::Display& display = {},
-                                    double mask_threshold_pct = kDefaultMaskThresholdPct);
+// 8-bit RGB of one view for a snapshot file: the render's pixels only, never the preview. A
+// locked range (the legend's lock) is used as the screen uses it, for a view whose range follows
+// its data, and returned in `range`: the scale `render --heatmap-range` draws with.
+std::vector<std::uint8_t> view_rgb8(
+    const DisplayImage& image, const ErrorImage& error, ViewMode mode,
+    renderer::HeatmapRange& range, const renderer::Display& display = {},
+    double mask_threshold_pct = kDefaultMaskThresholdPct,
+    const std::optional<renderer::HeatmapRange>& locked_range = std::nullopt);
 
 }  // namespace app::viewer

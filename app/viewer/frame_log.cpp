@@ -36,6 +36,19 @@ void record_preview(FrameLog& log, std::uint64_t generation, bool every_level,
   }
 }
 
+void record_inspect_asked(FrameLog& log, int x, int y, std::chrono::steady_clock::time_point when) {
+  if (!log.enabled) return;
+  log.inspections.push_back({x, y, when, -1.0, 0.0});
+}
+
+void record_inspection_shown(FrameLog& log, std::chrono::steady_clock::time_point when,
+                             double inspection_ms) {
+  if (log.inspections.empty() || log.inspections.back().shown_ms >= 0.0) return;
+  InspectionLatency& r = log.inspections.back();
+  r.shown_ms = std::chrono::duration<double, std::milli>(when - r.asked).count();
+  r.inspection_ms = inspection_ms;
+}
+
 FrameTimeSummary summarize_frames(const std::vector<double>& frame_ms) {
   FrameTimeSummary s;
   s.frames = frame_ms.size();
@@ -90,6 +103,20 @@ std::string frame_report(const FrameLog& log) {
       std::snprintf(line, sizeof line,
                     "levrt view: %s: no new tile (render unchanged or superseded)\n",
                     r.label.c_str());
+    }
+    report += line;
+  }
+  for (const InspectionLatency& r : log.inspections) {
+    char line[192];
+    if (r.shown_ms >= 0.0) {
+      std::snprintf(line, sizeof line,
+                    "levrt view: inspect %d,%d: list on screen after %.1f ms (the inspection "
+                    "%.1f ms)\n",
+                    r.x, r.y, r.shown_ms, r.inspection_ms);
+    } else {
+      std::snprintf(line, sizeof line,
+                    "levrt view: inspect %d,%d: no list shown (cleared or superseded first)\n", r.x,
+                    r.y);
     }
     report += line;
   }

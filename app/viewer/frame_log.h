@@ -1,6 +1,7 @@
 // What --report-fps prints: the UI's frame times (all frames, and the frames during which the
 // tracer was busy) and, for each change, how long until its first tile (preview or full), its
-// whole frame at the coarsest preview step and its last preview level reached the screen.
+// whole frame at the coarsest preview step and its last preview level reached the screen; and for
+// each pixel pinned in the inspector, how long until its list was on screen.
 #pragma once
 
 #include <chrono>
@@ -31,6 +32,15 @@ struct LatencyRecord {
   bool superseded = false;
 };
 
+// A pixel pinned in the inspector: when, and how long until its list was on screen (negative
+// until then, and for ever if another pixel or Clear came first), and the inspection's own time.
+struct InspectionLatency {
+  int x = 0, y = 0;
+  std::chrono::steady_clock::time_point asked;
+  double shown_ms = -1.0;
+  double inspection_ms = 0.0;
+};
+
 struct FrameLog {
   // Only --report-fps reads the log; when it is off nothing is recorded, so an interactive session
   // of hours does not grow it frame by frame.
@@ -40,6 +50,7 @@ struct FrameLog {
       busy_frame_ms;            // the same, while the worker was loading, preparing or rendering
   std::vector<double> work_ms;  // the UI thread's own work per frame, pacing excluded
   std::vector<LatencyRecord> latencies;
+  std::vector<InspectionLatency> inspections;
 };
 
 void record_frame(FrameLog& log, double frame_ms, double work_ms, bool tracer_busy);
@@ -53,6 +64,12 @@ void record_first_tile(FrameLog& log, std::uint64_t generation,
 // `when`.
 void record_preview(FrameLog& log, std::uint64_t generation, bool every_level,
                     std::chrono::steady_clock::time_point when);
+
+// The inspector was pinned on pixel (x, y) at `when`; its list reached the screen at `when`
+// (the latest pixel pinned), the inspection having taken inspection_ms.
+void record_inspect_asked(FrameLog& log, int x, int y, std::chrono::steady_clock::time_point when);
+void record_inspection_shown(FrameLog& log, std::chrono::steady_clock::time_point when,
+                             double inspection_ms);
 
 FrameTimeSummary summarize_frames(const std::vector<double>& frame_ms);
 // The report, one line per item.

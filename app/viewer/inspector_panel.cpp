@@ -60,7 +60,7 @@ void draw_inspector_window(ViewerState& state, const ImVec2& picture_pos,
     return;
   }
   if (!view) {
-    ImGui::TextDisabled("inspecting (between passes)...");
+    ImGui::TextDisabled("inspecting...");
     ImGui::End();
     return;
   }

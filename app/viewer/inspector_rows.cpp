@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace app::viewer {
 namespace {
 
 constexpr int kOutlineSegments = 32;
-
-float brightest_abs(const glm::vec3& v) {
-  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-}
 
 float brightest_of(const glm::vec3& v) {
   return std::max({v.x, v.y, v.z});
@@ -74,16 +71,22 @@ std::vector<InspectorRow> inspector_rows(const renderer::PixelInspection& inspec
     }
   }
   if (all_rows) *all_rows = rows.size();
-  const auto larger = [](const InspectorRow& a, const InspectorRow& b) {
-    const float pa = brightest_abs(a.to_pixel), pb = brightest_abs(b.to_pixel);
-    if (pa != pb) return pa > pb;
-    return brightest_of(a.unshadowed) > brightest_of(b.unshadowed);
-  };
+  // Ranked by renderer::ranks_before (a total order, NaN last), equal rows in record order.
+  std::vector<std::pair<renderer::ContributionRank, std::size_t>> ranks;
+  ranks.reserve(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    ranks.emplace_back(renderer::contribution_rank(glm::dvec3(rows[i].to_pixel),
+                                                   glm::dvec3(rows[i].unshadowed), i),
+                       i);
+  }
   const std::size_t kept = std::min(keep, rows.size());
-  std::partial_sort(rows.begin(), rows.begin() + static_cast<std::ptrdiff_t>(kept), rows.end(),
-                    larger);
-  rows.resize(kept);
-  return rows;
+  std::partial_sort(
+      ranks.begin(), ranks.begin() + static_cast<std::ptrdiff_t>(kept), ranks.end(),
+      [](const auto& a, const auto& b) { return renderer::ranks_before(a.first, b.first); });
+  std::vector<InspectorRow> top;
+  top.reserve(kept);
+  for (std::size_t i = 0; i < kept; ++i) top.push_back(std::move(rows[ranks[i].second]));
+  return top;
 }
 
 float extent_radius(const lev::Light& light, float tolerance) {

@@ -38,14 +38,15 @@ struct PixelInspectionView {
   int width = 0, height = 0;
   float tolerance = 0.0f;  // for the extent volumes' outlines
   renderer::InspectedTotals totals;
-  std::vector<InspectorRow> rows;  // the top ones, largest |to_pixel| first
+  std::vector<InspectorRow> rows;  // the top ones (renderer::ranks_before: largest first)
   std::size_t all_rows = 0;        // before the cut
   double seconds = 0.0;            // the inspection's time
 };
 
 inline constexpr std::size_t kInspectorRows = 50;
 
-// The top `keep` rows of an inspection, over all its hits.
+// The top `keep` rows of an inspection, over all its hits, in renderer::ranks_before's order
+// (largest |to_pixel| first, a NaN value last, equal rows in the record's order).
 std::vector<InspectorRow> inspector_rows(const renderer::PixelInspection& inspection,
                                          std::size_t keep, std::size_t* all_rows = nullptr);
 

@@ -12,11 +12,11 @@
 
 #include "app/render_command.h"
 #include "app/scene_loading.h"
+#include "app/viewer/inspection_task.h"
 #include "app/viewer/reference_render.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
 #include "renderer/auto_exposure.h"
-#include "renderer/pixel_inspection.h"
 #include "renderer/render.h"
 #include "renderer/render_service.h"
 
@@ -43,6 +43,14 @@ struct WorkerShared {
   // slot_mutex and never destroys a state that is still published.
   mutable std::mutex slot_mutex;
   const renderer::RenderState* slot = nullptr;
+
+  // The pinned pixel's inspection, on its own thread (made here, on the UI thread: it keeps the
+  // normal priority); it publishes into `status`. Last, so it stops before the rest goes.
+  InspectionTask inspector{[this](std::shared_ptr<const PixelInspectionView> view) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    status.inspection = std::move(view);
+    status.inspection_pending = false;
+  }};
 };
 
 namespace {
@@ -175,7 +183,20 @@ struct Worker {
     });
   }
 
+  // Cancels the inspection in flight and waits for it, so that the scene may change; the next
+  // inspect() starts afresh.
+  void stop_inspection() {
+    shared.inspector.stop();
+    inspected_pixel.reset();
+    inspected_generation = 0;
+    update_status([](WorkerStatus& st) {
+      st.inspection.reset();
+      st.inspection_pending = false;
+    });
+  }
+
   void tear_down(std::uint64_t floor) {
+    stop_inspection();
     drop_reference(floor);
     drop_main(floor);
     loaded.reset();
@@ -320,7 +341,10 @@ struct Worker {
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
     // in the scene (each render state fits its own extent volumes), so the reference keeps going.
     if ((view_changed || !request.want_reference) && reference.has_state()) drop_reference(serial);
-    if (main_changed) drop_main(serial);
+    if (main_changed) {
+      stop_inspection();  // it reads the scene, whose camera may move now
+      drop_main(serial);
+    }
     if (!same_camera(key.camera, sc.camera)) sc.camera = key.camera;
     view = key;
     passes_target = s.spp;
@@ -390,32 +414,24 @@ struct Worker {
     inspect(request.inspect_pixel);
   }
 
-  // The pinned pixel's inspection with a selector made as the render's (a fresh one: AST's
-  // statistics of the render must not learn from it), published once per pixel and render.
+  // The pinned pixel's inspection, started on the inspection task (a new pixel cancels the one in
+  // flight) with a selector made as the render's (a fresh one: AST's statistics of the render
+  // must not learn from it), once per pixel and render; the task publishes it when done.
   void inspect(const std::optional<std::array<int, 2>>& pixel) {
     if (pixel == inspected_pixel && generation == inspected_generation) return;
+    shared.inspector.stop();
     inspected_pixel = pixel;
     inspected_generation = generation;
-    std::shared_ptr<PixelInspectionView> view_of_pixel;
-    if (pixel && main && (*pixel)[0] < main_settings.width && (*pixel)[1] < main_settings.height) {
-      const auto start = Clock::now();
-      const renderer::Scene& sc = loaded->scene;
-      const auto selector = lev::make_selector(sc.lights, renderer::method_params(main_settings));
-      const renderer::PixelInspection inspection = renderer::inspect_pixel(
-          sc, *loaded->rays, main_settings, *selector, (*pixel)[0], (*pixel)[1]);
-      view_of_pixel = std::make_shared<PixelInspectionView>();
-      view_of_pixel->generation = generation;
-      view_of_pixel->x = (*pixel)[0];
-      view_of_pixel->y = (*pixel)[1];
-      view_of_pixel->camera = sc.camera;
-      view_of_pixel->width = main_settings.width;
-      view_of_pixel->height = main_settings.height;
-      view_of_pixel->tolerance = main_settings.tolerance;
-      view_of_pixel->totals = inspection.totals;
-      view_of_pixel->rows = inspector_rows(inspection, kInspectorRows, &view_of_pixel->all_rows);
-      view_of_pixel->seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const bool inside =
+        pixel && main && (*pixel)[0] < main_settings.width && (*pixel)[1] < main_settings.height;
+    update_status([&](WorkerStatus& st) {
+      st.inspection.reset();
+      st.inspection_pending = inside;
+    });
+    if (inside) {
+      shared.inspector.start(loaded->scene, *loaded->rays, main_settings, (*pixel)[0], (*pixel)[1],
+                             generation);
     }
-    update_status([&](WorkerStatus& st) { st.inspection = std::move(view_of_pixel); });
   }
 
   // One preview level over the whole frame; a cancelled level is rendered again from the start.
@@ -482,6 +498,7 @@ struct Worker {
   }
 
   void fail(const std::string& message, bool bad_input, std::uint64_t serial) {
+    stop_inspection();
     drop_reference(serial);
     drop_main(serial);
     view.reset();

@@ -104,9 +104,10 @@ struct WorkerStatus {
   int reference_passes_target = 0;
   double reference_first_pass_seconds = 0.0;  // its pass 0 (0: not done yet)
 
-  // The inspection of the pinned pixel in the render shown (null: none asked for, or the pixel
-  // is outside the image).
+  // The inspection of the pinned pixel in the render shown (null: none asked for, the pixel is
+  // outside the image, or it is still pending: computed on a thread of its own).
   std::shared_ptr<const PixelInspectionView> inspection;
+  bool inspection_pending = false;
 };
 
 // Render time so far, the running pass included.

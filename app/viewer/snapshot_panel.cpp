@@ -31,7 +31,9 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   // The range of every heatmap `levrt render` would write for these settings goes into the stats
   // (the same keys: app/view_table.h's rows with a flag, those needing the reference or the
   // missed-light estimate only with it); every view with a value somewhere becomes an EXR
-  // channel; the heatmap file holds the view on screen (lights when the image is).
+  // channel; the heatmap file holds the view on screen (lights when the image is). A view whose
+  // range is locked is drawn over the locked range, and its stats report it, as
+  // `render --heatmap-range` does.
   job.exr_channels = rgb_channels(state.image.radiance);
   job.exr_channels.push_back(
       {"samples", std::vector<float>(state.image.samples.begin(), state.image.samples.end())});
@@ -42,7 +44,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
                           (!view.needs_missed || stats.missed);
     if (in_stats) {
       view_rgb8(state.image, state.error, view.mode, stats.heatmap_ranges[view.mode], display,
-                state.mask_threshold_pct);
+                state.mask_threshold_pct, locked_range(state, view.mode));
     }
     std::vector<float> values(pixels.count, 0.0f);
     bool any = false;
@@ -55,8 +57,8 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   }
   const ViewMode heat = state.view == ViewMode::image ? ViewMode::lights : state.view;
   job.heatmap_name = view_info(heat).name;
-  job.heatmap_rgb =
-      view_rgb8(state.image, state.error, heat, range, display, state.mask_threshold_pct);
+  job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range, display,
+                              state.mask_threshold_pct, locked_range(state, heat));
   job.stats_json = render_stats_json(stats).dump(2) + "\n";
   job.inputs = settings_input_files(state.settings);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());

@@ -41,6 +41,11 @@ std::string bytes_text(std::size_t bytes) {
 
 }  // namespace
 
+float stats_section_height() {
+  const float row_height = ImGui::GetTextLineHeight() + 2.0f * ImGui::GetStyle().CellPadding.y;
+  return static_cast<float>(kStatsRows) * row_height;
+}
+
 void draw_status_line(const ViewerState& state, std::chrono::steady_clock::time_point now) {
   const WorkerStatus& st = state.status;
   // Errors are shown whole, wrapped to the panel (a glTF error names the file and the field).
@@ -114,11 +119,16 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   else
     row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
   row("hierarchy", "%s", bytes_text(st.hierarchy_bytes).c_str());
-  if (st.method_bytes > 0) row("method memory", "%s", bytes_text(st.method_bytes).c_str());
+  if (st.method_bytes > 0)
+    row("method memory", "%s", bytes_text(st.method_bytes).c_str());
+  else
+    row("method memory", "none besides the hierarchy");
   row("build / refit", "%.3f s / %.4f s", st.build_seconds, st.refit_seconds);
   if (s.error_bound) {
     row("error bound", "%.4f%% avg, %.3f%% max", s.error_bound->average_pct,
         s.error_bound->max_pct);
+  } else {
+    row("error bound", "once pixels are rendered");
   }
   if (s.error_avg_pct) {
     row("pixel error", "%.4f%% avg, %.3f%% max (%d passes)", *s.error_avg_pct, *s.error_max_pct,

@@ -313,6 +313,7 @@ bool render_settled(const ViewerState& state, std::uint64_t last_posted) {
   if (st.phase == WorkerPhase::failed) return true;
   if (st.phase != WorkerPhase::idle) return false;
   if (state.want_reference && st.reference == ReferencePhase::rendering) return false;
+  if (st.inspection_pending) return false;  // the pinned pixel's list is on its way
   return st.generation == 0 || state.image.generation == st.generation;
 }
 
@@ -370,17 +371,24 @@ void write_screenshot(GLFWwindow* window, const std::string& path) {
 }
 
 // The window's layout: the panel on the left; on the right the picture above the results
-// (statistics next to the speed/accuracy plot). The results are as tall as their content was in
-// the previous frame (so no row is cut), within a third and three fifths of the window.
+// (statistics next to the speed/accuracy plot, or as tabs when narrow). The results are as tall as
+// the statistics' fixed rows (stats_panel.h: so no row is cut), within a third and three fifths of
+// the window: the layout is a function of the window's size alone, so nothing the panels show
+// (a row, a tab) moves the picture's border and, at a fit resolution, restarts the render.
 struct Layout {
   ImVec2 panel_size, picture_pos, picture_size, results_pos, results_size;
 };
 
-Layout window_layout(const ImVec2& display, float results_content_height) {
+Layout window_layout(const ImVec2& display) {
   Layout l;
   const float panel_width = std::min(kPanelWidth, display.x * 0.5f);
-  const float results_height =
-      std::clamp(results_content_height, display.y / 3.0f, display.y * 0.6f);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // The title bar, the padding, the table and the spacing after it.
+  float content_height = ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y +
+                         stats_section_height() + style.ItemSpacing.y;
+  if (display.x - panel_width < kSideBySideWidth)  // the tab bar above the statistics
+    content_height += ImGui::GetFrameHeight() + style.ItemSpacing.y;
+  const float results_height = std::clamp(content_height, display.y / 3.0f, display.y * 0.6f);
   l.panel_size = ImVec2(panel_width, display.y);
   l.picture_pos = ImVec2(panel_width, 0.0f);
   l.picture_size = ImVec2(display.x - panel_width, display.y - results_height);
@@ -427,17 +435,14 @@ void draw_trade_section(const ViewerState& state) {
   draw_trade_plot(state.trade, state.status.generation);
 }
 
-// Returns the height the results' content took, for the next frame's layout.
-float draw_results(const ViewerState& state, Clock::time_point now, const Layout& layout) {
+void draw_results(const ViewerState& state, Clock::time_point now, const Layout& layout) {
   ImGui::SetNextWindowPos(layout.results_pos);
   ImGui::SetNextWindowSize(layout.results_size);
   ImGui::Begin("Statistics and the speed/accuracy trade", nullptr, kFixedWindow);
-  float content_bottom = 0.0f;
   if (layout.results_size.x < kSideBySideWidth) {
     if (ImGui::BeginTabBar("results")) {
       if (ImGui::BeginTabItem("Statistics")) {
         draw_stats_section(state, now);
-        content_bottom = ImGui::GetCursorPosY();
         ImGui::EndTabItem();
       }
       if (ImGui::BeginTabItem("Speed/accuracy")) {
@@ -450,13 +455,11 @@ float draw_results(const ViewerState& state, Clock::time_point now, const Layout
                                ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame)) {
     ImGui::TableNextColumn();
     draw_stats_section(state, now);
-    content_bottom = ImGui::GetCursorPosY();
     ImGui::TableNextColumn();
     draw_trade_section(state);
     ImGui::EndTable();
   }
   ImGui::End();
-  return content_bottom + ImGui::GetStyle().WindowPadding.y;
 }
 
 void draw_picture_window(ViewerState& state, const Picture& picture, const Layout& layout) {
@@ -537,9 +540,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
     Clock::time_point previous_start = Clock::now();
     Clock::time_point next_frame = previous_start;
     bool first = true;
-    float results_content_height = 0.0f;
     FitTracker fit;
-    ImVec2 layout_display(0.0f, 0.0f);
+    std::optional<std::array<int, 2>> inspect_pixel_posted;  // for the inspection's latency
     // A scripted snapshot waits for the render (and the reference, if asked for) to complete.
     std::optional<std::string> pending_snapshot;
 
@@ -591,6 +593,8 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       }
 
       take_worker_results(state, worker, log, now);
+      if (const PixelInspectionView* shown = current_inspection(state))
+        record_inspection_shown(log, now, 1000.0 * shown->seconds);
       follow_scene_loads(state);
       open_dropped_files(state, window.take_dropped());
       // A first scene that cannot be read (or a size over the memory budget) is bad input.
@@ -627,19 +631,10 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      const Layout layout = window_layout(ImGui::GetIO().DisplaySize, results_content_height);
+      const Layout layout = window_layout(ImGui::GetIO().DisplaySize);
       state.control_rects.clear();
       draw_panel(state, snapshots, now, layout);
-      // The results never shrink back (a row that comes and goes would move the picture's border
-      // and, at a fit resolution, restart the render); a new window size starts afresh.
-      const float content_height = draw_results(state, now, layout);
-      if (ImGui::GetIO().DisplaySize.x != layout_display.x ||
-          ImGui::GetIO().DisplaySize.y != layout_display.y) {
-        results_content_height = content_height;
-        layout_display = ImGui::GetIO().DisplaySize;
-      } else {
-        results_content_height = std::max(results_content_height, content_height);
-      }
+      draw_results(state, now, layout);
       // A screenshot shows the error of every tile received (the difference and mask views).
       if (screenshot_now) update_error(state, error_clock, now, true);
       compose_picture(state, picture, error_clock, now, screenshot_now);
@@ -654,6 +649,11 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
         controls_written = controls;
       }
 
+      if (state.inspect_pixel != inspect_pixel_posted) {
+        if (state.inspect_pixel)
+          record_inspect_asked(log, (*state.inspect_pixel)[0], (*state.inspect_pixel)[1], now);
+        inspect_pixel_posted = state.inspect_pixel;
+      }
       if (state.request_dirty) {
         last_posted = worker.post(make_request(state));
         if (!state.change_label.empty()) record_post(log, state.change_label, last_posted, now);

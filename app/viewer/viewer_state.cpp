@@ -81,7 +81,11 @@ void set_range_lock(ViewerState& state, bool locked) {
 }
 
 std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state) {
-  const auto it = state.locked_ranges.find(state.view);
+  return locked_range(state, state.view);
+}
+
+std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state, ViewMode mode) {
+  const auto it = state.locked_ranges.find(mode);
   if (it == state.locked_ranges.end()) return std::nullopt;
   return it->second;
 }
@@ -119,7 +123,7 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
   if (state.inspect_pixel == pixel) return;
   state.inspect_pixel = pixel;
   state.inspect_row = -1;
-  mark_changed(state, "");  // no new render: the worker inspects between passes
+  mark_changed(state, "");  // no new render: the worker starts its inspection task
 }
 
 ViewRequest make_request(const ViewerState& state) {

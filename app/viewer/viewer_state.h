@@ -111,8 +111,9 @@ void reset_camera(ViewerState& state);
 void set_want_reference(ViewerState& state, bool want);
 // Locks the view on screen's heatmap range as shown now (a min..max range), or unlocks it.
 void set_range_lock(ViewerState& state, bool locked);
-// The locked range of the view on screen, if any.
+// The locked range of the view on screen, or of `mode`, if any.
 std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state);
+std::optional<renderer::HeatmapRange> locked_range(const ViewerState& state, ViewMode mode);
 // A/B: show rt's image (asking for the reference) or the method's; split at a divider or not.
 void set_ab_rt(ViewerState& state, bool rt);
 void set_swipe(ViewerState& state, std::optional<double> divider);

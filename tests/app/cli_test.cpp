@@ -82,7 +82,14 @@ TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {
     const CommandRun ok = run_levrt({"render", "--method", method, "--relative-error", "0.05",
                                      "--width", "8", "--height", "8", "--out", out});
     EXPECT_EQ(ok.exit_code, 0) << method << ": " << ok.output;
+    // The summary names the setting the method reads, not the tolerance it ignores.
+    EXPECT_NE(ok.output.find(std::string(method) + ", relative error 0.05:"), std::string::npos)
+        << ok.output;
+    EXPECT_EQ(ok.output.find("tolerance"), std::string::npos) << ok.output;
   }
+  const CommandRun rt =
+      run_levrt({"render", "--method", "rt", "--width", "8", "--height", "8", "--out", out});
+  EXPECT_NE(rt.output.find(" lights, rt: "), std::string::npos) << rt.output;
 }
 
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {

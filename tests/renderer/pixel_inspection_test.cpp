@@ -4,8 +4,10 @@
 // pass 0 shaded at that pixel (the per-pixel lights-tested counter and the radiance, bit for bit),
 // and for lev, which is deterministic, the light it reports lost is rt's pixel minus lev's.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -147,6 +149,64 @@ TEST(PixelInspection, LevLostSumIsRtPixelMinusLevPixel) {
       EXPECT_GT(lost_total, 0.0);
     }
   }
+}
+
+// The inspector's order is a strict total order over every value a row can hold, NaN and the
+// infinities included (std::sort needs a strict weak order; NaN broke the old comparators).
+TEST(PixelInspection, RanksAreATotalOrderWithNanLast) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> values = {nan, inf, -inf, 0.0, -0.0, 1.0, -2.0, 2.0};
+  std::vector<renderer::ContributionRank> ranks;
+  for (const double to_pixel : values) {
+    for (const double unshadowed : values) {
+      ranks.push_back(renderer::contribution_rank(
+          glm::dvec3(to_pixel, 0.0, 0.0), glm::dvec3(0.0, unshadowed, 0.0), ranks.size() % 3));
+    }
+  }
+  const auto before = renderer::ranks_before;
+  for (const auto& a : ranks) {
+    EXPECT_FALSE(before(a, a));
+    for (const auto& b : ranks) {
+      EXPECT_FALSE(before(a, b) && before(b, a));
+      for (const auto& c : ranks) {
+        if (before(a, b) && before(b, c)) {
+          EXPECT_TRUE(before(a, c));
+        }
+        // Incomparability is transitive too.
+        const bool ab = !before(a, b) && !before(b, a), bc = !before(b, c) && !before(c, b);
+        if (ab && bc) {
+          EXPECT_TRUE(!before(a, c) && !before(c, a));
+        }
+      }
+    }
+  }
+  const auto rank = [](double to_pixel, std::size_t order) {
+    return renderer::contribution_rank(glm::dvec3(to_pixel), glm::dvec3(0.0), order);
+  };
+  // Any NaN channel makes the row NaN, listed after every number; larger magnitudes first.
+  EXPECT_TRUE(before(rank(0.0, 5),
+                     renderer::contribution_rank(glm::dvec3(9.0, nan, 1.0), glm::dvec3(0.0), 0)));
+  EXPECT_TRUE(before(rank(inf, 5), rank(1.0, 0)));
+  EXPECT_TRUE(before(rank(-3.0, 5), rank(2.0, 0)));
+  EXPECT_TRUE(before(rank(2.0, 0), rank(2.0, 1)));  // ties in record order
+  EXPECT_TRUE(before(rank(nan, 0), rank(nan, 1)));
+}
+
+// A raised cancel flag stops the inspection before it records anything (the viewer's inspector
+// raises it for a new pixel, Clear or quitting, and discards what comes back).
+TEST(PixelInspection, ARaisedCancelStopsTheInspection) {
+  const ScenePair s("hall", 3);
+  const renderer::RenderSettings rs = settings_for(lev::Method::lev, 0.01f);
+  const auto selector = lev::make_selector(s.scene.lights, renderer::method_params(rs));
+  std::atomic<bool> cancel{false};
+  const renderer::PixelInspection whole =
+      renderer::inspect_pixel(s.scene, s.rays, rs, *selector, 12, 9, &cancel);
+  EXPECT_FALSE(whole.hits.empty());
+  cancel.store(true);
+  const renderer::PixelInspection stopped =
+      renderer::inspect_pixel(s.scene, s.rays, rs, *selector, 12, 9, &cancel);
+  EXPECT_TRUE(stopped.hits.empty());
 }
 
 }  // namespace

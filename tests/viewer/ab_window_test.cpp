@@ -6,9 +6,7 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,6 +19,7 @@
 #include "tests/support/png_file.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
+#include "tests/support/trade_report.h"
 #include "tests/support/xvfb_server.h"
 
 namespace {
@@ -174,9 +173,6 @@ TEST_F(AbWindow, FlipSwipeDifferenceAndMaskDrawWhatTheyCompare) {
   EXPECT_GT(masked, 0);
 }
 
-// The statistics pane may grow a row when the method changes, which moves the picture: this
-// part runs apart from the screenshots above, which read the picture where the controls file
-// last saw it.
 TEST_F(AbWindow, AMethodChangeKeepsTheReferenceAndTheTradePlot) {
   if (!levrt_test::have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
@@ -196,21 +192,7 @@ TEST_F(AbWindow, AMethodChangeKeepsTheReferenceAndTheTradePlot) {
   ASSERT_EQ(view.exit_code, 0) << view.output;
   // The method change kept the reference (same generation, its passes done) and the plot, which
   // now holds both methods, each error over both passes.
-  // "trade plot at frame F: N points, reference G, rt passes P" (no <regex>: GCC 12's warns).
-  struct Report {
-    int frame = 0, points = 0, passes = 0;
-    unsigned long long reference = 0;
-  };
-  std::vector<Report> reports;
-  std::istringstream lines(view.output);
-  for (std::string line; std::getline(lines, line);) {
-    Report r;
-    if (std::sscanf(line.c_str(),
-                    "levrt view: trade plot at frame %d: %d points, reference %llu, rt passes %d",
-                    &r.frame, &r.points, &r.reference, &r.passes) == 4) {
-      reports.push_back(r);
-    }
-  }
+  const std::vector<levrt_test::TradeReport> reports = levrt_test::trade_reports(view.output);
   ASSERT_EQ(reports.size(), 2u) << view.output;
   EXPECT_EQ(reports[0].points, 1) << view.output;
   EXPECT_EQ(reports[1].points, 2) << view.output;

@@ -108,7 +108,7 @@ TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
   EXPECT_EQ(after["exposure_ev"], 1.5);
   EXPECT_EQ(after["display"], "neutral");
   // The same render: no pass was added, none restarted.
-  for (const char* key : {"spp", "time_render_s", "time_refit_s", "shading_points"})
+  for (const char* key : {"spp", "time_render_s", "time_setup_s", "shading_points"})
     EXPECT_EQ(before[key], after[key]) << key;
   // The snapshot's EXR holds the radiance, the same before and after the re-map.
   const levrt_test::ExrFile exr_before =

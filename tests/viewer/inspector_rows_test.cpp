@@ -1,7 +1,8 @@
 // The inspector's rows and overlays (app/viewer/inspector_rows.h): rows over every hit, largest
 // contribution first and cut to the number asked, every light of an inspection among them when
 // none is cut; a light's extent radius as LEV culls by it; and its outline projected where the
-// camera sees it (a sphere's around the light's own projection), nothing behind the camera.
+// camera sees it (a sphere's around the light's own projection), nothing behind the camera; NaN
+// and infinite values ordered, NaN last.
 #include <algorithm>
 #include <cmath>
 
@@ -11,6 +12,7 @@
 #include "lev/methods.h"
 #include "renderer/ray_scene.h"
 #include "scenes/scene_models.h"
+#include "tests/support/odd_inspection.h"
 
 namespace {
 
@@ -68,6 +70,23 @@ TEST(InspectorRows, ExtentOutlineSurroundsTheLightWhereTheCameraSeesIt) {
   const lev::Light spot =
       lev::make_spot_light({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, -1.0f}, glm::vec3(0.04f), 0.5f, 1.0f);
   EXPECT_EQ(extent_outline(camera, 320, 240, spot, 0.01f).size(), 5u);  // rim and four lines
+}
+
+// NaN and infinite values (a broken light) are ordered, not undefined behaviour: largest first,
+// NaN last, ties in record order; the cut keeps the head of that order.
+TEST(InspectorRows, NanAndInfiniteContributionsAreOrderedNanLast) {
+  const renderer::PixelInspection inspection = levrt_test::odd_inspection();
+  const std::vector<std::size_t> expected = levrt_test::odd_expected_order();
+  std::size_t all = 0;
+  const std::vector<InspectorRow> every = inspector_rows(inspection, expected.size() + 5, &all);
+  ASSERT_EQ(all, expected.size());
+  ASSERT_EQ(every.size(), expected.size());
+  for (std::size_t i = 0; i < every.size(); ++i)
+    EXPECT_EQ(static_cast<std::size_t>(every[i].light.position.x), expected[i]) << "row " << i;
+  const std::vector<InspectorRow> top = inspector_rows(inspection, 7);
+  ASSERT_EQ(top.size(), 7u);
+  for (std::size_t i = 0; i < top.size(); ++i)
+    EXPECT_EQ(static_cast<std::size_t>(top[i].light.position.x), expected[i]) << "row " << i;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // changes drop it, and shutting down mid-render is prompt. Labelled "threads" (runs under tsan).
 #include "app/viewer/render_worker.h"
 
+#include <array>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -311,6 +312,44 @@ TEST(RenderWorker, ShutsDownPromptlyMidRender) {
   ui.reset();
   // Only the tiles in flight finish (one each per worker thread).
   EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);
+}
+
+// The pinned pixel is inspected on a thread of its own, beside the render, which is not restarted
+// (a pixel is no setting); a new pixel replaces the inspection, Clear drops it, and one pinned just
+// before quitting does not hold the worker's shutdown.
+TEST(RenderWorker, ThePinnedPixelIsInspectedBesideTheRenderAndANewPixelReplacesIt) {
+  auto ui = std::make_unique<Ui>();
+  app::Settings s = small_settings();
+  s.spp = 1000;  // still rendering while the pixels are inspected
+  ViewRequest request = request_for(s);
+  request.inspect_pixel = std::array<int, 2>{10, 12};
+  const std::uint64_t generation = ui->worker.post(request);
+  const auto inspected = [&](int x, int y) {
+    const auto& view = ui->status.inspection;
+    return view && view->x == x && view->y == y && view->generation == generation &&
+           !ui->status.inspection_pending;
+  };
+  ASSERT_TRUE(ui->run_until([&] { return inspected(10, 12); }));
+  EXPECT_GT(ui->status.inspection->all_rows, 0u);
+  EXPECT_FALSE(ui->status.inspection->rows.empty());
+  request.inspect_pixel = std::array<int, 2>{30, 5};
+  ui->worker.post(request);
+  ASSERT_TRUE(ui->run_until([&] { return inspected(30, 5); }));
+  EXPECT_EQ(ui->status.generation, generation);  // the render went on
+  request.inspect_pixel.reset();
+  const std::uint64_t cleared = ui->worker.post(request);
+  ASSERT_TRUE(ui->run_until([&] { return ui->status.request_serial >= cleared; }));
+  EXPECT_EQ(ui->status.inspection, nullptr);
+  EXPECT_FALSE(ui->status.inspection_pending);
+  // A pixel outside the image has nothing to inspect, and nothing stays pending.
+  request.inspect_pixel = std::array<int, 2>{s.width, 0};
+  const std::uint64_t outside = ui->worker.post(request);
+  ASSERT_TRUE(ui->run_until([&] { return ui->status.request_serial >= outside; }));
+  EXPECT_EQ(ui->status.inspection, nullptr);
+  EXPECT_FALSE(ui->status.inspection_pending);
+  request.inspect_pixel = std::array<int, 2>{1, 1};
+  ui->worker.post(request);
+  ui.reset();  // quits with the inspection pending or running
 }
 
 }  // namespace

@@ -30,6 +30,7 @@
 #include "tests/support/run_command.h"
 #include "tests/support/signal_process.h"
 #include "tests/support/slow_gltf.h"
+#include "tests/support/trade_report.h"
 #include "tests/support/xvfb_server.h"
 
 namespace {
@@ -593,8 +594,9 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   const nlohmann::json b = read_json(path("headless_stats.json"));
   ASSERT_FALSE(a.is_discarded() || b.is_discarded());
   for (const char* key :
-       {"lights", "method", "tolerance", "width", "height", "spp", "shading_points", "shadow_rays",
-        "lights_tested_avg", "lights_tested_max", "nodes_visited_avg", "hierarchy_bytes"}) {
+       {"lights", "method", "tolerance", "relative_error", "light_samples", "width", "height",
+        "spp", "shading_points", "shadow_rays", "lights_tested_avg", "lights_tested_max",
+        "nodes_visited_avg", "hierarchy_bytes"}) {
     ASSERT_TRUE(a.contains(key) && b.contains(key)) << key;
     EXPECT_EQ(a[key], b[key]) << key;
   }
@@ -726,6 +728,50 @@ TEST_F(ViewerWindow, TheFitResolutionFollowsTheImageArea) {
   EXPECT_EQ(half["width"].get<int>(), area_width / 2);
   EXPECT_EQ(half["height"].get<int>(), area_height / 2);
   EXPECT_EQ(c["settings"]["resolution"], "fit/2");
+}
+
+// A layout change never restarts a render: at a fit resolution the render's size follows the
+// window alone. lev -> ast adds what the statistics show (ast's method memory), which used to
+// grow the statistics pane by a row, shrink the picture and so restart the render, the rt
+// reference and the trade plot. Small and cheap: 16 lights, one pass.
+TEST_F(ViewerWindow, AMethodChangeKeepsTheFitSizeTheReferenceAndTheTradePlot) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--lights", "16", "--spp", "1", "--method", "lev", "--window", "900x640",
+      "--frames", "8",
+      "--set", "reference=on@0",
+      "--set", "await=idle@1",
+      "--set", "snapshot=" + path("lev") + "@2",
+      "--set", "trade=report@3",
+      "--set", "method=ast@4",
+      "--set", "await=idle@5",
+      "--set", "snapshot=" + path("ast") + "@6",
+      "--set", "trade=report@7",
+  });
+  // clang-format on
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto stats = [&](const char* folder) {
+    for (const auto& entry : fs::directory_iterator(dir_ / folder)) {
+      const std::string name = entry.path().filename().string();
+      if (name.find("_stats.json") != std::string::npos) return read_json(entry.path());
+    }
+    return nlohmann::json();
+  };
+  const nlohmann::json lev = stats("lev"), ast = stats("ast");
+  ASSERT_TRUE(lev.is_object() && ast.is_object()) << r.output;
+  EXPECT_EQ(lev["method"], "lev");
+  EXPECT_EQ(ast["method"], "ast");
+  EXPECT_EQ(ast["width"], lev["width"]) << r.output;
+  EXPECT_EQ(ast["height"], lev["height"]) << r.output;
+  // The same reference, never restarted, and the plot holds both methods.
+  const std::vector<levrt_test::TradeReport> reports = levrt_test::trade_reports(r.output);
+  ASSERT_EQ(reports.size(), 2u) << r.output;
+  EXPECT_NE(reports[0].reference, 0u) << r.output;
+  EXPECT_EQ(reports[1].reference, reports[0].reference) << r.output;
+  EXPECT_EQ(reports[0].points, 1) << r.output;
+  EXPECT_EQ(reports[1].points, 2) << r.output;
 }
 
 }  // namespace

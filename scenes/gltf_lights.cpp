@@ -1,0 +1,92 @@
+#include "scenes/gltf_lights.h"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "scenes/gltf_refusal.h"
+
+namespace scenes {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+void check_gltf_lights(const tinygltf::Model& model, const std::string& path) {
+  for (std::size_t i = 0; i < model.lights.size(); ++i) {
+    const tinygltf::Light& light = model.lights[i];
+    const std::string where = "lights[" + std::to_string(i) + "]";
+    if (!std::isfinite(light.intensity) || light.intensity < 0.0) {
+      fail_gltf(path, where + ".intensity", gltf_number_text(light.intensity));
+    }
+    if (!std::isfinite(light.range) || light.range < 0.0)
+      fail_gltf(path, where + ".range", gltf_number_text(light.range));
+    if (!light.color.empty() && light.color.size() != 3) {
+      fail_gltf(path, where + ".color", std::to_string(light.color.size()) + " components");
+    }
+    for (const double c : light.color) {
+      if (!std::isfinite(c) || c < 0.0) fail_gltf(path, where + ".color", gltf_number_text(c));
+    }
+    if (light.type == "spot") {
+      const double inner = light.spot.innerConeAngle;
+      const double outer = light.spot.outerConeAngle;
+      // The extension: 0 <= inner < outer <= PI/2.
+      if (!std::isfinite(outer) || !(outer > 0.0) || outer > kPi / 2.0) {
+        fail_gltf(path, where + ".spot.outerConeAngle", gltf_number_text(outer));
+      }
+      if (!std::isfinite(inner) || inner < 0.0 || inner >= outer) {
+        fail_gltf(path, where + ".spot.innerConeAngle", gltf_number_text(inner));
+      }
+    } else if (light.type != "point" && light.type != "directional") {
+      fail_gltf(path, where + ".type", "'" + light.type + "'");
+    }
+  }
+}
+
+int gltf_light_of(const tinygltf::Model& model, const tinygltf::Node& node, const std::string& path,
+                  const std::string& where) {
+  const auto ext = node.extensions.find("KHR_lights_punctual");
+  if (ext == node.extensions.end()) return -1;
+  const tinygltf::Value& index = ext->second.Get("light");
+  if (!index.IsNumber())
+    fail_gltf(path, where + ".extensions.KHR_lights_punctual.light", "missing");
+  const double value = index.GetNumberAsDouble();
+  if (!(value >= 0.0) || value >= static_cast<double>(model.lights.size()) ||
+      value != std::floor(value)) {
+    fail_gltf(path, where + ".extensions.KHR_lights_punctual.light", gltf_number_text(value));
+  }
+  return static_cast<int>(value);
+}
+
+SceneNode gltf_light_node(const tinygltf::Light& light, const glm::vec3& intensity,
+                          const glm::dvec3& position, const glm::dvec3& direction) {
+  Affine place;
+  place.translate = glm::vec3(position);
+  // The rotation carrying levrt's spot axis -Z onto the light's world direction.
+  const glm::dvec3 axis = glm::cross(glm::dvec3(0.0, 0.0, -1.0), direction);
+  const double cosine = glm::clamp(-direction.z, -1.0, 1.0);
+  if (glm::length(axis) > 1e-12) {
+    place.rotate_axis = glm::vec3(glm::normalize(axis));
+    place.rotate_degrees = static_cast<float>(std::acos(cosine) * 180.0 / kPi);
+  } else if (cosine < 0.0) {
+    place.rotate_axis = {1.0f, 0.0f, 0.0f};
+    place.rotate_degrees = 180.0f;
+  }
+  // The extension: range 0 or absent is infinite.
+  const float range =
+      light.range > 0.0 ? static_cast<float>(light.range) : std::numeric_limits<float>::infinity();
+  if (light.type == "point") {
+    SceneNode node = point_light_node(intensity);
+    std::get<PointLightSource>(node.data).range = range;
+    return affine_node(place, std::move(node));
+  }
+  SceneNode node =
+      spot_light_node(intensity, static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi), 0.0f);
+  auto& spot = std::get<SpotLightSource>(node.data);
+  spot.range = range;
+  spot.inner_cone_degrees = static_cast<float>(light.spot.innerConeAngle * 180.0 / kPi);
+  return affine_node(place, std::move(node));
+}
+
+}  // namespace scenes
