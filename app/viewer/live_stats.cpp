@@ -88,7 +88,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   set_stats_from_settings(r, settings);
   r.directional_lights = status.directional_lights;
   r.build_seconds = status.build_seconds;
-  r.setup_seconds = status.refit_seconds;
+  r.setup_seconds = status.setup_seconds;
   r.render_seconds = s.render_seconds;
   r.pass_seconds = s.pass_seconds;
   r.totals = s.totals;

@@ -352,7 +352,7 @@ struct Worker {
     if (main_changed) {
       update_status([](WorkerStatus& st) { st.phase = WorkerPhase::preparing; });
       auto job = std::make_unique<renderer::RenderJob>(sc, *loaded->rays, rs);
-      const double refit_seconds = job->setup_seconds();
+      const double setup_seconds = job->setup_seconds();
       const int tiles = renderer::render_tile_count(job->state());
       const std::size_t method_bytes = renderer::render_selector(job->state()).bookkeeping_bytes();
       publish_main(std::move(job));
@@ -369,7 +369,7 @@ struct Worker {
         st.method = s.method;
         st.tolerance = s.tolerance;
         st.missed_samples = rs.missed_samples;
-        st.refit_seconds = refit_seconds;
+        st.setup_seconds = setup_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
         st.method_bytes = method_bytes;
         st.passes_done = 0;

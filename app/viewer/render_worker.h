@@ -79,7 +79,7 @@ struct WorkerStatus {
   lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
   int missed_samples = 0;      // the missed-light estimate's draws per point (0: off)
-  double refit_seconds = 0.0;  // making the render state: refit and selector
+  double setup_seconds = 0.0;  // making the render state: extent volumes and selector
   std::size_t method_bytes = 0;
   int passes_done = 0;
   int passes_target = 0;

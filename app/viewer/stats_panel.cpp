@@ -123,7 +123,7 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
     row("method memory", "%s", bytes_text(st.method_bytes).c_str());
   else
     row("method memory", "none besides the hierarchy");
-  row("build / refit", "%.3f s / %.4f s", st.build_seconds, st.refit_seconds);
+  row("build / set-up", "%.3f s / %.4f s", st.build_seconds, st.setup_seconds);
   if (s.error_bound) {
     row("error bound", "%.4f%% avg, %.3f%% max", s.error_bound->average_pct,
         s.error_bound->max_pct);

@@ -1,7 +1,8 @@
 // The pixel inspector in the real viewer window under Xvfb, in scripted mode: `inspect=X,Y`
 // opens the inspector window and marks the top contributors on the
 // image in the marker colour, which no other drawing uses; selecting a row (`inspect_row=N`) adds
-// its extent volume's outline; `inspect=off` clears it all. Skipped only when Xvfb is missing.
+// its extent volume's outline; `inspect=off` clears it all; pixels pinned, changed and cleared
+// frame after frame, one pending at exit, end with exit 0. Skipped only when Xvfb is missing.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -70,6 +71,27 @@ TEST(InspectorWindow, ScriptedInspectOpensThePanelAndMarksTheTopContributors) {
   EXPECT_GT(differences(before, pinned), 1000) << "no inspector window";
   EXPECT_GT(differences(pinned, row), 20) << "no extent outline for the selected row";
   EXPECT_EQ(marker_pixels(cleared), 0);
+}
+
+// Pinning pixels frame after frame, changing the method and clearing while an inspection may
+// still run, then quitting with one pending: each replaces or cancels the last, and the session
+// ends with exit 0 (a pending inspection does not hold the exit).
+TEST(InspectorWindow, InspectionsReplacedClearedAndPendingAtExitEndWithExitZero) {
+  if (!levrt_test::have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  // clang-format off
+  const levrt_test::CommandRun run = levrt_test::run_viewer_on_xvfb({
+      "--scene", "hall", "--lights", "4096", "--width", "64", "--height", "48", "--spp", "4",
+      "--window", "800x600", "--frames", "6",
+      "--set", "inspect=32,24@1",
+      "--set", "inspect=10,40@2",
+      "--set", "method=lightcuts@3",
+      "--set", "inspect=off@3",
+      "--set", "inspect=50,5@4",
+      "--set", "inspect=20,20@5",
+  });
+  // clang-format on
+  EXPECT_EQ(run.exit_code, 0) << run.output;
 }
 
 TEST(InspectorWindow, BadInspectValuesAreRefusedWithOneLine) {

@@ -1,0 +1,209 @@
+// The real viewer window refusing what it must refuse and writing only where it may: no display,
+// bad scripted changes, scripts and outputs that are devices or inputs, writers that write a
+// device in place, a snapshot that cannot be written, a full device, a signal during the scene
+// load. Each exits with its code and one line, and leaves the folder as it was.
+#include "tests/support/viewer_window.h"
+
+namespace {
+
+using namespace levrt_test;  // the shared fixture and helpers (tests/support/viewer_window.h)
+
+TEST_F(ViewerWindow, WithoutADisplayExitsTwoNamingTheHeadlessRoute) {
+  const CommandRun r =
+      run_shell("env -u DISPLAY -u WAYLAND_DISPLAY " + shell_quote(LEVRT_BINARY) + " view");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("levrt render"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("display"), std::string::npos) << r.output;
+}
+
+TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
+  for (const char* change :
+       {"tolerance=abc@3", "view=sideways@1", "colour=red@2", "method=lev", "ab=x@0", "swipe=2@0",
+        "swipe=nan@0", "mask_threshold=-1@0", "mask_threshold=nan@0", "range_lock=maybe@0"}) {
+    const CommandRun r = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
+                                   " view --frames 3 --set " + shell_quote(change));
+    EXPECT_EQ(r.exit_code, 2) << change << ": " << r.output;
+    EXPECT_NE(r.output.find("--set"), std::string::npos) << r.output;
+  }
+  const CommandRun r =
+      run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view --window 10x10");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+TEST_F(ViewerWindow, AScriptThatIsNotASmallRegularFileIsRefusedBeforeItIsRead) {
+  const CommandRun device = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
+                                      " view --frames 1 --script /dev/zero");
+  EXPECT_EQ(device.exit_code, 2) << device.output;
+  EXPECT_EQ(line_count(device.output), 1) << device.output;
+  EXPECT_NE(device.output.find("--script: is not a regular file"), std::string::npos)
+      << device.output;
+  const std::string big = path("big.txt");
+  fs::resize_file((std::ofstream(big), big), (std::uintmax_t{16} << 20) + 1);
+  const CommandRun large = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) +
+                                     " view --frames 1 --script " + shell_quote(big));
+  EXPECT_EQ(large.exit_code, 2) << large.output;
+  EXPECT_EQ(line_count(large.output), 1) << large.output;
+  EXPECT_NE(large.output.find("more than the 16 MiB a script may have"), std::string::npos)
+      << large.output;
+}
+
+TEST_F(ViewerWindow, AnOutputThatIsAnInputOrAnotherOutputIsRefusedBeforeTheWindowOpens) {
+  std::ofstream(path("script.txt")) << "await=idle@0\n";
+  std::ofstream(path("scene.json")) << "{}";
+  const auto before = files_in(dir_);
+  const std::vector<std::vector<std::string>> cases = {
+      {"--script", path("script.txt"), "--controls", path("script.txt")},
+      {"--scene", path("scene.json"), "--controls", path("scene.json")},
+      {"--screenshot", path("a.png"), "--set", "screenshot=" + dir_.string() + "/./a.png@1"},
+      {"--controls", path("c.json"), "--screenshot", path("c.json")},
+  };
+  for (const auto& args : cases) {
+    std::vector<std::string> all = {"--frames", "2"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::string command = "env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view";
+    for (const std::string& a : all) command += " " + shell_quote(a);
+    const CommandRun r = run_shell(command);
+    EXPECT_EQ(r.exit_code, 2) << args[1] << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_EQ(files_in(dir_), before) << args[1];
+  }
+}
+
+TEST_F(ViewerWindow, EveryWriterWritesADeviceInPlace) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  struct stat null_before {
+  }, zero_before{};
+  ASSERT_EQ(::stat("/dev/null", &null_before), 0);
+  ASSERT_EQ(::stat("/dev/zero", &zero_before), 0);
+  // The snapshot's image file is a pipe that a reader drains: written in place, still a pipe.
+  fs::create_directories(dir_ / "snap");
+  const fs::path pipe = dir_ / "snap" / "view_building_64_lev_0.01.png";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  const fs::path received = dir_ / "received.png";
+  std::thread reader([&] {
+    run_shell("timeout 120 cat " + shell_quote(pipe.string()) + " > " +
+              shell_quote(received.string()));
+  });
+  // clang-format off
+  const CommandRun r = run_viewer({
+      "--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--window", "800x600",
+      "--frames", "3", "--screenshot", "/dev/zero", "--controls", "/dev/null",
+      "--set", "snapshot=" + path("snap") + "@1",
+  });
+  // clang-format on
+  reader.join();
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  expect_same_device("/dev/null", null_before);
+  expect_same_device("/dev/zero", zero_before);
+  EXPECT_TRUE(fs::is_fifo(pipe));
+  EXPECT_TRUE(read_png(received).ok()) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "snap" / "view_building_64_lev_0.01_stats.json")) << r.output;
+}
+
+TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  std::ofstream(path("broken.json")) << R"({"levrt_scene": 1, "camera": 5})";
+  const std::vector<std::vector<std::string>> cases = {
+      {"--scene", path("missing.json")},
+      {"--scene", path("broken.json")},
+      {"--scene", "building", "--level", "99"},
+      {"--width", "16384", "--height", "16384"},
+  };
+  const auto before = files_in(dir_);
+  for (const auto& scene : cases) {
+    std::vector<std::string> args = scene;
+    for (const std::string& a : std::vector<std::string>{
+             "--frames", "3", "--window", "800x600", "--screenshot", path("shot.png"), "--controls",
+             path("controls.json"), "--set", "snapshot=" + path("snap") + "@1", "--set",
+             "screenshot=" + path("early.png") + "@0"}) {
+      args.push_back(a);
+    }
+    const CommandRun r = run_viewer(args);
+    EXPECT_EQ(r.exit_code, 2) << scene[1] << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_EQ(files_in(dir_), before) << scene[1] << ": " << r.output;
+  }
+}
+
+// A scene file opened while the viewer runs (a simulated drop, then the scene control as typed
+// into the path field): the good one loads and renders; the bad one keeps the good scene on
+// screen, the session goes on (exit 0), and its message is logged whole: the same line
+
+TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  std::ofstream(path("file.txt")) << "a file, not a folder";
+  const auto before = files_in(dir_);
+  // One pass: the snapshot waits for the whole render, whose size does not matter here.
+  const CommandRun r =
+      run_viewer({"--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--frames",
+                  "3", "--set", "snapshot=" + path("file.txt") + "/snap@1"});
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("snapshot failed"), std::string::npos) << r.output;
+  EXPECT_EQ(files_in(dir_), before);
+}
+
+// Without await=idle the snapshot waits for the render: all passes of it, not the preview.
+TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const CommandRun r =
+      run_viewer({"--lights", "256", "--width", "96", "--height", "64", "--spp", "3", "--window",
+                  "800x600", "--frames", "1", "--set", "snapshot=" + path("snap") + "@0"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json stats = read_json(dir_ / "snap" / "view_building_256_lev_0.01_stats.json");
+  ASSERT_TRUE(stats.is_object()) << r.output;
+  EXPECT_EQ(stats["spp"], 3);
+}
+
+// As root a rename would replace the machine's /dev/full; written in place it reports ENOSPC
+// and the viewer exits 1.
+TEST_F(ViewerWindow, AFullDeviceAsTheControlsFileIsWrittenInPlaceAndExitsOne) {
+  if (::geteuid() != 0 || !fs::is_character_file("/dev/full"))
+    GTEST_SKIP() << "needs root and /dev/full: the test writes the device itself";
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const XvfbServer xvfb;
+  ASSERT_FALSE(xvfb.display().empty());
+  struct stat full_before {};
+  ASSERT_EQ(::stat("/dev/full", &full_before), 0);
+  const CommandRun full =
+      run_shell("DISPLAY=" + xvfb.display() +
+                " ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " + shell_quote(LEVRT_BINARY) +
+                " view --lights 64 --width 64 --height 48 --frames 3 --controls /dev/full");
+  EXPECT_EQ(full.exit_code, 1) << full.output;
+  EXPECT_NE(full.output.find("No space left on device"), std::string::npos) << full.output;
+  expect_same_device("/dev/full", full_before);
+}
+
+// Ctrl-C while the viewer's worker loads a scene that takes seconds (tests/support/slow_gltf.h):
+// the viewer exits 130 promptly (the load stops at its next step, or the load watchdog ends it),
+// with no screenshot written.
+TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const XvfbServer xvfb;
+  ASSERT_FALSE(xvfb.display().empty());
+  ::setenv("DISPLAY", xvfb.display().c_str(), 1);
+  // As run_viewer_on_xvfb does: LeakSanitizer's exit-time scan (and its report of Mesa's one-off
+  // allocations) is no part of how promptly the viewer exits.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":detect_leaks=0").c_str(), 1);
+  const fs::path scene = levrt_test::write_slow_loading_gltf(dir_);
+  fs::create_directories(dir_ / "out");
+  for (int sig : {SIGINT, SIGTERM}) {
+    EXPECT_EQ(levrt_test::interrupt_after(
+                  {LEVRT_BINARY, "view", "--scene", scene.string(), "--window", "800x600",
+                   "--frames", "5", "--screenshot", path("out/shot.png")},
+                  sig, std::chrono::milliseconds(800), std::chrono::seconds(2)),
+              130)
+        << "signal " << sig;
+    EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "signal " << sig;
+  }
+}
+
+}  // namespace
