@@ -100,6 +100,10 @@ struct SelectorScratch {
   // lev/inspect_record.h), with walk.inspect the same: the method records there what it shaded,
   // culled and clustered. Null in renders.
   InspectRecord* inspect = nullptr;
+  // Set by the caller for one call, with culled_irradiance_bound: a method that bounds the
+  // unshadowed radiance of what it left out at the point's own surface (CulledRadianceBound,
+  // important_lights.h; `lev`) answers there; the others leave it unanswered (bounded false).
+  CulledRadianceBound* culled_radiance = nullptr;
 };
 
 class LightSelector {

@@ -23,6 +23,17 @@ glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_
   return bound;
 }
 
+glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound,
+                              const lev::CulledRadianceBound& culled_radiance) {
+  glm::vec3 bound = shading_error_bound(material, culled_irradiance_bound);
+  if (!culled_radiance.bounded) return bound;
+  for (int c = 0; c < 3; ++c) {
+    // NaN-safe: only a radiance bound known to be smaller replaces the other.
+    if (culled_radiance.bound[c] < bound[c]) bound[c] = culled_radiance.bound[c];
+  }
+  return bound;
+}
+
 double error_bound_pct(const glm::vec3& mean_bound) {
   double sum = 0.0;
   // A NaN bound would say nothing: it counts as the largest error a channel can have.

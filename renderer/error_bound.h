@@ -16,6 +16,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lev/important_lights.h"
 #include "renderer/framebuffer.h"
 #include "renderer/material.h"
 #include "renderer/pixel_error.h"
@@ -31,6 +32,12 @@ glm::vec3 largest_response(const Material& material);
 // irradiance bound (RGB): the bound times the largest response. A channel the material does not
 // reflect at all bounds nothing, even when the irradiance bound is infinite (never inf * 0).
 glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound);
+// The same, with the selector's bound of the culled radiance at the surface itself when it gave
+// one (CulledRadianceBound, `lev`): per channel the smaller of the two, both upper bounds of the
+// same error. The radiance bound counts each culled part's place around the surface (behind it,
+// grazing, outside a narrow specular lobe), which the largest response cannot.
+glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound,
+                              const lev::CulledRadianceBound& culled_radiance);
 
 // A pixel's bound on the error scale (docs/design.md, "Metrics"): sum over channels of
 // min(bound_c, 1) * 255, as a percentage of 765. mean_bound is the pixel's bound per sample

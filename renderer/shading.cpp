@@ -152,9 +152,13 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   if (context.compute_error_bound) {
     // The direct term is weighed by path_weight in the pixel, so is what it may miss.
     glm::vec3 culled_irradiance(0.0f);
+    lev::CulledRadianceBound culled_radiance;
+    context.scratch.culled_radiance = &culled_radiance;
     direct = context.selector.direct_radiance(point, context.scratch, counters.selection,
                                               &culled_irradiance);
-    hit_error_bound = path_weight * shading_error_bound(material, culled_irradiance);
+    context.scratch.culled_radiance = nullptr;
+    hit_error_bound =
+        path_weight * shading_error_bound(material, culled_irradiance, culled_radiance);
     counters.error_bound += hit_error_bound;
   } else {
     direct = context.selector.direct_radiance(point, context.scratch, counters.selection);

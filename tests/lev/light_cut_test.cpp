@@ -12,51 +12,13 @@
 #include "lev/light_cut.h"
 #include "lev/light_cut_tree.h"
 #include "lev/light_selector.h"
+#include "tests/lev/phong_point.h"
 #include "tests/lev/random_light_scenes.h"
 
 namespace {
 
+using lev_test::PhongPoint;
 using lev_test::Random;
-
-// A Phong surface (shading.cpp's response, thesis eq. 6) whose shadow rays are blocked for a
-// fixed pseudo-random half of the light positions.
-class PhongPoint final : public lev::ShadingPoint {
- public:
-  PhongPoint(const glm::vec3& x, const glm::vec3& normal, const glm::vec3& to_viewer,
-             const glm::vec3& diffuse, float specular, float shininess)
-      : x_(x), normal_(normal), to_viewer_(to_viewer) {
-    surface_.normal = normal;
-    surface_.mirrored_view = 2.0f * glm::dot(normal, to_viewer) * normal - to_viewer;
-    surface_.diffuse = diffuse;
-    surface_.specular = specular;
-    surface_.shininess = shininess;
-  }
-  glm::vec3 position() const override { return x_; }
-  glm::vec3 normal() const override { return normal_; }
-  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
-    const glm::vec3 to_light = light.position - x_;
-    const float d2 = glm::dot(to_light, to_light);
-    if (!(d2 > 0.0f)) return glm::vec3(0.0f);
-    const glm::vec3 l = to_light / std::sqrt(d2);
-    const float cos_theta = glm::dot(normal_, l);
-    if (cos_theta <= 0.0f) return glm::vec3(0.0f);
-    glm::vec3 r = surface_.diffuse * cos_theta;
-    if (surface_.specular > 0.0f) {
-      const float cos_alpha = glm::dot(2.0f * cos_theta * normal_ - l, to_viewer_);
-      if (cos_alpha > 0.0f)
-        r += glm::vec3(surface_.specular * std::pow(cos_alpha, surface_.shininess));
-    }
-    return lev::irradiance(light, x_) * r;
-  }
-  bool visible(const lev::Light& light) override {
-    return (std::hash<float>()(light.position.x + 3.0f * light.position.y) & 1u) == 0;
-  }
-  lev::SurfaceResponse surface_response() const override { return surface_; }
-
- private:
-  glm::vec3 x_, normal_, to_viewer_;
-  lev::SurfaceResponse surface_;
-};
 
 PhongPoint random_point(Random& r) {
   const glm::vec3 x(r.uniform(-7, 7), r.uniform(-7, 7), r.uniform(-7, 7));

@@ -1,8 +1,9 @@
 // The error bound through the shading recursion (shading.cpp, error_bound.h): at every shading
-// point the selector's culled irradiance bound times the material's largest response, weighed by
-// kr and kt along the path exactly as the radiance is. Exact sums on a mirror and a glass slab,
-// and, on random rays through mirror and glass spheres, a method that drops half the lights is
-// never further from rt than its bound.
+// point the selector's culled irradiance bound times the material's largest response (or, per
+// channel, the selector's smaller culled radiance bound), weighed by kr and kt along the path
+// exactly as the radiance is. Exact sums on a mirror and a glass slab, and, on random rays
+// through mirror and glass spheres, a method that drops half the lights is never further from rt
+// than its bound.
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -129,6 +130,19 @@ TEST(ShadingErrorBound, AMaterialThatReflectsNothingBoundsNothingEvenWhenTheCull
   // On the error scale an infinite bound is the whole range, a channel at most 255 steps.
   EXPECT_DOUBLE_EQ(renderer::error_bound_pct(inf), 100.0);
   EXPECT_DOUBLE_EQ(renderer::error_bound_pct(glm::vec3(0.5f, 0.0f, 2.0f)), 50.0);
+}
+
+// A selector's culled radiance bound (CulledRadianceBound) replaces the irradiance route's in the
+// channels where it is smaller; unanswered, or NaN in a channel, it changes nothing there.
+TEST(ShadingErrorBound, TheSelectorsRadianceBoundReplacesTheLargerIrradianceRoutePerChannel) {
+  const renderer::Material wall = matte_wall();
+  const glm::vec3 route = renderer::largest_response(wall) * 2.0f;
+  lev::CulledRadianceBound radiance;
+  radiance.bound = {0.5f * route.x, 2.0f * route.y, std::nanf("")};
+  expect_near(renderer::shading_error_bound(wall, glm::vec3(2.0f), radiance), route);
+  radiance.bounded = true;
+  expect_near(renderer::shading_error_bound(wall, glm::vec3(2.0f), radiance),
+              {0.5f * route.x, route.y, route.z});
 }
 
 // The bench's per-pixel bounds follow rendered_rgb8's pixels (those with a sample, in order), and
