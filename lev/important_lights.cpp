@@ -1,3 +1,8 @@
+// The walk over the light hierarchy (important_lights.h). Over 600 lines on purpose: the walk is
+// one template instantiated for every method, and the helpers it calls per node and per light
+// (passes, visit_light, cull_subtree, cut_or_defer, the culled-bound bookkeeping) sit beside it so
+// that each instantiation inlines them; the brute-force references the tests compare it with stay
+// next to it, as lev/ keeps them.
 #include "lev/important_lights.h"
 
 #include <algorithm>
