@@ -17,6 +17,7 @@
 
 #include "app/bench/experiment_support.h"
 #include "lev/methods.h"
+#include "tests/support/folder_test.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -33,18 +34,7 @@ std::string first_line(const fs::path& path) {
   return text.substr(0, text.find('\n'));
 }
 
-class Bench : public ::testing::Test {
- protected:
-  void SetUp() override {
-    temp_ = std::make_unique<levrt_test::TempDir>(
-        "levrt_bench_" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
-    dir_ = temp_->path();
-  }
-  void TearDown() override { temp_.reset(); }
-  std::unique_ptr<levrt_test::TempDir> temp_;
-  fs::path dir_;
-};
+class Bench : public levrt_test::FolderTest {};
 
 TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
   const fs::path out = dir_ / "results";

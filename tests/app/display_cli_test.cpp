@@ -14,6 +14,7 @@
 #include "app/render_command.h"
 #include "app/scene_loading.h"
 #include "renderer/framebuffer.h"
+#include "tests/support/folder_test.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
@@ -24,20 +25,7 @@ using levrt_test::CommandRun;
 using levrt_test::read_file;
 using levrt_test::run_levrt;
 
-class DisplayCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_display_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class DisplayCli : public levrt_test::FolderTest {};
 
 // The PNG `levrt render` writes for building, maze, hall and a scene file at their defaults is the
 // PNG of the framebuffer's 8-bit image with no display step at all (framebuffer_rgb8): the

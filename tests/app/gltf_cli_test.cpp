@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/folder_test.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -25,19 +26,7 @@ namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::run_levrt;
 
-class GltfCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    temp_ = std::make_unique<levrt_test::TempDir>(
-        "levrt_gltf_cli_" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
-    dir_ = temp_->path();
-  }
-  void TearDown() override { temp_.reset(); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::unique_ptr<levrt_test::TempDir> temp_;
-  fs::path dir_;
-};
+class GltfCli : public levrt_test::FolderTest {};
 
 std::string gltf_with_light(const std::string& light) {
   return R"({"asset": {"version": "2.0"}, "extensions": {"KHR_lights_punctual": {"lights": [)" +

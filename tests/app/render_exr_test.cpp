@@ -12,6 +12,7 @@
 #include "app/render_command.h"
 #include "app/scene_loading.h"
 #include "tests/support/exr_file.h"
+#include "tests/support/folder_test.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
@@ -21,20 +22,7 @@ using levrt_test::CommandRun;
 using levrt_test::read_file;
 using levrt_test::run_levrt;
 
-class RenderExr : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_exr_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class RenderExr : public levrt_test::FolderTest {};
 
 TEST_F(RenderExr, WritesTheLinearRadianceAndEveryChannel) {
   const std::string exr = path("image.exr"), reference = path("rt.exr");

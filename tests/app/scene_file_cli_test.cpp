@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/folder_test.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -26,19 +27,7 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
-class SceneFileCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    temp_ = std::make_unique<levrt_test::TempDir>(
-        "levrt_scene_cli_" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
-    dir_ = temp_->path();
-  }
-  void TearDown() override { temp_.reset(); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::unique_ptr<levrt_test::TempDir> temp_;
-  fs::path dir_;
-};
+class SceneFileCli : public levrt_test::FolderTest {};
 
 TEST_F(SceneFileCli, ExportedFileRendersTheSamePngAndHierarchy) {
   for (const std::string scene : {"building", "maze", "hall"}) {

@@ -20,6 +20,7 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include "tests/support/folder_test.h"
 #include "tests/support/gltf_files.h"
 #include "tests/support/png_file.h"
 #include "tests/support/run_command.h"
@@ -90,21 +91,7 @@ inline int not_rendered_pixels(const Png& png) {
   return count;
 }
 
-class ViewerWindow : public ::testing::Test {
- protected:
-  void SetUp() override {
-    // The pid keeps concurrent runs (other build folders, ctest -j) apart.
-    dir_ = fs::temp_directory_path() /
-           ("levrt_view_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class ViewerWindow : public levrt_test::FolderTest {};
 
 inline long line_count(const std::string& text) {
   return std::count(text.begin(), text.end(), '\n');

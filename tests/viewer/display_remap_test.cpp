@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/exr_file.h"
+#include "tests/support/folder_test.h"
 #include "tests/support/png_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/xvfb_server.h"
@@ -58,20 +59,7 @@ fs::path file_ending(const fs::path& folder, const std::string& suffix) {
   return {};
 }
 
-class DisplayRemap : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("levrt_remap_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class DisplayRemap : public levrt_test::FolderTest {};
 
 TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
   if (!have_xvfb())
