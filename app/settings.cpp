@@ -273,6 +273,14 @@ Restart restart_needed(const Settings& before, const Settings& after) {
   renderer::ImageSettings render = after.image;
   render.spp = before.image.spp;
   if (render != before.image || before.method != after.method) return Restart::render;
+  // The tolerance (and lev_cut's drop) is in displayed units: a method that reads the display
+  // scale renders other images at another exposure. Its radiance is all the rt reference and
+  // the display curve depend on, so they go on. The auto flag by itself changes nothing: the
+  // EV it chose is exposure_ev.
+  if (renderer::exposure_scale(before.display.exposure_ev) !=
+          renderer::exposure_scale(after.display.exposure_ev) &&
+      lev::method_info(after.method.method).reads_display_scale)
+    return Restart::render;
   if (before.image != after.image) return Restart::passes;
   return Restart::nothing;
 }

@@ -26,7 +26,9 @@ inline constexpr int kMaxImageSide = 16384;
 // curve. exposure_auto: the EV is chosen before the first pass (renderer/auto_exposure.h) and
 // exposure_ev is then what it chose. Built-in scenes and scene files default to linear at EV 0
 // (the images levrt always wrote); glTF files to auto and neutral
-// (apply_scene_display_defaults). It never restarts a render: the viewer re-maps what it holds.
+// (apply_scene_display_defaults). The tolerance is in these exposed units, so a new scale
+// (2^EV) restarts the render of a method that reads it (lev::MethodInfo::reads_display_scale);
+// otherwise, and for a new curve, the viewer re-maps what it holds.
 struct DisplaySettings {
   double exposure_ev = 0.0;
   bool exposure_auto = false;
@@ -48,7 +50,8 @@ struct Settings {
 
 // What a change of the settings makes the renders redo, least first.
 enum class Restart {
-  nothing,  // the display or the viewer's sizing rule changed: the viewer re-maps its pixels
+  nothing,  // the display (but the exposure of a method that reads it) or the viewer's sizing
+            // rule changed: the viewer re-maps its pixels
   passes,   // only the pass count: the render goes on towards the new count
   render,   // the method's render starts again; the rt reference of the same view goes on
   view,     // every render of the view starts again, the rt reference too
@@ -58,7 +61,8 @@ enum class Restart {
 // Derived from which group changed, each group comparing itself (so a setting the current scene
 // or method does not read restarts nothing): the scene choice reloads; an image setting restarts
 // the view, but for those only the method's render reads (threads, the missed-light draws: the
-// render) and the pass count (passes); the method choice restarts the render. A member added to
+// render) and the pass count (passes); the method choice restarts the render, and so does the
+// exposure for a method whose images depend on it (DisplaySettings). A member added to
 // a group restarts the view or the scene without an edit here.
 Restart restart_needed(const Settings& before, const Settings& after);
 

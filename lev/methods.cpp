@@ -109,7 +109,7 @@ std::vector<MethodInfo> built_in_rows() {
        "times one 8-bit step), what they keep cut into clusters whose error bound is below the "
        "relative error (--relative-error) times the point's running total; one shadow ray per "
        "cluster",
-       kUsesRelativeError,
+       kUsesRelativeError | kReadsDisplayScale,
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevCutSelector>(h, p.relative_error, p.display_scale);
@@ -153,6 +153,7 @@ MethodInfo::MethodInfo(Method id_, const char* name_, const char* label_, const 
       is_reference((traits & kIsReference) != 0),
       samples((traits & kSamples) != 0),
       scans_every_light((traits & kScansEveryLight) != 0),
+      reads_display_scale((traits & (kUsesTolerance | kReadsDisplayScale)) != 0),
       bench_tolerances(std::move(bench_tolerances_)),
       make_selector(make_selector_) {}
 

@@ -94,6 +94,9 @@ enum MethodTrait : unsigned {
   kIsReference = 1u << 2,        // exact: what every other method's errors are measured against
   kSamples = 1u << 3,            // draws from the per-sample random stream
   kScansEveryLight = 1u << 4,    // its time per point grows with the light count
+  // Reads MethodParams::display_scale beyond the tolerance (lev_cut's drop of what cannot reach
+  // the display); a method with kUsesTolerance reads it through scene_tolerance already.
+  kReadsDisplayScale = 1u << 5,
 };
 
 struct MethodInfo {
@@ -110,6 +113,9 @@ struct MethodInfo {
   bool is_reference;  // exact: the images every other method's pixel errors are measured against
   bool samples;       // draws from the per-sample random stream (images depend on the passes)
   bool scans_every_light;  // its time per point grows with the light count: the bench subsamples it
+  // Its images depend on the exposure (the tolerance, or a drop, in displayed units): a new
+  // exposure renders it again. rt's radiance, and every sampler's, do not depend on it.
+  bool reads_display_scale;
   // The trade experiment's sweep, largest first: of the tolerance, or of the relative error for a
   // method that uses that and not the tolerance (swept_setting).
   std::vector<double> bench_tolerances;

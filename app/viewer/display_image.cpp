@@ -24,14 +24,15 @@ int power_of_two_level(std::uint32_t n) {
   return level;
 }
 
-// Pixel i's mean colour over `samples` of its samples (all of them, or a power of two it has
+// Pixel i's mean radiance over `samples` of its samples (all of them, or a power of two it has
 // kept), or null when it has not kept that one.
-const std::uint8_t* mean_rgb_at(const DisplayImage& image, std::size_t i, std::uint32_t samples) {
-  if (samples == image.samples[i]) return &image.rgb[3 * i];
+const glm::vec3* mean_radiance_at(const DisplayImage& image, std::size_t i, std::uint32_t samples) {
+  if (samples == image.samples[i]) return &image.radiance[i];
   const auto level = static_cast<std::size_t>(power_of_two_level(samples));
-  if (level >= image.rgb_at_power_of_two.size() || image.rgb_at_power_of_two[level].empty())
+  if (level >= image.radiance_at_power_of_two.size() ||
+      image.radiance_at_power_of_two[level].empty())
     return nullptr;
-  return &image.rgb_at_power_of_two[level][3 * i];
+  return &image.radiance_at_power_of_two[level][i];
 }
 
 void start_generation(DisplayImage& image, std::uint64_t generation, int width, int height) {
@@ -44,7 +45,7 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
     image.rgb.assign(3 * n, 0);
     image.radiance.assign(n, glm::vec3(0.0f));
   }
-  image.rgb_at_power_of_two.clear();
+  image.radiance_at_power_of_two.clear();
   image.samples.assign(n, 0);
   image.lights_tested.assign(n, 0.0f);
   image.nodes_visited.assign(n, 0.0f);
@@ -99,10 +100,11 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       const std::uint32_t n = u.samples[k];
       if ((n & (n - 1)) == 0) {
         const auto level = static_cast<std::size_t>(power_of_two_level(n));
-        if (image.rgb_at_power_of_two.size() <= level) image.rgb_at_power_of_two.resize(level + 1);
-        std::vector<std::uint8_t>& at = image.rgb_at_power_of_two[level];
-        if (at.empty()) at.assign(3 * pixel_count(image), 0);
-        for (int c = 0; c < 3; ++c) at[3 * i + c] = u.rgb[3 * k + c];
+        if (image.radiance_at_power_of_two.size() <= level)
+          image.radiance_at_power_of_two.resize(level + 1);
+        std::vector<glm::vec3>& at = image.radiance_at_power_of_two[level];
+        if (at.empty()) at.assign(pixel_count(image), glm::vec3(0.0f));
+        at[i] = u.radiance[k];
       }
     }
   }
@@ -204,7 +206,8 @@ TileTotals sum_tile_totals(const DisplayImage& image) {
   return sum;
 }
 
-ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference) {
+ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference,
+                               float exposure_scale) {
   ErrorImage e;
   e.image_version = image.version;
   e.reference_version = reference.version;
@@ -220,12 +223,16 @@ ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& re
     if (m == 0 || r == 0) continue;
     // All passes when both have as many, else the most passes, a power of two, both kept.
     const std::uint32_t passes = m == r ? m : 1u << power_of_two_level(std::min(m, r));
-    const std::uint8_t* pa = mean_rgb_at(image, i, passes);
-    const std::uint8_t* pb = mean_rgb_at(reference, i, passes);
-    if (pa == nullptr || pb == nullptr) continue;
+    const glm::vec3* ra = mean_radiance_at(image, i, passes);
+    const glm::vec3* rb = mean_radiance_at(reference, i, passes);
+    if (ra == nullptr || rb == nullptr) continue;
     compared.push_back(i);
-    a.insert(a.end(), pa, pa + 3);
-    b.insert(b.end(), pb, pb + 3);
+    // Both exposed now, at one scale: the reference kept across an exposure change compares as
+    // a reference rendered at it (its radiance does not depend on the exposure).
+    a.resize(a.size() + 3);
+    b.resize(b.size() + 3);
+    renderer::display_rgb8(*ra, exposure_scale, renderer::DisplayCurve::linear, &a[a.size() - 3]);
+    renderer::display_rgb8(*rb, exposure_scale, renderer::DisplayCurve::linear, &b[b.size() - 3]);
     fewest = compared.size() == 1 ? passes : std::min(fewest, passes);
   }
   e.passes = static_cast<int>(fewest);

@@ -24,9 +24,9 @@ struct DisplayImage {
   std::uint64_t generation = 0;
   std::vector<std::uint8_t> rgb;    // latest mean colour, exposed linear 8-bit
   std::vector<glm::vec3> radiance;  // latest mean scene-linear radiance (shown)
-  // The mean colour after 1, 2, 4, ... samples (level L: 2^L), kept so that an error against a
-  // reference that is further along compares the same passes (compute_error_image).
-  std::vector<std::vector<std::uint8_t>> rgb_at_power_of_two;
+  // The mean radiance after 1, 2, 4, ... samples (level L: 2^L), kept so that an error against
+  // a reference that is further along compares the same passes (compute_error_image).
+  std::vector<std::vector<glm::vec3>> radiance_at_power_of_two;
   std::vector<std::uint32_t> samples;   // 0: not rendered yet in this generation
   std::vector<float> lights_tested;     // per sample
   std::vector<float> nodes_visited;     // per sample
@@ -80,7 +80,9 @@ TileTotals sum_tile_totals(const DisplayImage& image);
 // percent), over the pixels both have rendered, and the signed difference (dR+dG+dB of 765,
 // method - rt) the difference view shows. Each pixel compares the two means over the same
 // passes: all of them where both have as many, else the first 2^L, the most both have done (a
-// method changed while the reference went on starts again from one pass).
+// method changed while the reference went on starts again from one pass), both exposed at
+// `exposure_scale` (2^EV of the method's render: the reference's radiance does not depend on it,
+// so it is kept across an exposure change).
 struct ErrorImage {
   std::vector<float> pct;  // per pixel; negative where not comparable (yet)
   std::vector<float> difference_pct;
@@ -92,7 +94,8 @@ struct ErrorImage {
   std::uint64_t image_version = 0;
   std::uint64_t reference_version = 0;
 };
-ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference);
+ErrorImage compute_error_image(const DisplayImage& image, const DisplayImage& reference,
+                               float exposure_scale);
 
 // The colour of a heatmap pixel that no sample covers yet.
 extern const std::uint8_t kNotRenderedRgb[3];

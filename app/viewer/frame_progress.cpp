@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/view_table.h"
+#include "renderer/display_transform.h"
 
 namespace app::viewer {
 namespace {
@@ -61,18 +62,22 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
 }
 
 void update_error(ViewerState& state, ErrorClock& clock, Clock::time_point now, bool force) {
+  // The errors are in the displayed units: the exposure shown, which the method rendered at
+  // when its images depend on it (app::restart_needed).
+  const float exposure_scale = renderer::exposure_scale(state.settings.display.exposure_ev);
   if (clock.image_version == state.image.version &&
-      clock.reference_version == state.reference.version)
+      clock.reference_version == state.reference.version && clock.exposure_scale == exposure_scale)
     return;
   if (!force && seconds_between(clock.at, now) < kErrorSeconds) return;
   clock.image_version = state.image.version;
   clock.reference_version = state.reference.version;
+  clock.exposure_scale = exposure_scale;
   clock.at = now;
   clock.computed += 1;
   if (state.reference.generation == 0) {
     state.error = ErrorImage{};
   } else {
-    state.error = compute_error_image(state.image, state.reference);
+    state.error = compute_error_image(state.image, state.reference, exposure_scale);
   }
 }
 

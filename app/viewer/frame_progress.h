@@ -46,7 +46,8 @@ struct Picture {
 struct ErrorClock {
   std::uint64_t image_version = ~0ull;
   std::uint64_t reference_version = ~0ull;
-  std::uint64_t computed = 0;  // bumps with every new error image
+  float exposure_scale = 0.0f;  // the displayed exposure the error was computed at
+  std::uint64_t computed = 0;   // bumps with every new error image
   Clock::time_point at;
 };
 

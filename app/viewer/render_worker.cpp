@@ -299,14 +299,16 @@ struct Worker {
     // tolerance) restarts nothing, and a method's setting keeps the reference.
     const Settings& r = request.settings;
     const bool scene_changed = !loaded || restart_needed(applied, r) == Restart::scene;
-    const Settings s = scene_changed ? load_or_keep(r, serial) : r;
+    Settings s = scene_changed ? load_or_keep(r, serial) : r;
+    // An auto exposure is the EV chosen when the scene loaded: compared as that, turning auto on
+    // or off at the EV it chose restarts nothing.
+    if (s.display.exposure_auto) s.display.exposure_ev = auto_exposure_ev;
     // A request for a scene that could not be loaded asked for that scene's preset view; the
     // old scene keeps the view it had (and with it its render and reference).
     const bool kept_old_scene = scene_changed && s.scene.name != r.scene.name;
     const Restart restart = restart_needed(applied, s);
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);
-    if (s.display.exposure_auto) rs.exposure_ev = auto_exposure_ev;
     rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it
     const renderer::Camera camera =
         kept_old_scene && view ? *view : request.camera.value_or(preset);

@@ -1,9 +1,10 @@
 // What a change of the settings restarts (app::restart_needed) is derived from the group that
 // changed: the scene choice reloads, the image's size, depth and subsample restart the view, the
 // method choice, the threads and the missed-light draws restart the render, the pass count goes
-// on; the display and a setting the scene or method does not read restart nothing. The property
-// test changes every entry of the settings table, so a new setting is covered without an edit.
-#include <set>
+// on, the exposure restarts the render of a method whose images depend on it (the tolerance is in
+// displayed units); the rest of the display and a setting the scene or method does not read
+// restart nothing. The property test changes every entry of the settings table, so a new setting
+// is covered without an edit.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -16,9 +17,13 @@ namespace {
 
 using app::Restart;
 
-// The settings that only change what the viewer shows of the radiance it holds (the exposure,
-// the display curve) or its sizing rule (which sets the width and height, compared themselves).
-const std::set<std::string> kDisplayOnly = {"exposure", "display", "resolution"};
+// The settings that only change what the viewer shows of the radiance it holds (the display
+// curve, and the exposure for a method that does not read the display scale) or its sizing rule
+// (which sets the width and height, compared themselves).
+bool display_only(const std::string& setting, const lev::MethodInfo& method) {
+  if (setting == "exposure") return !method.reads_display_scale;
+  return setting == "display" || setting == "resolution";
+}
 
 Restart restart_after(const app::Settings& before, void (*change)(app::Settings&)) {
   app::Settings after = before;
@@ -43,10 +48,15 @@ TEST(Restart, EachGroupRestartsWhatItFeeds) {
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.method = lev::Method::rt; }),
             Restart::render);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.tolerance = 0.5; }), Restart::render);
+  // lev culls at the tolerance / 2^EV: another exposure is another image of it.
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.display.exposure_ev = 2.0; }),
-            Restart::nothing);
+            Restart::render);
+  // The auto flag alone: the EV it chose is exposure_ev, compared by itself.
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.display.exposure_auto = true; }),
             Restart::nothing);
+  EXPECT_EQ(
+      restart_after(s, [](app::Settings& a) { a.display.curve = renderer::DisplayCurve::srgb; }),
+      Restart::nothing);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.resolution = "fit/2"; }), Restart::nothing);
 }
 
@@ -78,6 +88,32 @@ TEST(Restart, WhatTheSceneOrMethodDoesNotReadRestartsNothing) {
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.tolerance = 0.5; }), Restart::nothing);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.light_samples = 4; }),
             Restart::nothing);
+  // rt's radiance does not depend on the exposure: the viewer re-maps it.
+  EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.display.exposure_ev = 2.0; }),
+            Restart::nothing);
+}
+
+// The methods whose images depend on the exposure: those with a tolerance (in displayed units)
+// and lev_cut (its drop is one displayed 8-bit step); not rt, the samplers without a tolerance or
+// lightcuts (relative to the point's own total).
+TEST(Restart, TheExposureRestartsTheMethodsThatReadTheDisplayScale) {
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    app::Settings s;
+    s.method.method = method.id;
+    const bool reads = method.uses_tolerance || method.id == lev::Method::lev_cut;
+    EXPECT_EQ(method.reads_display_scale, reads) << method.name;
+    EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.display.exposure_ev = -1.5; }),
+              reads ? Restart::render : Restart::nothing)
+        << method.name;
+    // A curve of its own, or an EV no float tells from the current one, changes no image.
+    EXPECT_EQ(restart_after(s,
+                            [](app::Settings& a) {
+                              a.display.curve = renderer::DisplayCurve::neutral;
+                              a.display.exposure_ev = 1e-12;
+                            }),
+              Restart::nothing)
+        << method.name;
+  }
 }
 
 // Every table entry, changed to another valid value with every method current: a setting the
@@ -95,7 +131,7 @@ TEST(Restart, EverySettingOfTheTableRestartsUnlessUnusedOrDisplayOnly) {
       app::set_setting(changed, spec, value);
       const Restart restart = app::restart_needed(base, changed);
       const bool unused = spec.unused_because && spec.unused_because(base) != nullptr;
-      if (unused || kDisplayOnly.count(spec.name) > 0) {
+      if (unused || display_only(spec.name, method)) {
         EXPECT_EQ(restart, Restart::nothing)
             << spec.name << "=" << value << " with " << method.name;
         ++quiet;

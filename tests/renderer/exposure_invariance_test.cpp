@@ -1,6 +1,7 @@
 // The tolerance is in displayed units (RenderSettings::exposure_ev): a scene 100 times darker
 // shown log2(100) EV brighter culls the same lights and shows the same image, for every method
-// that reads a tolerance or an absolute floor.
+// that reads a tolerance or an absolute floor; and only those methods' radiance depends on the
+// exposure.
 #include <cmath>
 #include <variant>
 
@@ -78,6 +79,24 @@ TEST_P(ExposureInvariance, ADarkerSceneAtAHigherExposureCullsTheSame) {
     if (GetParam() != lev::Method::lev_cut) {
       EXPECT_LT(unexposed.lights_tested_avg, 0.9 * bright.lights_tested_avg) << label;
     }
+  }
+}
+
+// The exposure changes a method's radiance exactly when its row says it reads the display scale
+// (what makes the viewer render it again at a new exposure, app::restart_needed): rt's and the
+// samplers' radiance is the same bit for bit at any exposure.
+TEST(ExposureDependence, ARendersRadianceDependsOnTheExposureIffItReadsTheDisplayScale) {
+  // The building, its lights falling off behind walls: a darker exposure culls more of them.
+  const renderer::Scene scene = scenes::instantiate_scene(scenes::describe_building(3));
+  const renderer::RayScene rays(scene);
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    renderer::RenderSettings settings = test_render_settings(method.id, 48, 36);
+    settings.tolerance = 0.05f;
+    const renderer::Framebuffer at_zero = render_test_image(scene, rays, settings);
+    settings.exposure_ev = -8.0;
+    const renderer::Framebuffer brighter = render_test_image(scene, rays, settings);
+    EXPECT_EQ(at_zero.radiance_sum != brighter.radiance_sum, method.reads_display_scale)
+        << method.name;
   }
 }
 

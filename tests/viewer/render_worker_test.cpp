@@ -9,12 +9,15 @@
 #include <memory>
 #include <set>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "app/scene_loading.h"
 #include "app/viewer/display_image.h"
 #include "lev/methods.h"
+#include "renderer/display_transform.h"
+#include "renderer/pixel_error.h"
 #include "renderer/render.h"
 #include "tests/support/setting_values.h"
 
@@ -172,6 +175,95 @@ TEST(RenderWorker, ALightSamplesChangeRestartsOnlyTheSamplingMethods) {
   EXPECT_TRUE(lev::method_info(lev::Method::light_tree).samples);
 }
 
+// The mean radiance per pixel of a direct render (what the worker's tiles carry).
+std::vector<glm::vec3> direct_render_radiance(const app::Settings& s) {
+  std::unique_ptr<app::LoadedScene> loaded = app::load_scene(s.scene);
+  renderer::RenderStatePtr state =
+      renderer::make_render_state(loaded->scene, *loaded->rays, app::render_settings_from(s));
+  for (int pass = 0; pass < s.image.spp; ++pass) renderer::render_pass(*state);
+  const renderer::Framebuffer& f = renderer::render_framebuffer(*state);
+  std::vector<glm::vec3> mean(f.radiance_sum.size(), glm::vec3(0.0f));
+  for (std::size_t i = 0; i < mean.size(); ++i) {
+    if (f.samples[i] > 0) mean[i] = f.radiance_sum[i] / static_cast<float>(f.samples[i]);
+  }
+  return mean;
+}
+
+// The tolerance is in displayed units: a new exposure renders again every method that reads the
+// display scale, and its image is then a fresh render's at the new exposure; rt's and the
+// samplers' radiance does not depend on it, so they go on.
+TEST(RenderWorker, AnExposureChangeRestartsOnlyTheMethodsThatReadTheDisplayScale) {
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    Ui ui;
+    app::Settings s = small_settings();
+    s.method.method = method.id;
+    const std::uint64_t first = ui.worker.post(request_for(s));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); })) << method.name;
+    s.display.exposure_ev = 3.0;
+    const std::uint64_t second = ui.worker.post(request_for(s));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(second); })) << method.name;
+    EXPECT_EQ(ui.status.generation, method.reads_display_scale ? second : first) << method.name;
+    EXPECT_EQ(ui.image.radiance, direct_render_radiance(s)) << method.name;
+  }
+  EXPECT_TRUE(lev::method_info(lev::Method::lev).reads_display_scale);
+  EXPECT_FALSE(lev::method_info(lev::Method::rt).reads_display_scale);
+}
+
+// With the reference on, lev at a new exposure is rendered again while the rt reference goes on,
+// and the error against it is `levrt render`'s at the new exposure: both exposed at it.
+TEST(RenderWorker, AnExposureChangeKeepsTheReferenceAndComparesAtTheNewExposure) {
+  Ui ui;
+  app::Settings s = small_settings();
+  s.method.tolerance = 0.1;
+  const std::uint64_t first = ui.worker.post(request_for(s, true));
+  ASSERT_TRUE(ui.run_until([&] {
+    return ui.settled(first) && ui.status.reference == ReferencePhase::done &&
+           ui.reference.tiles_seen == ui.status.reference_tile_count;
+  }));
+  const std::uint64_t reference_generation = ui.status.reference_generation;
+  s.display.exposure_ev = 2.0;
+  const std::uint64_t second = ui.worker.post(request_for(s, true));
+  ASSERT_TRUE(ui.run_until(
+      [&] { return ui.settled(second) && ui.status.reference == ReferencePhase::done; }));
+  EXPECT_EQ(ui.status.generation, second);
+  EXPECT_EQ(ui.status.reference_generation, reference_generation);
+  EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s));
+  app::Settings rt = s;
+  rt.method.method = lev::Method::rt;
+  const ErrorImage e = compute_error_image(ui.image, ui.reference, renderer::exposure_scale(2.0));
+  const renderer::PixelErrorStats direct = renderer::summarize_pixel_error(
+      renderer::pixel_error_pct(direct_render_rgb8(s), direct_render_rgb8(rt)));
+  EXPECT_EQ(e.pixels_compared, static_cast<std::size_t>(48 * 36));
+  EXPECT_GT(direct.average_pct, 0.0);
+  EXPECT_DOUBLE_EQ(e.average_pct, direct.average_pct);
+  EXPECT_DOUBLE_EQ(e.max_pct, direct.max_pct);
+}
+
+// The auto exposure is the EV chosen when the scene loaded: turning auto off at that EV, or on
+// again whatever exposure_ev says, renders nothing again.
+TEST(RenderWorker, TogglingAutoExposureAtTheEvItChoseRestartsNothing) {
+  Ui ui;
+  app::Settings s = small_settings();
+  s.display.exposure_auto = true;
+  s.display.exposure_ev = 5.0;  // what the slider said before auto: not the chosen EV
+  const std::uint64_t first = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); }));
+  ASSERT_NE(ui.status.auto_exposure_ev, 5.0);
+  app::Settings chosen = s;
+  chosen.display.exposure_ev = ui.status.auto_exposure_ev;
+  EXPECT_EQ(ui.image.rgb, direct_render_rgb8(chosen));
+  s.display.exposure_auto = false;
+  s.display.exposure_ev = ui.status.auto_exposure_ev;
+  std::uint64_t serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.status.generation, first);
+  s.display.exposure_auto = true;
+  s.display.exposure_ev = -4.0;
+  serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  EXPECT_EQ(ui.status.generation, first);
+}
+
 TEST(RenderWorker, ResumedPassesKeepTheImageExact) {
   // Requests that change nothing the render depends on interrupt the pass, which then resumes.
   Ui ui;
@@ -205,7 +297,7 @@ TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
     return ui.settled(serial) && ui.status.reference == ReferencePhase::done &&
            ui.reference.tiles_seen == ui.status.reference_tile_count;
   }));
-  const ErrorImage e = compute_error_image(ui.image, ui.reference);
+  const ErrorImage e = compute_error_image(ui.image, ui.reference, 1.0f);
   EXPECT_EQ(e.pixels_compared, static_cast<std::size_t>(48 * 36));
   EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
   app::Settings rt = s;
@@ -217,7 +309,7 @@ TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
   const std::uint64_t lev = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(lev); }));
   EXPECT_EQ(ui.status.reference, ReferencePhase::done);
-  EXPECT_GT(compute_error_image(ui.image, ui.reference).average_pct, 0.0);
+  EXPECT_GT(compute_error_image(ui.image, ui.reference, 1.0f).average_pct, 0.0);
 }
 
 // Every setting of the table, changed alone while the rt reference is on, restarts in the worker

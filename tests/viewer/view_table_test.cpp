@@ -73,7 +73,7 @@ Fixture fixture() {
   Fixture x;
   app::viewer::apply_tile_updates(x.image, two_passes(0.9f, true, 3));
   app::viewer::apply_tile_updates(x.reference, two_passes(0.6f, false, 2));
-  x.error = app::viewer::compute_error_image(x.image, x.reference);
+  x.error = app::viewer::compute_error_image(x.image, x.reference, 1.0f);
   return x;
 }
 

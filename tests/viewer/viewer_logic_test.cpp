@@ -343,7 +343,7 @@ TEST(DisplayImage, ErrorAgainstTheReferenceComparesTheSamePasses) {
   const renderer::Framebuffer pass0 = test_framebuffer(16, 8, 0.5f, 1);
   apply_tile_updates(reference, all_tiles(pass0, 7, 0, 8));
   apply_tile_updates(image, all_tiles(pass0, 9, 0, 8));
-  ErrorImage e = compute_error_image(image, reference);
+  ErrorImage e = compute_error_image(image, reference, 1.0f);
   EXPECT_EQ(e.pixels_compared, 128u);
   EXPECT_EQ(e.pixels_rendered, 128u);
   EXPECT_EQ(e.passes, 1);
@@ -351,28 +351,28 @@ TEST(DisplayImage, ErrorAgainstTheReferenceComparesTheSamePasses) {
   // The image's second pass while the reference has one: pass 0 against pass 0.
   const renderer::Framebuffer two = test_framebuffer(16, 8, 0.9f, 2);
   apply_tile_updates(image, all_tiles(two, 9, 1, 8));
-  e = compute_error_image(image, reference);
+  e = compute_error_image(image, reference, 1.0f);
   EXPECT_EQ(e.passes, 1);
   EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
   // The reference's second pass: the means over both passes, equal again.
   apply_tile_updates(reference, all_tiles(two, 7, 1, 8));
-  e = compute_error_image(image, reference);
+  e = compute_error_image(image, reference, 1.0f);
   EXPECT_EQ(e.passes, 2);
   EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
   // Three passes against two compare the first two; a different third pass of the reference
   // shows as an error once both have three.
   apply_tile_updates(image, all_tiles(test_framebuffer(16, 8, 0.9f, 3), 9, 2, 8));
-  e = compute_error_image(image, reference);
+  e = compute_error_image(image, reference, 1.0f);
   EXPECT_EQ(e.passes, 2);
   EXPECT_DOUBLE_EQ(e.max_pct, 0.0);
   apply_tile_updates(reference, all_tiles(test_framebuffer(16, 8, 0.3f, 3), 7, 2, 8));
-  e = compute_error_image(image, reference);
+  e = compute_error_image(image, reference, 1.0f);
   EXPECT_EQ(e.passes, 3);
   EXPECT_GT(e.average_pct, 0.0);
   // A different pass 0 has an error, and the error view colours every compared pixel.
   DisplayImage other;
   apply_tile_updates(other, all_tiles(test_framebuffer(16, 8, 0.4f, 1), 11, 0, 8));
-  e = compute_error_image(other, reference);
+  e = compute_error_image(other, reference, 1.0f);
   EXPECT_EQ(e.passes, 1);
   EXPECT_GT(e.average_pct, 0.0);
   renderer::HeatmapRange range;
