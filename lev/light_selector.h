@@ -100,9 +100,10 @@ struct SelectorScratch {
   // lev/inspect_record.h), with walk.inspect the same: the method records there what it shaded,
   // culled and clustered. Null in renders.
   InspectRecord* inspect = nullptr;
-  // Set by the caller for one call, with culled_irradiance_bound: a method that bounds the
-  // unshadowed radiance of what it left out at the point's own surface (CulledRadianceBound,
-  // important_lights.h; `lev`) answers there; the others leave it unanswered (bounded false).
+  // Set by the caller for one call, with culled_irradiance_bound: a method that bounds, at the
+  // point's own surface, the radiance error of what it did not shade exactly (what it left out
+  // or estimated: CulledRadianceBound, important_lights.h; lev, lev_est, lev_cut, ast,
+  // lightcuts) answers there; the others leave it unanswered (bounded false).
   CulledRadianceBound* culled_radiance = nullptr;
 };
 
@@ -119,6 +120,10 @@ class LightSelector {
                                     glm::vec3* culled_irradiance_bound = nullptr) const = 0;
   // Called by the renderer after every complete pass (never concurrently with direct_radiance).
   virtual void end_pass() {}
+  // True when direct_radiance records what it met for end_pass to learn from (AST's hit
+  // ratios): a caller outside the render's passes (the pixel inspector) then makes a selector
+  // of its own instead of sharing the render's.
+  virtual bool learns_between_passes() const { return false; }
   // Memory the method keeps besides the light hierarchy (AST's per-light statistics).
   virtual std::size_t bookkeeping_bytes() const { return 0; }
   // The buffers of this method for one thread, kept in SelectorScratch::method; null for none.
