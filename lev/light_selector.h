@@ -120,9 +120,10 @@ class LightSelector {
                                     glm::vec3* culled_irradiance_bound = nullptr) const = 0;
   // Called by the renderer after every complete pass (never concurrently with direct_radiance).
   virtual void end_pass() {}
-  // True when direct_radiance records what it met for end_pass to learn from (AST's hit
-  // ratios): a caller outside the render's passes (the pixel inspector) then makes a selector
-  // of its own instead of sharing the render's.
+  // True when what direct_radiance does depends on the points shaded in earlier passes (AST's
+  // visibility statistics, folded in end_pass). A selector that does not learn can shade a
+  // preview or the pixel inspector's point too; one that does needs a second selector for
+  // them, or they would teach it.
   virtual bool learns_between_passes() const { return false; }
   // Memory the method keeps besides the light hierarchy (AST's per-light statistics).
   virtual std::size_t bookkeeping_bytes() const { return 0; }
