@@ -13,26 +13,12 @@
 #include <glm/glm.hpp>
 
 #include "renderer/camera.h"
+#include "scenes/scene_choice.h"
 
 namespace app {
 
-struct CameraFlags {
-  std::optional<glm::vec3> position;
-  std::optional<glm::vec3> target;
-  std::optional<glm::vec3> up;
-  std::optional<float> vertical_fov_deg;
-  std::optional<float> orthographic_half_height;  // 0: perspective
-  std::string from_file;  // --camera-from's file (an input: no output may replace it)
-  bool empty() const {
-    return !position && !target && !up && !vertical_fov_deg && !orthographic_half_height;
-  }
-  bool operator==(const CameraFlags& o) const {
-    return position == o.position && target == o.target && up == o.up &&
-           vertical_fov_deg == o.vertical_fov_deg &&
-           orthographic_half_height == o.orthographic_half_height && from_file == o.from_file;
-  }
-  bool operator!=(const CameraFlags& o) const { return !(*this == o); }
-};
+// The flags' values (the scene choice's, scenes/scene_choice.h).
+using CameraFlags = scenes::CameraFlags;
 
 // The flags as typed; an empty text is a flag not given.
 struct CameraFlagTexts {

@@ -13,6 +13,7 @@
 
 #include "app/accuracy_gate.h"
 #include "app/bench/bench.h"
+#include "app/camera_flags.h"
 #include "app/export_command.h"
 #include "app/inspect_command.h"
 #include "app/render_command.h"
@@ -113,21 +114,21 @@ Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults
   const bool size_typed =
       flags.options.at("width")->count() > 0 || flags.options.at("height")->count() > 0;
   if (size_typed && flags.options.at("resolution")->count() == 0) settings.resolution = "typed";
-  if (flags.options.at("level")->count() > 0 && is_scene_file(settings)) {
+  if (flags.options.at("level")->count() > 0 && is_scene_file(settings.scene)) {
     throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
   }
   if (flags.options.at("relative-error")->count() > 0 &&
-      !lev::method_info(settings.method).uses_relative_error) {
+      !lev::method_info(settings.method.method).uses_relative_error) {
     throw UsageError("--relative-error: method " +
-                     std::string(lev::method_info(settings.method).name) + " ignores it, got '" +
-                     flags.text.at("relative-error") + "'");
+                     std::string(lev::method_info(settings.method.method).name) +
+                     " ignores it, got '" + flags.text.at("relative-error") + "'");
   }
   apply_scene_display_defaults(settings, flags.options.at("exposure")->count() > 0,
                                flags.options.at("display")->count() > 0);
   if (lights_option->count() > 0) {
     if (flags.options.at("level")->count() > 0)
       throw UsageError("--lights: give --level or --lights, not both");
-    apply_light_count_flag(settings, lights_text);
+    apply_light_count_flag(settings.scene, lights_text);
   }
   return settings;
 }
@@ -153,7 +154,7 @@ void add_scene_flags(CLI::App& command, SceneFlags& flags, const Settings& defau
 Settings apply_scene_flags(const SceneFlags& flags, const Settings& defaults) {
   Settings settings =
       apply_setting_flags(flags.settings, defaults, flags.lights, flags.lights_text);
-  settings.camera_flags = parse_camera_flags(flags.camera);
+  settings.scene.camera_flags = parse_camera_flags(flags.camera);
   return settings;
 }
 

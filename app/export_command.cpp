@@ -25,12 +25,12 @@ int run_export(const ExportFlags& flags) {
   if (flags.lights_option->count() > 0) {
     if (flags.level_option->count() > 0)
       throw UsageError("--lights: give --level or --lights, not both");
-    apply_light_count_flag(settings, flags.lights);
+    apply_light_count_flag(settings.scene, flags.lights);
   }
   if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
   check_output_paths({{"--out", flags.out, ".json", "a scene file"}},
-                     scenes::scene_input_files(settings.scene));
-  const scenes::SceneDescription description = describe_scene(settings);
+                     scenes::scene_input_files(settings.scene.name));
+  const scenes::SceneDescription description = describe_scene(settings.scene);
   app::write_text_file(flags.out, scenes::scene_file_json(description));
   // With --out - the scene file is standard output, so the note goes to stderr.
   std::fprintf(flags.out == app::kStandardOutputName ? stderr : stdout,

@@ -238,11 +238,12 @@ std::string inspection_table(const renderer::PixelInspection& inspection, int to
 int run_inspect(const Settings& settings, const InspectFlags& flags) {
   const renderer::RenderSettings render_settings = render_settings_from(settings);
   int x = 0, y = 0;
-  parse_inspect_pixel(flags.pixel, settings.width, settings.height, x, y);
+  parse_inspect_pixel(flags.pixel, settings.image.width, settings.image.height, x, y);
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
-  check_output_paths({{"--json", flags.json, ".json", "JSON"}}, settings_input_files(settings));
-  const std::unique_ptr<LoadedScene> loaded = load_scene(settings);
+  check_output_paths({{"--json", flags.json, ".json", "JSON"}},
+                     settings_input_files(settings.scene));
+  const std::unique_ptr<LoadedScene> loaded = load_scene(settings.scene);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
   const auto start = std::chrono::steady_clock::now();
@@ -254,10 +255,10 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   if (!flags.json.empty())
     write_output_files({{flags.json, [&json] { return json.dump(1) + "\n"; }}});
   std::FILE* table = flags.json == kStandardOutputName ? stderr : stdout;
-  std::fprintf(table, "%s, %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
-               loaded->scene.name.c_str(),
-               static_cast<unsigned long long>(loaded->scene.lights.light_count),
-               lev::method_info(settings.method).name, settings.tolerance, inspect_ms);
+  std::fprintf(
+      table, "%s, %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
+      loaded->scene.name.c_str(), static_cast<unsigned long long>(loaded->scene.lights.light_count),
+      lev::method_info(settings.method.method).name, settings.method.tolerance, inspect_ms);
   std::fputs(inspection_table(inspection, flags.top).c_str(), table);
   return 0;
 }

@@ -97,16 +97,16 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
 }
 
 void check_memory_budget(const Settings& settings, bool reference) {
-  const std::uint64_t pixels =
-      static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+  const std::uint64_t pixels = static_cast<std::uint64_t>(settings.image.width) *
+                               static_cast<std::uint64_t>(settings.image.height);
   const std::uint64_t per_pixel = reference ? kReferenceRenderBytesPerPixel : kRenderBytesPerPixel;
   if (pixels * per_pixel > kRenderMemoryBudgetBytes) {
-    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" +
-                     std::to_string(settings.height) + (reference ? " with --reference" : "") +
-                     " needs about " + std::to_string((pixels * per_pixel) >> 20) + " MiB (" +
-                     std::to_string(per_pixel) +
-                     " bytes per pixel, subsampled or not), more than the " +
-                     std::to_string(kRenderMemoryBudgetBytes >> 20) + " MiB budget");
+    throw UsageError(
+        "--width/--height: " + std::to_string(settings.image.width) + "x" +
+        std::to_string(settings.image.height) + (reference ? " with --reference" : "") +
+        " needs about " + std::to_string((pixels * per_pixel) >> 20) + " MiB (" +
+        std::to_string(per_pixel) + " bytes per pixel, subsampled or not), more than the " +
+        std::to_string(kRenderMemoryBudgetBytes >> 20) + " MiB budget");
   }
 }
 
@@ -114,13 +114,13 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
                                     lev::Method method, const std::atomic<bool>* cancel,
                                     bool show_progress) {
   Settings s = settings;
-  s.method = method;
+  s.method.method = method;
   bool progress_shown = false;
   const auto on_pass_done = [&](int passes_done, double elapsed_s) {
-    if (show_progress && elapsed_s >= 1.0 && passes_done < settings.spp) {
-      const double left_s = elapsed_s / passes_done * (settings.spp - passes_done);
+    if (show_progress && elapsed_s >= 1.0 && passes_done < settings.image.spp) {
+      const double left_s = elapsed_s / passes_done * (settings.image.spp - passes_done);
       std::fprintf(stderr, "\rlevrt: %s pass %d/%d, about %.0f s left   ",
-                   lev::method_info(method).name, passes_done, settings.spp, left_s);
+                   lev::method_info(method).name, passes_done, settings.image.spp, left_s);
       progress_shown = true;
     }
   };
@@ -128,7 +128,7 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
   render_settings.compute_error_bound = true;  // every render reports its certified bound
   renderer::RenderResult result;
   const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings,
-                                            settings.spp, result, cancel, on_pass_done);
+                                            settings.image.spp, result, cancel, on_pass_done);
   if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
   if (!done) throw Interrupted();
   return result;
@@ -145,10 +145,10 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   s.scene = loaded.scene.name;
   s.level = loaded.scene.level;
   s.lights = loaded.scene.lights.light_count;
-  s.method = lev::method_info(settings.method).name;
-  s.tolerance = settings.tolerance;
-  s.width = settings.width;
-  s.height = settings.height;
+  s.method = lev::method_info(settings.method.method).name;
+  s.tolerance = settings.method.tolerance;
+  s.width = settings.image.width;
+  s.height = settings.image.height;
   s.spp = result.passes;
   set_stats_from_settings(s, settings);
   s.build_seconds = loaded.build_seconds;
@@ -163,9 +163,9 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
-  if (settings.missed_samples > 0) {
+  if (settings.image.missed_samples > 0) {
     s.missed = renderer::missed_light_stats(result.framebuffer);
-    s.missed_samples = settings.missed_samples;
+    s.missed_samples = settings.image.missed_samples;
   }
   if (reference) {
     const auto error = renderer::summarize_pixel_error(
@@ -187,8 +187,8 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
 
 int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   Settings settings = typed_settings;
-  if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.missed_samples == 0) {
-    settings.missed_samples = kDefaultMissedSamples;
+  if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.image.missed_samples == 0) {
+    settings.image.missed_samples = kDefaultMissedSamples;
   }
   render_settings_from(settings);  // validates the combination of settings before any work
   if (!outputs.reference_rt) {
@@ -202,32 +202,34 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
     if (outputs.fail_above) throw UsageError("--fail-above: needs --reference " + rt);
   }
   check_memory_budget(settings, outputs.reference_rt);
-  check_output_paths(render_output_paths(outputs), settings_input_files(settings));
+  check_output_paths(render_output_paths(outputs), settings_input_files(settings.scene));
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   // Until the outputs are written nothing is, so Ctrl-C may end the process outright.
   std::optional<InterruptWatchdog> watchdog(std::in_place);
   std::unique_ptr<LoadedScene> loaded;
   try {
-    loaded = load_scene(settings, cancel);
+    loaded = load_scene(settings.scene, cancel);
   } catch (...) {
     // Cancelled, or a read the signal broke off (EINTR): the interrupt, not the file, ended it.
     InterruptScope::throw_if_interrupted();
     throw;
   }
-  if (settings.exposure_auto) {
-    settings.exposure_ev = renderer::auto_exposure_ev(
-        loaded->scene, *loaded->rays, render_settings_from(settings), settings.display, cancel);
+  if (settings.display.exposure_auto) {
+    settings.display.exposure_ev =
+        renderer::auto_exposure_ev(loaded->scene, *loaded->rays, render_settings_from(settings),
+                                   settings.display.curve, cancel);
     InterruptScope::throw_if_interrupted();
   }
   const bool show_progress = !outputs.quiet && ::isatty(STDERR_FILENO) == 1;
   const renderer::RenderResult result =
-      render_image(*loaded, settings, settings.method, cancel, show_progress);
+      render_image(*loaded, settings, settings.method.method, cancel, show_progress);
   renderer::RenderResult reference;
   if (outputs.reference_rt) {
     const lev::Method rt = lev::reference_method();
-    reference =
-        settings.method == rt ? result : render_image(*loaded, settings, rt, cancel, show_progress);
+    reference = settings.method.method == rt
+                    ? result
+                    : render_image(*loaded, settings, rt, cancel, show_progress);
   }
   RenderStats stats =
       render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
@@ -322,18 +324,19 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
   // The method and the settings it reads ("rt", "lev, tolerance 0.01").
-  const lev::MethodInfo& method = lev::method_info(settings.method);
+  const lev::MethodInfo& method = lev::method_info(settings.method.method);
   std::string method_text = method.name;
   char setting[64];
   if (method.uses_tolerance) {
-    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.tolerance);
+    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.method.tolerance);
     method_text += setting;
   }
   if (method.uses_relative_error) {
-    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.relative_error);
+    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.method.relative_error);
     method_text += setting;
   }
-  if (method.samples) method_text += ", " + std::to_string(settings.samples) + " light samples";
+  if (method.samples)
+    method_text += ", " + std::to_string(settings.method.light_samples) + " light samples";
   std::fprintf(summary,
                "%s level %d, %llu lights, %s: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",

@@ -8,15 +8,15 @@
 namespace app {
 
 void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
-  stats.threads = renderer::worker_count(settings.threads);
-  stats.depth = settings.depth;
-  stats.subsample = settings.subsample;
-  stats.exposure_ev = settings.exposure_ev;
-  stats.exposure_auto = settings.exposure_auto;
-  stats.display = renderer::display_curve_name(settings.display);
-  stats.camera_index = settings.camera;
-  stats.relative_error = settings.relative_error;
-  stats.light_samples = settings.samples;
+  stats.threads = renderer::worker_count(settings.image.threads);
+  stats.depth = settings.image.depth;
+  stats.subsample = settings.image.subsample;
+  stats.exposure_ev = settings.display.exposure_ev;
+  stats.exposure_auto = settings.display.exposure_auto;
+  stats.display = renderer::display_curve_name(settings.display.curve);
+  stats.camera_index = settings.scene.camera;
+  stats.relative_error = settings.method.relative_error;
+  stats.light_samples = settings.method.light_samples;
 }
 
 nlohmann::ordered_json render_stats_json(const RenderStats& s) {

@@ -1,5 +1,6 @@
-// Turns the scene settings into a renderable scene: the model's level (or the level with a
-// requested light count) or a scene file, its Embree scene, and how long building them took.
+// Turns the scene choice (scenes/scene_choice.h) into a renderable scene: the model's level (or
+// the level with a requested light count) or a scene file, its Embree scene, and how long
+// building them took.
 #pragma once
 
 #include <atomic>
@@ -24,27 +25,27 @@ struct LoadedScene {
 };
 
 // True when --scene names a scene file (FILE.json) rather than a model.
-bool is_scene_file(const Settings& settings);
+bool is_scene_file(const scenes::SceneChoice& choice);
 
-// Resolves --lights into settings.level; throws UsageError listing the valid counts.
-void apply_light_count(Settings& settings, std::uint64_t lights);
+// Resolves --lights into choice.level; throws UsageError listing the valid counts.
+void apply_light_count(scenes::SceneChoice& choice, std::uint64_t lights);
 // The --lights flag's text: decimal digits only, reported as typed when it is refused.
-void apply_light_count_flag(Settings& settings, const std::string& text);
+void apply_light_count_flag(scenes::SceneChoice& choice, const std::string& text);
 
-// Every file the settings read: the scene file with what it refers to (a glTF's buffers and
+// Every file the choice reads: the scene file with what it refers to (a glTF's buffers and
 // images) and --camera-from's stats file. No output may replace one of them.
-std::vector<std::string> settings_input_files(const Settings& settings);
+std::vector<std::string> settings_input_files(const scenes::SceneChoice& choice);
 
 // The description --scene names: a model's level, or a scene file read and validated (throws
 // std::invalid_argument "FILE: /json/path: problem" for a bad file).
-scenes::SceneDescription describe_scene(const Settings& settings);
+scenes::SceneDescription describe_scene(const scenes::SceneChoice& choice);
 
 // Reads (or describes), instantiates and builds the scene. cancel (may be null) is polled
 // between the steps; once it is raised the load throws LoadCancelled.
 struct LoadCancelled : std::runtime_error {
   LoadCancelled() : std::runtime_error("the scene load was cancelled") {}
 };
-std::unique_ptr<LoadedScene> load_scene(const Settings& settings,
+std::unique_ptr<LoadedScene> load_scene(const scenes::SceneChoice& choice,
                                         const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace app

@@ -31,6 +31,22 @@ int fit_divisor(const std::string& resolution) {
 
 namespace {
 
+// The type of a member a pointer to member names.
+template <typename MemberPointer>
+struct MemberOf;
+template <typename Class, typename T>
+struct MemberOf<T Class::*> {
+  using type = T;
+};
+
+// The table's access to settings.*group.*member: what names a setting's number in its group.
+template <auto group, auto member>
+constexpr SettingField<typename MemberOf<decltype(member)>::type> in_group() {
+  using T = typename MemberOf<decltype(member)>::type;
+  return {[](const Settings& s) -> const T& { return s.*group.*member; },
+          [](Settings& s) -> T& { return s.*group.*member; }};
+}
+
 bool is_scene_file_setting(const std::string& text) {
   return scenes::is_scene_file_name(text);
 }
@@ -52,26 +68,27 @@ const char* display_option_summary(const std::string& option) {
 }
 
 const char* tolerance_unused(const Settings& s) {
-  return lev::method_info(s.method).uses_tolerance
+  return lev::method_info(s.method.method).uses_tolerance
              ? nullptr
              : "this method has no tolerance (lightcuts and lev_cut cut by the relative error; "
                "rt tests every light)";
 }
 
 const char* samples_unused(const Settings& s) {
-  return lev::method_info(s.method).samples
+  return lev::method_info(s.method.method).samples
              ? nullptr
              : "only the sampling methods (lev_mc, light_tree) draw light samples";
 }
 
 const char* relative_error_unused(const Settings& s) {
-  return lev::method_info(s.method).uses_relative_error
+  return lev::method_info(s.method.method).uses_relative_error
              ? nullptr
              : "only lightcuts and lev_cut cut by the relative error";
 }
 
 const char* camera_unused(const Settings& s) {
-  return scenes::is_gltf_file_name(s.scene) ? nullptr : "only glTF files have cameras of their own";
+  return scenes::reads_camera_index(s.scene) ? nullptr
+                                             : "only glTF files have cameras of their own";
 }
 
 }  // namespace
@@ -85,61 +102,76 @@ std::vector<std::string> scene_options() {
 const std::vector<SettingSpec>& setting_table() {
   static const std::vector<SettingSpec> table = {
       {"scene", "Scene", "scene model, or a scene file FILE.json (scenes/README.md), .gltf or .glb",
-       Choice{[](const Settings& s) { return s.scene; },
-              [](Settings& s, const std::string& v) { s.scene = v; }, scene_options, nullptr,
+       Choice{[](const Settings& s) { return s.scene.name; },
+              [](Settings& s, const std::string& v) { s.scene.name = v; }, scene_options, nullptr,
               nullptr, is_scene_file_setting, "a .json/.gltf/.glb scene file"}},
       {"level", "Level", "scene model level (light count grows with it)",
-       IntRange{&Settings::level, 1, 10}},
+       IntRange{in_group<&Settings::scene, &scenes::SceneChoice::level>(), 1, 10}},
       {"method", "Method", "many-light method",
-       Choice{[](const Settings& s) { return std::string(lev::method_info(s.method).name); },
-              [](Settings& s, const std::string& v) { s.method = *lev::parse_method(v); },
+       Choice{[](const Settings& s) { return std::string(lev::method_info(s.method.method).name); },
+              [](Settings& s, const std::string& v) { s.method.method = *lev::parse_method(v); },
               method_options, [](const std::string& o) { return method_option(o).label; },
               [](const std::string& o) { return method_option(o).summary; }}},
       {"tolerance", "Tolerance", "irradiance tolerance, colour units (1.0 = 255); 0 = exact",
-       RealRange{&Settings::tolerance, 0.0, std::numeric_limits<double>::max(), true, 1e-6, 1.0},
+       RealRange{in_group<&Settings::method, &lev::MethodChoice::tolerance>(), 0.0,
+                 std::numeric_limits<double>::max(), true, 1e-6, 1.0},
        tolerance_unused},
       {"resolution", "Resolution",
        "viewer image size: the image area's pixels (fit), 1/2 or 1/4 of them, or the typed width "
        "and height (typed; giving either selects it); headless renders always use width and height",
        Choice{[](const Settings& s) { return s.resolution; },
               [](Settings& s, const std::string& v) { s.resolution = v; }, resolution_options}},
-      {"width", "Width", "image width in pixels", IntRange{&Settings::width, 1, kMaxImageSide}},
-      {"height", "Height", "image height in pixels", IntRange{&Settings::height, 1, kMaxImageSide}},
-      {"spp", "Passes", "passes, one sample per pixel each", IntRange{&Settings::spp, 1, 100000}},
+      {"width", "Width", "image width in pixels",
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::width>(), 1, kMaxImageSide}},
+      {"height", "Height", "image height in pixels",
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::height>(), 1, kMaxImageSide}},
+      {"spp", "Passes", "passes, one sample per pixel each",
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::spp>(), 1, 100000}},
       {"samples", "Light samples",
        "lights lev_mc and light_tree draw per shading point and pass (each one shadow ray)",
-       IntRange{&Settings::samples, 1, lev::kMaxLightSamples}, samples_unused},
+       IntRange{in_group<&Settings::method, &lev::MethodChoice::light_samples>(), 1,
+                lev::kMaxLightSamples},
+       samples_unused},
       {"relative-error", "Relative error",
        "lightcuts: refine the cut until every cluster's error bound is below this share of the "
        "point's estimated radiance (0 = exact)",
-       RealRange{&Settings::relative_error, 0.0, 1.0, true, 1e-4, 1.0}, relative_error_unused},
-      {"depth", "Depth", "reflection and refraction depth", IntRange{&Settings::depth, 0, 64}},
+       RealRange{in_group<&Settings::method, &lev::MethodChoice::relative_error>(), 0.0, 1.0, true,
+                 1e-4, 1.0},
+       relative_error_unused},
+      {"depth", "Depth", "reflection and refraction depth",
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::depth>(), 0, 64}},
       {"threads", "Threads", "worker threads (0 = all cores)",
-       IntRange{&Settings::threads, 0, 1024}},
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::threads>(), 0, 1024}},
       {"subsample", "Subsample", "render every n-th pixel in x and y",
-       IntRange{&Settings::subsample, 1, 64}},
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::subsample>(), 1, 64}},
       {"camera", "Camera",
        "glTF scenes: the camera (perspective or orthographic) to look through, in node order "
        "(0: the first, or a view framing the scene when there is none)",
-       IntRange{&Settings::camera, 0, 1000000}, camera_unused},
+       IntRange{in_group<&Settings::scene, &scenes::SceneChoice::camera>(), 0, 1000000},
+       camera_unused},
       {"exposure", "Exposure",
        "exposure in EV: the displayed image is the radiance x 2^EV through the display curve; "
        "the tolerance and the error metrics are in these exposed units. auto: chosen from a "
        "coarse preview so the 99th-percentile luminance shows at 0.75 (default for glTF, else 0)",
-       RealRange{&Settings::exposure_ev, -64.0, 64.0, false, -16.0, 16.0, "auto",
-                 &Settings::exposure_auto}},
+       RealRange{in_group<&Settings::display, &DisplaySettings::exposure_ev>(), -64.0, 64.0, false,
+                 -16.0, 16.0, "auto",
+                 in_group<&Settings::display, &DisplaySettings::exposure_auto>()}},
       {"display", "Display",
        "display curve after the exposure (default: neutral for glTF, else linear)",
-       Choice{
-           [](const Settings& s) { return std::string(renderer::display_curve_name(s.display)); },
-           [](Settings& s, const std::string& v) { s.display = *renderer::parse_display_curve(v); },
-           renderer::display_curve_names, nullptr,
-           [](const std::string& o) { return display_option_summary(o); }}},
+       Choice{[](const Settings& s) {
+                return std::string(renderer::display_curve_name(s.display.curve));
+              },
+              [](Settings& s, const std::string& v) {
+                s.display.curve = *renderer::parse_display_curve(v);
+              },
+              renderer::display_curve_names, nullptr,
+              [](const std::string& o) { return display_option_summary(o); }}},
       {"missed-samples", "Missed light",
        "draws per shading point of the light a method left out, each with a shadow ray: the "
        "missed-light estimate and its standard error (0: off; --heatmap-missed turns it on with "
        "16; at least 2)",
-       IntRange{&Settings::missed_samples, 0, lev::kMaxLightSamples}},
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::missed_samples>(), 0,
+                lev::kMaxLightSamples}},
   };
   return table;
 }
@@ -169,10 +201,10 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
     errno = 0;
     const long long v = std::strtoll(text.c_str(), &end, 10);
     if (errno != 0 || *end != '\0' || v < r->min || v > r->max) reject(spec, what, text);
-    settings.*(r->field) = static_cast<int>(v);
+    r->field.ref(settings) = static_cast<int>(v);
   } else if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
     if (d->word && text == d->word) {
-      settings.*(d->word_flag) = true;
+      d->word_flag.ref(settings) = true;
       return;
     }
     std::ostringstream range;
@@ -186,8 +218,8 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
     if (*end != '\0' || !std::isfinite(v) || v < d->min || v > d->max) {
       reject(spec, range.str(), text);
     }
-    settings.*(d->field) = v;
-    if (d->word_flag) settings.*(d->word_flag) = false;
+    d->field.ref(settings) = v;
+    if (d->word_flag.ref) d->word_flag.ref(settings) = false;
   } else {
     const auto& c = std::get<Choice>(spec.kind);
     std::string valid;
@@ -209,24 +241,40 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
 
 std::string setting_text(const Settings& settings, const SettingSpec& spec) {
   if (const auto* r = std::get_if<IntRange>(&spec.kind))
-    return std::to_string(settings.*(r->field));
+    return std::to_string(r->field.get(settings));
   if (const auto* d = std::get_if<RealRange>(&spec.kind)) {
-    if (d->word_flag && settings.*(d->word_flag)) return d->word;
+    if (d->word_flag.get && d->word_flag.get(settings)) return d->word;
     std::ostringstream s;
-    s << settings.*(d->field);
+    s << d->field.get(settings);
     return s.str();
   }
   return std::get<Choice>(spec.kind).get(settings);
 }
 
 void apply_scene_display_defaults(Settings& settings, bool exposure_given, bool display_given) {
-  if (!scenes::is_gltf_file_name(settings.scene)) return;
-  if (!exposure_given) settings.exposure_auto = true;
-  if (!display_given) settings.display = renderer::DisplayCurve::neutral;
+  if (!scenes::is_gltf_file_name(settings.scene.name)) return;
+  if (!exposure_given) settings.display.exposure_auto = true;
+  if (!display_given) settings.display.curve = renderer::DisplayCurve::neutral;
 }
 
 renderer::Display display_from(const Settings& settings) {
-  return {settings.exposure_ev, settings.display};
+  return {settings.display.exposure_ev, settings.display.curve};
+}
+
+Restart restart_needed(const Settings& before, const Settings& after) {
+  if (before.scene != after.scene) return Restart::scene;
+  // The image settings the rt reference renders without (the method's render reads them) and
+  // the pass count, taken from before: any other image setting restarts the view.
+  renderer::ImageSettings view = after.image;
+  view.threads = before.image.threads;
+  view.missed_samples = before.image.missed_samples;
+  view.spp = before.image.spp;
+  if (view != before.image) return Restart::view;
+  renderer::ImageSettings render = after.image;
+  render.spp = before.image.spp;
+  if (render != before.image || before.method != after.method) return Restart::render;
+  if (before.image != after.image) return Restart::passes;
+  return Restart::nothing;
 }
 
 }  // namespace app
@@ -234,32 +282,33 @@ renderer::Display display_from(const Settings& settings) {
 namespace app {
 
 renderer::RenderSettings render_settings_from(const Settings& settings) {
+  const renderer::ImageSettings& image = settings.image;
   // Each pixel costs about 50 bytes of framebuffer; cap the image well below the machine's memory.
   constexpr long long kMaxPixels = 8192LL * 8192LL;
-  if (static_cast<long long>(settings.width) * settings.height > kMaxPixels) {
-    throw UsageError("--width/--height: " + std::to_string(settings.width) + "x" +
-                     std::to_string(settings.height) + " exceeds the " +
-                     std::to_string(kMaxPixels) + "-pixel limit");
+  if (static_cast<long long>(image.width) * image.height > kMaxPixels) {
+    throw UsageError("--width/--height: " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + " exceeds the " + std::to_string(kMaxPixels) +
+                     "-pixel limit");
   }
   renderer::RenderSettings rs;
-  rs.width = settings.width;
-  rs.height = settings.height;
-  rs.max_depth = settings.depth;
-  rs.threads = settings.threads;
-  rs.pixel_stride = settings.subsample;
-  rs.method = settings.method;
+  rs.width = image.width;
+  rs.height = image.height;
+  rs.max_depth = image.depth;
+  rs.threads = image.threads;
+  rs.pixel_stride = image.subsample;
+  rs.method = settings.method.method;
   // Tolerances below the smallest float become 0 (no culling) and above the largest become
   // +inf (everything culled): both are the limits the user asked for.
-  rs.tolerance = static_cast<float>(settings.tolerance);
-  rs.light_samples = settings.samples;
-  rs.relative_error = static_cast<float>(settings.relative_error);
-  if (settings.missed_samples != 0 && settings.missed_samples < renderer::kMinMissedSamples) {
+  rs.tolerance = static_cast<float>(settings.method.tolerance);
+  rs.light_samples = settings.method.light_samples;
+  rs.relative_error = static_cast<float>(settings.method.relative_error);
+  if (image.missed_samples != 0 && image.missed_samples < renderer::kMinMissedSamples) {
     throw UsageError("--missed-samples: must be 0 (off) or at least " +
                      std::to_string(renderer::kMinMissedSamples) + ", got '" +
-                     std::to_string(settings.missed_samples) + "'");
+                     std::to_string(image.missed_samples) + "'");
   }
-  rs.missed_samples = settings.missed_samples;
-  rs.exposure_ev = settings.exposure_ev;
+  rs.missed_samples = image.missed_samples;
+  rs.exposure_ev = settings.display.exposure_ev;
   return rs;
 }
 

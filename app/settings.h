@@ -1,6 +1,7 @@
-// Every user setting of levrt in one struct with defaults, and one table that describes each
-// setting once (flag, label, range, help). The CLI flags and the viewer's controls are both
-// generated from this table, so they cannot drift apart.
+// Every user setting of levrt, in groups owned by the layers that read them, and one table that
+// describes each setting once (flag, label, range, help). The CLI flags and the viewer's
+// controls are both generated from this table, so they cannot drift apart; what a change
+// restarts is derived once from the groups (restart_needed).
 #pragma once
 
 #include <cstdint>
@@ -9,11 +10,11 @@
 #include <variant>
 #include <vector>
 
-#include "app/camera_flags.h"
 #include "lev/methods.h"
 #include "renderer/display_transform.h"
 #include "renderer/render.h"
 #include "scenes/gltf_scene.h"
+#include "scenes/scene_choice.h"
 #include "scenes/scene_models.h"
 
 namespace app {
@@ -21,39 +22,45 @@ namespace app {
 // The largest image side the settings take (width, height, the viewer's typed and fitted sizes).
 inline constexpr int kMaxImageSide = 16384;
 
-struct Settings {
-  std::string scene = "building";
-  int level = scenes::kDefaultSceneLevel;  // model level; --lights picks it by light count instead
-  lev::Method method = lev::Method::lev;
-  double tolerance = lev::kDefaultTolerance;  // colour units, 1.0 = 255
-  // The viewer's image size: the image area's pixels (fit), half or a quarter of them, or
-  // width x height (typed). Headless renders always use width x height.
-  std::string resolution = "fit";
-  int width = renderer::kDefaultImageWidth;
-  int height = renderer::kDefaultImageHeight;
-  int spp = 1;      // passes (one sample per pixel each)
-  int samples = 1;  // lights lev_mc and light_tree draw per shading point and pass
-  double relative_error =
-      lev::kDefaultRelativeError;  // lightcuts: a cluster's bound / the point's total
-  int depth = 5;                   // reflection/refraction depth
-  int threads = 0;                 // 0 = all cores
-  int subsample = 1;               // render every n-th pixel in x and y (for slow references)
-  int camera = 0;                  // a glTF file's camera, in node order
-  // --camera-position/-target/-up, --fov, --camera-from: parts of the preset camera replaced
-  // (app/camera_flags.h). They belong to the scene they were given with: the viewer drops them
-  // when another scene opens.
-  CameraFlags camera_flags;
-  // The display step (renderer/display_transform.h): radiance x 2^exposure_ev through the
-  // display curve. exposure_auto: the EV is chosen before the first pass
-  // (renderer/auto_exposure.h) and exposure_ev is then what it chose. Built-in scenes and scene
-  // files default to linear at EV 0 (the images levrt always wrote); glTF files to auto and
-  // neutral (apply_scene_display_defaults).
+// The display step (renderer/display_transform.h): radiance x 2^exposure_ev through the display
+// curve. exposure_auto: the EV is chosen before the first pass (renderer/auto_exposure.h) and
+// exposure_ev is then what it chose. Built-in scenes and scene files default to linear at EV 0
+// (the images levrt always wrote); glTF files to auto and neutral
+// (apply_scene_display_defaults). It never restarts a render: the viewer re-maps what it holds.
+struct DisplaySettings {
   double exposure_ev = 0.0;
   bool exposure_auto = false;
-  renderer::DisplayCurve display = renderer::DisplayCurve::linear;
-  // Draws per shading point of the missed-light estimate (renderer/missed_light.h); 0: off.
-  int missed_samples = 0;
+  renderer::DisplayCurve curve = renderer::DisplayCurve::linear;
 };
+
+// The user's settings: one group per layer that reads it, each comparing itself
+// (restart_needed), and the viewer's sizing rule.
+struct Settings {
+  scenes::SceneChoice scene;      // scenes/scene_choice.h
+  lev::MethodChoice method;       // lev/methods.h
+  renderer::ImageSettings image;  // renderer/render.h
+  DisplaySettings display;
+  // The viewer's image size: the image area's pixels (fit), half or a quarter of them, or
+  // image.width x image.height (typed). Headless renders always use width x height. The viewer
+  // turns it into image.width and image.height, so by itself it restarts nothing.
+  std::string resolution = "fit";
+};
+
+// What a change of the settings makes the renders redo, least first.
+enum class Restart {
+  nothing,  // the display or the viewer's sizing rule changed: the viewer re-maps its pixels
+  passes,   // only the pass count: the render goes on towards the new count
+  render,   // the method's render starts again; the rt reference of the same view goes on
+  view,     // every render of the view starts again, the rt reference too
+  scene,    // the scene is loaded again
+};
+
+// Derived from which group changed, each group comparing itself (so a setting the current scene
+// or method does not read restarts nothing): the scene choice reloads; an image setting restarts
+// the view, but for those only the method's render reads (threads, the missed-light draws: the
+// render) and the pass count (passes); the method choice restarts the render. A member added to
+// a group restarts the view or the scene without an edit here.
+Restart restart_needed(const Settings& before, const Settings& after);
 
 // The draws of the missed-light estimate when an output asks for it and none were given.
 inline constexpr int kDefaultMissedSamples = 16;
@@ -63,21 +70,28 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A number of the settings inside its group (settings.group.member), read and written.
+template <typename T>
+struct SettingField {
+  const T& (*get)(const Settings& settings) = nullptr;
+  T& (*ref)(Settings& settings) = nullptr;
+};
+
 struct IntRange {
-  int Settings::*field;
+  SettingField<int> field;
   int min, max;
 };
 struct RealRange {
-  double Settings::*field;
+  SettingField<double> field;
   double min, max;
   bool logarithmic;  // the viewer's slider
   // The viewer's log slider spans [slider_min, slider_max] (within [min, max]); typed values may
   // leave it, and a 0 button sits beside it when min allows 0.
   double slider_min = 0.0, slider_max = 0.0;
   // A word the setting also takes instead of a number (the exposure's "auto"), and the flag it
-  // raises; a number lowers it.
+  // raises (null ref: none); a number lowers it.
   const char* word = nullptr;
-  bool Settings::*word_flag = nullptr;
+  SettingField<bool> word_flag = {};
 };
 struct Choice {
   std::string (*get)(const Settings& settings);

@@ -16,7 +16,7 @@ inline constexpr int kViewerDefaultPasses = 64;
 // The settings the viewer starts from where a flag is not given (`view --help` shows them).
 inline Settings viewer_default_settings() {
   Settings settings;
-  settings.spp = kViewerDefaultPasses;
+  settings.image.spp = kViewerDefaultPasses;
   return settings;
 }
 

@@ -208,4 +208,27 @@ float MethodParams::*swept_setting(const MethodInfo& method) {
                                                               : &MethodParams::tolerance;
 }
 
+MethodChoice used_settings(const MethodChoice& choice) {
+  const MethodInfo& info = method_info(choice.method);
+  const MethodChoice defaults;
+  MethodChoice used = choice;
+  if (!info.uses_tolerance) used.tolerance = defaults.tolerance;
+  if (!info.uses_relative_error) used.relative_error = defaults.relative_error;
+  if (!info.samples) used.light_samples = defaults.light_samples;
+  return used;
+}
+
+bool operator==(const MethodChoice& a, const MethodChoice& b) {
+  // Binding every member: a member added to MethodChoice stops this compiling until it is
+  // compared too.
+  const auto [method, tolerance, relative_error, light_samples] = used_settings(a);
+  const MethodChoice other = used_settings(b);
+  return method == other.method && tolerance == other.tolerance &&
+         relative_error == other.relative_error && light_samples == other.light_samples;
+}
+
+bool operator!=(const MethodChoice& a, const MethodChoice& b) {
+  return !(a == b);
+}
+
 }  // namespace lev

@@ -62,6 +62,23 @@ struct MethodParams {
   float display_scale = 1.0f;
 };
 
+// The method a render uses and the settings methods read: the lev layer's group of the user's
+// settings (app/settings.h composes it). Two choices compare equal when their method renders
+// the same images with them: a setting the method does not read (its row's traits) is not
+// compared, so changing it restarts nothing.
+struct MethodChoice {
+  Method method = Method::lev;
+  double tolerance = kDefaultTolerance;           // colour units, 1.0 = 255
+  double relative_error = kDefaultRelativeError;  // lightcuts: a cluster's bound / the total
+  int light_samples = 1;  // lights a sampling method draws per shading point and pass
+};
+
+// The choice with every setting its method does not read at its default, so that choices equal
+// under == are identical here (a cache key).
+MethodChoice used_settings(const MethodChoice& choice);
+bool operator==(const MethodChoice& a, const MethodChoice& b);
+bool operator!=(const MethodChoice& a, const MethodChoice& b);
+
 // The tolerance in the scene's units: params.tolerance / params.display_scale.
 float scene_tolerance(const MethodParams& params);
 

@@ -146,6 +146,18 @@ lev::MethodParams method_params(const RenderSettings& settings) {
   return params;
 }
 
+bool operator==(const ImageSettings& a, const ImageSettings& b) {
+  // Binding every member: a member added to ImageSettings stops this compiling until it is
+  // compared too.
+  const auto& [width, height, spp, depth, subsample, threads, missed_samples] = a;
+  return width == b.width && height == b.height && spp == b.spp && depth == b.depth &&
+         subsample == b.subsample && threads == b.threads && missed_samples == b.missed_samples;
+}
+
+bool operator!=(const ImageSettings& a, const ImageSettings& b) {
+  return !(a == b);
+}
+
 RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
                                  const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||

@@ -27,6 +27,21 @@ namespace renderer {
 inline constexpr int kDefaultImageWidth = 320;
 inline constexpr int kDefaultImageHeight = 240;
 
+// The image the user asks for: the renderer's group of the user's settings (app/settings.h
+// composes it; RenderSettings is made from it and the method's group). Every member is compared.
+struct ImageSettings {
+  int width = kDefaultImageWidth;
+  int height = kDefaultImageHeight;
+  int spp = 1;        // passes, one sample per pixel each
+  int depth = 5;      // reflection/refraction depth
+  int subsample = 1;  // render every n-th pixel in x and y (for slow references)
+  int threads = 0;    // 0 = all cores
+  // Draws per shading point of the missed-light estimate (renderer/missed_light.h); 0: off.
+  int missed_samples = 0;
+};
+bool operator==(const ImageSettings& a, const ImageSettings& b);
+bool operator!=(const ImageSettings& a, const ImageSettings& b);
+
 struct RenderSettings {
   int width = kDefaultImageWidth;
   int height = kDefaultImageHeight;

@@ -63,12 +63,12 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
       const bool ran = run.run_job(what, cost, [&] {
         LoadedScene& loaded = run.scene(scene, level);
         Settings s;
-        s.scene = scene;
-        s.level = level;
-        s.tolerance = c.tolerance;
-        s.width = c.width;
-        s.height = c.height;
-        s.threads = run.threads();
+        s.scene.name = scene;
+        s.scene.level = level;
+        s.method.tolerance = c.tolerance;
+        s.image.width = c.width;
+        s.image.height = c.height;
+        s.image.threads = run.threads();
         const renderer::RenderSettings rs = render_settings_from(s);
         renderer::RayLog log;
         {

@@ -215,29 +215,41 @@ double BenchRun::predicted_seconds(const MeasureRequest& r) {
   return per_run * runs;
 }
 
+namespace {
+
+// The request's method choice: the sweep's value goes to the setting the method is swept over
+// (lev/methods.h).
+lev::MethodChoice method_choice(const MeasureRequest& r) {
+  lev::MethodChoice choice;
+  choice.method = r.method;
+  if (lev::swept_setting(lev::method_info(r.method)) == &lev::MethodParams::relative_error) {
+    choice.relative_error = r.tolerance;
+  } else {
+    choice.tolerance = r.tolerance;
+  }
+  return choice;
+}
+
+}  // namespace
+
 BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
-  // A method that ignores the tolerance (rt) is measured once for every tolerance; one that
-  // sweeps its relative error instead (lightcuts) takes the sweep's value there.
-  const lev::MethodInfo& info = lev::method_info(r.method);
-  const double tolerance = info.uses_tolerance || info.uses_relative_error ? r.tolerance : 0.0;
-  return {r.scene, r.level, r.method, tolerance, r.stride, r.error_bound};
+  // A method that ignores the sweep's value (rt) is measured once for every value: the method
+  // choice compares only what its method reads.
+  const lev::MethodChoice used = lev::used_settings(method_choice(r));
+  return {
+      r.scene,  r.level,      used.method, used.tolerance, used.relative_error, used.light_samples,
+      r.stride, r.error_bound};
 }
 
 renderer::RenderSettings BenchRun::render_settings_for(const MeasureRequest& r) const {
   Settings s;
-  s.scene = r.scene;
-  s.level = r.level;
-  s.method = r.method;
-  // The sweep's value goes to the setting the method is swept over (lev/methods.h).
-  if (lev::swept_setting(lev::method_info(r.method)) == &lev::MethodParams::relative_error) {
-    s.relative_error = r.tolerance;
-  } else {
-    s.tolerance = r.tolerance;
-  }
-  s.width = config_.width;
-  s.height = config_.height;
-  s.threads = threads_;
-  s.subsample = r.stride;
+  s.scene.name = r.scene;
+  s.scene.level = r.level;
+  s.method = method_choice(r);
+  s.image.width = config_.width;
+  s.image.height = config_.height;
+  s.image.threads = threads_;
+  s.image.subsample = r.stride;
   renderer::RenderSettings rs = render_settings_from(s);
   rs.compute_error_bound = r.error_bound;
   return rs;
@@ -252,10 +264,10 @@ LoadedScene& BenchRun::scene(const std::string& name, int level) {
   }
   std::unique_ptr<LoadedScene>& slot = loaded_[level];
   if (!slot) {
-    Settings s;
-    s.scene = name;
-    s.level = level;
-    slot = load_scene(s);
+    scenes::SceneChoice choice;
+    choice.name = name;
+    choice.level = level;
+    slot = load_scene(choice);
   }
   return *slot;
 }

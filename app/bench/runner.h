@@ -235,7 +235,9 @@ class BenchRun {
   double predicted_seconds(const MeasureRequest& request);
 
  private:
-  using Key = std::tuple<std::string, int, lev::Method, double, int, bool>;
+  // The scene, level, method choice (lev::used_settings: what its method reads), stride and
+  // error bound: what a measurement measured.
+  using Key = std::tuple<std::string, int, lev::Method, double, double, int, int, bool>;
   static constexpr int kProbeStride = 8;
   Key key_of(const MeasureRequest& request) const;
   renderer::RenderSettings render_settings_for(const MeasureRequest& request) const;

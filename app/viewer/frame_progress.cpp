@@ -37,8 +37,8 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
   state.status = worker.status();
   // Auto exposure: the EV the worker chose for the scene is the one shown (until the slider
   // takes over).
-  if (state.settings.exposure_auto && state.status.scene_serial > 0)
-    state.settings.exposure_ev = state.status.auto_exposure_ev;
+  if (state.settings.display.exposure_auto && state.status.scene_serial > 0)
+    state.settings.display.exposure_ev = state.status.auto_exposure_ev;
   // Tiles of renders that are gone never arrive (the buffers' floors); the previous render's
   // colours stay as the new one's backdrop.
   if (apply_tile_updates(state.image, worker.take_tiles().updates)) {

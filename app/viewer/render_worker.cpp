@@ -59,12 +59,6 @@ struct WorkerShared {
 
 namespace {
 
-// What makes two renders show the same picture of the same scene (the reference stays valid).
-struct ViewKey {
-  renderer::Camera camera;
-  int width = 0, height = 0, depth = 0, stride = 0;
-};
-
 // Preview pixel steps, coarsest first: 8, 4, 2, and coarser levels in front while the coarsest
 // would have more samples than the default frame (320x240) has at step 8, so that the first whole
 // frame costs about the same at any window size. Steps at or below the subsample stride add
@@ -95,23 +89,18 @@ bool same_camera(const renderer::Camera& a, const renderer::Camera& b) {
          a.orthographic_half_height == b.orthographic_half_height;
 }
 
-bool same_view(const ViewKey& a, const ViewKey& b) {
-  return same_camera(a.camera, b.camera) && a.width == b.width && a.height == b.height &&
-         a.depth == b.depth && a.stride == b.stride;
-}
-
 // Everything the worker thread owns. Members are torn down explicitly (reference, then main
 // state, then scene) because the states refer to the scene.
 struct Worker {
   WorkerShared& shared;
   std::unique_ptr<LoadedScene> loaded;
-  std::string scene;
-  int level = -1;
-  int camera_index = -1;
   double auto_exposure_ev = 0.0;  // the loaded scene's (renderer/auto_exposure.h)
-  CameraFlags camera_flags;
   renderer::Camera preset;
-  std::optional<ViewKey> view;
+  // The settings last applied: their scene choice is the loaded scene's, the rest those of the
+  // view and the main render shown (what a request's settings are compared with).
+  Settings applied;
+  // The camera of the view shown (with applied's image settings, what the reference is of).
+  std::optional<renderer::Camera> view;
   std::unique_ptr<renderer::RenderJob> main;
   renderer::RenderSettings main_settings;
   std::uint64_t generation = 0;
@@ -240,30 +229,27 @@ struct Worker {
   void load(const Settings& s, std::uint64_t serial) {
     update_status([&](WorkerStatus& st) {
       st.phase = WorkerPhase::loading;
-      st.loading_scene = s.scene;
+      st.loading_scene = s.scene.name;
     });
     std::unique_ptr<LoadedScene> fresh;
     try {
-      fresh = load_scene(s, &shared.quitting);
+      fresh = load_scene(s.scene, &shared.quitting);
     } catch (...) {
       update_status([](WorkerStatus& st) { st.loading_scene.clear(); });
       throw;
     }
     tear_down(serial);
     loaded = std::move(fresh);
-    scene = s.scene;
-    level = s.level;
-    camera_index = s.camera;
-    camera_flags = s.camera_flags;
+    applied.scene = s.scene;
     preset = loaded->scene.camera;
     auto_exposure_ev = renderer::auto_exposure_ev(
-        loaded->scene, *loaded->rays, render_settings_from(s), s.display, &shared.quitting);
+        loaded->scene, *loaded->rays, render_settings_from(s), s.display.curve, &shared.quitting);
     update_status([&](WorkerStatus& st) {
       st.loading_scene.clear();
-      st.scene = s.scene;
-      st.level = s.level;
-      st.camera_index = s.camera;
-      st.camera_flags = s.camera_flags;
+      st.scene = s.scene.name;
+      st.level = s.scene.level;
+      st.camera_index = s.scene.camera;
+      st.camera_flags = s.scene.camera_flags;
       st.generation = 0;
       st.scene_serial += 1;
       st.scene_name = loaded->scene.name;
@@ -291,15 +277,12 @@ struct Worker {
       const std::string message = e.what();
       update_status([&](WorkerStatus& st) {
         st.load_error = message;
-        st.load_error_scene = requested.scene;
+        st.load_error_scene = requested.scene.name;
         st.load_error_serial += 1;
       });
     }
     Settings kept = requested;
-    kept.scene = scene;
-    kept.level = level;
-    kept.camera = camera_index;
-    kept.camera_flags = camera_flags;
+    kept.scene = applied.scene;
     return kept;
   }
 
@@ -311,35 +294,25 @@ struct Worker {
     });
     // A size over the budget is refused before the scene is built or a framebuffer allocated.
     check_memory_budget(request.settings, request.want_reference);
-    // The camera index is read with a glTF file: it reloads it.
+    // What restarts is derived from the groups of the settings that changed (app/settings.h):
+    // a setting the scene or the method does not read (a built-in scene's camera index, rt's
+    // tolerance) restarts nothing, and a method's setting keeps the reference.
     const Settings& r = request.settings;
-    const bool scene_changed = !loaded || r.scene != scene || r.level != level ||
-                               r.camera != camera_index || r.camera_flags != camera_flags;
+    const bool scene_changed = !loaded || restart_needed(applied, r) == Restart::scene;
     const Settings s = scene_changed ? load_or_keep(r, serial) : r;
     // A request for a scene that could not be loaded asked for that scene's preset view; the
     // old scene keeps the view it had (and with it its render and reference).
-    const bool kept_old_scene = scene_changed && s.scene != r.scene;
+    const bool kept_old_scene = scene_changed && s.scene.name != r.scene.name;
+    const Restart restart = restart_needed(applied, s);
     renderer::Scene& sc = loaded->scene;
     renderer::RenderSettings rs = render_settings_from(s);
-    if (s.exposure_auto) rs.exposure_ev = auto_exposure_ev;
+    if (s.display.exposure_auto) rs.exposure_ev = auto_exposure_ev;
     rs.compute_error_bound = true;  // the "Error bound" view and the stats panel show it
     const renderer::Camera camera =
-        kept_old_scene && view ? view->camera : request.camera.value_or(preset);
-    const ViewKey key{camera, rs.width, rs.height, rs.max_depth, rs.pixel_stride};
-    const bool view_changed = !view || !same_view(key, *view);
-    // A method that ignores the tolerance keeps rendering when only the tolerance moves.
-    const bool tolerance_matters =
-        rs.tolerance != main_settings.tolerance && lev::method_info(rs.method).uses_tolerance;
-    // Only a sampling method draws light_samples lights per point.
-    const bool light_samples_matter =
-        rs.light_samples != main_settings.light_samples && lev::method_info(rs.method).samples;
-    const bool relative_error_matters = rs.relative_error != main_settings.relative_error &&
-                                        lev::method_info(rs.method).uses_relative_error;
+        kept_old_scene && view ? *view : request.camera.value_or(preset);
+    const bool view_changed = !view || !same_camera(camera, *view) || restart >= Restart::view;
     // The missed-light estimate (on while its view is shown) costs shadow rays of its own.
-    const bool main_changed = !main || view_changed || rs.method != main_settings.method ||
-                              tolerance_matters || light_samples_matter || relative_error_matters ||
-                              rs.threads != main_settings.threads ||
-                              rs.missed_samples != main_settings.missed_samples;
+    const bool main_changed = !main || view_changed || restart >= Restart::render;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
@@ -349,9 +322,10 @@ struct Worker {
       stop_inspection();  // it reads the scene, whose camera may move now
       drop_main(serial);
     }
-    if (!same_camera(key.camera, sc.camera)) sc.camera = key.camera;
-    view = key;
-    passes_target = s.spp;
+    if (!same_camera(camera, sc.camera)) sc.camera = camera;
+    view = camera;
+    applied = s;
+    passes_target = s.image.spp;
 
     if (main_changed) {
       update_status([](WorkerStatus& st) { st.phase = WorkerPhase::preparing; });
@@ -370,8 +344,8 @@ struct Worker {
         st.width = rs.width;
         st.height = rs.height;
         st.tile_count = tiles;
-        st.method = s.method;
-        st.tolerance = s.tolerance;
+        st.method = s.method.method;
+        st.tolerance = s.method.tolerance;
         st.missed_samples = rs.missed_samples;
         st.setup_seconds = setup_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
@@ -386,9 +360,9 @@ struct Worker {
         st.preview_levels_done = 0;
       });
     }
-    update_status([&](WorkerStatus& st) { st.passes_target = s.spp; });
+    update_status([&](WorkerStatus& st) { st.passes_target = s.image.spp; });
 
-    reference.set_target(s.spp);
+    reference.set_target(s.image.spp);
     if (request.want_reference && !reference.complete()) {
       if (!reference.has_state()) {
         renderer::RenderSettings ref = rs;
@@ -414,7 +388,7 @@ struct Worker {
           reference.complete() ? ReferencePhase::done : ReferencePhase::rendering;
       update_status([&](WorkerStatus& st) { st.reference = phase; });
     }
-    update_status([&](WorkerStatus& st) { st.reference_passes_target = s.spp; });
+    update_status([&](WorkerStatus& st) { st.reference_passes_target = s.image.spp; });
     inspect(request.inspect_pixel);
   }
 

@@ -61,7 +61,7 @@ struct WorkerStatus {
   std::string scene_name;          // as the scene calls itself
   int level = 0;
   int camera_index = 0;
-  app::CameraFlags camera_flags;
+  scenes::CameraFlags camera_flags;
   std::uint64_t light_count = 0;
   std::size_t directional_lights = 0;  // suns, outside the hierarchy
   renderer::Camera preset_camera;

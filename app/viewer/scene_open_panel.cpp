@@ -43,7 +43,7 @@ void draw_scene_open_row(ViewerState& state) {
     for (std::size_t i = 0; i < state.recent_scenes.size(); ++i) {
       const std::string path = state.recent_scenes[i];  // opening reorders the list
       ImGui::PushID(static_cast<int>(i));
-      if (ImGui::Selectable(path.c_str(), path == state.settings.scene)) {
+      if (ImGui::Selectable(path.c_str(), path == state.settings.scene.name)) {
         state.scene_path_field = path;
         open_scene_file(state, path);
       }

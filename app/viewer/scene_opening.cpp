@@ -24,9 +24,9 @@ bool open_scene_file(ViewerState& state, const std::string& path) {
     log_message(state, path + ": not a scene file (a .json, .gltf or .glb file opens)", true);
     return false;
   }
-  if (path == state.settings.scene) return true;
+  if (path == state.settings.scene.name) return true;
   const Settings before = state.settings;
-  state.settings.scene = path;
+  state.settings.scene.name = path;
   settings_changed(state, before, "scene=" + path);
   log_message(state, "opening " + path, false);
   return true;
@@ -53,11 +53,11 @@ void follow_scene_loads(ViewerState& state) {
                     (st.scene_serial > 0 ? " (kept " + st.scene + ")" : ""),
                 true);
     Settings& s = state.settings;
-    if (st.scene_serial > 0 && s.scene == st.load_error_scene) {
-      s.scene = st.scene;
-      s.level = st.level;
-      s.camera = st.camera_index;
-      s.camera_flags = st.camera_flags;
+    if (st.scene_serial > 0 && s.scene.name == st.load_error_scene) {
+      s.scene.name = st.scene;
+      s.scene.level = st.level;
+      s.scene.camera = st.camera_index;
+      s.scene.camera_flags = st.camera_flags;
       state.camera = state.camera_before_scene_change;
       mark_changed(state, "");
     }

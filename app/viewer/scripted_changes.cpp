@@ -210,17 +210,19 @@ void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settin
     if (c.key == "width" || c.key == "height" || c.key == "resolution") {
       const Settings before = at_hover;
       set_setting(at_hover, *find_setting(c.key), c.value);
-      const bool new_size = at_hover.width != before.width || at_hover.height != before.height;
+      const bool new_size = at_hover.image.width != before.image.width ||
+                            at_hover.image.height != before.image.height;
       if (new_size && at_hover.resolution == before.resolution) at_hover.resolution = "typed";
       continue;
     }
     if (c.key != "hover" || fit_divisor(at_hover.resolution) != 0) continue;
     int x = 0, y = 0;
     parse_pixel(c.value, x, y);
-    if (x >= at_hover.width || y >= at_hover.height) {
+    if (x >= at_hover.image.width || y >= at_hover.image.height) {
       reject("hover=" + c.value + "@" + std::to_string(c.frame),
-             "hover is in image pixels and must be inside the " + std::to_string(at_hover.width) +
-                 "x" + std::to_string(at_hover.height) + " image");
+             "hover is in image pixels and must be inside the " +
+                 std::to_string(at_hover.image.width) + "x" +
+                 std::to_string(at_hover.image.height) + " image");
     }
   }
 }
@@ -248,7 +250,7 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "lights") {
     const Settings before = state.settings;
-    apply_light_count(state.settings, parse_count(c.value, c.key));
+    apply_light_count(state.settings.scene, parse_count(c.value, c.key));
     settings_changed(state, before, label);
     return ScriptAction::none;
   }

@@ -23,12 +23,12 @@ void help_tooltip(const SettingSpec& spec) {
 // Light counts of the scene's levels, for the level control.
 bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRange& range,
                       ControlRects* rects) {
-  const scenes::SceneModel* model = scenes::find_scene_model(settings.scene);
+  const scenes::SceneModel* model = scenes::find_scene_model(settings.scene.name);
   if (!model) {
     ImGui::LabelText("Lights", "from the scene");
     return false;
   }
-  const int level = settings.*(range.field);
+  const int level = range.field.get(settings);
   const std::string current =
       std::to_string(model->light_count(level)) + " (level " + std::to_string(level) + ")";
   bool changed = false;
@@ -38,7 +38,7 @@ bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRang
       const std::string text =
           std::to_string(model->light_count(l)) + " (level " + std::to_string(l) + ")";
       if (ImGui::Selectable(text.c_str(), l == level) && l != level) {
-        settings.*(range.field) = l;
+        range.field.ref(settings) = l;
         changed = true;
       }
       record_item(rects, "lights:" + std::to_string(model->light_count(l)));
@@ -52,8 +52,8 @@ bool draw_light_count(Settings& settings, const SettingSpec& spec, const IntRang
 
 bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range,
               ControlRects* rects) {
-  if (range.field == &Settings::level) return draw_light_count(settings, spec, range, rects);
-  int value = settings.*(range.field);
+  if (std::string(spec.name) == "level") return draw_light_count(settings, spec, range, rects);
+  int value = range.field.get(settings);
   const float width = ImGui::CalcItemWidth();
   const bool edited =
       ImGui::InputInt(spec.label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -66,14 +66,14 @@ bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range
               min.x + width - button - gap, max.y);
   help_tooltip(spec);
   value = std::clamp(value, range.min, range.max);
-  if (!edited || value == settings.*(range.field)) return false;
-  settings.*(range.field) = value;
+  if (!edited || value == range.field.get(settings)) return false;
+  range.field.ref(settings) = value;
   return true;
 }
 
 bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& range,
                ControlRects* rects) {
-  double value = settings.*(range.field);
+  double value = range.field.get(settings);
   bool changed = false;
   bool word_chosen = false;
   ImGui::PushID(spec.name);
@@ -121,11 +121,11 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
     help_tooltip(spec);
     if (range.word) {
       ImGui::SameLine(0.0f, 2.0f);
-      const bool on = settings.*(range.word_flag);
+      const bool on = range.word_flag.get(settings);
       if (on)
         ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
       if (ImGui::Button(range.word) && !on) {
-        settings.*(range.word_flag) = true;
+        range.word_flag.ref(settings) = true;
         word_chosen = true;
       }
       if (on) ImGui::PopStyleColor();
@@ -150,10 +150,10 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
     ImGui::SetTooltip("%s (--%s); type a value and press Enter", spec.help, spec.name);
   ImGui::PopID();
   if (word_chosen) return true;
-  const bool word_was_on = range.word_flag && settings.*(range.word_flag);
-  if (!changed || (value == settings.*(range.field) && !word_was_on)) return false;
-  settings.*(range.field) = value;
-  if (range.word_flag) settings.*(range.word_flag) = false;
+  const bool word_was_on = range.word_flag.get && range.word_flag.get(settings);
+  if (!changed || (value == range.field.get(settings) && !word_was_on)) return false;
+  range.field.ref(settings) = value;
+  if (range.word_flag.ref) range.word_flag.ref(settings) = false;
   return true;
 }
 

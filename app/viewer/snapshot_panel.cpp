@@ -14,7 +14,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   const WorkerStatus& st = state.status;
   job.folder = state.snapshot_folder;
   char base[160];
-  std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.c_str(),
+  std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.name.c_str(),
                 static_cast<unsigned long long>(st.light_count), lev::method_info(st.method).name,
                 st.tolerance);
   job.base = base;
@@ -60,7 +60,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range, display,
                               state.mask_threshold_pct, locked_range(state, heat));
   job.stats_json = render_stats_json(stats).dump(2) + "\n";
-  job.inputs = settings_input_files(state.settings);
+  job.inputs = settings_input_files(state.settings.scene);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;
   return job;

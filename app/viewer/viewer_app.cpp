@@ -173,7 +173,7 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
     fit.height = height;
     fit.since = now;
   }
-  if (width == state.settings.width && height == state.settings.height) {
+  if (width == state.settings.image.width && height == state.settings.image.height) {
     fit.fitted_once = true;
     return;
   }
@@ -315,14 +315,14 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   if (!flags.screenshot.empty())
     outputs.push_back({"--screenshot", flags.screenshot, ".png", "PNG"});
   if (!flags.controls.empty()) outputs.push_back({"--controls", flags.controls, ".json", "JSON"});
-  std::vector<std::string> scenes_read = {settings.scene};
+  std::vector<std::string> scenes_read = {settings.scene.name};
   for (const ScriptedChange& c : script) {
     if (c.key == "screenshot") outputs.push_back({"--set screenshot", c.value, ".png", "PNG"});
     if (c.key == "scene" || c.key == "drop") scenes_read.push_back(c.value);
   }
   std::vector<std::string> all_inputs = inputs;
-  if (!settings.camera_flags.from_file.empty())
-    all_inputs.push_back(settings.camera_flags.from_file);
+  if (!settings.scene.camera_flags.from_file.empty())
+    all_inputs.push_back(settings.scene.camera_flags.from_file);
   for (const std::string& scene : scenes_read) {
     for (const std::string& file : scenes::scene_input_files(scene)) all_inputs.push_back(file);
   }

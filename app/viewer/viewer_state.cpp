@@ -14,21 +14,22 @@ void mark_changed(ViewerState& state, const std::string& label) {
 
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label) {
   Settings& s = state.settings;
-  if (s.scene != before.scene) {
-    if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene))
-      s.level = model->default_level;
-    s.camera_flags = CameraFlags{};  // the command line's camera was for the first scene
+  if (s.scene.name != before.scene.name) {
+    if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene.name))
+      s.scene.level = model->default_level;
+    s.scene.camera_flags =
+        scenes::CameraFlags{};  // the command line's camera was for the first scene
   }
-  const bool new_scene = s.scene != before.scene || s.level != before.level ||
-                         s.camera != before.camera || s.camera_flags != before.camera_flags;
-  const bool new_size = s.width != before.width || s.height != before.height;
+  const Restart restart = restart_needed(before, s);
+  const bool new_scene = restart == Restart::scene;
+  const bool new_size =
+      s.image.width != before.image.width || s.image.height != before.image.height;
   if (new_size && s.resolution == before.resolution) s.resolution = "typed";
-  const bool new_view = new_scene || new_size || s.resolution != before.resolution ||
-                        s.depth != before.depth || s.subsample != before.subsample;
+  const bool new_view = restart >= Restart::view || s.resolution != before.resolution;
   if (new_scene) {
     // Only the view of the scene on screen is worth giving back (a second open before the first
     // failed must not replace it with the preset it asked for).
-    if (before.scene == state.status.scene) state.camera_before_scene_change = state.camera;
+    if (before.scene.name == state.status.scene) state.camera_before_scene_change = state.camera;
     state.camera.reset();
   }
   if (new_view && !view_info(state.view).needs_reference) state.want_reference = false;
@@ -37,8 +38,8 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
 
 void set_fit_size(ViewerState& state, int width, int height) {
   Settings before = state.settings;
-  state.settings.width = width;
-  state.settings.height = height;
+  state.settings.image.width = width;
+  state.settings.image.height = height;
   before.resolution = "typed";  // so that settings_changed keeps the fit resolution
   // The window, not the user, changed the view: a reference asked for is computed again at the
   // new size (the worker drops the old one).
@@ -111,8 +112,8 @@ int rt_from_column(const ViewerState& state) {
 }
 
 bool scene_ready(const ViewerState& state) {
-  return state.status.scene_serial > 0 && state.status.scene == state.settings.scene &&
-         state.status.level == state.settings.level;
+  return state.status.scene_serial > 0 && state.status.scene == state.settings.scene.name &&
+         state.status.level == state.settings.scene.level;
 }
 
 renderer::Camera current_camera(const ViewerState& state) {
@@ -130,7 +131,8 @@ ViewRequest make_request(const ViewerState& state) {
   ViewRequest r;
   r.settings = state.settings;
   if (view_info(state.view).needs_missed)
-    r.settings.missed_samples = std::max(r.settings.missed_samples, kDefaultMissedSamples);
+    r.settings.image.missed_samples =
+        std::max(r.settings.image.missed_samples, kDefaultMissedSamples);
   r.camera = state.camera;
   r.want_reference = state.want_reference;
   r.inspect_pixel = state.inspect_pixel;

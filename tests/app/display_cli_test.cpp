@@ -40,11 +40,12 @@ TEST_F(DisplayCli, LinearAtExposureZeroIsTodaysImageBitForBit) {
                                     "--out", out, "--stats", stats, "--quiet"});
     ASSERT_EQ(r.exit_code, 0) << r.output;
     app::Settings settings;
-    settings.scene = scene;
-    settings.width = 64;
-    settings.height = 48;
-    const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(settings);
-    const renderer::RenderResult result = app::render_image(*loaded, settings, settings.method);
+    settings.scene.name = scene;
+    settings.image.width = 64;
+    settings.image.height = 48;
+    const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(settings.scene);
+    const renderer::RenderResult result =
+        app::render_image(*loaded, settings, settings.method.method);
     EXPECT_EQ(read_file(out),
               app::png_rgb8_bytes(64, 48, renderer::framebuffer_rgb8(result.framebuffer)))
         << scene;

@@ -72,9 +72,9 @@ const lev::Method kEverySecond = lev::parse_method("every2").value();
 
 app::Settings small_settings() {
   app::Settings s;
-  s.level = 2;
-  s.width = 40;
-  s.height = 30;
+  s.scene.level = 2;
+  s.image.width = 40;
+  s.image.height = 30;
   return s;
 }
 
@@ -92,7 +92,7 @@ TEST(ExtraMethod, TheCliAndTheViewerOfferIt) {
   const app::SettingSpec* spec = app::find_setting("method");
   ASSERT_NE(spec, nullptr);
   app::set_setting(s, *spec, "every2");
-  EXPECT_EQ(s.method, kEverySecond);
+  EXPECT_EQ(s.method.method, kEverySecond);
   EXPECT_EQ(app::setting_text(s, *spec), "every2");
   EXPECT_EQ(app::render_settings_from(s).method, kEverySecond);
   const auto& choice = std::get<app::Choice>(spec->kind);
@@ -102,8 +102,8 @@ TEST(ExtraMethod, TheCliAndTheViewerOfferIt) {
 
 TEST(ExtraMethod, ItRendersThroughTheRenderService) {
   app::Settings s = small_settings();
-  const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(s);
-  s.method = kEverySecond;
+  const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(s.scene);
+  s.method.method = kEverySecond;
   renderer::RenderResult every2;
   ASSERT_TRUE(renderer::render_passes(loaded->scene, *loaded->rays, app::render_settings_from(s), 1,
                                       every2));

@@ -38,11 +38,12 @@ TEST_F(RenderExr, WritesTheLinearRadianceAndEveryChannel) {
     EXPECT_EQ(file.channels.count(name), 1u) << name;
   // The same render in process: the channels hold its mean radiance, unexposed.
   app::Settings settings;
-  settings.width = 24;
-  settings.height = 16;
-  settings.exposure_ev = 3.0;
-  const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(settings);
-  const renderer::RenderResult result = app::render_image(*loaded, settings, settings.method);
+  settings.image.width = 24;
+  settings.image.height = 16;
+  settings.display.exposure_ev = 3.0;
+  const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(settings.scene);
+  const renderer::RenderResult result =
+      app::render_image(*loaded, settings, settings.method.method);
   const renderer::Framebuffer& fb = result.framebuffer;
   float brightest = 0.0f;
   for (std::size_t i = 0; i < fb.samples.size(); ++i) {

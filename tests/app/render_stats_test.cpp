@@ -10,12 +10,12 @@ namespace {
 
 app::RenderStats stats_of(const char* method) {
   app::Settings settings;
-  settings.tolerance = 0.03;
-  settings.relative_error = 0.05;
-  settings.samples = 4;
+  settings.method.tolerance = 0.03;
+  settings.method.relative_error = 0.05;
+  settings.method.light_samples = 4;
   app::RenderStats stats;
   stats.method = method;
-  stats.tolerance = settings.tolerance;
+  stats.tolerance = settings.method.tolerance;
   app::set_stats_from_settings(stats, settings);
   return stats;
 }

@@ -33,7 +33,7 @@ TEST(Settings, ToleranceExtremesReachTheRendererAsTheFloatLimits) {
 TEST(Settings, TheSmallestPositiveDoubleIsKeptAsItself) {
   app::Settings settings;
   app::set_setting(settings, *app::find_setting("tolerance"), "4.9406564584124654e-324");
-  EXPECT_EQ(settings.tolerance, std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ(settings.method.tolerance, std::numeric_limits<double>::denorm_min());
 }
 
 TEST(Settings, NonFiniteAndNegativeTolerancesAreRefused) {

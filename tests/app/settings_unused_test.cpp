@@ -18,7 +18,7 @@ namespace {
 std::vector<std::uint8_t> render_rgb8(const app::LoadedScene& loaded, const app::Settings& s) {
   renderer::RenderStatePtr state =
       renderer::make_render_state(loaded.scene, *loaded.rays, app::render_settings_from(s));
-  for (int pass = 0; pass < s.spp; ++pass) EXPECT_TRUE(renderer::render_pass(*state));
+  for (int pass = 0; pass < s.image.spp; ++pass) EXPECT_TRUE(renderer::render_pass(*state));
   return renderer::framebuffer_rgb8(renderer::render_framebuffer(*state));
 }
 
@@ -29,25 +29,25 @@ bool unused(const std::string& name, const app::Settings& s) {
 
 TEST(SettingsUnused, WhatAMethodIgnoresDoesNotChangeItsImage) {
   app::Settings base;
-  base.level = 3;
-  base.width = 40;
-  base.height = 30;
-  base.spp = 2;
-  const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(base);
+  base.scene.level = 3;
+  base.image.width = 40;
+  base.image.height = 30;
+  base.image.spp = 2;
+  const std::unique_ptr<app::LoadedScene> loaded = app::load_scene(base.scene);
   struct Variation {
     std::string name;
     void (*apply)(app::Settings& s);
   };
   const std::vector<Variation> variations = {
-      {"tolerance", [](app::Settings& s) { s.tolerance = 0.3; }},
-      {"relative-error", [](app::Settings& s) { s.relative_error = 0.3; }},
-      {"samples", [](app::Settings& s) { s.samples = 7; }},
+      {"tolerance", [](app::Settings& s) { s.method.tolerance = 0.3; }},
+      {"relative-error", [](app::Settings& s) { s.method.relative_error = 0.3; }},
+      {"samples", [](app::Settings& s) { s.method.light_samples = 7; }},
   };
   int used_and_changed = 0;
   for (const std::string& method : app::method_options()) {
     app::Settings a = base;
-    a.method = *lev::parse_method(method);
-    if (a.method == lev::Method::rt) a.tolerance = 0.0;
+    a.method.method = *lev::parse_method(method);
+    if (a.method.method == lev::Method::rt) a.method.tolerance = 0.0;
     const std::vector<std::uint8_t> image = render_rgb8(*loaded, a);
     for (const Variation& v : variations) {
       app::Settings b = a;
@@ -67,9 +67,9 @@ TEST(SettingsUnused, WhatAMethodIgnoresDoesNotChangeItsImage) {
 TEST(SettingsUnused, TheCameraIndexIsAGltfFilesAlone) {
   app::Settings s;
   EXPECT_TRUE(unused("camera", s));
-  s.scene = "room.gltf";
+  s.scene.name = "room.gltf";
   EXPECT_FALSE(unused("camera", s));
-  s.scene = "room.glb";
+  s.scene.name = "room.glb";
   EXPECT_FALSE(unused("camera", s));
   EXPECT_FALSE(unused("tolerance", s));  // lev, the default, has one
 }

@@ -16,6 +16,7 @@
 #include "app/viewer/display_image.h"
 #include "lev/methods.h"
 #include "renderer/render.h"
+#include "tests/support/setting_values.h"
 
 namespace {
 using namespace app::viewer;
@@ -61,11 +62,11 @@ struct Ui {
 
 app::Settings small_settings() {
   app::Settings s;
-  s.level = 2;
-  s.width = 48;
-  s.height = 36;
-  s.spp = 2;
-  s.depth = 2;
+  s.scene.level = 2;
+  s.image.width = 48;
+  s.image.height = 36;
+  s.image.spp = 2;
+  s.image.depth = 2;
   return s;
 }
 
@@ -77,10 +78,10 @@ ViewRequest request_for(const app::Settings& s, bool reference = false) {
 }
 
 std::vector<std::uint8_t> direct_render_rgb8(const app::Settings& s) {
-  std::unique_ptr<app::LoadedScene> loaded = app::load_scene(s);
+  std::unique_ptr<app::LoadedScene> loaded = app::load_scene(s.scene);
   renderer::RenderStatePtr state =
       renderer::make_render_state(loaded->scene, *loaded->rays, app::render_settings_from(s));
-  for (int pass = 0; pass < s.spp; ++pass) renderer::render_pass(*state);
+  for (int pass = 0; pass < s.image.spp; ++pass) renderer::render_pass(*state);
   return renderer::framebuffer_rgb8(renderer::render_framebuffer(*state));
 }
 
@@ -113,7 +114,7 @@ TEST(RenderWorker, EveryNewRenderStartsWithPreviewLevelsOverTheWholeFrame) {
   EXPECT_EQ(ui.image.rgb, direct_render_rgb8(s));
   // A subsample stride of 4 keeps only the coarser step.
   ui.preview_steps.clear();
-  s.subsample = 4;
+  s.image.subsample = 4;
   serial = ui.worker.post(request_for(s));
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
   EXPECT_EQ(ui.status.preview_levels, 1);
@@ -123,14 +124,14 @@ TEST(RenderWorker, EveryNewRenderStartsWithPreviewLevelsOverTheWholeFrame) {
 TEST(RenderWorker, ALaterRequestCancelsTheRenderInFlightAndWins) {
   Ui ui;
   app::Settings slow = small_settings();
-  slow.level = 4;
-  slow.width = 160;
-  slow.height = 120;
-  slow.spp = 1000;
+  slow.scene.level = 4;
+  slow.image.width = 160;
+  slow.image.height = 120;
+  slow.image.spp = 1000;
   ui.worker.post(request_for(slow));
   ASSERT_TRUE(ui.run_until([&] { return ui.image.tiles_seen > 0; }));
   app::Settings fast = small_settings();
-  fast.tolerance = 0.1;
+  fast.method.tolerance = 0.1;
   const std::uint64_t serial = ui.worker.post(request_for(fast));
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
   EXPECT_EQ(ui.image.width, 48);
@@ -145,7 +146,7 @@ void expect_change_restarts_only(const std::function<void(app::Settings&)>& chan
   for (const lev::MethodInfo& method : lev::method_table()) {
     Ui ui;
     app::Settings s = small_settings();
-    s.method = method.id;
+    s.method.method = method.id;
     const std::uint64_t first = ui.worker.post(request_for(s));
     ASSERT_TRUE(ui.run_until([&] { return ui.settled(first); })) << method.name;
     change(s);
@@ -158,14 +159,14 @@ void expect_change_restarts_only(const std::function<void(app::Settings&)>& chan
 }
 
 TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
-  expect_change_restarts_only([](app::Settings& s) { s.tolerance = 0.2; },
+  expect_change_restarts_only([](app::Settings& s) { s.method.tolerance = 0.2; },
                               [](const lev::MethodInfo& m) { return m.uses_tolerance; });
   EXPECT_FALSE(lev::method_info(lev::Method::rt).uses_tolerance);
   EXPECT_TRUE(lev::method_info(lev::Method::lev).uses_tolerance);
 }
 
 TEST(RenderWorker, ALightSamplesChangeRestartsOnlyTheSamplingMethods) {
-  expect_change_restarts_only([](app::Settings& s) { s.samples = 3; },
+  expect_change_restarts_only([](app::Settings& s) { s.method.light_samples = 3; },
                               [](const lev::MethodInfo& m) { return m.samples; });
   EXPECT_TRUE(lev::method_info(lev::Method::lev_mc).samples);
   EXPECT_TRUE(lev::method_info(lev::Method::light_tree).samples);
@@ -175,9 +176,9 @@ TEST(RenderWorker, ResumedPassesKeepTheImageExact) {
   // Requests that change nothing the render depends on interrupt the pass, which then resumes.
   Ui ui;
   app::Settings s = small_settings();
-  s.width = 96;
-  s.height = 72;
-  s.spp = 3;
+  s.image.width = 96;
+  s.image.height = 72;
+  s.image.spp = 3;
   std::uint64_t serial = ui.worker.post(request_for(s));
   for (int i = 0; i < 20; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(3));
@@ -190,15 +191,15 @@ TEST(RenderWorker, ResumedPassesKeepTheImageExact) {
 TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
   Ui ui;
   app::Settings s = small_settings();
-  s.spp = 1;
+  s.image.spp = 1;
   ui.worker.post(request_for(s, true));
   // Tolerance changes while the reference renders: the worker joins it, refits, resumes it.
   for (double tolerance : {0.05, 0.2, 0.0}) {
-    s.tolerance = tolerance;
+    s.method.tolerance = tolerance;
     ui.worker.post(request_for(s, true));
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  s.method = lev::Method::rt;
+  s.method.method = lev::Method::rt;
   const std::uint64_t serial = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until([&] {
     return ui.settled(serial) && ui.status.reference == ReferencePhase::done &&
@@ -211,18 +212,53 @@ TEST(RenderWorker, TheReferenceSurvivesRefitsAndMatchesRt) {
   EXPECT_EQ(ui.reference.rgb, direct_render_rgb8(rt));
 
   // lev at a large tolerance differs from the reference, which is still the same.
-  s.method = lev::Method::lev;
-  s.tolerance = 0.5;
+  s.method.method = lev::Method::lev;
+  s.method.tolerance = 0.5;
   const std::uint64_t lev = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(lev); }));
   EXPECT_EQ(ui.status.reference, ReferencePhase::done);
   EXPECT_GT(compute_error_image(ui.image, ui.reference).average_pct, 0.0);
 }
 
+// Every setting of the table, changed alone while the rt reference is on, restarts in the worker
+// what app::restart_needed says and nothing more: the scene (a new load), the view (the reference
+// too), the method's render (the reference goes on), or nothing but the pass count. A setting
+// the scene does not read (a built-in scene's camera index) keeps the render and the reference.
+// A setting added to a group and to the table is checked here with no other edit.
+TEST(RenderWorker, EverySettingRestartsWhatItsGroupSays) {
+  int kept = 0;
+  for (const app::SettingSpec& spec : app::setting_table()) {
+    Ui ui;
+    const app::Settings s = small_settings();
+    const std::uint64_t first = ui.worker.post(request_for(s, true));
+    ASSERT_TRUE(ui.run_until([&] {
+      return ui.settled(first) && ui.status.reference == ReferencePhase::done;
+    })) << spec.name;
+    const WorkerStatus before = ui.status;
+    const std::string value = levrt_test::other_setting_value(s, spec);
+    ASSERT_FALSE(value.empty()) << spec.name;
+    app::Settings changed = s;
+    app::set_setting(changed, spec, value);
+    const app::Restart restart = app::restart_needed(s, changed);
+    const std::uint64_t second = ui.worker.post(request_for(changed, true));
+    ASSERT_TRUE(ui.run_until([&] { return ui.settled(second); })) << spec.name;
+    const std::string what = std::string(spec.name) + "=" + value;
+    EXPECT_EQ(ui.status.scene_serial != before.scene_serial, restart == app::Restart::scene)
+        << what;
+    EXPECT_EQ(ui.status.reference_generation != before.reference_generation,
+              restart >= app::Restart::view)
+        << what;
+    EXPECT_EQ(ui.status.generation != before.generation, restart >= app::Restart::render) << what;
+    EXPECT_EQ(ui.status.passes_target, changed.image.spp) << what;
+    if (restart == app::Restart::nothing) ++kept;
+  }
+  EXPECT_GT(kept, 0);  // the camera index on this built-in scene, the display settings
+}
+
 TEST(RenderWorker, ANewViewDropsTheReference) {
   Ui ui;
   app::Settings s = small_settings();
-  s.spp = 1;
+  s.image.spp = 1;
   std::uint64_t serial = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until(
       [&] { return ui.status.reference == ReferencePhase::done && ui.settled(serial); }));
@@ -246,7 +282,7 @@ TEST(RenderWorker, ANewViewDropsTheReference) {
 TEST(RenderWorker, AFailedRequestIsReportedAndTheNextOneRecovers) {
   Ui ui;
   app::Settings bad = small_settings();
-  bad.level = 99;
+  bad.scene.level = 99;
   ui.worker.post(request_for(bad));
   ASSERT_TRUE(ui.run_until([&] { return ui.status.phase == WorkerPhase::failed; }));
   EXPECT_NE(ui.status.error.find("level"), std::string::npos) << ui.status.error;
@@ -275,13 +311,13 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
 
   // As the UI asks for a new scene: its preset view (no camera), the reference still wanted.
   ViewRequest missing = request_for(good, true);
-  missing.settings.scene = "/nonexistent-levrt-folder/missing.gltf";
+  missing.settings.scene.name = "/nonexistent-levrt-folder/missing.gltf";
   const std::uint64_t serial = ui.worker.post(missing);
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial) && ui.status.load_error_serial > 0; }));
   EXPECT_EQ(ui.status.load_error_serial, 1u);
-  EXPECT_EQ(ui.status.load_error_scene, missing.settings.scene);
+  EXPECT_EQ(ui.status.load_error_scene, missing.settings.scene.name);
   EXPECT_NE(ui.status.load_error.find("missing.gltf"), std::string::npos) << ui.status.load_error;
-  EXPECT_EQ(ui.status.scene, good.scene);
+  EXPECT_EQ(ui.status.scene, good.scene.name);
   EXPECT_EQ(ui.status.scene_serial, loads);
   EXPECT_TRUE(ui.status.loading_scene.empty());
   EXPECT_EQ(ui.status.generation, first);  // the render was not restarted
@@ -291,7 +327,7 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
 
   // The next request (the UI has gone back to the old scene) renders as usual.
   ViewRequest more = orbited;
-  more.settings.spp = 3;
+  more.settings.image.spp = 3;
   const std::uint64_t next = ui.worker.post(more);
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(next); }));
   EXPECT_EQ(ui.status.passes_done, 3);
@@ -301,10 +337,10 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
 TEST(RenderWorker, ShutsDownPromptlyMidRender) {
   auto ui = std::make_unique<Ui>();
   app::Settings slow = small_settings();
-  slow.level = 5;
-  slow.width = 320;
-  slow.height = 240;
-  slow.spp = 1000;
+  slow.scene.level = 5;
+  slow.image.width = 320;
+  slow.image.height = 240;
+  slow.image.spp = 1000;
   ui->worker.post(request_for(slow, true));
   ASSERT_TRUE(
       ui->run_until([&] { return ui->image.tiles_seen > 0 && ui->reference.tiles_seen > 0; }));
@@ -320,7 +356,7 @@ TEST(RenderWorker, ShutsDownPromptlyMidRender) {
 TEST(RenderWorker, ThePinnedPixelIsInspectedBesideTheRenderAndANewPixelReplacesIt) {
   auto ui = std::make_unique<Ui>();
   app::Settings s = small_settings();
-  s.spp = 1000;  // still rendering while the pixels are inspected
+  s.image.spp = 1000;  // still rendering while the pixels are inspected
   ViewRequest request = request_for(s);
   request.inspect_pixel = std::array<int, 2>{10, 12};
   const std::uint64_t generation = ui->worker.post(request);
@@ -342,7 +378,7 @@ TEST(RenderWorker, ThePinnedPixelIsInspectedBesideTheRenderAndANewPixelReplacesI
   EXPECT_EQ(ui->status.inspection, nullptr);
   EXPECT_FALSE(ui->status.inspection_pending);
   // A pixel outside the image has nothing to inspect, and nothing stays pending.
-  request.inspect_pixel = std::array<int, 2>{s.width, 0};
+  request.inspect_pixel = std::array<int, 2>{s.image.width, 0};
   const std::uint64_t outside = ui->worker.post(request);
   ASSERT_TRUE(ui->run_until([&] { return ui->status.request_serial >= outside; }));
   EXPECT_EQ(ui->status.inspection, nullptr);

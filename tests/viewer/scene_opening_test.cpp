@@ -24,7 +24,7 @@ renderer::Camera orbited_camera() {
 // The status of a worker that has loaded `scene` (serial `loads`).
 void loaded(ViewerState& state, const std::string& scene, std::uint64_t loads) {
   state.status.scene = scene;
-  state.status.level = state.settings.level;
+  state.status.level = state.settings.scene.level;
   state.status.scene_serial = loads;
   follow_scene_loads(state);
 }
@@ -33,7 +33,7 @@ TEST(SceneOpening, APathThatIsNoSceneFileIsLoggedAndRequestsNothing) {
   ViewerState state;
   state.request_dirty = false;
   EXPECT_FALSE(open_scene_file(state, "notes.txt"));
-  EXPECT_EQ(state.settings.scene, "building");
+  EXPECT_EQ(state.settings.scene.name, "building");
   EXPECT_FALSE(state.request_dirty);
   ASSERT_EQ(state.messages.size(), 1u);
   EXPECT_TRUE(state.messages[0].problem);
@@ -47,7 +47,7 @@ TEST(SceneOpening, AFailedLoadGoesBackToTheLoadedSceneAndCamera) {
   loaded(state, "building", 1);
   state.camera = orbited_camera();
   ASSERT_TRUE(open_scene_file(state, "/scenes/broken.gltf"));
-  EXPECT_EQ(state.settings.scene, "/scenes/broken.gltf");
+  EXPECT_EQ(state.settings.scene.name, "/scenes/broken.gltf");
   EXPECT_FALSE(state.camera.has_value());  // a new scene starts at its preset view
   EXPECT_TRUE(state.request_dirty);
 
@@ -56,7 +56,7 @@ TEST(SceneOpening, AFailedLoadGoesBackToTheLoadedSceneAndCamera) {
   state.status.load_error_scene = "/scenes/broken.gltf";
   state.status.load_error_serial = 1;
   follow_scene_loads(state);
-  EXPECT_EQ(state.settings.scene, "building");
+  EXPECT_EQ(state.settings.scene.name, "building");
   ASSERT_TRUE(state.camera.has_value());
   EXPECT_EQ(state.camera->position, orbited_camera().position);
   EXPECT_TRUE(state.request_dirty);
@@ -99,7 +99,7 @@ TEST(SceneOpening, TheLogKeepsTheNewestMessages) {
 TEST(SceneOpening, ADropOpensTheFirstSceneFileAndIgnoresTheRest) {
   ViewerState state;
   EXPECT_TRUE(open_dropped_files(state, {"photo.png", "a.glb", "b.gltf"}));
-  EXPECT_EQ(state.settings.scene, "a.glb");
+  EXPECT_EQ(state.settings.scene.name, "a.glb");
   ASSERT_EQ(state.messages.size(), 3u);
   EXPECT_TRUE(state.messages[0].problem);   // photo.png: not a scene file
   EXPECT_FALSE(state.messages[1].problem);  // opening a.glb
@@ -108,7 +108,7 @@ TEST(SceneOpening, ADropOpensTheFirstSceneFileAndIgnoresTheRest) {
   ViewerState scripted;
   const ScriptedChange drop = parse_scripted_change("drop=room.json@3");
   EXPECT_EQ(apply_scripted_change(scripted, drop), ScriptAction::none);
-  EXPECT_EQ(scripted.settings.scene, "room.json");
+  EXPECT_EQ(scripted.settings.scene.name, "room.json");
   EXPECT_THROW(parse_scripted_change("drop=@3"), app::UsageError);
 }
 

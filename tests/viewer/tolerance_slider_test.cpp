@@ -39,11 +39,11 @@ std::vector<double> slider_stops(const app::RealRange& range) {
 
 app::Settings small_view(const std::string& method) {
   app::Settings s;
-  s.level = 3;
-  s.width = 64;
-  s.height = 48;
-  s.depth = 2;
-  s.method = *lev::parse_method(method);
+  s.scene.level = 3;
+  s.image.width = 64;
+  s.image.height = 48;
+  s.image.depth = 2;
+  s.method.method = *lev::parse_method(method);
   return s;
 }
 
@@ -61,11 +61,11 @@ TEST(ToleranceSlider, EveryStopRendersFinitePixelsAndTestsNoMoreLightsThanTheOne
   ASSERT_GE(stops.size(), 13u);
   for (const std::string& method : app::method_options()) {
     app::Settings settings = small_view(method);
-    std::unique_ptr<app::LoadedScene> loaded = app::load_scene(settings);
+    std::unique_ptr<app::LoadedScene> loaded = app::load_scene(settings.scene);
     std::uint64_t previous_tested = std::numeric_limits<std::uint64_t>::max();
     std::uint64_t tested_at_zero = 0;
     for (double tolerance : stops) {
-      settings.tolerance = tolerance;
+      settings.method.tolerance = tolerance;
       const std::string label = method + " at " + std::to_string(tolerance);
       renderer::RenderStatePtr state = renderer::make_render_state(
           loaded->scene, *loaded->rays, app::render_settings_from(settings));

@@ -114,8 +114,8 @@ TEST(ScriptedChanges, ResidentMemoryGrowsWithTouchedMemory) {
 TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
   app::Settings initial;
   initial.resolution = "typed";
-  initial.width = 64;
-  initial.height = 48;
+  initial.image.width = 64;
+  initial.image.height = 48;
   const auto check = [&](const std::vector<std::string>& texts) {
     check_hover_pixels(parse_scripted_changes(texts), initial);
   };
@@ -141,10 +141,10 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
   s.request_dirty = false;
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("tolerance=0.25@0")),
             ScriptAction::none);
-  EXPECT_DOUBLE_EQ(s.settings.tolerance, 0.25);
+  EXPECT_DOUBLE_EQ(s.settings.method.tolerance, 0.25);
   EXPECT_TRUE(s.request_dirty);
   apply_scripted_change(s, parse_scripted_change("lights=4096@0"));
-  EXPECT_EQ(s.settings.level, 6);
+  EXPECT_EQ(s.settings.scene.level, 6);
   apply_scripted_change(s, parse_scripted_change("view=error@0"));
   EXPECT_EQ(s.view, ViewMode::error);
   EXPECT_TRUE(s.want_reference);
@@ -162,10 +162,10 @@ TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
   set_fit_size(s, 500, 300);
   EXPECT_EQ(s.settings.resolution, "fit");
   EXPECT_TRUE(s.want_reference);
-  EXPECT_EQ(s.settings.width, 500);
+  EXPECT_EQ(s.settings.image.width, 500);
   EXPECT_TRUE(s.request_dirty);
   const app::Settings before = s.settings;
-  s.settings.width = 200;
+  s.settings.image.width = 200;
   settings_changed(s, before, "width");
   EXPECT_EQ(s.settings.resolution, "typed");
   // Choosing a fit scale with the size unchanged keeps it.
@@ -203,12 +203,12 @@ TEST(ViewerState, NewSceneResetsTheCameraAndAViewChangeDropsTheReference) {
   s.camera = renderer::Camera{};
   s.want_reference = true;
   app::Settings before = s.settings;
-  s.settings.tolerance = 0.5;
+  s.settings.method.tolerance = 0.5;
   settings_changed(s, before, "tolerance");
   EXPECT_TRUE(s.camera.has_value());
   EXPECT_TRUE(s.want_reference);  // same view: the reference stays
   before = s.settings;
-  s.settings.level = 4;
+  s.settings.scene.level = 4;
   settings_changed(s, before, "level");
   EXPECT_FALSE(s.camera.has_value());
   EXPECT_FALSE(s.want_reference);
@@ -241,6 +241,26 @@ std::vector<TileUpdate> all_tiles(const renderer::Framebuffer& f, std::uint64_t 
     }
   }
   return updates;
+}
+
+TEST(ViewerState, ASettingTheSceneDoesNotReadKeepsTheViewAndTheReference) {
+  ViewerState s;
+  s.camera = renderer::Camera{};
+  s.want_reference = true;
+  app::Settings before = s.settings;
+  s.settings.scene.camera = 2;  // a built-in scene has one preset camera
+  settings_changed(s, before, "camera");
+  EXPECT_TRUE(s.camera.has_value());
+  EXPECT_TRUE(s.want_reference);
+  // A glTF file reads it: its new camera is a new scene, with its own preset view.
+  s.settings.scene.name = "room.gltf";
+  before = s.settings;
+  s.camera = renderer::Camera{};
+  s.want_reference = true;
+  s.settings.scene.camera = 1;
+  settings_changed(s, before, "camera");
+  EXPECT_FALSE(s.camera.has_value());
+  EXPECT_FALSE(s.want_reference);
 }
 
 TEST(DisplayImage, TilesRebuildTheFramebuffersColoursAndTotals) {
