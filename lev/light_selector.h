@@ -119,6 +119,10 @@ class LightSelector {
                                     glm::vec3* culled_irradiance_bound = nullptr) const = 0;
   // Called by the renderer after every complete pass (never concurrently with direct_radiance).
   virtual void end_pass() {}
+  // True when what direct_radiance does depends on the points shaded in earlier passes (AST's
+  // visibility statistics, folded in end_pass). A selector that does not learn can shade a
+  // preview too; one that does needs a second selector for it, or the preview would teach it.
+  virtual bool learns_between_passes() const { return false; }
   // Memory the method keeps besides the light hierarchy (AST's per-light statistics).
   virtual std::size_t bookkeeping_bytes() const { return 0; }
   // The buffers of this method for one thread, kept in SelectorScratch::method; null for none.

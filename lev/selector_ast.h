@@ -38,6 +38,7 @@ class AstSelector final : public LightSelector {
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
   void end_pass() override;
+  bool learns_between_passes() const override { return true; }
   std::size_t bookkeeping_bytes() const override;
   std::unique_ptr<MethodScratch> make_scratch() const override {
     return std::make_unique<AstScratch>();

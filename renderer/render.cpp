@@ -18,8 +18,9 @@ struct RenderState {
   RenderSettings settings;
   std::unique_ptr<lev::LightSelector> selector;
   Framebuffer framebuffer;
-  // Preview passes: their own selector (made at the first preview), so that a method's
-  // between-pass state (AST's statistics) never learns from preview samples.
+  // Preview passes of a method that learns between passes (AST's statistics): their own
+  // selector (made at the first preview), so that it never learns from preview samples. Every
+  // other method previews with `selector`, so a new render state fits its extent volumes once.
   std::unique_ptr<lev::LightSelector> preview_selector;
   Framebuffer preview;
   int passes_done = 0;
@@ -65,7 +66,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
       state.ray_log && !preview ? &state.ray_log->tiles[static_cast<std::size_t>(tile)] : nullptr;
   const std::size_t logged_before = ray_log ? ray_log->size() : 0;
   scratch.cancel = cancel;
-  const lev::LightSelector& selector = preview ? *state.preview_selector : *state.selector;
+  const lev::LightSelector& selector =
+      preview && state.preview_selector ? *state.preview_selector : *state.selector;
   TraceContext context{state.scene,  state.rays, selector, scratch,
                        rs.max_depth, ray_log,    cancel,   rs.compute_error_bound};
   context.missed_samples = preview ? 0 : rs.missed_samples;
@@ -189,7 +191,7 @@ bool render_pass(RenderState& state, const std::atomic<bool>* cancel,
     throw std::invalid_argument("render_pass: the preview step must be at least 1");
   const bool preview = preview_step > 1;
   if (preview) {
-    if (!state.preview_selector)
+    if (!state.preview_selector && state.selector->learns_between_passes())
       state.preview_selector =
           lev::make_selector(state.scene.lights, method_params(state.settings));
     state.preview = make_framebuffer((state.settings.width + preview_step - 1) / preview_step,

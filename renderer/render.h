@@ -110,9 +110,10 @@ using TileDoneCallback = std::function<void(int tile)>;
 // preview_step > 1 makes it a preview pass: each tile samples the pixel centres (x, y) with
 // x and y multiples of preview_step into render_preview (cleared first), whose pixel
 // (x / step, y / step) holds that sample. A preview never touches render_framebuffer, the pass
-// count, the render time or the method's state between passes (it has a selector of its own), so
-// nothing made from the framebuffer (image, heatmaps, stats) can contain a preview sample, and the
-// passes after it equal those of a state that never previewed.
+// count, the render time or the method's state between passes (a method that learns between
+// passes previews with a selector of its own; the others with the render's, whose extent volumes
+// are then fitted once), so nothing made from the framebuffer (image, heatmaps, stats) can
+// contain a preview sample, and the passes after it equal those of a state that never previewed.
 bool render_pass(RenderState& state, const std::atomic<bool>* cancel = nullptr,
                  const TileDoneCallback& on_tile_done = nullptr, int preview_step = 1);
 

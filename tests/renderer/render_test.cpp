@@ -133,50 +133,59 @@ TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
   }
 }
 
+// Every method: AST, which carries statistics from pass to pass, previews with a selector of its
+// own; the others with the render's (its extent volumes fitted once), which previews never change.
 TEST(Render, PreviewPassesSamplePixelCentresEveryStepAndLeaveTheRenderAlone) {
   TestScene t(2);
-  renderer::RenderSettings rs;
-  rs.width = 37;  // not a multiple of any step or of the tile size
-  rs.height = 29;
-  rs.tile_size = 8;
-  rs.method = lev::Method::ast;  // carries statistics from pass to pass
-  auto state = renderer::make_render_state(t.scene, *t.rays, rs);
-  const auto plain = renderer::make_render_state(t.scene, *t.rays, rs);
-  EXPECT_TRUE(renderer::render_pass(*plain));
-  // A cancelled preview adds nothing; a step below 1 is refused.
-  std::atomic<bool> cancel{true};
-  EXPECT_FALSE(renderer::render_pass(*state, &cancel, nullptr, 4));
-  for (std::uint32_t s : renderer::render_preview(*state).samples) EXPECT_EQ(s, 0u);
-  EXPECT_THROW(renderer::render_pass(*state, nullptr, nullptr, 0), std::invalid_argument);
-  for (int step : {8, 4, 2}) {
-    ASSERT_TRUE(renderer::render_pass(*state, nullptr, nullptr, step));
-    const renderer::Framebuffer& preview = renderer::render_preview(*state);
-    ASSERT_EQ(preview.width, (rs.width + step - 1) / step);
-    ASSERT_EQ(preview.height, (rs.height + step - 1) / step);
-    const renderer::Framebuffer& pass0 = renderer::render_framebuffer(*plain);
-    for (int py = 0; py < preview.height; ++py) {
-      for (int px = 0; px < preview.width; ++px) {
-        const std::size_t p = static_cast<std::size_t>(py * preview.width + px);
-        const std::size_t i = static_cast<std::size_t>(py * step * rs.width + px * step);
-        // The preview sample is pass 0's sample of the block's corner pixel.
-        ASSERT_EQ(preview.samples[p], 1u);
-        ASSERT_EQ(preview.radiance_sum[p], pass0.radiance_sum[i]) << step << " " << px << "," << py;
-        ASSERT_EQ(preview.lights_tested[p], pass0.lights_tested[i]);
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    SCOPED_TRACE(method.name);
+    EXPECT_EQ(
+        method.id == lev::Method::ast,
+        lev::make_selector(t.scene.lights, lev::MethodParams{method.id})->learns_between_passes());
+    renderer::RenderSettings rs;
+    rs.width = 37;  // not a multiple of any step or of the tile size
+    rs.height = 29;
+    rs.tile_size = 8;
+    rs.method = method.id;
+    auto state = renderer::make_render_state(t.scene, *t.rays, rs);
+    const auto plain = renderer::make_render_state(t.scene, *t.rays, rs);
+    EXPECT_TRUE(renderer::render_pass(*plain));
+    // A cancelled preview adds nothing; a step below 1 is refused.
+    std::atomic<bool> cancel{true};
+    EXPECT_FALSE(renderer::render_pass(*state, &cancel, nullptr, 4));
+    for (std::uint32_t s : renderer::render_preview(*state).samples) EXPECT_EQ(s, 0u);
+    EXPECT_THROW(renderer::render_pass(*state, nullptr, nullptr, 0), std::invalid_argument);
+    for (int step : {8, 4, 2}) {
+      ASSERT_TRUE(renderer::render_pass(*state, nullptr, nullptr, step));
+      const renderer::Framebuffer& preview = renderer::render_preview(*state);
+      ASSERT_EQ(preview.width, (rs.width + step - 1) / step);
+      ASSERT_EQ(preview.height, (rs.height + step - 1) / step);
+      const renderer::Framebuffer& pass0 = renderer::render_framebuffer(*plain);
+      for (int py = 0; py < preview.height; ++py) {
+        for (int px = 0; px < preview.width; ++px) {
+          const std::size_t p = static_cast<std::size_t>(py * preview.width + px);
+          const std::size_t i = static_cast<std::size_t>(py * step * rs.width + px * step);
+          // The preview sample is pass 0's sample of the block's corner pixel.
+          ASSERT_EQ(preview.samples[p], 1u);
+          ASSERT_EQ(preview.radiance_sum[p], pass0.radiance_sum[i])
+              << step << " " << px << "," << py;
+          ASSERT_EQ(preview.lights_tested[p], pass0.lights_tested[i]);
+        }
       }
     }
+    // Nothing of the previews is in the render: no sample, no pass, no time, and the passes that
+    // follow equal those of a state that never previewed.
+    EXPECT_EQ(renderer::render_passes_done(*state), 0);
+    EXPECT_EQ(renderer::render_seconds(*state), 0.0);
+    for (std::uint32_t s : renderer::render_framebuffer(*state).samples) ASSERT_EQ(s, 0u);
+    EXPECT_TRUE(renderer::render_pass(*state));
+    EXPECT_TRUE(renderer::render_pass(*state));
+    EXPECT_TRUE(renderer::render_pass(*plain));
+    EXPECT_TRUE(
+        bitwise_equal(renderer::render_framebuffer(*state), renderer::render_framebuffer(*plain)));
+    EXPECT_EQ(renderer::render_framebuffer(*state).lights_tested,
+              renderer::render_framebuffer(*plain).lights_tested);
   }
-  // Nothing of the previews is in the render: no sample, no pass, no time, and the passes that
-  // follow equal those of a state that never previewed.
-  EXPECT_EQ(renderer::render_passes_done(*state), 0);
-  EXPECT_EQ(renderer::render_seconds(*state), 0.0);
-  for (std::uint32_t s : renderer::render_framebuffer(*state).samples) ASSERT_EQ(s, 0u);
-  EXPECT_TRUE(renderer::render_pass(*state));
-  EXPECT_TRUE(renderer::render_pass(*state));
-  EXPECT_TRUE(renderer::render_pass(*plain));
-  EXPECT_TRUE(
-      bitwise_equal(renderer::render_framebuffer(*state), renderer::render_framebuffer(*plain)));
-  EXPECT_EQ(renderer::render_framebuffer(*state).lights_tested,
-            renderer::render_framebuffer(*plain).lights_tested);
 }
 
 // Without jitter every pass samples the pixel centres: a deterministic method's passes all equal
