@@ -102,6 +102,9 @@ struct CulledSoFar {
   float relative_error = 0.0f;
   glm::dvec3 total{0.0};
   std::uint32_t deferrals = 0;
+  // The radiance error the clusters of the cut may make: per cluster, its estimate E stands for
+  // a shadowed radiance C in [0, its radiance bound B], so |E - C| <= max(E, B) (per channel).
+  glm::dvec3 cluster_error{0.0};
   // The pixel inspector's record (WalkScratch::inspect): what is culled and clustered, when set.
   InspectRecord* record = nullptr;
 };
@@ -192,7 +195,7 @@ inline bool passes(const Light& world, const glm::vec3& point, float tolerance,
     const glm::dvec3 e(irradiance_from_falloff(world, falloff));
     if (kCulled == Culled::budgeted && !fits_budget(culled.sum, e, tolerance)) return true;
     culled.sum += e;
-    if constexpr (kCulled == Culled::tight) {
+    if constexpr (kCulled == Culled::tight || kCulled == Culled::relative) {
       // The light's own radiance bound: its exact irradiance times the response toward it, the
       // same floats rt shades (the point's rounding is the response bound's slack).
       if (culled.radiance) {
@@ -361,6 +364,15 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
     }
     if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
     return true;
+  }
+  if constexpr (kCulled == Culled::relative) {
+    if (culled.radiance) {  // as tight's: bounded, and opened, at the surface once the walk ends
+      const glm::mat3 local_from_world = glm::transpose(linear.rotation);
+      push_radiance_part(h, node, x, local_from_world * culled.radiance->surface.normal,
+                         local_from_world * culled.radiance->surface.mirrored_view, culled);
+      if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
+      return true;
+    }
   }
   const glm::dvec3 b(irradiance_bound(h, node, x));
   if (kCulled == Culled::budgeted && !fits_budget(culled.sum, b, tolerance)) return false;
@@ -569,7 +581,8 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
   const SurfaceResponse surface =
       identity ? culled.surface : surface_in_frame(culled.surface, linear.rotation);
   glm::vec3 irradiance;
-  float bound = brightest(radiance_bound(h, node, x, surface, &irradiance));
+  const glm::vec3 radiance = radiance_bound(h, node, x, surface, &irradiance);
+  float bound = brightest(radiance);
   if (bound == 0.0f) {  // dark here: culled
     if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
     return;
@@ -583,12 +596,14 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
     if (culled.record)
       record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
     culled.sum += glm::dvec3(irradiance);
+    culled.cluster_error += glm::dvec3(glm::max(estimate, radiance));
     return;
   }
   DeferredSubtree& d = deferred.emplace_back();
   d.representative = representative;
   d.estimate = estimate;
   d.irradiance_bound = irradiance;
+  d.radiance_bound = radiance;
   d.bound = bound;
   d.sequence = culled.deferrals++;
   d.node = node;
@@ -625,6 +640,7 @@ bool resume_deferred(std::vector<WalkFrame>& stack, std::vector<WalkLinear>& lin
         record_subtree_cluster(*culled.record, out.size() - 1, d.node, d.linear,
                                d.world_translation);
       culled.sum += glm::dvec3(d.irradiance_bound);
+      culled.cluster_error += glm::dvec3(glm::max(d.estimate, d.radiance_bound));
       deferred.pop_back();
       continue;
     }
@@ -815,8 +831,15 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
-  if constexpr (kCulled == Culled::tight) {
+  if constexpr (kCulled == Culled::tight || kCulled == Culled::relative) {
     if (culled.radiance) answer_culled_radiance(h, tolerance, culled);
+  }
+  if constexpr (kCulled == Culled::relative) {
+    if (culled.radiance) {
+      // The clusters' error on top of what the volumes dropped.
+      culled.radiance->bound =
+          round_up_sum(glm::dvec3(culled.radiance->bound) + culled.cluster_error);
+    }
   }
   if constexpr (kCulled != Culled::dropped && kCulled != Culled::collected) {
     if (kCulled != Culled::relative || culled_irradiance_bound) {
@@ -865,6 +888,26 @@ void find_important_lights_tight_bound(const LightHierarchy& hierarchy,
   }
   walk<true, Culled::tight>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance, point, scratch,
                             important_lights, counters, culled_irradiance_bound, culled);
+}
+
+CulledRadianceBound lev_culled_radiance_bound(const LightHierarchy& hierarchy,
+                                              const ExtentVolumes& volumes, float tolerance,
+                                              const glm::vec3& point,
+                                              const SurfaceResponse& surface, WalkScratch& scratch,
+                                              std::vector<Light>& lights) {
+  CulledRadianceBound answer;
+  answer.surface = surface;
+  InspectRecord* const inspect = scratch.inspect;
+  scratch.inspect = nullptr;
+  scratch.radiance = &answer;
+  lights.clear();
+  WalkCounters counters;
+  glm::vec3 irradiance;
+  find_important_lights_tight_bound(hierarchy, volumes, tolerance, point, scratch, lights, counters,
+                                    &irradiance);
+  scratch.radiance = nullptr;
+  scratch.inspect = inspect;
+  return answer;
 }
 
 glm::dvec3 tightened_irradiance_bound(const LightHierarchy& h, std::uint32_t node,
@@ -950,6 +993,11 @@ void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volume
     culled.shading = &point;
     culled.surface = point.surface_response();
     culled.relative_error = relative_error;
+  }
+  if (scratch.radiance && culled_irradiance_bound) {
+    culled.radiance = scratch.radiance;
+    culled.radiance_parts = &scratch.radiance_parts;
+    scratch.radiance_parts.clear();
   }
   walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
                                point.position(), scratch, lights, counters, culled_irradiance_bound,

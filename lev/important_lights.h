@@ -106,6 +106,7 @@ struct DeferredSubtree {
   Light representative;              // in world space, carrying the subtree's intensity
   glm::vec3 estimate{0.0f};          // its unshadowed radiance, counted in the running total
   glm::vec3 irradiance_bound{0.0f};  // of the subtree: what its cluster leaves uncertain
+  glm::vec3 radiance_bound{0.0f};    // of the subtree at the point's surface (RGB)
 };
 
 // Reused between queries so that a walk allocates nothing once warm.
@@ -167,6 +168,16 @@ void find_important_lights_tight_bound(const LightHierarchy& hierarchy,
                                        const glm::vec3& point, WalkScratch& scratch,
                                        std::vector<Light>& important_lights, WalkCounters& counters,
                                        glm::vec3* culled_irradiance_bound = nullptr);
+
+// The culled radiance bound (CulledRadianceBound) of LEV's walk alone at `tolerance`, for a
+// method whose own walk culls what this one culls or less (lev_est's clusters stand for part of
+// it, lev_cut's volumes drop a subset of it): the tight walk made again for `surface`, its lights
+// kept in `lights` (cleared; scratch) and dropped, its counters too, and no inspector record.
+CulledRadianceBound lev_culled_radiance_bound(const LightHierarchy& hierarchy,
+                                              const ExtentVolumes& volumes, float tolerance,
+                                              const glm::vec3& point,
+                                              const SurfaceResponse& surface, WalkScratch& scratch,
+                                              std::vector<Light>& lights);
 
 // An upper bound of the summed irradiance (RGB) of the lights of the subtree at `node` at x
 // (in the frame the node is entered with): the subtree's aggregate bound where that is at most
@@ -240,7 +251,11 @@ void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolum
 // appended themselves. At relative error 0 nothing is clustered or
 // put aside: the walk is find_important_lights', its lights in the same order.
 // culled_irradiance_bound, as find_important_lights', counts what the volumes dropped and the
-// clusters' irradiance bounds (an estimate is not exact).
+// clusters' irradiance bounds (an estimate is not exact). With scratch.radiance set and
+// culled_irradiance_bound given, it also answers the radiance error bound (CulledRadianceBound):
+// what the volumes dropped, bounded at the surface as find_important_lights_tight_bound bounds
+// it, plus per cluster the larger of its representative's unshadowed radiance and its radiance
+// bound, as neither the estimate nor the light it stands for can leave [0, that].
 void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
                     float relative_error, ShadingPoint& point, WalkScratch& scratch,
                     std::vector<Light>& lights, WalkCounters& counters,

@@ -16,12 +16,14 @@ bool smaller_bound(const CutEntry& a, const CutEntry& b) {
 
 glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
                           ShadingPoint& point, CutScratch& scratch, SelectionCounters& counters,
-                          glm::vec3* culled_irradiance_bound, const std::atomic<bool>* cancel) {
+                          glm::vec3* culled_irradiance_bound, const std::atomic<bool>* cancel,
+                          glm::vec3* cluster_error_bound) {
   std::vector<CutEntry>& heap = scratch.heap;
   std::vector<CutEntry>& final = scratch.final;
   heap.clear();
   final.clear();
   if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(0.0f);
+  if (cluster_error_bound) *cluster_error_bound = glm::vec3(0.0f);
   if (tree.nodes.empty()) return glm::vec3(0.0f);
   const FramePoint x = world_frame_point(point.position());
   const SurfaceResponse surface = point.surface_response();
@@ -37,7 +39,8 @@ glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
     e.node = node;
     const CutTreeNode& n = tree.nodes[node];
     if (!n.is_leaf()) {
-      e.bound = brightest(radiance_bound(n.aggregate, x, surface));
+      e.radiance_bound = radiance_bound(n.aggregate, x, surface);
+      e.bound = brightest(e.radiance_bound);
       if (e.bound == 0.0f) return e;  // no light of it can add anything here: no ray
       e.irradiance_bound = irradiance_bound(n.aggregate, x);
     }
@@ -88,13 +91,16 @@ glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
   std::sort(final.begin(), final.end(), [&](const CutEntry& a, const CutEntry& b) {
     return tree.nodes[a.node].representative < tree.nodes[b.node].representative;
   });
-  glm::dvec3 sum(0.0), culled(0.0);
+  glm::dvec3 sum(0.0), culled(0.0), error(0.0);
   for (const CutEntry& e : final) {
     sum += glm::dvec3(e.estimate);
     culled += glm::dvec3(e.irradiance_bound);
+    // A single light is exact (its bounds are 0): no error.
+    if (!tree.nodes[e.node].is_leaf()) error += glm::dvec3(glm::max(e.estimate, e.radiance_bound));
   }
   counters.lights_tested += final.size();
   if (culled_irradiance_bound) *culled_irradiance_bound = round_up_sum(culled);
+  if (cluster_error_bound) *cluster_error_bound = round_up_sum(error);
   return glm::vec3(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
 }
 

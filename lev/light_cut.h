@@ -36,6 +36,7 @@ struct CutEntry {
   std::uint32_t node = 0;
   glm::vec3 estimate{0.0f};          // the representative's shadowed radiance, cluster intensity
   glm::vec3 irradiance_bound{0.0f};  // the cluster's irradiance bound (0 for a single light)
+  glm::vec3 radiance_bound{0.0f};    // the cluster's radiance bound (0 for a single light)
   std::int8_t visibility = -1;       // of the representative: 1 visible, 0 occluded, -1 not cast
 };
 
@@ -50,10 +51,14 @@ struct CutScratch final : MethodScratch {
 // tested and the rays cast. culled_irradiance_bound (may be null) receives the sum of the
 // irradiance bounds of the clusters estimated (what is not exact). cancel (may be null) is read
 // every kCancelCheckLights refinements; once raised the result is discarded by the caller.
+// cluster_error_bound (may be null) receives a bound of the radiance error of the cut (RGB): per
+// cluster the larger of its estimate and its radiance bound, as the shadowed radiance it stands
+// for lies in [0, the bound].
 glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
                           ShadingPoint& point, CutScratch& scratch, SelectionCounters& counters,
                           glm::vec3* culled_irradiance_bound = nullptr,
-                          const std::atomic<bool>* cancel = nullptr);
+                          const std::atomic<bool>* cancel = nullptr,
+                          glm::vec3* cluster_error_bound = nullptr);
 
 // The pixel inspector's view of the cut shade_light_cut just made in `scratch`: each cluster (a
 // single light as tested, a larger one as a cluster with its lights, each measured at the point

@@ -100,9 +100,10 @@ struct SelectorScratch {
   // lev/inspect_record.h), with walk.inspect the same: the method records there what it shaded,
   // culled and clustered. Null in renders.
   InspectRecord* inspect = nullptr;
-  // Set by the caller for one call, with culled_irradiance_bound: a method that bounds the
-  // unshadowed radiance of what it left out at the point's own surface (CulledRadianceBound,
-  // important_lights.h; `lev`) answers there; the others leave it unanswered (bounded false).
+  // Set by the caller for one call, with culled_irradiance_bound: a method that bounds, at the
+  // point's own surface, the radiance error of what it did not shade exactly (what it left out
+  // or estimated: CulledRadianceBound, important_lights.h; lev, lev_est, lev_cut, ast,
+  // lightcuts) answers there; the others leave it unanswered (bounded false).
   CulledRadianceBound* culled_radiance = nullptr;
 };
 
@@ -121,7 +122,8 @@ class LightSelector {
   virtual void end_pass() {}
   // True when what direct_radiance does depends on the points shaded in earlier passes (AST's
   // visibility statistics, folded in end_pass). A selector that does not learn can shade a
-  // preview too; one that does needs a second selector for it, or the preview would teach it.
+  // preview or the pixel inspector's point too; one that does needs a second selector for
+  // them, or they would teach it.
   virtual bool learns_between_passes() const { return false; }
   // Memory the method keeps besides the light hierarchy (AST's per-light statistics).
   virtual std::size_t bookkeeping_bytes() const { return 0; }

@@ -96,11 +96,13 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   }
   // Step 5: estimate the untested rest from visibility statistics.
   const float point_ratio = point_tests > 0 ? static_cast<float>(point_hits) / point_tests : 1.0f;
+  const auto estimated_ratio = [&](std::uint32_t light) {
+    return tests_[light] > 0 ? static_cast<float>(hits_[light]) / static_cast<float>(tests_[light])
+                             : point_ratio;
+  };
   for (std::size_t k = 0; k < remaining; ++k) {
     const AstCandidate& c = heap[k];
-    const float ratio = tests_[c.light] > 0 ? static_cast<float>(hits_[c.light]) /
-                                                  static_cast<float>(tests_[c.light])
-                                            : point_ratio;
+    const float ratio = estimated_ratio(c.light);
     sum += c.radiance * ratio;
     if (scratch.inspect) {
       ShadedLight& shaded = scratch.inspect->shaded.emplace_back();
@@ -112,11 +114,21 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
     }
   }
   // The estimated rest is off by at most its unshadowed value: its irradiance bounds the error.
+  // At the surface itself, a light estimated at `ratio` of its unshadowed radiance R is off by
+  // R * max(ratio, 1 - ratio) at most, whether it is seen (1) or not (0).
   if (culled_irradiance_bound) {
-    glm::dvec3 rest(0.0);
-    for (std::size_t k = 0; k < remaining; ++k)
-      rest += glm::dvec3(irradiance(world_lights_[heap[k].light], x));
+    glm::dvec3 rest(0.0), rest_radiance(0.0);
+    for (std::size_t k = 0; k < remaining; ++k) {
+      const AstCandidate& c = heap[k];
+      rest += glm::dvec3(irradiance(world_lights_[c.light], x));
+      const float ratio = estimated_ratio(c.light);
+      rest_radiance += glm::dvec3(c.radiance) * static_cast<double>(std::max(ratio, 1.0f - ratio));
+    }
     *culled_irradiance_bound = round_up_sum(rest);
+    if (scratch.culled_radiance) {
+      scratch.culled_radiance->bound = round_up_sum(rest_radiance);
+      scratch.culled_radiance->bounded = true;
+    }
   }
   return sum;
 }

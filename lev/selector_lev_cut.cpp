@@ -14,8 +14,15 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
                                           glm::vec3* culled_irradiance_bound) const {
   scratch.lights.clear();
   WalkCounters walk_counters;
+  CulledRadianceBound culled_radiance;
+  if (scratch.culled_radiance && culled_irradiance_bound) {
+    culled_radiance.surface = point.surface_response();
+    scratch.walk.radiance = &culled_radiance;
+  }
   find_light_cut(hierarchy_, volumes_, tolerance_, relative_error_, point, scratch.walk,
                  scratch.lights, walk_counters, culled_irradiance_bound);
+  scratch.walk.radiance = nullptr;
+  if (culled_radiance.bounded) *scratch.culled_radiance = culled_radiance;
   counters.nodes_visited += walk_counters.nodes_visited;
   // The lights and the clusters' representatives alike: one shadow ray each.
   const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;

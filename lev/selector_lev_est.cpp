@@ -101,6 +101,16 @@ glm::vec3 LevEstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
       clusters, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
       scratch.inspect);
   if (scratch.inspect) scratch.inspect->attach_walk_clusters(clusters_from);
+  // The radiance error at the surface: the clusters' estimate E stands for what lev culls, whose
+  // shadowed radiance C lies in [0, lev's culled radiance bound R] per channel, so |E - C| is at
+  // most max(E, R).
+  if (scratch.culled_radiance && culled_irradiance_bound) {
+    CulledRadianceBound culled_radiance = lev_culled_radiance_bound(
+        hierarchy_, volumes_, tolerance_, x, point.surface_response(), scratch.walk,
+        method_scratch<LevEstScratch>(scratch).bound_lights);
+    culled_radiance.bound = glm::max(culled_radiance.bound, estimate);
+    *scratch.culled_radiance = culled_radiance;
+  }
   // What lev culls, less the clusters' estimate that stood in for it.
   estimate_missed_light(hierarchy_, volumes_, tolerance_, point, scratch, estimate);
   return tested + estimate;

@@ -17,7 +17,8 @@ namespace lev {
 
 // One thread's clusters, reused from point to point.
 struct LevEstScratch final : MethodScratch {
-  std::vector<Light> clusters;  // representatives of what the walk culled
+  std::vector<Light> clusters;      // representatives of what the walk culled
+  std::vector<Light> bound_lights;  // the culled radiance bound's walk's, dropped
 };
 
 class LevEstSelector final : public LightSelector {

@@ -32,10 +32,11 @@ glm::vec3 largest_response(const Material& material);
 // irradiance bound (RGB): the bound times the largest response. A channel the material does not
 // reflect at all bounds nothing, even when the irradiance bound is infinite (never inf * 0).
 glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound);
-// The same, with the selector's bound of the culled radiance at the surface itself when it gave
-// one (CulledRadianceBound, `lev`): per channel the smaller of the two, both upper bounds of the
-// same error. The radiance bound counts each culled part's place around the surface (behind it,
-// grazing, outside a narrow specular lobe), which the largest response cannot.
+// The same, with the selector's bound of the radiance error at the surface itself when it gave
+// one (CulledRadianceBound: lev, lev_est, lev_cut, ast, lightcuts): per channel the smaller of
+// the two, both upper bounds of the same error. The radiance bound counts each culled part's
+// place around the surface (behind it, grazing, outside a narrow specular lobe), which the
+// largest response cannot.
 glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_irradiance_bound,
                               const lev::CulledRadianceBound& culled_radiance);
 

@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "app/viewer/inspector_rows.h"
+#include "lev/light_selector.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
 
@@ -34,10 +35,13 @@ class InspectionTask {
   InspectionTask& operator=(const InspectionTask&) = delete;
 
   // Cancels the inspection in flight (stop()), then inspects pixel (x, y) of render `generation`
-  // (settings: its own; a selector is made as the render's). The scene and rays must stay alive
-  // and unchanged until the next stop() or start().
+  // (settings: its own) with the render's own selector, or, when that one learns between passes
+  // (AST: shadow tests made here would count in the render's statistics), a fresh one made as
+  // the render's. The scene, rays and selector must stay alive and unchanged until the next
+  // stop() or start().
   void start(const renderer::Scene& scene, const renderer::RayScene& rays,
-             const renderer::RenderSettings& settings, int x, int y, std::uint64_t generation);
+             const renderer::RenderSettings& settings, const lev::LightSelector& render_selector,
+             int x, int y, std::uint64_t generation);
   // Cancels the inspection in flight, if any, and returns once it has stopped: the scene is then
   // free to change.
   void stop();
@@ -48,6 +52,7 @@ class InspectionTask {
   struct Job {
     const renderer::Scene* scene = nullptr;
     const renderer::RayScene* rays = nullptr;
+    const lev::LightSelector* render_selector = nullptr;
     renderer::RenderSettings settings;
     int x = 0, y = 0;
     std::uint64_t generation = 0;

@@ -147,6 +147,7 @@ struct Worker {
   }
 
   void publish_main(std::unique_ptr<renderer::RenderJob> job) {
+    shared.inspector.stop();  // it may read the old render's selector
     {
       const std::lock_guard<std::mutex> lock(shared.slot_mutex);
       shared.slot = &job->state();
@@ -155,6 +156,7 @@ struct Worker {
   }
 
   void drop_main(std::uint64_t floor) {
+    shared.inspector.stop();  // it may read this render's selector
     {
       const std::lock_guard<std::mutex> lock(shared.slot_mutex);
       shared.slot = nullptr;
@@ -395,8 +397,8 @@ struct Worker {
   }
 
   // The pinned pixel's inspection, started on the inspection task (a new pixel cancels the one in
-  // flight) with a selector made as the render's (a fresh one: AST's statistics of the render
-  // must not learn from it), once per pixel and render; the task publishes it when done.
+  // flight) with the render's selector (InspectionTask::start), once per pixel and render; the
+  // task publishes it when done.
   void inspect(const std::optional<std::array<int, 2>>& pixel) {
     if (pixel == inspected_pixel && generation == inspected_generation) return;
     shared.inspector.stop();
@@ -409,7 +411,8 @@ struct Worker {
       st.inspection_pending = inside;
     });
     if (inside) {
-      shared.inspector.start(loaded->scene, *loaded->rays, main_settings, (*pixel)[0], (*pixel)[1],
+      shared.inspector.start(loaded->scene, *loaded->rays, main_settings,
+                             renderer::render_selector(main->state()), (*pixel)[0], (*pixel)[1],
                              generation);
     }
   }

@@ -2,11 +2,13 @@
 // at two light counts and three tolerances, and for random scene files, every method's pixel is
 // within its bound of the `rt` pixel (plus one 8-bit step per channel of rounding); `rt`'s bound
 // is 0 everywhere; `lev_bounded`'s bound at a shading point is at most the tolerance times the
-// material's largest response, carried along the path like the radiance; `lev`'s culled radiance
-// bound (CulledRadianceBound) makes its pixel bounds far smaller than the irradiance route's.
+// material's largest response, carried along the path like the radiance; the culled radiance
+// bound (CulledRadianceBound) of lev, lev_est, lev_cut, ast and lightcuts makes their pixel bounds
+// far smaller than the irradiance route's.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <random>
 #include <string>
@@ -240,31 +242,46 @@ class IrradianceRouteOnly final : public lev::LightSelector {
   const lev::LightSelector& inner_;
 };
 
-// On the building and the hall, lev's pixel bound with its radiance bound is never above the
-// irradiance route's (both certified: the renderer keeps the smaller per channel) and, summed
-// over the image, clearly below it: culled lights behind a surface, at grazing angles or outside a
-// specular lobe count for what they can add.
-TEST(ErrorBoundRender, LevsRadianceBoundIsFarBelowTheIrradianceRoute) {
-  for (const char* name : {"building", "hall"}) {
-    const renderer::Scene scene = scenes::find_scene_model(name)->build(4);
-    const renderer::RayScene rays(scene);
-    const auto lev_selector = lev::make_selector(scene.lights, {lev::Method::lev, 0.01f});
-    const IrradianceRouteOnly irradiance_route(*lev_selector);
-    double sum_with = 0.0, sum_without = 0.0;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
-        const glm::vec3 with = traced_bound(scene, rays, *lev_selector, x, y);
-        const glm::vec3 without = traced_bound(scene, rays, irradiance_route, x, y);
-        for (int c = 0; c < 3; ++c) {
-          EXPECT_LE(with[c], without[c]) << name << " pixel " << x << "," << y;
-          sum_with += with[c];
-          sum_without += without[c];
+// On the building and the hall, each method's pixel bound with its radiance bound (what it left
+// out or estimated, bounded at the surface itself) is never above the irradiance route's (both
+// certified: the renderer keeps the smaller per channel) and, summed over the image, clearly
+// below it: culled lights behind a surface, at grazing angles or outside a specular lobe count
+// for what they can add. The ratio printed is the one the limit was set from.
+TEST(ErrorBoundRender, TheRadianceBoundIsFarBelowTheIrradianceRoute) {
+  struct Case {
+    lev::Method method;
+    double largest_ratio;  // of the summed bounds, with / without
+  };
+  // Measured at 32x24 (building, hall): lev 0.22, 0.63; lev_est 0.19, 0.62; lev_cut 0.20, 0.27;
+  // ast 0.07, 0.12; lightcuts 0.14, 0.35.
+  for (const Case& c : {Case{lev::Method::lev, 0.75}, Case{lev::Method::lev_est, 0.75},
+                        Case{lev::Method::lev_cut, 0.4}, Case{lev::Method::ast, 0.2},
+                        Case{lev::Method::lightcuts, 0.5}}) {
+    const char* method_name = lev::method_info(c.method).name;
+    for (const char* name : {"building", "hall"}) {
+      const renderer::Scene scene = scenes::find_scene_model(name)->build(4);
+      const renderer::RayScene rays(scene);
+      lev::MethodParams params{c.method, 0.01f};
+      params.relative_error = 0.02f;
+      const auto selector = lev::make_selector(scene.lights, params);
+      const IrradianceRouteOnly irradiance_route(*selector);
+      double sum_with = 0.0, sum_without = 0.0;
+      for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+          const glm::vec3 with = traced_bound(scene, rays, *selector, x, y);
+          const glm::vec3 without = traced_bound(scene, rays, irradiance_route, x, y);
+          for (int ch = 0; ch < 3; ++ch) {
+            EXPECT_LE(with[ch], without[ch]) << method_name << " " << name << " " << x << "," << y;
+            sum_with += with[ch];
+            sum_without += without[ch];
+          }
         }
       }
+      EXPECT_GT(sum_without, 0.0) << method_name << " " << name;  // it culls something here
+      std::printf("%s %s: radiance / irradiance route %.3f\n", method_name, name,
+                  sum_with / sum_without);
+      EXPECT_LT(sum_with, c.largest_ratio * sum_without) << method_name << " " << name;
     }
-    EXPECT_GT(sum_without, 0.0) << name;  // lev culls something here
-    // Measured at 32x24: one scene below 0.5, the other at 0.63.
-    EXPECT_LT(sum_with, 0.75 * sum_without) << name;
   }
 }
 

@@ -1,7 +1,9 @@
 // The inspector's task (app/viewer/inspection_task.h): it publishes what a render's pass 0 shows
 // at the pixel (the rows of renderer::inspect_pixel for the render's settings), a stop() returns
-// only once nothing of the stopped inspection can be published any more, and a start() replaces
-// the inspection in flight: only the latest pixel's is published after it.
+// only once nothing of the stopped inspection can be published any more, a start() replaces the
+// inspection in flight: only the latest pixel's is published after it, and inspecting with a
+// render's own selector leaves that render's images as they would have been (AST, which learns
+// between passes, gets a selector of its own).
 #include "app/viewer/inspection_task.h"
 
 #include <condition_variable>
@@ -13,7 +15,9 @@
 #include <gtest/gtest.h>
 
 #include "lev/methods.h"
+#include "renderer/framebuffer.h"
 #include "renderer/pixel_inspection.h"
+#include "renderer/render.h"
 #include "scenes/scene_models.h"
 
 namespace {
@@ -57,12 +61,14 @@ struct HallScene {
   renderer::Scene scene = scenes::find_scene_model("hall")->build(3);
   renderer::RayScene rays{scene};
   renderer::RenderSettings settings;
+  std::unique_ptr<lev::LightSelector> selector;  // the render's, as the worker passes it
   HallScene() {
     settings.width = 64;
     settings.height = 48;
     settings.method = lev::Method::lev;
     settings.tolerance = 0.05f;
     settings.compute_error_bound = true;
+    selector = lev::make_selector(scene.lights, renderer::method_params(settings));
   }
 };
 
@@ -70,7 +76,7 @@ TEST(InspectionTask, PublishesThePixelsRowsAsTheRenderSeesThem) {
   const HallScene hall;
   Published published;
   InspectionTask task([&](auto view) { published.add(std::move(view)); });
-  task.start(hall.scene, hall.rays, hall.settings, 32, 30, 7);
+  task.start(hall.scene, hall.rays, hall.settings, *hall.selector, 32, 30, 7);
   const auto view = published.wait_for(1);
   EXPECT_EQ(view->x, 32);
   EXPECT_EQ(view->y, 30);
@@ -98,13 +104,14 @@ TEST(InspectionTask, StopAndANewStartLeaveOnlyTheLatestPixelToBePublished) {
   Published published;
   InspectionTask task([&](auto view) { published.add(std::move(view)); });
   for (int round = 0; round < 20; ++round) {
-    task.start(hall.scene, hall.rays, hall.settings, round, round, 1);
+    task.start(hall.scene, hall.rays, hall.settings, *hall.selector, round, round, 1);
     task.stop();
   }
   // Whatever finished before its stop() was published then; nothing comes after.
   const std::size_t before = published.count();
-  task.start(hall.scene, hall.rays, hall.settings, 3, 40, 2);
-  task.start(hall.scene, hall.rays, hall.settings, 50, 20, 3);  // replaces the one in flight
+  task.start(hall.scene, hall.rays, hall.settings, *hall.selector, 3, 40, 2);
+  // The second replaces the one in flight.
+  task.start(hall.scene, hall.rays, hall.settings, *hall.selector, 50, 20, 3);
   const auto latest = published.wait_for_generation(3);
   EXPECT_EQ(latest->x, 50);
   EXPECT_EQ(latest->y, 20);
@@ -116,6 +123,37 @@ TEST(InspectionTask, StopAndANewStartLeaveOnlyTheLatestPixelToBePublished) {
   EXPECT_EQ(views.back(), latest);
   if (views.size() == before + 2) {
     EXPECT_EQ(views[before]->generation, 2u);
+  }
+}
+
+// The viewer inspects with the render's own selector while the render goes on. AST's statistics
+// of a pass are folded in at its end, so shadow tests counted by an inspection after pass 1 would
+// change pass 3: its images must equal those of a render nobody inspected.
+TEST(InspectionTask, InspectingWithTheRendersSelectorLeavesItsImagesUnchanged) {
+  for (const lev::Method method : {lev::Method::ast, lev::Method::lev_cut}) {
+    HallScene hall;
+    hall.settings.method = method;
+    const auto inspected = renderer::make_render_state(hall.scene, hall.rays, hall.settings);
+    const auto untouched = renderer::make_render_state(hall.scene, hall.rays, hall.settings);
+    ASSERT_TRUE(renderer::render_pass(*inspected));
+    ASSERT_TRUE(renderer::render_pass(*untouched));
+    Published published;
+    InspectionTask task([&](auto view) { published.add(std::move(view)); });
+    std::size_t tested = 0;  // shadow tests the inspections made: what AST would learn from
+    for (int k = 0; k < 4; ++k) {
+      task.start(hall.scene, hall.rays, hall.settings, renderer::render_selector(*inspected),
+                 8 + 12 * k, 6 + 10 * k, 1 + k);
+      tested += published.wait_for(static_cast<std::size_t>(k + 1))->totals.tested_lights;
+    }
+    task.stop();
+    EXPECT_GT(tested, 0u) << lev::method_info(method).name;
+    for (int pass = 0; pass < 2; ++pass) {
+      ASSERT_TRUE(renderer::render_pass(*inspected));
+      ASSERT_TRUE(renderer::render_pass(*untouched));
+    }
+    EXPECT_EQ(renderer::framebuffer_rgb8(renderer::render_framebuffer(*inspected)),
+              renderer::framebuffer_rgb8(renderer::render_framebuffer(*untouched)))
+        << lev::method_info(method).name;
   }
 }
 
