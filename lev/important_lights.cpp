@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "lev/bounds.h"
+#include "lev/hierarchy_cursor.h"
 #include "lev/inspect_record.h"
 #include "lev/light_bounds.h"
 #include "lev/light_cut_tree.h"
@@ -245,13 +246,11 @@ inline void visit_light(const Light& local, const glm::vec3& point, float tolera
 
 // Whether a subtree holds any light (a union may be empty).
 bool holds_lights(const LightHierarchy& h, std::uint32_t node) {
-  while (h.nodes[node].kind == NodeKind::affine) node += 1;
-  const NodeKind kind = h.nodes[node].kind;
-  return kind == NodeKind::point_light || kind == NodeKind::spot_light ||
-         !is_empty(kept_aggregate(h, node));
+  node = pass_transforms(h, node);
+  return node_role(h.nodes[node]) == NodeRole::light || !is_empty(kept_aggregate(h, node));
 }
 
-// A subtree entered with world_from_local = (linear, translation), moved below its affine nodes:
+// A subtree entered with world_from_local = (linear, translation), moved below its transforms:
 // `node` becomes the first other node and `world_from_local` that node's frame. A light there is
 // returned in world space: a light below a transform is culled by its box like a subtree and
 // stands for itself (representative_light, drawn_representative).
@@ -259,14 +258,12 @@ std::optional<Light> light_below_affine(const LightHierarchy& h, std::uint32_t& 
                                         const WalkLinear& linear, const glm::vec3& translation,
                                         Similarity& world_from_local) {
   world_from_local = Similarity{linear.rotation, linear.scale, translation};
-  while (h.nodes[node].kind == NodeKind::affine) {
-    world_from_local = compose(world_from_local, h.transforms[h.nodes[node].payload]);
-    node += 1;
-  }
+  node = pass_transforms(h, node, [&](const HierarchyNode& n) {
+    world_from_local = compose(world_from_local, node_transform(h, n));
+  });
   const HierarchyNode& top = h.nodes[node];
-  if (top.kind == NodeKind::point_light || top.kind == NodeKind::spot_light) {
-    return transform_light(h.lights[top.payload], world_from_local);
-  }
+  if (node_role(top) == NodeRole::light)
+    return transform_light(leaf_light(h, top), world_from_local);
   return std::nullopt;
 }
 
@@ -288,46 +285,33 @@ Light representative_light(const LightHierarchy& h, std::uint32_t node, const Wa
   Similarity light_from_local = cluster_from_local;
   float scale = cluster_from_local.scale;
   for (;;) {
+    node = pass_to_light_or_group(h, node, [&](const HierarchyNode& n) {
+      scale *= node_transform(h, n).scale;
+      if (!aim_along_cone) light_from_local = compose(light_from_local, node_transform(h, n));
+    });
     const HierarchyNode& n = h.nodes[node];
-    switch (n.kind) {
-      case NodeKind::point_light:
-      case NodeKind::spot_light: {
-        Light representative = h.lights[n.payload];
-        if (aim_along_cone) {
-          representative.range *= scale;
-          if (representative.kind == LightKind::spot) {
-            representative.direction =
-                glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
-          }
-        } else {
-          representative = transform_light(representative, light_from_local);
-        }
-        representative.intensity =
-            aggregate.intensity * (cluster_from_local.scale * cluster_from_local.scale);
-        representative.position = apply_point(
-            cluster_from_local, 0.5f * (aggregate.positions.lo + aggregate.positions.hi));
-        return representative;
-      }
-      case NodeKind::affine:
-        scale *= h.transforms[n.payload].scale;
-        if (!aim_along_cone) light_from_local = compose(light_from_local, h.transforms[n.payload]);
-        node += 1;
-        break;
-      case NodeKind::extent_volume:
-      case NodeKind::master:
-        node += 1;
-        break;
-      case NodeKind::instance:
-        node = n.payload;
-        break;
-      case NodeKind::set_union: {
-        // The subtree holds lights (its bound is above 0), so one of the children does.
-        const std::uint32_t* children = &h.union_children[n.payload + 1];
-        while (!holds_lights(h, *children)) ++children;
-        node = *children;
-        break;
-      }
+    if (node_role(n) == NodeRole::group) {
+      // The subtree holds lights (its bound is above 0), so one of the children does.
+      const std::uint32_t* child = group_children(h, n).begin();
+      while (!holds_lights(h, *child)) ++child;
+      node = *child;
+      continue;
     }
+    Light representative = leaf_light(h, n);
+    if (aim_along_cone) {
+      representative.range *= scale;
+      if (representative.kind == LightKind::spot) {
+        representative.direction =
+            glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
+      }
+    } else {
+      representative = transform_light(representative, light_from_local);
+    }
+    representative.intensity =
+        aggregate.intensity * (cluster_from_local.scale * cluster_from_local.scale);
+    representative.position =
+        apply_point(cluster_from_local, 0.5f * (aggregate.positions.lo + aggregate.positions.hi));
+    return representative;
   }
 }
 
@@ -394,36 +378,6 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
   return true;
 }
 
-// Moves a part of a culled subtree down its affine, extent-volume, master and instance nodes to
-// the next light or union, its point into that node's frame as irradiance_bound moves it, and,
-// when given, the surface's directions with it (as light_hierarchy.h's radiance_bound turns them).
-void descend_to_light_or_union(const LightHierarchy& h, std::uint32_t& node, FramePoint& point,
-                               glm::vec3* normal = nullptr, glm::vec3* mirrored_view = nullptr) {
-  for (;;) {
-    const HierarchyNode& n = h.nodes[node];
-    if (n.kind == NodeKind::affine) {
-      const Similarity& xf = h.transforms[n.payload];
-      if ((n.flags & kTranslationOnly) != 0) {
-        point = to_translated_frame(point, xf.translation);
-      } else {
-        point = to_node_frame(point, xf);
-        if (normal) {
-          const glm::mat3 local_from_parent = glm::transpose(xf.rotation);
-          *normal = local_from_parent * *normal;
-          *mirrored_view = local_from_parent * *mirrored_view;
-        }
-      }
-      node += 1;
-    } else if (n.kind == NodeKind::extent_volume || n.kind == NodeKind::master) {
-      node += 1;
-    } else if (n.kind == NodeKind::instance) {
-      node = n.payload;
-    } else {
-      return;
-    }
-  }
-}
-
 // A culled part whose radiance bound is at most this share of the tolerance is not opened: it
 // adds little to the point's bound, and opening it costs as much as a larger one (building 256 at
 // 0.01: the same bounds as with 1/256, fewer parts opened).
@@ -449,17 +403,19 @@ void answer_culled_radiance(const LightHierarchy& h, float tolerance, CulledSoFa
     std::pop_heap(parts.begin(), parts.end(), smaller_radiance_part);
     RadiancePart part = parts.back();
     parts.pop_back();
-    descend_to_light_or_union(h, part.node, part.point, &part.normal, &part.mirrored_view);
+    // Down to the light or union the part stands for, its point and surface moved along.
+    part.node = pass_to_light_or_group(h, part.node, [&](const HierarchyNode& n) {
+      enter_transform(h, n, part.point, part.normal, part.mirrored_view);
+    });
     const HierarchyNode& n = h.nodes[part.node];
-    if (n.kind != NodeKind::set_union) {  // a light: its bounds are its own
+    if (node_role(n) == NodeRole::light) {  // its bounds are its own
       sum += glm::dvec3(part.bound);
       culled.sum += glm::dvec3(part.irradiance);
       continue;
     }
     --openings_left;
-    const std::uint32_t* children = &h.union_children[n.payload];
-    for (std::uint32_t k = 1; k <= children[0]; ++k)
-      push_radiance_part(h, children[k], part.point, part.normal, part.mirrored_view, culled);
+    for (const std::uint32_t child : group_children(h, n))
+      push_radiance_part(h, child, part.point, part.normal, part.mirrored_view, culled);
   }
   parts.clear();
   culled.radiance->bound = round_up_sum(sum);
@@ -467,18 +423,15 @@ void answer_culled_radiance(const LightHierarchy& h, float tolerance, CulledSoFa
 }
 
 // The intensity (draw_weight) of the lights of the subtree at `node`, in the frame it is entered
-// with: an affine node's child's times its scale squared.
+// with: a transform's child's times its scale squared.
 double subtree_weight(const LightHierarchy& h, std::uint32_t node) {
   double scale2 = 1.0;
-  while (h.nodes[node].kind == NodeKind::affine) {
-    const double s = h.transforms[h.nodes[node].payload].scale;
+  node = pass_transforms(h, node, [&](const HierarchyNode& n) {
+    const double s = node_transform(h, n).scale;
     scale2 *= s * s;
-    node += 1;
-  }
+  });
   const HierarchyNode& n = h.nodes[node];
-  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
-    return scale2 * draw_weight(h.lights[n.payload].intensity);
-  }
+  if (node_role(n) == NodeRole::light) return scale2 * draw_weight(leaf_light(h, n).intensity);
   return scale2 * draw_weight(kept_aggregate(h, node).intensity);
 }
 
@@ -500,42 +453,28 @@ Light drawn_representative(const LightHierarchy& h, std::uint32_t node, const Wa
   const glm::vec3 intensity =
       kept_aggregate(h, node).intensity * (world_from_local.scale * world_from_local.scale);
   for (;;) {
+    node = pass_to_light_or_group(h, node, [&](const HierarchyNode& n) {
+      world_from_local = compose(world_from_local, node_transform(h, n));
+    });
     const HierarchyNode& n = h.nodes[node];
-    switch (n.kind) {
-      case NodeKind::point_light:
-      case NodeKind::spot_light: {
-        Light representative = transform_light(h.lights[n.payload], world_from_local);
-        representative.intensity = intensity;
-        return representative;
-      }
-      case NodeKind::affine:
-        world_from_local = compose(world_from_local, h.transforms[n.payload]);
-        node += 1;
-        break;
-      case NodeKind::extent_volume:
-      case NodeKind::master:
-        node += 1;
-        break;
-      case NodeKind::instance:
-        node = n.payload;
-        break;
-      case NodeKind::set_union: {
-        const std::uint32_t* children = &h.union_children[n.payload];
-        double total = 0.0;
-        for (std::uint32_t k = 1; k <= children[0]; ++k) total += subtree_weight(h, children[k]);
-        double left = node_uniform(node) * total;
-        std::uint32_t chosen = 0;
-        for (std::uint32_t k = 1; k <= children[0]; ++k) {
-          const double w = subtree_weight(h, children[k]);
-          if (w <= 0.0 || !holds_lights(h, children[k])) continue;
-          chosen = children[k];
-          if (left < w) break;
-          left -= w;
-        }
-        node = chosen;  // the subtree holds lights (its bound is above 0), so one child does
-        break;
-      }
+    if (node_role(n) == NodeRole::light) {
+      Light representative = transform_light(leaf_light(h, n), world_from_local);
+      representative.intensity = intensity;
+      return representative;
     }
+    const ChildNodes children = group_children(h, n);
+    double total = 0.0;
+    for (const std::uint32_t child : children) total += subtree_weight(h, child);
+    double left = node_uniform(node) * total;
+    std::uint32_t chosen = 0;
+    for (const std::uint32_t child : children) {
+      const double w = subtree_weight(h, child);
+      if (w <= 0.0 || !holds_lights(h, child)) continue;
+      chosen = child;
+      if (left < w) break;
+      left -= w;
+    }
+    node = chosen;  // the subtree holds lights (its bound is above 0), so one child does
   }
 }
 
@@ -551,10 +490,8 @@ constexpr float kCentredSpreadOfEmission = 0.25f;
 // 0.85 / 10.1 %.
 Light cluster_representative(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
                              const glm::vec3& translation) {
-  std::uint32_t below = node;
-  while (h.nodes[below].kind == NodeKind::affine) below += 1;
-  const HierarchyNode& n = h.nodes[below];
-  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
+  const std::uint32_t below = pass_transforms(h, node);
+  if (node_role(h.nodes[below]) == NodeRole::light) {
     return representative_light(h, node, linear, translation);
   }
   const LightAggregate& a = kept_aggregate(h, below);
@@ -700,16 +637,14 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     for (;;) {
       const HierarchyNode& node = nodes.node(index);
       bool descend = false;
-      switch (node.kind) {
-        case NodeKind::point_light:
-        case NodeKind::spot_light:
-          visit_light<kCull, kCulled>(h.lights[node.payload], point, tolerance,
-                                      linear[linear_index], linear_index == 0, translation, out,
-                                      visited, culled);
+      switch (node_role(node)) {
+        case NodeRole::light:
+          visit_light<kCull, kCulled>(leaf_light(h, node), point, tolerance, linear[linear_index],
+                                      linear_index == 0, translation, out, visited, culled);
           break;
-        case NodeKind::affine: {
-          const Similarity& xf = h.transforms[node.payload];
-          const bool translation_only = (node.flags & kTranslationOnly) != 0;
+        case NodeRole::transform: {
+          const Similarity& xf = node_transform(h, node);
+          const bool translation_only = is_translation_only(node);
           // compose(world_from_local, xf), in two parts.
           translation = compose_translation(linear, linear_index, xf.translation, translation);
           if (!translation_only) {
@@ -725,12 +660,11 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
             local_point = translation_only ? local_point - xf.translation
                                            : apply_inverse_point(xf, local_point);
           }
-          index += 1;
+          index = only_child(node, index);
           descend = true;
           break;
         }
-        case NodeKind::extent_volume:
-        case NodeKind::master:
+        case NodeRole::bounded:
           if constexpr (kCull) {
             if (volume_tested) {
               volume_tested = false;
@@ -743,23 +677,23 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               }
             }
           }
-          index += 1;
+          index = only_child(node, index);
           descend = true;
           break;
-        case NodeKind::instance:
-          index = node.payload;
+        case NodeRole::reference:
+          index = only_child(node, index);
           descend = true;
           break;
-        case NodeKind::set_union: {
-          const std::uint32_t* children = &h.union_children[node.payload];
-          const std::uint32_t count = children[0];
+        case NodeRole::group: {
+          const ChildNodes children = group_children(h, node);
+          const std::uint32_t count = children.count;
           // Leading light children are decided here rather than each pushed as a frame: nothing
           // else of this subtree comes before them, so the order is the same.
-          std::uint32_t first_pending = 1;
-          for (; first_pending <= count; ++first_pending) {
+          std::uint32_t first_pending = 0;
+          for (; first_pending < count; ++first_pending) {
             const HierarchyNode& c = nodes.node(children[first_pending]);
-            if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light) break;
-            visit_light<kCull, kCulled>(h.lights[c.payload], point, tolerance, linear[linear_index],
+            if (node_role(c) != NodeRole::light) break;
+            visit_light<kCull, kCulled>(leaf_light(h, c), point, tolerance, linear[linear_index],
                                         linear_index == 0, translation, out, visited, culled);
           }
           // The first child that passes is walked right away; the later ones are pushed
@@ -769,15 +703,15 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
           glm::vec3 first_point(0.0f), first_translation(0.0f);
           std::uint32_t first = kNoNode;
           bool first_tested = false;
-          for (std::uint32_t k = count; k >= first_pending; --k) {
+          for (std::uint32_t k = count; k-- > first_pending;) {
             glm::vec3 child_point = local_point, child_translation = translation;
             std::uint32_t child = children[k];
             bool tested = false;
             if constexpr (kCull) {
               const HierarchyNode& c = nodes.node(child);
+              const NodeRole role = node_role(c);
               // Lights get their exact test instead; a union's box is only its children's.
-              if (c.kind != NodeKind::point_light && c.kind != NodeKind::spot_light &&
-                  c.kind != NodeKind::set_union) {
+              if (role != NodeRole::light && role != NodeRole::group) {
                 ++visited;
                 if (!contains(nodes.volume(child), local_point) &&
                     cull_subtree<kCulled>(h, child, local_point, point_magnitude, translation,
@@ -788,8 +722,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
                 tested = true;
               }
               if constexpr (kCulled == Culled::relative) {
-                if (culled.shading && c.kind != NodeKind::point_light &&
-                    c.kind != NodeKind::spot_light) {
+                if (culled.shading && role != NodeRole::light) {
                   ++visited;
                   cut_or_defer(h, child, local_point, point_magnitude, translation,
                                linear[linear_index], linear_index == 0, tested, out, deferred,
@@ -800,13 +733,15 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
               // The instancing pattern, translation -> instance -> master, is entered here in one
               // step rather than node by node: the same arithmetic as the affine case, and the
               // master's test is the one just made (up to padding).
-              if (c.kind == NodeKind::affine && (c.flags & kTranslationOnly) != 0 &&
-                  nodes.node(child + 1).kind == NodeKind::instance) {
-                const glm::vec3& t = h.transforms[c.payload].translation;
-                child_translation = compose_translation(linear, linear_index, t, translation);
-                child_point = local_point - t;
-                child = nodes.node(child + 1).payload + 1;  // below the master
-                tested = false;
+              if (role == NodeRole::transform && is_translation_only(c)) {
+                const HierarchyNode& below = nodes.node(only_child(c, child));
+                if (node_role(below) == NodeRole::reference) {
+                  const glm::vec3& t = node_transform(h, c).translation;
+                  child_translation = compose_translation(linear, linear_index, t, translation);
+                  child_point = local_point - t;
+                  child = below_referenced_master(below);
+                  tested = false;
+                }
               }
             }
             if (first != kNoNode) {
@@ -927,15 +862,15 @@ glm::dvec3 tightened_irradiance_bound(const LightHierarchy& h, std::uint32_t nod
       sum += glm::dvec3(b);
       continue;
     }
-    descend_to_light_or_union(h, part.node, part.point);
+    part.node = pass_to_light_or_group(
+        h, part.node, [&](const HierarchyNode& n) { enter_transform(h, n, part.point); });
     const HierarchyNode& n = h.nodes[part.node];
-    if (n.kind != NodeKind::set_union) {  // a light: its own bound is b
+    if (node_role(n) == NodeRole::light) {  // its own bound is b
       sum += glm::dvec3(b);
       continue;
     }
     --openings_left;
-    const std::uint32_t* children = &h.union_children[n.payload];
-    for (std::uint32_t k = 1; k <= children[0]; ++k) parts.push_back({children[k], part.point});
+    for (const std::uint32_t child : group_children(h, n)) parts.push_back({child, part.point});
   }
   // The parts' bounds need not sum below the whole's (each bounds its own cone and box).
   return glm::min(sum, whole);
@@ -1018,21 +953,19 @@ namespace {
 
 void flatten_tree_node(const LightTree& tree, const LightTreeNode& node,
                        const Similarity& world_from_local, std::vector<Light>& out) {
-  switch (node.kind) {
-    case NodeKind::point_light:
-    case NodeKind::spot_light:
+  switch (node_role(node.kind)) {
+    case NodeRole::light:
       out.push_back(transform_light(node.light, world_from_local));
       break;
-    case NodeKind::affine:
+    case NodeRole::transform:
       flatten_tree_node(tree, node.children.at(0), compose(world_from_local, node.transform), out);
       break;
-    case NodeKind::extent_volume:
-    case NodeKind::set_union:
-    case NodeKind::master:
+    case NodeRole::bounded:
+    case NodeRole::group:
       for (const LightTreeNode& child : node.children)
         flatten_tree_node(tree, child, world_from_local, out);
       break;
-    case NodeKind::instance:
+    case NodeRole::reference:
       flatten_tree_node(tree, tree.masters.at(node.master), world_from_local, out);
       break;
   }

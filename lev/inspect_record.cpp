@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/light_hierarchy.h"
 #include "lev/light_selector.h"
 #include "lev/transform.h"
@@ -23,34 +24,21 @@ void inspect_subtree(const LightHierarchy& h, std::uint32_t node,
   while (!parts.empty()) {
     Part part = parts.back();
     parts.pop_back();
-    const HierarchyNode& n = h.nodes[part.node];
-    switch (n.kind) {
-      case NodeKind::point_light:
-      case NodeKind::spot_light:
-        out.push_back(
-            inspect_light(transform_light(h.lights[n.payload], part.world_from_local), by, point));
-        if (cancel && out.size() % kCancelCheckLights == 0 &&
-            cancel->load(std::memory_order_relaxed))
-          return;
-        break;
-      case NodeKind::affine:
-        parts.push_back({part.node + 1, compose(part.world_from_local, h.transforms[n.payload])});
-        break;
-      case NodeKind::extent_volume:
-      case NodeKind::master:
-        parts.push_back({part.node + 1, part.world_from_local});
-        break;
-      case NodeKind::instance:
-        parts.push_back({n.payload, part.world_from_local});
-        break;
-      case NodeKind::set_union: {
-        // Last child first on the stack, so the lights come out in the hierarchy's order.
-        const std::uint32_t* children = &h.union_children[n.payload];
-        for (std::uint32_t k = children[0]; k >= 1; --k)
-          parts.push_back({children[k], part.world_from_local});
-        break;
-      }
+    const std::uint32_t below = pass_to_light_or_group(h, part.node, [&](const HierarchyNode& n) {
+      part.world_from_local = compose(part.world_from_local, node_transform(h, n));
+    });
+    const HierarchyNode& n = h.nodes[below];
+    if (node_role(n) == NodeRole::light) {
+      out.push_back(
+          inspect_light(transform_light(leaf_light(h, n), part.world_from_local), by, point));
+      if (cancel && out.size() % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed))
+        return;
+      continue;
     }
+    // Last child first on the stack, so the lights come out in the hierarchy's order.
+    const ChildNodes children = group_children(h, n);
+    for (std::uint32_t k = children.count; k-- > 0;)
+      parts.push_back({children[k], part.world_from_local});
   }
 }
 

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <utility>
 
+#include "lev/hierarchy_cursor.h"
+
 namespace lev {
 namespace {
 
@@ -76,18 +78,16 @@ LightTreeNode build_light_bvh(const std::vector<Light>& lights) {
 
 Bounds light_positions(const LightTreeNode& node,
                        const std::vector<Bounds>& master_light_positions) {
-  switch (node.kind) {
-    case NodeKind::point_light:
-    case NodeKind::spot_light:
+  switch (node_role(node.kind)) {
+    case NodeRole::light:
       return {node.light.position, node.light.position};
-    case NodeKind::affine:
+    case NodeRole::transform:
       return transform_bounds(light_positions(node.children.at(0), master_light_positions),
                               node.transform);
-    case NodeKind::instance:
+    case NodeRole::reference:
       return master_light_positions.at(node.master);
-    case NodeKind::extent_volume:
-    case NodeKind::set_union:
-    case NodeKind::master:
+    case NodeRole::bounded:
+    case NodeRole::group:
       break;
   }
   Bounds b;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lev/extent_volume.h"
+#include "lev/hierarchy_cursor.h"
 
 namespace lev {
 namespace {
@@ -31,9 +32,8 @@ class Flattener {
                                     std::to_string(src.children.size()));
       }
     };
-    switch (src.kind) {
-      case NodeKind::point_light:
-      case NodeKind::spot_light: {
+    switch (node_role(src.kind)) {
+      case NodeRole::light: {
         expect_children(0);
         const bool spot = src.light.kind == LightKind::spot;
         if (spot != (src.kind == NodeKind::spot_light)) {
@@ -44,7 +44,7 @@ class Flattener {
         light_count_ += 1;
         break;
       }
-      case NodeKind::affine: {
+      case NodeRole::transform: {
         expect_children(1);
         const Similarity& xf = src.transform;
         if (!(xf.scale > 0.0f) || !std::isfinite(xf.scale)) {
@@ -58,11 +58,14 @@ class Flattener {
         add(src.children[0], depth + 1, current_master);
         break;
       }
-      case NodeKind::extent_volume:
+      case NodeRole::bounded:
+        if (src.kind == NodeKind::master) {
+          throw std::invalid_argument("master nodes are declared in LightTree::masters only");
+        }
         expect_children(1);
         add(src.children[0], depth + 1, current_master);
         break;
-      case NodeKind::set_union: {
+      case NodeRole::group: {
         const auto offset = static_cast<std::uint32_t>(h_.union_children.size());
         h_.nodes[index].payload = offset;
         h_.union_children.push_back(static_cast<std::uint32_t>(src.children.size()));
@@ -74,7 +77,7 @@ class Flattener {
         }
         break;
       }
-      case NodeKind::instance:
+      case NodeRole::reference:
         expect_children(0);
         if (src.master >= current_master) {
           throw std::invalid_argument("instance of master " + std::to_string(src.master) +
@@ -83,8 +86,6 @@ class Flattener {
         h_.nodes[index].payload = h_.master_ranges[src.master].begin;
         light_count_ += h_.master_light_counts[src.master];
         break;
-      case NodeKind::master:
-        throw std::invalid_argument("master nodes are declared in LightTree::masters only");
     }
     return index;
   }
@@ -115,34 +116,32 @@ void attach_aggregates(LightHierarchy& h) {
   for (const NodeRange& range : h.master_ranges) {
     for (std::uint32_t i = range.end; i-- > range.begin;) {
       HierarchyNode& node = h.nodes[i];
-      switch (node.kind) {
-        case NodeKind::point_light:
-        case NodeKind::spot_light:
-          of_node[i] = light_aggregate(h.lights[node.payload]);
+      switch (node_role(node)) {
+        case NodeRole::light:
+          of_node[i] = light_aggregate(leaf_light(h, node));
           break;
-        case NodeKind::affine:
-          of_node[i] = transform_aggregate(of_node[i + 1], h.transforms[node.payload]);
+        case NodeRole::transform:
+          of_node[i] = transform_aggregate(of_node[only_child(node, i)], node_transform(h, node));
           break;
-        case NodeKind::extent_volume:
-        case NodeKind::master:
-          of_node[i] = of_node[i + 1];
-          kept[i] = kept[i + 1] != kNoAggregate ? kept[i + 1] : keep(of_node[i]);
+        case NodeRole::bounded: {
+          const std::uint32_t child = only_child(node, i);
+          of_node[i] = of_node[child];
+          kept[i] = kept[child] != kNoAggregate ? kept[child] : keep(of_node[i]);
           node.payload = kept[i];
           break;
-        case NodeKind::set_union: {
-          const std::uint32_t count = h.union_children[node.payload];
+        }
+        case NodeRole::group: {
           LightAggregate a;
-          for (std::uint32_t k = 0; k < count; ++k) {
-            a = merge_aggregates(a, of_node[h.union_children[node.payload + 1 + k]]);
-          }
+          for (const std::uint32_t child : group_children(h, node))
+            a = merge_aggregates(a, of_node[child]);
           of_node[i] = a;
           kept[i] = keep(a);
-          h.union_children[node.payload + 1 + count] = kept[i];
+          h.union_children[group_aggregate_slot(h, node)] = kept[i];
           break;
         }
-        case NodeKind::instance:
-          of_node[i] = of_node[node.payload];
-          kept[i] = kept[node.payload];
+        case NodeRole::reference:
+          of_node[i] = of_node[only_child(node, i)];
+          kept[i] = kept[only_child(node, i)];
           break;
       }
     }
@@ -185,32 +184,25 @@ ExtentVolumes fit_extent_volumes(const LightHierarchy& h, float tolerance) {
       const HierarchyNode& node = h.nodes[i];
       out[i].node = node;
       Bounds& volume = out[i].volume;
-      switch (node.kind) {
-        case NodeKind::point_light:
-        case NodeKind::spot_light:
+      switch (node_role(node)) {
+        case NodeRole::light:
+          volume = pad_bounds(light_extent_bounds(leaf_light(h, node), tolerance), kVolumePadding);
+          break;
+        case NodeRole::transform:
           volume =
-              pad_bounds(light_extent_bounds(h.lights[node.payload], tolerance), kVolumePadding);
+              pad_bounds(transform_bounds(out[only_child(node, i)].volume, node_transform(h, node)),
+                         kVolumePadding);
           break;
-        case NodeKind::affine:
-          volume = pad_bounds(transform_bounds(out[i + 1].volume, h.transforms[node.payload]),
-                              kVolumePadding);
+        case NodeRole::bounded:
+        case NodeRole::reference:
+          volume = out[only_child(node, i)].volume;
           break;
-        case NodeKind::extent_volume:
-        case NodeKind::master:
-          volume = out[i + 1].volume;
-          break;
-        case NodeKind::set_union: {
+        case NodeRole::group: {
           Bounds b;
-          const std::uint32_t count = h.union_children[node.payload];
-          for (std::uint32_t k = 0; k < count; ++k) {
-            b = merge(b, out[h.union_children[node.payload + 1 + k]].volume);
-          }
+          for (const std::uint32_t child : group_children(h, node)) b = merge(b, out[child].volume);
           volume = b;
           break;
         }
-        case NodeKind::instance:
-          volume = out[node.payload].volume;
-          break;
       }
     }
   }

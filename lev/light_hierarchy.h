@@ -13,6 +13,8 @@
 // structure: one per union, one per master and extent volume whose child is neither, shared by a
 // master and its instances. A light's is computed from the light; an affine node's is its child's
 // seen through the transform, which irradiance_bound applies to the query point instead.
+//
+// How to step through the nodes, and the bounds read at one, are hierarchy_cursor.h's.
 #pragma once
 
 #include <cstddef>
@@ -90,80 +92,5 @@ ExtentVolumes fit_extent_volumes(const LightHierarchy& hierarchy, float toleranc
 // What the hierarchy needs for a query, in bytes: nodes with one extent volume each (24 bytes,
 // the thesis' per-node box), union child lists, transforms, lights, aggregates, master table.
 std::size_t hierarchy_bytes(const LightHierarchy& hierarchy);
-
-// The aggregate an extent volume, master, instance or union node keeps (light_bounds.h), in the
-// frame the node is entered with. Inline, like irradiance_bound below: the walk asks for them at
-// every subtree it culls.
-inline const LightAggregate& kept_aggregate(const LightHierarchy& h, std::uint32_t node) {
-  const HierarchyNode& n = h.nodes[node];
-  if (n.kind == NodeKind::set_union) {
-    return h.aggregates[h.union_children[n.payload + 1 + h.union_children[n.payload]]];
-  }
-  if (n.kind == NodeKind::instance) return h.aggregates[h.nodes[n.payload].payload];
-  return h.aggregates[n.payload];
-}
-// The same for any node: null for an affine node, whose subtree is seen through its transform,
-// and for a light, which has none stored.
-inline const LightAggregate* stored_aggregate(const LightHierarchy& h, std::uint32_t node) {
-  const NodeKind kind = h.nodes[node].kind;
-  if (kind == NodeKind::affine || kind == NodeKind::point_light || kind == NodeKind::spot_light)
-    return nullptr;
-  return &kept_aggregate(h, node);
-}
-
-// Upper bound of the summed unshadowed irradiance (RGB) of the node's lights at x, given in the
-// frame the node is entered with (light_bounds.h). Affine nodes move x into their child's frame.
-inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node,
-                                  const FramePoint& x) {
-  FramePoint local = x;
-  while (h.nodes[node].kind == NodeKind::affine) {
-    const Similarity& xf = h.transforms[h.nodes[node].payload];
-    local = (h.nodes[node].flags & kTranslationOnly) != 0
-                ? to_translated_frame(local, xf.translation)
-                : to_node_frame(local, xf);
-    node += 1;
-  }
-  const HierarchyNode& n = h.nodes[node];
-  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
-    return irradiance_bound(light_aggregate(h.lights[n.payload]), local);
-  }
-  return irradiance_bound(kept_aggregate(h, node), local);
-}
-
-// The surface as seen from a frame whose world_from_local rotation is `rotation`: its directions
-// turned into the frame. The response depends on directions alone, so a scale changes nothing.
-inline SurfaceResponse surface_in_frame(const SurfaceResponse& surface, const glm::mat3& rotation) {
-  SurfaceResponse local = surface;
-  const glm::mat3 local_from_world = glm::transpose(rotation);
-  local.normal = local_from_world * surface.normal;
-  local.mirrored_view = local_from_world * surface.mirrored_view;
-  return local;
-}
-
-// light_bounds.h's radiance_bound of the node's lights at x: the cluster bound, visibility 1,
-// with x and the surface given in the frame the node is entered with (affine nodes move both
-// into their child's frame, as irradiance_bound moves x). When `irradiance` is given it receives
-// the irradiance part, irradiance_bound's.
-inline glm::vec3 radiance_bound(const LightHierarchy& h, std::uint32_t node, const FramePoint& x,
-                                const SurfaceResponse& surface, glm::vec3* irradiance = nullptr) {
-  FramePoint local = x;
-  SurfaceResponse local_surface = surface;
-  while (h.nodes[node].kind == NodeKind::affine) {
-    const Similarity& xf = h.transforms[h.nodes[node].payload];
-    if ((h.nodes[node].flags & kTranslationOnly) != 0) {
-      local = to_translated_frame(local, xf.translation);
-    } else {
-      local = to_node_frame(local, xf);
-      local_surface = surface_in_frame(local_surface, xf.rotation);
-    }
-    node += 1;
-  }
-  const HierarchyNode& n = h.nodes[node];
-  const bool is_light = n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light;
-  const LightAggregate aggregate =
-      is_light ? light_aggregate(h.lights[n.payload]) : kept_aggregate(h, node);
-  if (irradiance) *irradiance = irradiance_bound(aggregate, local);
-  return radiance_bound(aggregate, local, local_surface);
-}
 
 }  // namespace lev

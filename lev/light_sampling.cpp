@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/light_bounds.h"
 
 namespace lev {
@@ -74,48 +75,13 @@ struct DescentFrame {
   glm::vec3 normal{0.0f};
 };
 
-// Moves node and frame through the transform into an affine node's child.
-// Moves point and normal through the affine node's transform into its child.
-void move_into_affine(const LightHierarchy& h, std::uint32_t node, FramePoint& point,
-                      glm::vec3& normal) {
-  const HierarchyNode& n = h.nodes[node];
-  const Similarity& xf = h.transforms[n.payload];
-  if ((n.flags & kTranslationOnly) != 0) {
-    point = to_translated_frame(point, xf.translation);
-  } else {
-    point = to_node_frame(point, xf);
-    normal = glm::transpose(xf.rotation) * normal;
-  }
-}
-
-void enter_affine(const LightHierarchy& h, std::uint32_t& node, DescentFrame& frame) {
-  frame.world_from_local = compose(frame.world_from_local, h.transforms[h.nodes[node].payload]);
-  move_into_affine(h, node, frame.point, frame.normal);
-  node += 1;
-}
-
-// Follows the nodes that do not branch (affine, extent volume, master, instance) down to the
-// next light or union.
+// Follows the nodes that do not branch (transforms, bounded nodes, references) down to the next
+// light or union, the frame moved along.
 void pass_through(const LightHierarchy& h, std::uint32_t& node, DescentFrame& frame) {
-  for (;;) {
-    const HierarchyNode& n = h.nodes[node];
-    switch (n.kind) {
-      case NodeKind::affine:
-        enter_affine(h, node, frame);
-        break;
-      case NodeKind::extent_volume:
-      case NodeKind::master:
-        node += 1;
-        break;
-      case NodeKind::instance:
-        node = n.payload;
-        break;
-      case NodeKind::point_light:
-      case NodeKind::spot_light:
-      case NodeKind::set_union:
-        return;
-    }
-  }
+  node = pass_to_light_or_group(h, node, [&](const HierarchyNode& n) {
+    frame.world_from_local = compose(frame.world_from_local, node_transform(h, n));
+    enter_transform(h, n, frame.point, frame.normal);
+  });
 }
 
 // The importances of a union's children into weights; returns their sum. When every child's is
@@ -124,12 +90,12 @@ void pass_through(const LightHierarchy& h, std::uint32_t& node, DescentFrame& fr
 // point and cost no shadow ray.
 double child_weights(const LightHierarchy& h, std::uint32_t union_node, const DescentFrame& frame,
                      std::vector<double>& weights, std::uint64_t& nodes_visited) {
-  const std::uint32_t* children = &h.union_children[h.nodes[union_node].payload];
-  const std::uint32_t count = children[0];
+  const ChildNodes children = group_children(h, h.nodes[union_node]);
+  const std::uint32_t count = children.count;
   weights.clear();
   double total = 0.0;
-  for (std::uint32_t k = 1; k <= count; ++k) {
-    const double w = subtree_importance(h, children[k], frame.point, frame.normal);
+  for (const std::uint32_t child : children) {
+    const double w = subtree_importance(h, child, frame.point, frame.normal);
     weights.push_back(w);
     total += w;
   }
@@ -148,17 +114,17 @@ void enumerate(const LightHierarchy& h, std::uint32_t node, DescentFrame frame, 
                std::vector<SampledLight>& out) {
   pass_through(h, node, frame);
   const HierarchyNode& n = h.nodes[node];
-  if (n.kind != NodeKind::set_union) {
-    out.push_back({transform_light(h.lights[n.payload], frame.world_from_local), probability});
+  if (node_role(n) == NodeRole::light) {
+    out.push_back({transform_light(leaf_light(h, n), frame.world_from_local), probability});
     return;
   }
   std::vector<double> weights;
   std::uint64_t visited = 0;
   const double total = child_weights(h, node, frame, weights, visited);
-  const std::uint32_t* children = &h.union_children[n.payload];
-  for (std::size_t k = 0; k < weights.size(); ++k) {
+  const ChildNodes children = group_children(h, n);
+  for (std::uint32_t k = 0; k < weights.size(); ++k) {
     const double p = probability * (weights[k] / total);
-    enumerate(h, children[k + 1], frame, p, out);
+    enumerate(h, children[k], frame, p, out);
   }
 }
 
@@ -182,14 +148,13 @@ double light_importance(const Light& light, const FramePoint& x, const glm::vec3
 
 double subtree_importance(const LightHierarchy& h, std::uint32_t node, const FramePoint& local,
                           const glm::vec3& local_normal) {
-  // Point and normal only, as enter_affine moves them: the importance needs no world_from_local.
+  // Point and normal only, as pass_through moves them: the importance needs no world_from_local.
   FramePoint point = local;
   glm::vec3 normal = local_normal;
-  for (; h.nodes[node].kind == NodeKind::affine; ++node) move_into_affine(h, node, point, normal);
+  node = pass_transforms(h, node,
+                         [&](const HierarchyNode& n) { enter_transform(h, n, point, normal); });
   const HierarchyNode& n = h.nodes[node];
-  if (n.kind == NodeKind::point_light || n.kind == NodeKind::spot_light) {
-    return light_importance(h.lights[n.payload], point, normal);
-  }
+  if (node_role(n) == NodeRole::light) return light_importance(leaf_light(h, n), point, normal);
   return aggregate_importance(kept_aggregate(h, node), point, normal);
 }
 
@@ -215,15 +180,15 @@ void sample_light(const LightHierarchy& h, const SubtreeRef& start, const Sampli
   for (;;) {
     pass_through(h, node, frame);
     const HierarchyNode& n = h.nodes[node];
-    if (n.kind != NodeKind::set_union) {
-      sampled.light = transform_light(h.lights[n.payload], frame.world_from_local);
+    if (node_role(n) == NodeRole::light) {
+      sampled.light = transform_light(leaf_light(h, n), frame.world_from_local);
       sampled.probability = probability;
       return;
     }
     const double total = child_weights(h, node, frame, weights, nodes_visited);
     const std::size_t k = choose_weighted(weights, total, random.next_float());
     probability *= weights[k] / total;
-    node = h.union_children[n.payload + 1 + k];
+    node = group_children(h, n)[static_cast<std::uint32_t>(k)];
   }
 }
 
@@ -244,20 +209,19 @@ void open_wide_parts(const LightHierarchy& h, CulledParts& parts, std::size_t ma
     pass_through(h, node, frame);
     const HierarchyNode& n = h.nodes[node];
     bool open = false;
-    if (n.kind == NodeKind::set_union) {
+    if (node_role(n) == NodeRole::group) {
       const LightAggregate& a = kept_aggregate(h, node);
       // The parts if this one opened: those kept, those still queued, the lights, its children.
       const std::size_t parts_after = parts.subtrees.size() + (queue.size() - head - 1) +
-                                      parts.lights.size() + h.union_children[n.payload];
+                                      parts.lights.size() + group_children(h, n).count;
       open = !shines_everywhere(a) && a.cos_axis_spread < cos_wide && parts_after <= max_parts;
     }
     if (!open) {
       parts.subtrees.push_back(queue[head]);
       continue;
     }
-    const std::uint32_t* children = &h.union_children[n.payload];
-    for (std::uint32_t c = 1; c <= children[0]; ++c)
-      queue.push_back({children[c], frame.world_from_local, frame.point});
+    for (const std::uint32_t child : group_children(h, n))
+      queue.push_back({child, frame.world_from_local, frame.point});
   }
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/light_bvh.h"
 
 namespace scenes {
@@ -53,7 +54,7 @@ class LightTreeBuilder {
       for (const SceneNode& c : node.children) {
         std::optional<lev::LightTreeNode> n = convert(c);
         if (!n) continue;
-        if (n->kind != lev::NodeKind::set_union) {
+        if (lev::node_role(n->kind) != lev::NodeRole::group) {
           atoms.push_back(std::move(*n));
           continue;
         }
@@ -92,18 +93,16 @@ class LightTreeBuilder {
   // An atom or a union of atoms seen through xf.
   static lev::LightTreeNode place(const lev::Similarity& xf, lev::LightTreeNode node) {
     if (lev::is_identity(xf)) return node;
-    switch (node.kind) {
-      case lev::NodeKind::point_light:
-      case lev::NodeKind::spot_light:
+    switch (lev::node_role(node.kind)) {
+      case lev::NodeRole::light:
         return lev::light_node(lev::transform_light(node.light, xf));
-      case lev::NodeKind::affine:
+      case lev::NodeRole::transform:
         return lev::affine_node(lev::compose(xf, node.transform), std::move(node.children[0]));
-      case lev::NodeKind::set_union:
+      case lev::NodeRole::group:
         for (lev::LightTreeNode& atom : node.children) atom = place(xf, std::move(atom));
         return node;
-      case lev::NodeKind::instance:
-      case lev::NodeKind::extent_volume:
-      case lev::NodeKind::master:
+      case lev::NodeRole::reference:
+      case lev::NodeRole::bounded:
         break;
     }
     return lev::affine_node(xf, std::move(node));
@@ -114,7 +113,8 @@ class LightTreeBuilder {
   // and transforms they came in) get the automatic hierarchy over the boxes of their light
   // positions, instances kept as instances; fewer stay a union.
   lev::LightTreeNode hierarchy(lev::LightTreeNode node) const {
-    if (node.kind != lev::NodeKind::set_union || node.children.size() <= kMaxUnstructuredLights)
+    if (lev::node_role(node.kind) != lev::NodeRole::group ||
+        node.children.size() <= kMaxUnstructuredLights)
       return node;
     std::vector<lev::BvhItem> items;
     items.reserve(node.children.size());

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
 #include "lev/light_bounds.h"
 #include "lev/light_hierarchy.h"

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
 #include "lev/light_hierarchy.h"
 #include "scenes/scene_instantiation.h"
