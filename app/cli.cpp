@@ -103,6 +103,17 @@ void check_subcommand_name(const CLI::App& cli, int argc, char** argv) {
   throw UsageError("unknown command '" + std::string(argv[1]) + "'; the commands are " + names);
 }
 
+// A flag an older levrt had under another name: CLI11 would only say it was not expected.
+void check_renamed_flags(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--", 0) != 0) continue;
+    const std::string name = arg.substr(2, arg.find('=') - 2);
+    if (const char* now = renamed_setting(name))
+      throw UsageError("--" + name + ": is now called --" + now + ", got '" + arg + "'");
+  }
+}
+
 Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults,
                              CLI::Option* lights_option, const std::string& lights_text) {
   Settings settings = defaults;
@@ -260,10 +271,11 @@ int run_cli(int argc, char** argv) {
   SceneFlags view_flags;
   const Settings view_defaults = viewer_default_settings();
   add_scene_flags(*view, view_flags, view_defaults);
-  viewer::ViewFlags view_options;
+  viewer::ViewerFlags view_options;
   add_view_flags(*view, view_options);
 
   check_subcommand_name(cli, argc, argv);
+  check_renamed_flags(argc, argv);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -305,7 +317,7 @@ int run_cli(int argc, char** argv) {
   }
   if (viewer_display_available()) {
     try {
-      return run_view(viewer_default_settings(), viewer::ViewFlags{});
+      return run_view(viewer_default_settings(), viewer::ViewerFlags{});
     } catch (const viewer::NoDisplayError&) {
       // The display DISPLAY names cannot be opened: the headless job instead.
     }

@@ -10,10 +10,28 @@
 namespace app {
 namespace {
 
-// A signal handler can reach no object but a static one: this lock-free flag is the only
-// process-wide state in levrt, written by the handler and read by the render loop.
+// A signal handler can reach no object but a static one: this lock-free flag is written by the
+// handler and read by the render loop. It and the writes in flight below are levrt's only
+// process-wide state: the watchdog that ends the process must see every writer, whatever thread
+// or command layer it runs in.
 std::atomic<bool> g_interrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "the signal flag must be lock-free");
+
+struct WritesInFlight {
+  std::mutex mutex;
+  std::condition_variable changed;
+  int count = 0;
+  bool ending = false;  // a watchdog is ending the process: no write may begin
+};
+WritesInFlight g_writes;
+
+// Marks the process as ending when no write is in flight; false while one is.
+bool end_unless_writing() {
+  const std::lock_guard<std::mutex> lock(g_writes.mutex);
+  if (g_writes.count > 0) return false;
+  g_writes.ending = true;
+  return true;
+}
 
 void raise_flag(int) {
   g_interrupted.store(true);
@@ -53,6 +71,10 @@ InterruptWatchdog::InterruptWatchdog() {
     const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                              std::chrono::duration<double>(kLoadGraceSeconds));
     if (ended_.wait_until(lock, deadline, [this] { return done_; })) return;
+    // Past the grace, but a write in flight finishes first (its files complete and renamed).
+    while (!end_unless_writing()) {
+      if (ended_.wait_for(lock, kPoll, [this] { return done_; })) return;
+    }
     // The command is stuck in a step that cannot poll, or slow to tear down. It has written
     // nothing; nothing else may run (no destructor, no other thread's half-done state): one
     // line, then _Exit.
@@ -70,6 +92,21 @@ InterruptWatchdog::~InterruptWatchdog() {
   }
   ended_.notify_all();
   thread_.join();
+}
+
+OutputWriteScope::OutputWriteScope() {
+  std::unique_lock<std::mutex> lock(g_writes.mutex);
+  // Once ending, the watchdog's _Exit follows at once: waiting for it writes nothing.
+  g_writes.changed.wait(lock, [] { return !g_writes.ending; });
+  g_writes.count += 1;
+}
+
+OutputWriteScope::~OutputWriteScope() {
+  {
+    const std::lock_guard<std::mutex> lock(g_writes.mutex);
+    g_writes.count -= 1;
+  }
+  g_writes.changed.notify_all();
 }
 
 }  // namespace app

@@ -30,11 +30,11 @@ class InterruptScope {
   static void throw_if_interrupted();
 };
 
-// While a command works without writing (loading the scene, rendering, tearing down after an
-// interrupt): once the interrupt flag is raised and the command has not ended kLoadGraceSeconds
-// later, the watchdog prints the interrupted line and ends the process with exit code 130 at
-// once, so Ctrl-C ends any load within a second, even one stuck in a step that cannot poll.
-// Destroy it before writing outputs: a write is never cut short.
+// While a command works (loading the scene, rendering, tearing down after an interrupt): once
+// the interrupt flag is raised and the command has not ended kLoadGraceSeconds later, the
+// watchdog prints the interrupted line and ends the process with exit code 130 at once, so
+// Ctrl-C ends any load within a second, even one stuck in a step that cannot poll. It never cuts
+// a write short: it waits while an OutputWriteScope lives, and no write starts after it decided.
 inline constexpr double kLoadGraceSeconds = 0.5;
 
 class InterruptWatchdog {
@@ -49,6 +49,19 @@ class InterruptWatchdog {
   std::condition_variable ended_;
   bool done_ = false;
   std::thread thread_;
+};
+
+// One write of output files (write_output_files holds it from the first byte encoded to the last
+// rename). While one lives, an InterruptWatchdog does not end the process, so a command that
+// writes while it runs (the viewer's snapshots, from their own thread) can keep a watchdog for its
+// whole life. A write that would begin once a watchdog has decided to end the process waits for
+// that end instead: it never leaves a temporary behind.
+class OutputWriteScope {
+ public:
+  OutputWriteScope();
+  ~OutputWriteScope();
+  OutputWriteScope(const OutputWriteScope&) = delete;
+  OutputWriteScope& operator=(const OutputWriteScope&) = delete;
 };
 
 }  // namespace app

@@ -19,6 +19,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include "app/interrupt.h"
 #include "app/settings.h"
 
 namespace app {
@@ -314,6 +315,7 @@ void write_output_files(const std::vector<OutputFile>& files) {
   // disk stops the command before anything reached them), then the temporaries are renamed.
   std::vector<std::pair<std::string, std::string>> in_place;
   std::vector<StagedFile> staged;
+  const OutputWriteScope writing;  // a watchdog (app/interrupt.h) waits for these files
   const TerminationSignalsBlocked blocked;
   try {
     for (const OutputFile& file : files) {

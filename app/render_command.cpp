@@ -163,9 +163,9 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);
-  if (settings.image.missed_samples > 0) {
+  if (settings.image.missed_draws > 0) {
     s.missed = renderer::missed_light_stats(result.framebuffer);
-    s.missed_samples = settings.image.missed_samples;
+    s.missed_draws = settings.image.missed_draws;
   }
   if (reference) {
     const auto error = renderer::summarize_pixel_error(
@@ -187,8 +187,8 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
 
 int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   Settings settings = typed_settings;
-  if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.image.missed_samples == 0) {
-    settings.image.missed_samples = kDefaultMissedSamples;
+  if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.image.missed_draws == 0) {
+    settings.image.missed_draws = kDefaultMissedDraws;
   }
   render_settings_from(settings);  // validates the combination of settings before any work
   if (!outputs.reference_rt) {
@@ -335,8 +335,8 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
     std::snprintf(setting, sizeof(setting), ", relative error %g", settings.method.relative_error);
     method_text += setting;
   }
-  if (method.samples)
-    method_text += ", " + std::to_string(settings.method.light_samples) + " light samples";
+  if (method.stochastic)
+    method_text += ", " + std::to_string(settings.method.lights_per_point) + " lights per point";
   std::fprintf(summary,
                "%s level %d, %llu lights, %s: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",

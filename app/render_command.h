@@ -24,8 +24,8 @@ struct RenderOutputs {
   std::string image;  // PNG (the displayed image) or EXR (radiance and channels)
   std::string stats;  // JSON
   // The heatmap PNGs asked for, by view (app/view_table.h: the rows with an output flag). The
-  // missed-light heatmap turns the estimate on (kDefaultMissedSamples draws unless
-  // --missed-samples says); the error heatmap, the reference's own image PNG and the accuracy
+  // missed-light heatmap turns the estimate on (kDefaultMissedDraws draws unless
+  // --missed-draws says); the error heatmap, the reference's own image PNG and the accuracy
   // gate (exit 3 above it) need reference_rt.
   std::map<ViewMode, std::string> heatmaps;
   // --heatmap-range: every heatmap drawn over this range (renderer::heatmap_position's scale)

@@ -16,7 +16,7 @@ void set_stats_from_settings(RenderStats& stats, const Settings& settings) {
   stats.display = renderer::display_curve_name(settings.display.curve);
   stats.camera_index = settings.scene.camera;
   stats.relative_error = settings.method.relative_error;
-  stats.light_samples = settings.method.light_samples;
+  stats.lights_per_point = settings.method.lights_per_point;
 }
 
 nlohmann::ordered_json render_stats_json(const RenderStats& s) {
@@ -38,7 +38,7 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["tolerance"] = read_or_null(reads(&lev::MethodInfo::uses_tolerance), s.tolerance);
   j["relative_error"] =
       read_or_null(reads(&lev::MethodInfo::uses_relative_error), s.relative_error);
-  j["light_samples"] = read_or_null(reads(&lev::MethodInfo::samples), s.light_samples);
+  j["lights_per_point"] = read_or_null(reads(&lev::MethodInfo::stochastic), s.lights_per_point);
   j["width"] = s.width;
   j["height"] = s.height;
   j["spp"] = s.spp;
@@ -104,7 +104,7 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
     j["std_error_avg_pct"] = nullptr;
   }
   if (s.missed) {
-    j["missed_samples"] = s.missed_samples;
+    j["missed_draws"] = s.missed_draws;
     j["missed_estimate_avg_pct"] = s.missed->average_pct;
     j["missed_estimate_max_pct"] = s.missed->max_pct;
     j["missed_estimate_std_error_avg_pct"] = s.missed->std_error_avg_pct;

@@ -37,7 +37,7 @@ struct RenderStats {
   // The method's settings; the JSON writes null for one the method does not read (lev/methods.h).
   double tolerance = 0.0;
   double relative_error = 0.0;
-  int light_samples = 0;  // lights a sampling method draws per shading point and pass
+  int lights_per_point = 0;  // lights a sampling method draws per shading point and pass
   int width = 0;
   int height = 0;
   int spp = 0;      // passes done
@@ -70,7 +70,7 @@ struct RenderStats {
   // The missed-light estimate (renderer/missed_light.h), when asked for, its draws per shading
   // point.
   std::optional<renderer::MissedLightStats> missed;
-  int missed_samples = 0;
+  int missed_draws = 0;
 };
 
 // The fields the settings decide alone, the same for `render` and a viewer snapshot: threads

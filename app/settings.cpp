@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "scenes/gltf_scene.h"
 #include "scenes/scene_file.h"
@@ -75,9 +76,9 @@ const char* tolerance_unused(const Settings& s) {
 }
 
 const char* samples_unused(const Settings& s) {
-  return lev::method_info(s.method.method).samples
+  return lev::method_info(s.method.method).stochastic
              ? nullptr
-             : "only the sampling methods (lev_mc, light_tree) draw light samples";
+             : "only the sampling methods (lev_mc, light_tree) draw lights per point";
 }
 
 const char* relative_error_unused(const Settings& s) {
@@ -127,10 +128,10 @@ const std::vector<SettingSpec>& setting_table() {
        IntRange{in_group<&Settings::image, &renderer::ImageSettings::height>(), 1, kMaxImageSide}},
       {"spp", "Passes", "passes, one sample per pixel each",
        IntRange{in_group<&Settings::image, &renderer::ImageSettings::spp>(), 1, 100000}},
-      {"samples", "Light samples",
+      {"lights-per-point", "Lights per point",
        "lights lev_mc and light_tree draw per shading point and pass (each one shadow ray)",
-       IntRange{in_group<&Settings::method, &lev::MethodChoice::light_samples>(), 1,
-                lev::kMaxLightSamples},
+       IntRange{in_group<&Settings::method, &lev::MethodChoice::lights_per_point>(), 1,
+                lev::kMaxLightsPerPoint},
        samples_unused},
       {"relative-error", "Relative error",
        "lightcuts: refine the cut until every cluster's error bound is below this share of the "
@@ -166,12 +167,12 @@ const std::vector<SettingSpec>& setting_table() {
               },
               renderer::display_curve_names, nullptr,
               [](const std::string& o) { return display_option_summary(o); }}},
-      {"missed-samples", "Missed light",
+      {"missed-draws", "Missed light",
        "draws per shading point of the light a method left out, each with a shadow ray: the "
        "missed-light estimate and its standard error (0: off; --heatmap-missed turns it on with "
        "16; at least 2)",
-       IntRange{in_group<&Settings::image, &renderer::ImageSettings::missed_samples>(), 0,
-                lev::kMaxLightSamples}},
+       IntRange{in_group<&Settings::image, &renderer::ImageSettings::missed_draws>(), 0,
+                lev::kMaxLightsPerPoint}},
   };
   return table;
 }
@@ -179,6 +180,18 @@ const std::vector<SettingSpec>& setting_table() {
 const SettingSpec* find_setting(const std::string& name) {
   for (const SettingSpec& s : setting_table()) {
     if (name == s.name) return &s;
+  }
+  return nullptr;
+}
+
+const char* renamed_setting(const std::string& old_name) {
+  // "samples" meant lights per point while the pixel samples were --spp; a sample is now a pixel's.
+  static const std::pair<const char*, const char*> renamed[] = {
+      {"samples", "lights-per-point"},
+      {"missed-samples", "missed-draws"},
+  };
+  for (const auto& [before, now] : renamed) {
+    if (old_name == before) return now;
   }
   return nullptr;
 }
@@ -267,7 +280,7 @@ Restart restart_needed(const Settings& before, const Settings& after) {
   // the pass count, taken from before: any other image setting restarts the view.
   renderer::ImageSettings view = after.image;
   view.threads = before.image.threads;
-  view.missed_samples = before.image.missed_samples;
+  view.missed_draws = before.image.missed_draws;
   view.spp = before.image.spp;
   if (view != before.image) return Restart::view;
   renderer::ImageSettings render = after.image;
@@ -308,14 +321,14 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   // Tolerances below the smallest float become 0 (no culling) and above the largest become
   // +inf (everything culled): both are the limits the user asked for.
   rs.tolerance = static_cast<float>(settings.method.tolerance);
-  rs.light_samples = settings.method.light_samples;
+  rs.lights_per_point = settings.method.lights_per_point;
   rs.relative_error = static_cast<float>(settings.method.relative_error);
-  if (image.missed_samples != 0 && image.missed_samples < renderer::kMinMissedSamples) {
-    throw UsageError("--missed-samples: must be 0 (off) or at least " +
-                     std::to_string(renderer::kMinMissedSamples) + ", got '" +
-                     std::to_string(image.missed_samples) + "'");
+  if (image.missed_draws != 0 && image.missed_draws < renderer::kMinMissedDraws) {
+    throw UsageError("--missed-draws: must be 0 (off) or at least " +
+                     std::to_string(renderer::kMinMissedDraws) + ", got '" +
+                     std::to_string(image.missed_draws) + "'");
   }
-  rs.missed_samples = image.missed_samples;
+  rs.missed_draws = image.missed_draws;
   rs.exposure_ev = settings.display.exposure_ev;
   return rs;
 }

@@ -67,7 +67,7 @@ enum class Restart {
 Restart restart_needed(const Settings& before, const Settings& after);
 
 // The draws of the missed-light estimate when an output asks for it and none were given.
-inline constexpr int kDefaultMissedSamples = 16;
+inline constexpr int kDefaultMissedDraws = 16;
 
 // A command-line or input mistake: reported as one line, exit code 2.
 struct UsageError : std::runtime_error {
@@ -122,6 +122,9 @@ struct SettingSpec {
 
 const std::vector<SettingSpec>& setting_table();
 const SettingSpec* find_setting(const std::string& name);
+// The table's name of a setting that an older levrt called `old_name` ("samples" is now
+// "lights-per-point"), or null: the CLI and the viewer's scripts name the new one in their error.
+const char* renamed_setting(const std::string& old_name);
 
 // Parses text for the setting and stores it; throws UsageError "--name: ..., got 'text'".
 void set_setting(Settings& settings, const SettingSpec& spec, const std::string& text);

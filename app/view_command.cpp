@@ -9,7 +9,7 @@
 
 namespace app {
 
-void add_view_flags(CLI::App& command, viewer::ViewFlags& flags) {
+void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags) {
   command.add_option("--frames", flags.frames, "scripted: run this many UI frames, then exit")
       ->check(CLI::NonNegativeNumber);
   command.add_option("--screenshot", flags.screenshot,
@@ -39,10 +39,10 @@ bool viewer_display_available() {
 #endif
 }
 
-int run_view(const Settings& settings, const viewer::ViewFlags& flags) {
+int run_view(const Settings& settings, const viewer::ViewerFlags& flags) {
 #ifdef LEVRT_HAS_VIEWER
   if (flags.script.empty()) return viewer::run_viewer(settings, flags);
-  viewer::ViewFlags with_script = flags;
+  viewer::ViewerFlags with_script = flags;
   with_script.changes = viewer::read_script_file(flags.script);
   with_script.changes.insert(with_script.changes.end(), flags.changes.begin(), flags.changes.end());
   return viewer::run_viewer(settings, with_script);

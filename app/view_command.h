@@ -1,12 +1,12 @@
 // `levrt view`: the interactive viewer's command-line side. It registers the flags that only the
-// viewer has (app/viewer/view_flags.h) and decides whether a viewer can open at all; the viewer
+// viewer has (app/viewer/viewer_flags.h) and decides whether a viewer can open at all; the viewer
 // itself lives in app/viewer/ and is only built when LEVRT_HAS_VIEWER.
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include "app/settings.h"
-#include "app/viewer/view_flags.h"
+#include "app/viewer/viewer_flags.h"
 
 namespace app {
 
@@ -20,12 +20,12 @@ inline Settings viewer_default_settings() {
   return settings;
 }
 
-void add_view_flags(CLI::App& command, viewer::ViewFlags& flags);
+void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags);
 
 // True when levrt was built with the viewer and DISPLAY names a display.
 bool viewer_display_available();
 
 // Opens the viewer; throws viewer::NoDisplayError without a display, UsageError for bad flags.
-int run_view(const Settings& settings, const viewer::ViewFlags& flags);
+int run_view(const Settings& settings, const viewer::ViewerFlags& flags);
 
 }  // namespace app

@@ -64,11 +64,11 @@ struct RandomStream {
 
 // A request for the missed light at one shading point (lev/missed_light.h), set in
 // SelectorScratch::missed by the renderer when asked: a method that leaves light out estimates
-// (rt's direct radiance - its own) from `samples` draws of what it left out, with shadow rays,
+// (rt's direct radiance - its own) from `draws` draws of what it left out, with shadow rays,
 // and the variance of that estimate; rt and the sampling methods, which leave nothing out on
 // average, leave `estimated` false.
 struct MissedLight {
-  int samples = 0;                 // K >= 2 draws
+  int draws = 0;                   // K >= 2
   RandomStream* random = nullptr;  // its own stream: the method's image never depends on it
   bool estimated = false;          // out
   glm::vec3 radiance{0.0f};        // out: negative where a method's stand-in overshoots

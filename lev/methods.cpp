@@ -74,22 +74,23 @@ std::vector<MethodInfo> built_in_rows() {
       {Method::lev_mc,
        "lev_mc",
        "LEV + sampled rest (unbiased)",
-       "LEV's shadow rays, plus k lights (--samples) drawn from what the walk culled by their "
+       "LEV's shadow rays, plus k lights (--lights-per-point) drawn from what the walk culled by "
+       "their "
        "irradiance bound, weighed by 1/probability: passes converge to rt",
-       kUsesTolerance | kSamples,
+       kUsesTolerance | kStochastic,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LevMcSelector>(h, scene_tolerance(p), p.light_samples);
+         return std::make_unique<LevMcSelector>(h, scene_tolerance(p), p.lights_per_point);
        }},
       {Method::light_tree,
        "light_tree",
        "Light tree (pbrt-v4, Cycles)",
-       "k lights (--samples) drawn from the whole hierarchy by importance (pbrt-v4's "
+       "k lights (--lights-per-point) drawn from the whole hierarchy by importance (pbrt-v4's "
        "BVHLightSampler, Cycles' light tree), weighed by 1/probability: passes converge to rt",
-       kSamples,
+       kStochastic,
        {},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
-         return std::make_unique<LightTreeSelector>(h, p.light_samples);
+         return std::make_unique<LightTreeSelector>(h, p.lights_per_point);
        }},
       {Method::lightcuts,
        "lightcuts",
@@ -151,7 +152,7 @@ MethodInfo::MethodInfo(Method id_, const char* name_, const char* label_, const 
       uses_tolerance((traits & kUsesTolerance) != 0),
       uses_relative_error((traits & kUsesRelativeError) != 0),
       is_reference((traits & kIsReference) != 0),
-      samples((traits & kSamples) != 0),
+      stochastic((traits & kStochastic) != 0),
       scans_every_light((traits & kScansEveryLight) != 0),
       reads_display_scale((traits & (kUsesTolerance | kReadsDisplayScale)) != 0),
       bench_tolerances(std::move(bench_tolerances_)),
@@ -185,9 +186,9 @@ Method reference_method() {
 
 std::unique_ptr<LightSelector> make_selector(const LightHierarchy& hierarchy,
                                              const MethodParams& params) {
-  if (params.light_samples < 1 || params.light_samples > kMaxLightSamples) {
-    throw std::invalid_argument("samples per point " + std::to_string(params.light_samples) +
-                                " outside [1, " + std::to_string(kMaxLightSamples) + "]");
+  if (params.lights_per_point < 1 || params.lights_per_point > kMaxLightsPerPoint) {
+    throw std::invalid_argument("lights per point " + std::to_string(params.lights_per_point) +
+                                " outside [1, " + std::to_string(kMaxLightsPerPoint) + "]");
   }
   if (!(params.display_scale > 0.0f) || !std::isfinite(params.display_scale)) {
     throw std::invalid_argument("display scale " + std::to_string(params.display_scale) +
@@ -215,17 +216,17 @@ MethodChoice used_settings(const MethodChoice& choice) {
   MethodChoice used = choice;
   if (!info.uses_tolerance) used.tolerance = defaults.tolerance;
   if (!info.uses_relative_error) used.relative_error = defaults.relative_error;
-  if (!info.samples) used.light_samples = defaults.light_samples;
+  if (!info.stochastic) used.lights_per_point = defaults.lights_per_point;
   return used;
 }
 
 bool operator==(const MethodChoice& a, const MethodChoice& b) {
   // Binding every member: a member added to MethodChoice stops this compiling until it is
   // compared too.
-  const auto [method, tolerance, relative_error, light_samples] = used_settings(a);
+  const auto [method, tolerance, relative_error, lights_per_point] = used_settings(a);
   const MethodChoice other = used_settings(b);
   return method == other.method && tolerance == other.tolerance &&
-         relative_error == other.relative_error && light_samples == other.light_samples;
+         relative_error == other.relative_error && lights_per_point == other.lights_per_point;
 }
 
 bool operator!=(const MethodChoice& a, const MethodChoice& b) {

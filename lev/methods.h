@@ -43,8 +43,9 @@ enum class Method : std::uint8_t {
   lev_cut
 };
 
-// The lights a sampling method draws per shading point (--samples): 1 by default, at most this.
-inline constexpr int kMaxLightSamples = 1024;
+// The lights a sampling method draws per shading point (--lights-per-point): 1 by default, at most
+// this.
+inline constexpr int kMaxLightsPerPoint = 1024;
 // The relative error a render uses unless told otherwise (--relative-error): Walter et al.
 // 2005's 2 %, below which a change in the light of a point is not seen (Weber's law).
 inline constexpr double kDefaultRelativeError = 0.02;
@@ -55,7 +56,8 @@ struct MethodParams {
   Method method = Method::lev;
   float tolerance = static_cast<float>(kDefaultTolerance);           // >= 0, colour units
   float relative_error = static_cast<float>(kDefaultRelativeError);  // [0, 1]
-  int light_samples = 1;  // lights a sampling method draws per shading point, [1, kMaxLightSamples]
+  int lights_per_point =
+      1;  // lights a sampling method draws per shading point, [1, kMaxLightsPerPoint]
   // The tolerance is in displayed units: scene-linear irradiance times this (the exposure, 2^EV;
   // > 0). A selector culls at tolerance / display_scale in the scene's own units, so a scene
   // 100x darker shown 6.64 EV brighter culls the same lights.
@@ -70,7 +72,7 @@ struct MethodChoice {
   Method method = Method::lev;
   double tolerance = kDefaultTolerance;           // colour units, 1.0 = 255
   double relative_error = kDefaultRelativeError;  // lightcuts: a cluster's bound / the total
-  int light_samples = 1;  // lights a sampling method draws per shading point and pass
+  int lights_per_point = 1;  // lights a sampling method draws per shading point and pass
 };
 
 // The choice with every setting its method does not read at its default, so that choices equal
@@ -92,7 +94,7 @@ enum MethodTrait : unsigned {
   kUsesTolerance = 1u << 0,      // reads MethodParams::tolerance
   kUsesRelativeError = 1u << 1,  // reads MethodParams::relative_error
   kIsReference = 1u << 2,        // exact: what every other method's errors are measured against
-  kSamples = 1u << 3,            // draws from the per-sample random stream
+  kStochastic = 1u << 3,         // draws from the per-sample random stream
   kScansEveryLight = 1u << 4,    // its time per point grows with the light count
   // Reads MethodParams::display_scale beyond the tolerance (lev_cut's drop of what cannot reach
   // the display); a method with kUsesTolerance reads it through scene_tolerance already.
@@ -111,7 +113,7 @@ struct MethodInfo {
   // Reads MethodParams::relative_error (--relative-error); images then depend on it.
   bool uses_relative_error;
   bool is_reference;  // exact: the images every other method's pixel errors are measured against
-  bool samples;       // draws from the per-sample random stream (images depend on the passes)
+  bool stochastic;    // draws from the per-sample random stream (images depend on the passes)
   bool scans_every_light;  // its time per point grows with the light count: the bench subsamples it
   // Its images depend on the exposure (the tolerance, or a drop, in displayed units): a new
   // exposure renders it again. rt's radiance, and every sampler's, do not depend on it.
@@ -128,9 +130,9 @@ std::optional<Method> parse_method(std::string_view name);
 // The one row with is_reference (rt).
 Method reference_method();
 
-// The selector for one render (params.light_samples in [1, kMaxLightSamples], the relative error
-// in [0, 1]; else std::invalid_argument). It reads the hierarchy (which it never changes, so any
-// number of selectors may share it) and must not outlive it.
+// The selector for one render (params.lights_per_point in [1, kMaxLightsPerPoint], the relative
+// error in [0, 1]; else std::invalid_argument). It reads the hierarchy (which it never changes, so
+// any number of selectors may share it) and must not outlive it.
 std::unique_ptr<LightSelector> make_selector(const LightHierarchy& hierarchy,
                                              const MethodParams& params);
 

@@ -19,10 +19,10 @@ void estimate_missed_light(const LightHierarchy& hierarchy, const ExtentVolumes&
   glm::dvec3 mean(0.0), square_sum(0.0);
   if (!own.sampling.parts.subtrees.empty() || !own.sampling.parts.lights.empty()) {
     SelectionCounters counters;  // the estimate's own work: not the method's
-    mean = glm::dvec3(sampled_radiance(hierarchy, missed->samples, point, *missed->random,
+    mean = glm::dvec3(sampled_radiance(hierarchy, missed->draws, point, *missed->random,
                                        own.sampling, counters, &square_sum));
   }
-  const double k = static_cast<double>(missed->samples);
+  const double k = static_cast<double>(missed->draws);
   // The variance of the mean of k draws: the draws' sample variance over k.
   const glm::dvec3 variance =
       glm::max((square_sum / k - mean * mean) * (k / (k - 1.0)), glm::dvec3(0.0)) / k;

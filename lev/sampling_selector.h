@@ -19,9 +19,9 @@ class SamplingSelector : public LightSelector {
   }
 
  protected:
-  // samples_per_point: k, the lights drawn at each shading point (>= 1).
-  SamplingSelector(const LightHierarchy& hierarchy, int samples_per_point)
-      : hierarchy_(hierarchy), samples_per_point_(samples_per_point) {}
+  // lights_per_point: k, the lights drawn at each shading point (>= 1).
+  SamplingSelector(const LightHierarchy& hierarchy, int lights_per_point)
+      : hierarchy_(hierarchy), lights_per_point_(lights_per_point) {}
 
   // The thread's buffers; stores the (infinite) bound when asked for one.
   SamplingScratch& begin_point(SelectorScratch& scratch, glm::vec3* culled_irradiance_bound) const {
@@ -31,7 +31,7 @@ class SamplingSelector : public LightSelector {
   }
 
   const LightHierarchy& hierarchy_;
-  const int samples_per_point_;
+  const int lights_per_point_;
 };
 
 }  // namespace lev

@@ -5,9 +5,8 @@
 
 namespace lev {
 
-LevMcSelector::LevMcSelector(const LightHierarchy& hierarchy, float tolerance,
-                             int samples_per_point)
-    : SamplingSelector(hierarchy, samples_per_point),
+LevMcSelector::LevMcSelector(const LightHierarchy& hierarchy, float tolerance, int lights_per_point)
+    : SamplingSelector(hierarchy, lights_per_point),
       volumes_(fit_extent_volumes(hierarchy, tolerance)),
       tolerance_(tolerance) {}
 
@@ -24,7 +23,7 @@ glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& s
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
       scratch.inspect);
   if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) return tested;
-  return tested + sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling,
+  return tested + sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random, sampling,
                                    counters, nullptr, scratch.inspect);
 }
 

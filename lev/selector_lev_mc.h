@@ -15,8 +15,8 @@ namespace lev {
 
 class LevMcSelector final : public SamplingSelector {
  public:
-  // samples_per_point: k, the lights drawn from the culled rest at each shading point (>= 1).
-  LevMcSelector(const LightHierarchy& hierarchy, float tolerance, int samples_per_point);
+  // lights_per_point: k, the lights drawn from the culled rest at each shading point (>= 1).
+  LevMcSelector(const LightHierarchy& hierarchy, float tolerance, int lights_per_point);
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;

@@ -10,7 +10,7 @@ glm::vec3 LightTreeSelector::direct_radiance(ShadingPoint& point, SelectorScratc
   sampling.parts.subtrees.push_back(whole_hierarchy(hierarchy_, point.position()));
   // Nothing is tested exactly: every light is left to the draws, as the root's.
   if (scratch.inspect) scratch.inspect->culled_subtrees.push_back(sampling.parts.subtrees.back());
-  return sampled_radiance(hierarchy_, samples_per_point_, point, scratch.random, sampling, counters,
+  return sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random, sampling, counters,
                           nullptr, scratch.inspect);
 }
 

@@ -14,8 +14,8 @@ namespace lev {
 
 class LightTreeSelector final : public SamplingSelector {
  public:
-  LightTreeSelector(const LightHierarchy& hierarchy, int samples_per_point)
-      : SamplingSelector(hierarchy, samples_per_point) {}
+  LightTreeSelector(const LightHierarchy& hierarchy, int lights_per_point)
+      : SamplingSelector(hierarchy, lights_per_point) {}
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;

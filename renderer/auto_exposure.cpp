@@ -39,7 +39,7 @@ double auto_exposure_ev(const Scene& scene, const RayScene& rays, const RenderSe
   preview.max_depth = settings.max_depth;
   preview.threads = settings.threads;
   preview.method = lev::Method::light_tree;
-  preview.light_samples = kAutoExposureLightSamples;
+  preview.lights_per_point = kAutoExposureLightsPerPoint;
   preview.jitter_pixels = false;
   RenderResult result;
   if (!render_passes(scene, rays, preview, kAutoExposurePasses, result, cancel)) return 0.0;

@@ -1,6 +1,6 @@
 // `--exposure auto`: the exposure a scene opens with, chosen before the first pass from a cheap
 // estimate of the image. The rule: render a coarse preview (kAutoExposurePreviewWidth pixels
-// wide, the image's aspect) with the unbiased `light_tree` method (kAutoExposureLightSamples
+// wide, the image's aspect) with the unbiased `light_tree` method (kAutoExposureLightsPerPoint
 // lights per point, kAutoExposurePasses passes at pixel centres, seed 0: deterministic), take
 // the 99th percentile of its pixels' luminance, and pick the EV that puts that luminance where
 // the display curve shows kAutoExposureDisplayedTarget (0.75, the middle of the 0.5..1.0 band a
@@ -17,7 +17,7 @@
 namespace renderer {
 
 inline constexpr int kAutoExposurePreviewWidth = 96;
-inline constexpr int kAutoExposureLightSamples = 16;
+inline constexpr int kAutoExposureLightsPerPoint = 16;
 inline constexpr int kAutoExposurePasses = 2;
 inline constexpr double kAutoExposurePercentile = 0.99;
 inline constexpr float kAutoExposureDisplayedTarget = 0.75f;

@@ -70,7 +70,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
       preview && state.preview_selector ? *state.preview_selector : *state.selector;
   TraceContext context{state.scene,  state.rays, selector, scratch,
                        rs.max_depth, ray_log,    cancel,   rs.compute_error_bound};
-  context.missed_samples = preview ? 0 : rs.missed_samples;
+  context.missed_draws = preview ? 0 : rs.missed_draws;
   struct PixelSample {
     std::size_t pixel;
     glm::vec3 radiance;
@@ -143,7 +143,7 @@ lev::MethodParams method_params(const RenderSettings& settings) {
   params.method = settings.method;
   params.tolerance = settings.tolerance;
   params.relative_error = settings.relative_error;
-  params.light_samples = settings.light_samples;
+  params.lights_per_point = settings.lights_per_point;
   params.display_scale = exposure_scale(settings.exposure_ev);
   return params;
 }
@@ -151,9 +151,9 @@ lev::MethodParams method_params(const RenderSettings& settings) {
 bool operator==(const ImageSettings& a, const ImageSettings& b) {
   // Binding every member: a member added to ImageSettings stops this compiling until it is
   // compared too.
-  const auto& [width, height, spp, depth, subsample, threads, missed_samples] = a;
+  const auto& [width, height, spp, depth, subsample, threads, missed_draws] = a;
   return width == b.width && height == b.height && spp == b.spp && depth == b.depth &&
-         subsample == b.subsample && threads == b.threads && missed_samples == b.missed_samples;
+         subsample == b.subsample && threads == b.threads && missed_draws == b.missed_draws;
 }
 
 bool operator!=(const ImageSettings& a, const ImageSettings& b) {
@@ -164,17 +164,17 @@ RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
                                  const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
       settings.pixel_stride < 1 || settings.max_depth < 0 || settings.threads < 0 ||
-      settings.light_samples < 1 || settings.light_samples > lev::kMaxLightSamples ||
+      settings.lights_per_point < 1 || settings.lights_per_point > lev::kMaxLightsPerPoint ||
       !(settings.relative_error >= 0.0f && settings.relative_error <= 1.0f) ||
-      (settings.missed_samples != 0 && (settings.missed_samples < kMinMissedSamples ||
-                                        settings.missed_samples > lev::kMaxLightSamples))) {
+      (settings.missed_draws != 0 && (settings.missed_draws < kMinMissedDraws ||
+                                      settings.missed_draws > lev::kMaxLightsPerPoint))) {
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
   state->selector = lev::make_selector(scene.lights, method_params(settings));
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->framebuffer.exposure_scale = exposure_scale(settings.exposure_ev);
-  if (settings.missed_samples > 0) allocate_missed_light(state->framebuffer);
+  if (settings.missed_draws > 0) allocate_missed_light(state->framebuffer);
   state->tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
   state->tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
   const int tile_count = state->tiles_x * state->tiles_y;

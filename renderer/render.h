@@ -37,7 +37,7 @@ struct ImageSettings {
   int subsample = 1;  // render every n-th pixel in x and y (for slow references)
   int threads = 0;    // 0 = all cores
   // Draws per shading point of the missed-light estimate (renderer/missed_light.h); 0: off.
-  int missed_samples = 0;
+  int missed_draws = 0;
 };
 bool operator==(const ImageSettings& a, const ImageSettings& b);
 bool operator!=(const ImageSettings& a, const ImageSettings& b);
@@ -51,8 +51,8 @@ struct RenderSettings {
   int pixel_stride = 1;  // > 1: render only every stride-th pixel in x and y (a subsample)
   lev::Method method = lev::Method::lev;
   float tolerance = static_cast<float>(lev::kDefaultTolerance);
-  int light_samples =
-      1;  // lights a sampling method draws per shading point, [1, lev::kMaxLightSamples]
+  int lights_per_point =
+      1;  // lights a sampling method draws per shading point, [1, lev::kMaxLightsPerPoint]
   float relative_error = static_cast<float>(lev::kDefaultRelativeError);  // [0, 1] (lightcuts)
   std::uint64_t seed = 0;
   // Fill Framebuffer::error_bound_sum (error_bound.h). Off by default: the renders whose cost is
@@ -63,9 +63,9 @@ struct RenderSettings {
   // passes converge to the one-pass rt image (the bench's converge experiment).
   bool jitter_pixels = true;
   // > 0: estimate the missed light (lev/missed_light.h) with this many draws per shading point
-  // into Framebuffer::missed_sum (renderer/missed_light.h), in [kMinMissedSamples,
-  // lev::kMaxLightSamples]; 0: off, and the selectors do none of that work.
-  int missed_samples = 0;
+  // into Framebuffer::missed_sum (renderer/missed_light.h), in [kMinMissedDraws,
+  // lev::kMaxLightsPerPoint]; 0: off, and the selectors do none of that work.
+  int missed_draws = 0;
   // The exposure of the displayed units (renderer/display_transform.h): the tolerance, the
   // relative methods' absolute floor and every error metric read radiance x 2^exposure_ev, so
   // they mean the same on the displayed image at any exposure. The radiance itself stays
@@ -84,7 +84,7 @@ Ray pixel_sample_ray(const RenderSettings& settings, const Camera& camera, int x
 lev::MethodParams method_params(const RenderSettings& settings);
 
 // The fewest draws the missed-light estimate takes: two, for the spread behind its standard error.
-inline constexpr int kMinMissedSamples = 2;
+inline constexpr int kMinMissedDraws = 2;
 
 enum class TileStatus : std::uint8_t { waiting, rendering, done };
 

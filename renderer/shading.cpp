@@ -133,8 +133,8 @@ glm::vec3 trace_radiance(TraceContext& context, const Ray& ray, int depth, PathC
   if (material.has_emission()) radiance += emitted_radiance(context.scene, material, hit.uv);
   SurfacePoint point(context.rays, hit, material, facing, side, to_viewer, context.ray_log);
   lev::MissedLight missed;
-  if (context.missed_samples > 0) {
-    missed.samples = context.missed_samples;
+  if (context.missed_draws > 0) {
+    missed.draws = context.missed_draws;
     missed.random = &context.missed_random;
     context.scratch.missed = &missed;
   }

@@ -23,7 +23,7 @@ struct PathCounters {
   // When TraceContext::compute_error_bound: an upper bound of |this radiance - rt's radiance|
   // per channel (error_bound.h), summed over the path's shading points as the radiance is.
   glm::vec3 error_bound{0.0f};
-  // When TraceContext::missed_samples > 0: the estimated missed light (lev/missed_light.h) and
+  // When TraceContext::missed_draws > 0: the estimated missed light (lev/missed_light.h) and
   // its variance, weighed by the path weight (squared for the variance) and summed as above.
   glm::vec3 missed{0.0f};
   glm::vec3 missed_variance{0.0f};
@@ -43,7 +43,7 @@ struct TraceContext {
   bool compute_error_bound = false;
   // > 0: asks the selector for the missed light with this many draws from missed_random (seeded
   // per pixel and pass by the caller), into PathCounters::missed.
-  int missed_samples = 0;
+  int missed_draws = 0;
   lev::RandomStream missed_random{};
   // When set (the pixel inspector, pixel_inspection.h), each shading point of the path appends
   // what the method did there, recorded by the selector itself; null in renders.

@@ -268,7 +268,7 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
       summary.rows.push_back(std::move(row));
 
       if (p.planned_only) continue;
-      if (info.samples) {
+      if (info.stochastic) {
         unbiased_measured = true;
         worst_unbiased_pct =
             std::max(worst_unbiased_pct, std::isnan(last.average_pct) ? 100.0 : last.average_pct);

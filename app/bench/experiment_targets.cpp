@@ -103,7 +103,7 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
     const lev::MethodInfo* sweep_method = nullptr;
     const std::string scene_name = scene + " " + format_count(lights);
     const auto check_sweep = [&] {
-      if (sweep_method && !sweep_method->samples && !run.planning()) {
+      if (sweep_method && !sweep_method->stochastic && !run.planning()) {
         for (const MonotonicityViolation& v :
              find_monotonicity_violations(scene_name, sweep_method->name, sweep_points)) {
           violations.push_back(v);

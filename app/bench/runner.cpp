@@ -236,9 +236,14 @@ BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
   // A method that ignores the sweep's value (rt) is measured once for every value: the method
   // choice compares only what its method reads.
   const lev::MethodChoice used = lev::used_settings(method_choice(r));
-  return {
-      r.scene,  r.level,      used.method, used.tolerance, used.relative_error, used.light_samples,
-      r.stride, r.error_bound};
+  return {r.scene,
+          r.level,
+          used.method,
+          used.tolerance,
+          used.relative_error,
+          used.lights_per_point,
+          r.stride,
+          r.error_bound};
 }
 
 renderer::RenderSettings BenchRun::render_settings_for(const MeasureRequest& r) const {
@@ -426,7 +431,7 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
       snapshot.rgb = std::move(result.rendered_rgb);
       out[i].pixels = result.rendered_pixels;
       out[i].snapshots.push_back(std::move(snapshot));
-      stopped[i] = !lev::method_info(out[i].request.method).samples &&
+      stopped[i] = !lev::method_info(out[i].request.method).stochastic &&
                    cpu_spent[i] > deterministic_cpu_seconds;
     }
   }

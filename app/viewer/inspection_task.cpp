@@ -77,7 +77,7 @@ void InspectionTask::inspect(const Job& job) {
   const renderer::PixelInspection inspection = renderer::inspect_pixel(
       *job.scene, *job.rays, job.settings, selector, job.x, job.y, &cancel_);
   if (cancel_.load()) return;  // what a cancelled trace returns is not the pixel's
-  auto view = std::make_shared<PixelInspectionView>();
+  auto view = std::make_shared<PublishedInspection>();
   view->generation = job.generation;
   view->x = job.x;
   view->y = job.y;

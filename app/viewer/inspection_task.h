@@ -27,7 +27,7 @@ namespace app::viewer {
 class InspectionTask {
  public:
   // Called on the task's thread with each inspection that ran to its end.
-  using Done = std::function<void(std::shared_ptr<const PixelInspectionView>)>;
+  using Done = std::function<void(std::shared_ptr<const PublishedInspection>)>;
 
   explicit InspectionTask(Done on_done);
   ~InspectionTask();  // cancels and joins

@@ -31,8 +31,8 @@ void draw_marks(const ViewerState& state, ImDrawList* draw, const ImVec2& image_
 
 }  // namespace
 
-const PixelInspectionView* current_inspection(const ViewerState& state) {
-  const PixelInspectionView* view = state.status.inspection.get();
+const PublishedInspection* current_inspection(const ViewerState& state) {
+  const PublishedInspection* view = state.status.inspection.get();
   if (!view || !state.inspect_pixel || view->generation != state.status.generation ||
       view->x != (*state.inspect_pixel)[0] || view->y != (*state.inspect_pixel)[1]) {
     return nullptr;
@@ -54,7 +54,7 @@ void draw_inspector_window(ViewerState& state, const ImVec2& picture_pos,
   ImGui::SameLine();
   if (ImGui::SmallButton("Clear")) set_inspect_pixel(state, std::nullopt);
   record_item(state.record_controls ? &state.control_rects : nullptr, "inspector:clear");
-  const PixelInspectionView* view = current_inspection(state);
+  const PublishedInspection* view = current_inspection(state);
   if (!state.inspect_pixel) {
     ImGui::End();
     return;
@@ -134,7 +134,7 @@ void draw_marks(const ViewerState& state, ImDrawList* draw, const ImVec2& image_
   const float py = static_cast<float>((*state.inspect_pixel)[1]);
   draw->AddRect(on_screen({px - 1.0f, py - 1.0f}), on_screen({px + 2.0f, py + 2.0f}), kPinColour,
                 0.0f, 0, 2.0f);
-  const PixelInspectionView* view = current_inspection(state);
+  const PublishedInspection* view = current_inspection(state);
   if (!view) return;
   const int marked = std::min(kMarkedRows, static_cast<int>(view->rows.size()));
   for (int i = 0; i < marked; ++i) {

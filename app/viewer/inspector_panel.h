@@ -11,7 +11,7 @@
 namespace app::viewer {
 
 // The inspection of the pinned pixel in the render shown, or null (none pinned, or not ready).
-const PixelInspectionView* current_inspection(const ViewerState& state);
+const PublishedInspection* current_inspection(const ViewerState& state);
 
 // The window, when a pixel is pinned; picture_pos and picture_size: the picture area's.
 void draw_inspector_window(ViewerState& state, const ImVec2& picture_pos,

@@ -31,7 +31,7 @@ struct InspectorRow {
 };
 
 // The inspection of one pixel of one render, as the worker publishes it.
-struct PixelInspectionView {
+struct PublishedInspection {
   std::uint64_t generation = 0;  // the render (WorkerStatus::generation) it explains
   int x = 0, y = 0;
   renderer::Camera camera;  // the view's, for projecting lights onto the image

@@ -108,7 +108,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
   r.std_error_avg_pct = s.noise_avg_pct;
   if (s.missed) {
     r.missed = s.missed;
-    r.missed_samples = status.missed_samples;
+    r.missed_draws = status.missed_draws;
   }
   r.camera = camera;
   return r;

@@ -31,7 +31,7 @@ using Clock = std::chrono::steady_clock;
 struct WorkerShared {
   std::mutex mutex;  // guards everything below but the atomics and the display buffers
   std::condition_variable wake;
-  std::optional<ViewRequest> pending;
+  std::optional<RenderRequest> pending;
   std::uint64_t pending_serial = 0;
   std::uint64_t last_serial = 0;
   bool quit = false;
@@ -50,7 +50,7 @@ struct WorkerShared {
 
   // The pinned pixel's inspection, on its own thread (made here, on the UI thread: it keeps the
   // normal priority); it publishes into `status`. Last, so it stops before the rest goes.
-  InspectionTask inspector{[this](std::shared_ptr<const PixelInspectionView> view) {
+  InspectionTask inspector{[this](std::shared_ptr<const PublishedInspection> view) {
     const std::lock_guard<std::mutex> lock(mutex);
     status.inspection = std::move(view);
     status.inspection_pending = false;
@@ -288,7 +288,7 @@ struct Worker {
     return kept;
   }
 
-  void apply(const ViewRequest& request, std::uint64_t serial) {
+  void apply(const RenderRequest& request, std::uint64_t serial) {
     last_serial = serial;
     update_status([](WorkerStatus& st) {
       st.error.clear();
@@ -350,7 +350,7 @@ struct Worker {
         st.tile_count = tiles;
         st.method = s.method.method;
         st.tolerance = s.method.tolerance;
-        st.missed_samples = rs.missed_samples;
+        st.missed_draws = rs.missed_draws;
         st.setup_seconds = setup_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
         st.method_bytes = method_bytes;
@@ -371,7 +371,7 @@ struct Worker {
       if (!reference.has_state()) {
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;
-        ref.missed_samples = 0;  // rt leaves nothing out
+        ref.missed_draws = 0;  // rt leaves nothing out
         shared.reference_tiles.raise_floor(serial);
         reference.begin(std::make_unique<renderer::RenderJob>(sc, *loaded->rays, ref), serial);
         update_status([&](WorkerStatus& st) {
@@ -512,7 +512,7 @@ void run_worker(WorkerShared& shared) {
     // Outside the lock: resuming joins the reference's previous thread, which takes the lock
     // to report its pass.
     if (w.reference_due()) w.reference.resume();
-    std::optional<ViewRequest> request;
+    std::optional<RenderRequest> request;
     std::uint64_t serial = 0;
     {
       std::unique_lock<std::mutex> lock(shared.mutex);
@@ -592,7 +592,7 @@ RenderWorker::~RenderWorker() {
   thread_.join();
 }
 
-std::uint64_t RenderWorker::post(const ViewRequest& request) {
+std::uint64_t RenderWorker::post(const RenderRequest& request) {
   std::uint64_t serial = 0;
   {
     const std::lock_guard<std::mutex> lock(shared_->mutex);

@@ -29,7 +29,7 @@
 
 namespace app::viewer {
 
-struct ViewRequest {
+struct RenderRequest {
   Settings settings;
   std::optional<renderer::Camera> camera;  // empty: the scene's preset view
   bool want_reference = false;             // render the rt reference of this view
@@ -78,7 +78,7 @@ struct WorkerStatus {
   int tile_count = 0;
   lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
-  int missed_samples = 0;      // the missed-light estimate's draws per point (0: off)
+  int missed_draws = 0;        // the missed-light estimate's draws per point (0: off)
   double setup_seconds = 0.0;  // making the render state: extent volumes and selector
   std::size_t method_bytes = 0;
   int passes_done = 0;
@@ -106,7 +106,7 @@ struct WorkerStatus {
 
   // The inspection of the pinned pixel in the render shown (null: none asked for, the pixel is
   // outside the image, or it is still pending: computed on a thread of its own).
-  std::shared_ptr<const PixelInspectionView> inspection;
+  std::shared_ptr<const PublishedInspection> inspection;
   bool inspection_pending = false;
 };
 
@@ -125,7 +125,7 @@ class RenderWorker {
 
   // Replaces any request not taken yet and cancels the pass in flight; returns the request's
   // serial (the generation of the render it starts, if it starts one).
-  std::uint64_t post(const ViewRequest& request);
+  std::uint64_t post(const RenderRequest& request);
   WorkerStatus status() const;
   TakenTiles take_tiles();
   TakenTiles take_preview_tiles();

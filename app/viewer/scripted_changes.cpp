@@ -142,6 +142,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
     if (c.value != "report") reject(text, "memory must be report");
   } else if (c.key == "copy") {
     if (c.value != "camera") reject(text, "copy must be camera");
+  } else if (const char* now = renamed_setting(c.key)) {
+    reject(text, c.key + " is now called " + now);
   } else {
     std::string keys;
     for (const SettingSpec& s : setting_table()) keys += std::string(s.name) + "|";

@@ -301,7 +301,7 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 
 }  // namespace
 
-int run_viewer(const Settings& settings, const ViewFlags& flags) {
+int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   const WindowSize window_size = parse_window_flag(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
   check_hover_pixels(script, settings);
@@ -328,8 +328,12 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   }
   check_output_paths(outputs, all_inputs);
 
-  // Ctrl-C, SIGTERM and SIGHUP close the window like its close button (exit 130).
+  // Ctrl-C, SIGTERM and SIGHUP close the window like its close button (exit 130). A UI frame or
+  // the worker's scene load may not notice at once (a loaded display, a large glTF's parse): the
+  // watchdog ends the process kLoadGraceSeconds after the signal, once no snapshot or screenshot
+  // is being written. It outlives the worker, whose destructor waits for the load.
   const InterruptScope interrupt_scope;
+  const InterruptWatchdog shutdown_watchdog;
   GlfwLibrary glfw;
   Window window(window_size.width, window_size.height);
   ImGuiSession imgui(window.get());
@@ -350,10 +354,6 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
   int exit_code = 0;
   std::string bad_input_error;  // the first scene's
   std::string snapshot_error;   // the first scripted snapshot that failed
-  // After Ctrl-C the worker's scene load stops at its next step; one stuck in a step that cannot
-  // stop (a large glTF's parse) is cut short by this watchdog, so the viewer exits within a
-  // second. It outlives the worker, whose destructor waits for the load.
-  std::optional<InterruptWatchdog> shutdown_watchdog;
   {
     RenderWorker worker;
     std::uint64_t last_posted = 0;
@@ -416,7 +416,7 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       }
 
       take_worker_results(state, worker, log, now);
-      if (const PixelInspectionView* shown = current_inspection(state))
+      if (const PublishedInspection* shown = current_inspection(state))
         record_inspection_shown(log, now, 1000.0 * shown->seconds);
       follow_scene_loads(state);
       open_dropped_files(state, window.take_dropped());
@@ -507,10 +507,6 @@ int run_viewer(const Settings& settings, const ViewFlags& flags) {
       first = false;
       if (awaiting == Await::nothing && !hold_frame) script_frame += 1;
       if (last_frame) break;
-    }
-    if (InterruptScope::flag().load()) {
-      snapshots.wait();  // no snapshot temporary is left behind if the watchdog ends the process
-      shutdown_watchdog.emplace();
     }
     if (bad_input_error.empty() && state.status.phase == WorkerPhase::failed && flags.frames > 0) {
       std::fprintf(stderr, "levrt: view: the render failed: %s\n", state.status.error.c_str());

@@ -6,11 +6,11 @@
 #pragma once
 
 #include "app/settings.h"
-#include "app/viewer/view_flags.h"
+#include "app/viewer/viewer_flags.h"
 
 namespace app::viewer {
 
 // Throws NoDisplayError without a display and UsageError for bad viewer flags.
-int run_viewer(const Settings& settings, const ViewFlags& flags);
+int run_viewer(const Settings& settings, const ViewerFlags& flags);
 
 }  // namespace app::viewer

@@ -127,12 +127,11 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
   mark_changed(state, "");  // no new render: the worker starts its inspection task
 }
 
-ViewRequest make_request(const ViewerState& state) {
-  ViewRequest r;
+RenderRequest make_request(const ViewerState& state) {
+  RenderRequest r;
   r.settings = state.settings;
   if (view_info(state.view).needs_missed)
-    r.settings.image.missed_samples =
-        std::max(r.settings.image.missed_samples, kDefaultMissedSamples);
+    r.settings.image.missed_draws = std::max(r.settings.image.missed_draws, kDefaultMissedDraws);
   r.camera = state.camera;
   r.want_reference = state.want_reference;
   r.inspect_pixel = state.inspect_pixel;

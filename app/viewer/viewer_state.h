@@ -128,7 +128,7 @@ bool scene_ready(const ViewerState& state);
 renderer::Camera current_camera(const ViewerState& state);
 
 // The worker's request: the settings, with the missed-light estimate on (at least
-// kDefaultMissedSamples draws) while a view reading it is on screen.
-ViewRequest make_request(const ViewerState& state);
+// kDefaultMissedDraws draws) while a view reading it is on screen.
+RenderRequest make_request(const ViewerState& state);
 
 }  // namespace app::viewer

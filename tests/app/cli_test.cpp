@@ -40,7 +40,7 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
       {"--level", {"0", "11", "x", ""}},
       {"--lights", {"1000", "-64", "abc", "", "65"}},
       {"--reference", {"lev", ""}},
-      {"--samples", {"0", "-1", "1025", "99999999999999999999", "x", "", "2.5"}},
+      {"--lights-per-point", {"0", "-1", "1025", "99999999999999999999", "x", "", "2.5"}},
   };
   const std::string out = path("image.png");
   for (const auto& [flag, values] : cases) {
@@ -145,6 +145,25 @@ TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
   EXPECT_EQ(run_levrt({"render", "--colour", "red"}).exit_code, 2);
   EXPECT_EQ(run_levrt({"paint"}).exit_code, 2);
   EXPECT_EQ(run_levrt({"render", "--help"}).exit_code, 0);
+}
+
+// A setting an older levrt named otherwise ("samples" meant lights per point): one line naming
+// the flag and what it is called now, exit 2, in every command that renders and in `=` form.
+TEST_F(Cli, ARenamedFlagNamesItsNewName) {
+  const std::vector<std::vector<std::string>> runs = {
+      {"render", "--samples", "4", "--out", (dir_ / "a.png").string()},
+      {"render", "--missed-samples=16", "--out", (dir_ / "b.png").string()},
+      {"inspect", "--samples", "2", "--pixel", "1,1"},
+  };
+  for (const auto& args : runs) {
+    const CommandRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 2) << args[1];
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    const std::string now =
+        args[1].find("missed") != std::string::npos ? "--missed-draws" : "--lights-per-point";
+    EXPECT_NE(r.output.find("is now called " + now), std::string::npos) << r.output;
+  }
+  EXPECT_TRUE(folder_is_empty());
 }
 
 // Each command's help shows the default that command uses: the viewer accumulates passes.
@@ -280,11 +299,12 @@ TEST_F(Cli, SamplingMethodsWriteTheNoiseHeatmapAndItsEstimate) {
   for (const char* method : {"lev_mc", "light_tree"}) {
     const std::string stats = path(std::string(method) + ".json");
     const std::string noise = path(std::string(method) + "_noise.png");
-    const CommandRun r =
-        run_levrt({"render", "--scene",     "hall", "--lights",    "64", "--method",
-                   method,   "--tolerance", "0.3",  "--width",     "32", "--height",
-                   "24",     "--spp",       "4",    "--samples",   "2",  "--heatmap-noise",
-                   noise,    "--stats",     stats,  "--reference", "rt"});
+    const CommandRun r = run_levrt({"render", "--scene",         "hall", "--lights",
+                                    "64",     "--method",        method, "--tolerance",
+                                    "0.3",    "--width",         "32",   "--height",
+                                    "24",     "--spp",           "4",    "--lights-per-point",
+                                    "2",      "--heatmap-noise", noise,  "--stats",
+                                    stats,    "--reference",     "rt"});
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("std error avg"), std::string::npos) << r.output;
     const std::string png = read_file(noise);

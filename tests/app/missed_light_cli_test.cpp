@@ -1,4 +1,4 @@
-// `levrt render --heatmap-missed` and `--missed-samples` (renderer/missed_light.h): the heatmap
+// `levrt render --heatmap-missed` and `--missed-draws` (renderer/missed_light.h): the heatmap
 // turns the estimate on and the stats carry its keys; without either the keys are absent; a
 // count of 1 (no spread for a standard error) exits 2 with one line.
 #include <algorithm>
@@ -42,7 +42,7 @@ TEST(MissedLightCli, TheHeatmapTurnsTheEstimateOnWithSixteenDraws) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::is_regular_file(png));
   const nlohmann::json j = read_json(stats);
-  EXPECT_EQ(j["missed_samples"].get<int>(), 16);
+  EXPECT_EQ(j["missed_draws"].get<int>(), 16);
   EXPECT_GT(j["missed_estimate_avg_pct"].get<double>(), 0.0);
   EXPECT_GE(j["missed_estimate_max_pct"].get<double>(), j["missed_estimate_avg_pct"].get<double>());
   EXPECT_GT(j["missed_estimate_std_error_avg_pct"].get<double>(), 0.0);
@@ -56,14 +56,13 @@ TEST(MissedLightCli, OffUnlessAskedAndACountOfOneIsRefused) {
   const CommandRun off = run_levrt(render_args({"--stats", stats.string()}));
   ASSERT_EQ(off.exit_code, 0) << off.output;
   EXPECT_FALSE(read_json(stats).contains("missed_estimate_avg_pct"));
-  const CommandRun on =
-      run_levrt(render_args({"--missed-samples", "4", "--stats", stats.string()}));
+  const CommandRun on = run_levrt(render_args({"--missed-draws", "4", "--stats", stats.string()}));
   ASSERT_EQ(on.exit_code, 0) << on.output;
-  EXPECT_EQ(read_json(stats)["missed_samples"].get<int>(), 4);
-  const CommandRun one = run_levrt(render_args({"--missed-samples", "1"}));
+  EXPECT_EQ(read_json(stats)["missed_draws"].get<int>(), 4);
+  const CommandRun one = run_levrt(render_args({"--missed-draws", "1"}));
   EXPECT_EQ(one.exit_code, 2) << one.output;
   EXPECT_EQ(std::count(one.output.begin(), one.output.end(), '\n'), 1) << one.output;
-  EXPECT_NE(one.output.find("--missed-samples"), std::string::npos) << one.output;
+  EXPECT_NE(one.output.find("--missed-draws"), std::string::npos) << one.output;
 }
 
 }  // namespace

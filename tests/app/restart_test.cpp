@@ -42,8 +42,7 @@ TEST(Restart, EachGroupRestartsWhatItFeeds) {
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.image.depth += 1; }), Restart::view);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.image.subsample += 1; }), Restart::view);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.image.threads += 1; }), Restart::render);
-  EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.image.missed_samples = 16; }),
-            Restart::render);
+  EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.image.missed_draws = 16; }), Restart::render);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.image.spp += 1; }), Restart::passes);
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.method = lev::Method::rt; }),
             Restart::render);
@@ -86,7 +85,7 @@ TEST(Restart, WhatTheSceneOrMethodDoesNotReadRestartsNothing) {
   s = app::Settings{};
   s.method.method = lev::Method::rt;
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.tolerance = 0.5; }), Restart::nothing);
-  EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.light_samples = 4; }),
+  EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.method.lights_per_point = 4; }),
             Restart::nothing);
   // rt's radiance does not depend on the exposure: the viewer re-maps it.
   EXPECT_EQ(restart_after(s, [](app::Settings& a) { a.display.exposure_ev = 2.0; }),

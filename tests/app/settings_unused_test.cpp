@@ -1,6 +1,6 @@
 // A setting the table calls unused for some settings (SettingSpec::unused_because: the viewer
 // greys it out) really does not change what those settings render: for every method that says
-// so, the image at two values of its tolerance, relative error or light samples is the same byte
+// so, the image at two values of its tolerance, relative error or lights per point is the same byte
 // for byte; a method that uses one of them renders something else at the other value.
 #include <memory>
 #include <string>
@@ -41,7 +41,7 @@ TEST(SettingsUnused, WhatAMethodIgnoresDoesNotChangeItsImage) {
   const std::vector<Variation> variations = {
       {"tolerance", [](app::Settings& s) { s.method.tolerance = 0.3; }},
       {"relative-error", [](app::Settings& s) { s.method.relative_error = 0.3; }},
-      {"samples", [](app::Settings& s) { s.method.light_samples = 7; }},
+      {"lights-per-point", [](app::Settings& s) { s.method.lights_per_point = 7; }},
   };
   int used_and_changed = 0;
   for (const std::string& method : app::method_options()) {

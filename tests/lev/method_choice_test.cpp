@@ -18,7 +18,8 @@ const Change kChanges[] = {
      [](lev::MethodChoice& c) { c.tolerance = 0.25; }},
     {"relative_error", &lev::MethodInfo::uses_relative_error,
      [](lev::MethodChoice& c) { c.relative_error = 0.25; }},
-    {"light_samples", &lev::MethodInfo::samples, [](lev::MethodChoice& c) { c.light_samples = 5; }},
+    {"lights_per_point", &lev::MethodInfo::stochastic,
+     [](lev::MethodChoice& c) { c.lights_per_point = 5; }},
 };
 
 TEST(MethodChoice, ComparesTheSettingsItsMethodReads) {
@@ -38,7 +39,7 @@ TEST(MethodChoice, ComparesTheSettingsItsMethodReads) {
         const lev::MethodChoice ua = lev::used_settings(a), ub = lev::used_settings(b);
         EXPECT_EQ(ua.tolerance, ub.tolerance) << info.name;
         EXPECT_EQ(ua.relative_error, ub.relative_error) << info.name;
-        EXPECT_EQ(ua.light_samples, ub.light_samples) << info.name;
+        EXPECT_EQ(ua.lights_per_point, ub.lights_per_point) << info.name;
       }
     }
   }

@@ -49,7 +49,7 @@ Estimate mean_missed(const lev::LightSelector& selector, lev::ShadingPoint& poin
   for (int s = 0; s < streams; ++s) {
     lev::RandomStream random{0x51ED5EEDull + static_cast<std::uint64_t>(s)};
     lev::MissedLight missed;
-    missed.samples = samples;
+    missed.draws = samples;
     missed.random = &random;
     scratch.missed = &missed;
     lev::SelectionCounters counters;
@@ -136,7 +136,7 @@ TEST(MissedLight, AskingChangesNothingOfTheMethodAndRepeatsForTheSameStream) {
       for (glm::vec3& estimate : estimates) {
         lev::RandomStream random{77};
         lev::MissedLight missed;
-        missed.samples = 8;
+        missed.draws = 8;
         missed.random = &random;
         scratch.missed = &missed;
         asked = {};
@@ -162,7 +162,7 @@ TEST(MissedLight, RtAndTheSamplingMethodsLeaveItUnestimated) {
     lev::SelectionCounters counters;
     lev::RandomStream random{1};
     lev::MissedLight missed;
-    missed.samples = 4;
+    missed.draws = 4;
     missed.random = &random;
     scratch.missed = &missed;
     selector->direct_radiance(point, scratch, counters);

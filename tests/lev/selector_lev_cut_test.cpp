@@ -134,7 +134,7 @@ TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
   const lev::MethodInfo& info = lev::method_info(*method);
   EXPECT_TRUE(info.uses_relative_error);
   EXPECT_FALSE(info.uses_tolerance);
-  EXPECT_FALSE(info.samples);
+  EXPECT_FALSE(info.stochastic);
   EXPECT_EQ(lev::swept_setting(info), &lev::MethodParams::relative_error);
 }
 

@@ -124,7 +124,7 @@ TEST(LevEst, InTheMethodTable) {
   const std::optional<lev::Method> method = lev::parse_method("lev_est");
   ASSERT_TRUE(method.has_value());
   EXPECT_TRUE(lev::method_info(*method).uses_tolerance);
-  EXPECT_FALSE(lev::method_info(*method).samples);
+  EXPECT_FALSE(lev::method_info(*method).stochastic);
 }
 
 }  // namespace

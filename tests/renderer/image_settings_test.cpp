@@ -15,7 +15,7 @@ TEST(ImageSettings, EveryMemberIsCompared) {
       [](renderer::ImageSettings& s) { s.depth += 1; },
       [](renderer::ImageSettings& s) { s.subsample += 1; },
       [](renderer::ImageSettings& s) { s.threads += 1; },
-      [](renderer::ImageSettings& s) { s.missed_samples += 2; },
+      [](renderer::ImageSettings& s) { s.missed_draws += 2; },
   };
   for (const auto& change : changes) {
     renderer::ImageSettings b = a;

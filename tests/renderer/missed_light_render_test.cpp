@@ -17,13 +17,13 @@
 namespace {
 
 renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, int missed_samples,
+                             lev::Method method, float tolerance, int missed_draws,
                              std::uint64_t seed, int threads, int width, int height) {
   renderer::RenderSettings rs = test_render_settings(method, width, height);
   rs.tolerance = tolerance;
   rs.threads = threads;
   rs.seed = seed;
-  rs.missed_samples = missed_samples;
+  rs.missed_draws = missed_draws;
   return render_test_image(scene, rays, rs);
 }
 

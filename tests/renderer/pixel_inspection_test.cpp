@@ -37,7 +37,7 @@ renderer::RenderSettings settings_for(lev::Method method, float tolerance) {
   renderer::RenderSettings rs = test_render_settings(method, kWidth, kHeight);
   rs.tolerance = tolerance;
   rs.compute_error_bound = true;  // as levrt render, and as the inspector asks
-  rs.light_samples = 4;
+  rs.lights_per_point = 4;
   return rs;
 }
 

@@ -87,9 +87,9 @@ renderer::Scene random_scene(std::uint64_t seed) {
 }
 
 renderer::RenderSettings settings_for(lev::Method method, float tolerance, int threads = 2,
-                                      int tile_size = 8, int light_samples = 1) {
+                                      int tile_size = 8, int lights_per_point = 1) {
   renderer::RenderSettings rs;
-  rs.light_samples = light_samples;
+  rs.lights_per_point = lights_per_point;
   rs.width = 40;
   rs.height = 30;
   rs.method = method;
@@ -108,7 +108,7 @@ renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RaySc
 }
 
 constexpr int kPasses = 256;
-constexpr int kLightSamples = 4;
+constexpr int kLightsPerPoint = 4;
 
 double channel_sum(const glm::vec3& v) {
   return static_cast<double>(v.x) + v.y + v.z;
@@ -124,7 +124,7 @@ double mean_error(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3
   return sum / static_cast<double>(a.size());
 }
 
-// The sampled passes' mean against rt's of the same passes. k lights per point (light_samples)
+// The sampled passes' mean against rt's of the same passes. k lights per point (lights_per_point)
 // and enough passes that the rare draws of lights hidden behind occluders (the importance does
 // not know visibility: a light with probability 1e-3 may carry a pixel's whole shadowed value)
 // are seen often enough for the measured variance to stand for the true one.
@@ -132,8 +132,8 @@ void expect_converges_to_rt(lev::Method method, float tolerance, std::uint64_t s
   const renderer::Scene scene = random_scene(seed);
   const renderer::RayScene rays(scene);
   auto rt = renderer::make_render_state(scene, rays, settings_for(lev::Method::rt, 0.0f));
-  auto sampled = renderer::make_render_state(scene, rays,
-                                             settings_for(method, tolerance, 2, 8, kLightSamples));
+  auto sampled = renderer::make_render_state(
+      scene, rays, settings_for(method, tolerance, 2, 8, kLightsPerPoint));
   const std::size_t n = 40 * 30;
   // Per pixel: the passes' samples summed, and the difference sampled - rt per pass (its mean
   // and spread): both states draw the same jitter for a pass, so only the light sampling differs.
@@ -206,7 +206,7 @@ TEST(SamplingRender, ImagesDoNotDependOnThreadsOrTiles) {
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
     for (int k : {1, 3, 4}) {  // 4: the parts are opened (light_sampling.h)
       renderer::RenderSettings rs = settings_for(method, 0.05f, 1, 8);
-      rs.light_samples = k;
+      rs.lights_per_point = k;
       const renderer::Framebuffer one = render(scene, rays, rs, 3);
       rs.threads = 2;
       const renderer::Framebuffer two = render(scene, rays, rs, 3);
@@ -225,13 +225,13 @@ TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
     renderer::RenderSettings rs = settings_for(method, 0.05f);
     const renderer::FramebufferTotals one = renderer::sum_framebuffer(render(scene, rays, rs, 1));
-    rs.light_samples = 4;
+    rs.lights_per_point = 4;
     const renderer::FramebufferTotals four = renderer::sum_framebuffer(render(scene, rays, rs, 1));
     EXPECT_GT(four.lights_tested, one.lights_tested) << lev::method_info(method).name;
   }
   renderer::RenderSettings bad = settings_for(lev::Method::lev_mc, 0.05f);
-  for (int k : {0, -1, lev::kMaxLightSamples + 1}) {
-    bad.light_samples = k;
+  for (int k : {0, -1, lev::kMaxLightsPerPoint + 1}) {
+    bad.lights_per_point = k;
     EXPECT_THROW(renderer::make_render_state(scene, rays, bad), std::invalid_argument) << k;
   }
 }
@@ -241,7 +241,7 @@ TEST(SamplingRender, LevMcAtToleranceZeroEqualsRtBitForBit) {
     const renderer::RayScene rays(scene);
     const renderer::Framebuffer rt = render(scene, rays, settings_for(lev::Method::rt, 0.0f), 2);
     renderer::RenderSettings rs = settings_for(lev::Method::lev_mc, 0.0f);
-    rs.light_samples = 3;
+    rs.lights_per_point = 3;
     const renderer::Framebuffer exact = render(scene, rays, rs, 2);
     EXPECT_TRUE(bitwise_equal(rt, exact)) << scene.name;
   }

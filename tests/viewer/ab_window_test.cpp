@@ -236,7 +236,7 @@ TEST_F(AbWindow, TheMissedLightViewTurnsTheEstimateOnAndASnapshotCarriesIt) {
   EXPECT_FALSE(before.contains("missed_estimate_avg_pct"));
   ASSERT_TRUE(after.contains("missed_estimate_avg_pct")) << after.dump();
   EXPECT_GE(after["missed_estimate_avg_pct"].get<double>(), 0.0);
-  EXPECT_EQ(after["missed_samples"].get<int>(), 16);
+  EXPECT_EQ(after["missed_draws"].get<int>(), 16);
   EXPECT_TRUE(after.contains("heatmap_missed_range"));
   std::string exr;
   for (const auto& entry : fs::directory_iterator(dir_ / "after")) {

@@ -23,14 +23,14 @@
 namespace {
 
 using app::viewer::InspectionTask;
-using app::viewer::PixelInspectionView;
+using app::viewer::PublishedInspection;
 
 struct Published {
   std::mutex mutex;
   std::condition_variable changed;
-  std::vector<std::shared_ptr<const PixelInspectionView>> views;
+  std::vector<std::shared_ptr<const PublishedInspection>> views;
 
-  void add(std::shared_ptr<const PixelInspectionView> view) {
+  void add(std::shared_ptr<const PublishedInspection> view) {
     {
       const std::lock_guard<std::mutex> lock(mutex);
       views.push_back(std::move(view));
@@ -41,16 +41,16 @@ struct Published {
     const std::lock_guard<std::mutex> lock(mutex);
     return views.size();
   }
-  std::vector<std::shared_ptr<const PixelInspectionView>> all() {
+  std::vector<std::shared_ptr<const PublishedInspection>> all() {
     const std::lock_guard<std::mutex> lock(mutex);
     return views;
   }
-  std::shared_ptr<const PixelInspectionView> wait_for_generation(std::uint64_t generation) {
+  std::shared_ptr<const PublishedInspection> wait_for_generation(std::uint64_t generation) {
     std::unique_lock<std::mutex> lock(mutex);
     changed.wait(lock, [&] { return !views.empty() && views.back()->generation == generation; });
     return views.back();
   }
-  std::shared_ptr<const PixelInspectionView> wait_for(std::size_t count) {
+  std::shared_ptr<const PublishedInspection> wait_for(std::size_t count) {
     std::unique_lock<std::mutex> lock(mutex);
     changed.wait(lock, [&] { return views.size() >= count; });
     return views[count - 1];
@@ -117,7 +117,7 @@ TEST(InspectionTask, StopAndANewStartLeaveOnlyTheLatestPixelToBePublished) {
   EXPECT_EQ(latest->y, 20);
   task.stop();
   // Between: at most the first of the two, had it finished before the second start.
-  const std::vector<std::shared_ptr<const PixelInspectionView>> views = published.all();
+  const std::vector<std::shared_ptr<const PublishedInspection>> views = published.all();
   ASSERT_GE(views.size(), before + 1);
   ASSERT_LE(views.size(), before + 2);
   EXPECT_EQ(views.back(), latest);

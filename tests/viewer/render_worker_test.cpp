@@ -73,8 +73,8 @@ app::Settings small_settings() {
   return s;
 }
 
-ViewRequest request_for(const app::Settings& s, bool reference = false) {
-  ViewRequest r;
+RenderRequest request_for(const app::Settings& s, bool reference = false) {
+  RenderRequest r;
   r.settings = s;
   r.want_reference = reference;
   return r;
@@ -183,11 +183,11 @@ TEST(RenderWorker, AToleranceChangeRestartsOnlyTheMethodsThatUseIt) {
   EXPECT_TRUE(lev::method_info(lev::Method::lev).uses_tolerance);
 }
 
-TEST(RenderWorker, ALightSamplesChangeRestartsOnlyTheSamplingMethods) {
-  expect_change_restarts_only([](app::Settings& s) { s.method.light_samples = 3; },
-                              [](const lev::MethodInfo& m) { return m.samples; });
-  EXPECT_TRUE(lev::method_info(lev::Method::lev_mc).samples);
-  EXPECT_TRUE(lev::method_info(lev::Method::light_tree).samples);
+TEST(RenderWorker, ALightsPerPointChangeRestartsOnlyTheSamplingMethods) {
+  expect_change_restarts_only([](app::Settings& s) { s.method.lights_per_point = 3; },
+                              [](const lev::MethodInfo& m) { return m.stochastic; });
+  EXPECT_TRUE(lev::method_info(lev::Method::lev_mc).stochastic);
+  EXPECT_TRUE(lev::method_info(lev::Method::light_tree).stochastic);
 }
 
 // The tolerance is in displayed units: a new exposure renders again every method that reads the
@@ -345,7 +345,7 @@ TEST(RenderWorker, ANewViewDropsTheReference) {
   std::uint64_t serial = ui.worker.post(request_for(s, true));
   ASSERT_TRUE(ui.run_until(
       [&] { return ui.status.reference == ReferencePhase::done && ui.settled(serial); }));
-  ViewRequest moved = request_for(s, true);
+  RenderRequest moved = request_for(s, true);
   renderer::Camera camera = ui.status.preset_camera;
   camera.position.z += 3.0f;
   moved.camera = camera;
@@ -380,7 +380,7 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
   Ui ui;
   const app::Settings good = small_settings();
   // An orbited view with its rt reference: both survive the failed open.
-  ViewRequest orbited = request_for(good, true);
+  RenderRequest orbited = request_for(good, true);
   renderer::Camera camera;
   camera.position = {3.0f, -12.0f, 8.0f};
   camera.target = {0.5f, 0.5f, 0.0f};
@@ -393,7 +393,7 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
   const std::uint64_t reference_generation = ui.status.reference_generation;
 
   // As the UI asks for a new scene: its preset view (no camera), the reference still wanted.
-  ViewRequest missing = request_for(good, true);
+  RenderRequest missing = request_for(good, true);
   missing.settings.scene.name = "/nonexistent-levrt-folder/missing.gltf";
   const std::uint64_t serial = ui.worker.post(missing);
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial) && ui.status.load_error_serial > 0; }));
@@ -409,7 +409,7 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
   EXPECT_EQ(ui.image.rgb, before);
 
   // The next request (the UI has gone back to the old scene) renders as usual.
-  ViewRequest more = orbited;
+  RenderRequest more = orbited;
   more.settings.image.spp = 3;
   const std::uint64_t next = ui.worker.post(more);
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(next); }));
@@ -440,7 +440,7 @@ TEST(RenderWorker, ThePinnedPixelIsInspectedBesideTheRenderAndANewPixelReplacesI
   auto ui = std::make_unique<Ui>();
   app::Settings s = small_settings();
   s.image.spp = 1000;  // still rendering while the pixels are inspected
-  ViewRequest request = request_for(s);
+  RenderRequest request = request_for(s);
   request.inspect_pixel = std::array<int, 2>{10, 12};
   const std::uint64_t generation = ui->worker.post(request);
   const auto inspected = [&](int x, int y) {

@@ -96,6 +96,18 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   }
 }
 
+TEST(ScriptedChanges, ARenamedKeyNamesItsNewName) {
+  try {
+    parse_scripted_change("samples=4@2");
+    FAIL() << "samples=4@2 was accepted";
+  } catch (const app::UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("samples is now called lights-per-point"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(parse_scripted_change("lights-per-point=4@2").value, "4");
+}
+
 TEST(ScriptedChanges, AScriptFileGivesItsLinesAndAMissingOneIsAUsageError) {
   const levrt_test::TempDir temp("levrt_script_file_");
   const std::string path = (temp.path() / "changes.txt").string();

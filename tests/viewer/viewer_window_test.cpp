@@ -119,7 +119,7 @@ TEST_F(ViewerWindow, ThePanelGreysOutWhatTheMethodIgnores) {
     EXPECT_EQ(controls["settings"]["method"], method);
     EXPECT_EQ(unused.contains("tolerance"), method == "lev_cut") << unused.dump();
     EXPECT_EQ(unused.contains("relative-error"), method == "lev") << unused.dump();
-    EXPECT_TRUE(unused.contains("samples")) << unused.dump();
+    EXPECT_TRUE(unused.contains("lights-per-point")) << unused.dump();
     EXPECT_TRUE(unused.contains("camera")) << unused.dump();  // building is no glTF file
   }
 }
@@ -190,7 +190,7 @@ TEST_F(ViewerWindow, TheNoiseViewOfASamplingMethodShowsAndSnapshotsItsEstimate) 
   // clang-format off
   const CommandRun r = run_viewer({
       "--scene", "hall", "--lights", "64", "--method", "lev_mc", "--tolerance", "0.3",
-      "--samples", "2",
+      "--lights-per-point", "2",
       "--width", "96", "--height", "72", "--spp", "6", "--window", "1024x640", "--frames", "8",
       "--set", "await=idle@0",
       "--set", "screenshot=" + path("image.png") + "@1",
@@ -268,7 +268,7 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   const nlohmann::json b = read_json(path("headless_stats.json"));
   ASSERT_FALSE(a.is_discarded() || b.is_discarded());
   for (const char* key :
-       {"lights", "method", "tolerance", "relative_error", "light_samples", "width", "height",
+       {"lights", "method", "tolerance", "relative_error", "lights_per_point", "width", "height",
         "spp", "shading_points", "shadow_rays", "lights_tested_avg", "lights_tested_max",
         "nodes_visited_avg", "hierarchy_bytes"}) {
     ASSERT_TRUE(a.contains(key) && b.contains(key)) << key;

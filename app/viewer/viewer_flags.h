@@ -10,7 +10,7 @@
 
 namespace app::viewer {
 
-struct ViewFlags {
+struct ViewerFlags {
   int frames = 0;                    // scripted: UI frames to run, 0 = until the window closes
   std::string screenshot;            // scripted: PNG of the whole window after the last frame
   std::vector<std::string> changes;  // scripted: "key=value@frame"
