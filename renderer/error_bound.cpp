@@ -42,10 +42,14 @@ double error_bound_pct(const glm::vec3& mean_bound) {
   return 100.0 * sum * 255.0 / 765.0;
 }
 
+glm::vec3 pixel_error_bound_mean(const Framebuffer& framebuffer, std::size_t i) {
+  if (framebuffer.samples[i] == 0) return glm::vec3(0.0f);
+  return framebuffer.error_bound_sum[i] / static_cast<float>(framebuffer.samples[i]);
+}
+
 double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i) {
   if (framebuffer.samples[i] == 0) return 0.0;
-  return error_bound_pct(framebuffer.error_bound_sum[i] /
-                         static_cast<float>(framebuffer.samples[i]) * framebuffer.exposure_scale);
+  return error_bound_pct(pixel_error_bound_mean(framebuffer, i) * framebuffer.exposure_scale);
 }
 
 std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer) {

@@ -46,6 +46,9 @@ glm::vec3 shading_error_bound(const Material& material, const glm::vec3& culled_
 double error_bound_pct(const glm::vec3& mean_bound);
 // Pixel i's bound in percent; 0 for a pixel without samples.
 double pixel_error_bound_pct(const Framebuffer& framebuffer, std::size_t i);
+// Pixel i's mean bound per channel before the exposure (0 without samples):
+// error_bound_pct(mean * exposure_scale) is pixel_error_bound_pct at that exposure, bit for bit.
+glm::vec3 pixel_error_bound_mean(const Framebuffer& framebuffer, std::size_t i);
 // Every pixel's bound in percent, in pixel order (0 where no sample was taken): the heatmap's.
 std::vector<double> error_bound_pct_image(const Framebuffer& framebuffer);
 // The bounds of the pixels with at least one sample, in pixel order: one per pixel of

@@ -22,6 +22,13 @@ struct MissedLightStats {
 // Pixel i's estimate and its standard error in percent; 0 without samples or estimate.
 double pixel_missed_pct(const Framebuffer& framebuffer, std::size_t i);
 double pixel_missed_std_error_pct(const Framebuffer& framebuffer, std::size_t i);
+// The same before the exposure, per channel (0 without samples or estimate), and their percent
+// at an exposure: missed_pct(pixel_missed_mean(f, i), f.exposure_scale) is pixel_missed_pct,
+// bit for bit, and so for the standard error.
+glm::vec3 pixel_missed_mean(const Framebuffer& framebuffer, std::size_t i);
+glm::vec3 pixel_missed_std_error(const Framebuffer& framebuffer, std::size_t i);
+double missed_pct(const glm::vec3& missed_mean, float exposure_scale);
+double missed_std_error_pct(const glm::vec3& missed_std_error, float exposure_scale);
 // Every pixel's estimate in percent, in pixel order (the heatmap's).
 std::vector<double> missed_pct_image(const Framebuffer& framebuffer);
 // Over the pixels with a sample (those rendered_rgb8 keeps).

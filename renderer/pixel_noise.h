@@ -15,6 +15,11 @@ namespace renderer {
 
 // One pixel, in percent; 0 for a pixel with fewer than two samples (no variance known).
 double pixel_std_error_pct(const Framebuffer& framebuffer, std::size_t pixel);
+// The same before the exposure: the channels' standard errors of the scene-linear mean, summed.
+// It and std_error_pct give pixel_std_error_pct at any exposure, bit for bit (the viewer's image
+// at an exposure its render was not made at).
+double pixel_std_error(const Framebuffer& framebuffer, std::size_t pixel);
+double std_error_pct(double std_error, float exposure_scale);
 // Every pixel, as above.
 std::vector<double> pixel_std_error_pct(const Framebuffer& framebuffer);
 

@@ -10,17 +10,20 @@
 
 namespace app::viewer {
 
+void exposed_rgb8(const glm::vec3& mean_radiance, float exposure_scale, std::uint8_t* rgb) {
+  const glm::vec3 exposed = mean_radiance * exposure_scale;
+  for (int c = 0; c < 3; ++c) {
+    const float v = std::isnan(exposed[c]) ? 0.0f : std::clamp(exposed[c], 0.0f, 1.0f);
+    rgb[c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
+  }
+}
+
 void mean_rgb8(const renderer::Framebuffer& f, std::size_t pixel, std::uint8_t* rgb) {
   if (f.samples[pixel] == 0) {
     rgb[0] = rgb[1] = rgb[2] = 0;
     return;
   }
-  const glm::vec3 mean =
-      f.radiance_sum[pixel] / static_cast<float>(f.samples[pixel]) * f.exposure_scale;
-  for (int c = 0; c < 3; ++c) {
-    const float v = std::isnan(mean[c]) ? 0.0f : std::clamp(mean[c], 0.0f, 1.0f);
-    rgb[c] = static_cast<std::uint8_t>(std::lround(v * 255.0f));
-  }
+  exposed_rgb8(f.radiance_sum[pixel] / static_cast<float>(f.samples[pixel]), f.exposure_scale, rgb);
 }
 
 namespace {
@@ -34,6 +37,7 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   u.tile = tile;
   u.pass = pass;
   u.rect = rect;
+  u.exposure_scale = f.exposure_scale;
   const auto count =
       static_cast<std::size_t>(rect.x1 - rect.x0) * static_cast<std::size_t>(rect.y1 - rect.y0);
   u.rgb.resize(3 * count);
@@ -41,12 +45,12 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
   u.samples.resize(count);
   u.lights_tested.resize(count);
   u.nodes_visited.resize(count);
-  u.error_bound_pct.resize(count);
-  u.noise_pct.resize(count);
+  u.error_bound_mean.resize(count);
+  u.std_error.resize(count);
   const bool missed = !f.missed_sum.empty();
   if (missed) {
-    u.missed_pct.resize(count);
-    u.missed_std_error_pct.resize(count);
+    u.missed_mean.resize(count);
+    u.missed_std_error.resize(count);
   }
   std::size_t k = 0;
   for (int y = rect.y0; y < rect.y1; ++y) {
@@ -61,11 +65,11 @@ TileUpdate copy_rect(const renderer::Framebuffer& f, std::uint64_t generation, i
           n > 0 ? static_cast<float>(f.lights_tested[i]) / static_cast<float>(n) : 0.0f;
       u.nodes_visited[k] =
           n > 0 ? static_cast<float>(f.nodes_visited[i]) / static_cast<float>(n) : 0.0f;
-      u.error_bound_pct[k] = static_cast<float>(renderer::pixel_error_bound_pct(f, i));
-      u.noise_pct[k] = static_cast<float>(renderer::pixel_std_error_pct(f, i));
+      u.error_bound_mean[k] = renderer::pixel_error_bound_mean(f, i);
+      u.std_error[k] = renderer::pixel_std_error(f, i);
       if (missed) {
-        u.missed_pct[k] = static_cast<float>(renderer::pixel_missed_pct(f, i));
-        u.missed_std_error_pct[k] = static_cast<float>(renderer::pixel_missed_std_error_pct(f, i));
+        u.missed_mean[k] = renderer::pixel_missed_mean(f, i);
+        u.missed_std_error[k] = renderer::pixel_missed_std_error(f, i);
       }
       renderer::add_pixel_totals(f, i, u.totals);
     }

@@ -35,25 +35,31 @@ struct TileUpdate {
   int preview_step = 1;
   TileRect rect;
   std::vector<std::uint8_t> rgb;  // mean exposed linear colour, 8-bit RGB (what errors compare)
+  float exposure_scale = 1.0f;    // the render's (Framebuffer::exposure_scale): of rgb
   // Mean scene-linear radiance, rows of the tile: the UI maps it through the current exposure
   // and display curve, so changing those re-maps the image without a new render.
   std::vector<glm::vec3> radiance;
   std::vector<std::uint32_t> samples;
   std::vector<float> lights_tested;  // per sample
   std::vector<float> nodes_visited;  // per sample
-  std::vector<float> noise_pct;      // estimated standard error (renderer/pixel_noise.h)
   TileTotals totals;
-  // The certified error bound per pixel, % of 765 (renderer/error_bound.h).
-  std::vector<float> error_bound_pct;
-  // The missed-light estimate and its standard error (renderer/missed_light.h), % of 765; empty
-  // when the render does not estimate it.
-  std::vector<float> missed_pct;
-  std::vector<float> missed_std_error_pct;
+  // The figures measured on the displayed scale, before the exposure, so that the UI puts them in
+  // percent at the exposure it shows (DisplayImage::exposure_scale), as a render at that exposure
+  // reports them: the estimated standard error (renderer/pixel_noise.h), the certified error
+  // bound per channel (renderer/error_bound.h), and the missed-light estimate and its standard
+  // error (renderer/missed_light.h), those two empty when the render does not estimate it.
+  std::vector<double> std_error;
+  std::vector<glm::vec3> error_bound_mean;
+  std::vector<glm::vec3> missed_mean;
+  std::vector<glm::vec3> missed_std_error;
 };
 
 // 8-bit colour of a mean radiance exactly as renderer::framebuffer_rgb8 computes it, so that
 // the viewer's pixel errors equal `levrt render --reference rt`'s.
 void mean_rgb8(const renderer::Framebuffer& framebuffer, std::size_t pixel, std::uint8_t* rgb);
+// The same of a pixel's mean scene-linear radiance at an exposure (what mean_rgb8 computes from
+// the framebuffer's sums at its own exposure, bit for bit).
+void exposed_rgb8(const glm::vec3& mean_radiance, float exposure_scale, std::uint8_t* rgb);
 
 // Copies one tile out of the framebuffer; call only while that tile's pixels are final.
 TileUpdate copy_tile(const renderer::Framebuffer& framebuffer, std::uint64_t generation, int tile,

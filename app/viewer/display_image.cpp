@@ -5,7 +5,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "renderer/error_bound.h"
+#include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
+#include "renderer/pixel_noise.h"
 
 namespace app::viewer {
 
@@ -35,8 +38,10 @@ const glm::vec3* mean_radiance_at(const DisplayImage& image, std::size_t i, std:
   return &image.radiance_at_power_of_two[level][i];
 }
 
-void start_generation(DisplayImage& image, std::uint64_t generation, int width, int height) {
+void start_generation(DisplayImage& image, std::uint64_t generation, int width, int height,
+                      float exposure_scale) {
   const bool same_size = width == image.width && height == image.height;
+  image.exposure_scale = exposure_scale;
   image.width = width;
   image.height = height;
   image.generation = generation;
@@ -54,11 +59,34 @@ void start_generation(DisplayImage& image, std::uint64_t generation, int width, 
   image.missed_pct.assign(n, 0.0f);
   image.missed_std_error_pct.assign(n, 0.0f);
   image.has_missed = false;
+  image.std_error.assign(n, 0.0);
+  image.error_bound_mean.assign(n, glm::vec3(0.0f));
+  image.missed_mean.assign(n, glm::vec3(0.0f));
+  image.missed_std_error.assign(n, glm::vec3(0.0f));
   image.tile_totals.clear();
   image.tile_seen.clear();
   image.tiles_seen = 0;
   image.pass = 0;
   image.tiles_done_in_pass = 0;
+}
+
+// Pixel i's figures in percent at the image's exposure, from the exposure-free ones (a pixel
+// without samples has zeros there, and 0 % then, as the renderer's functions give).
+void expose_pixel_figures(DisplayImage& image, std::size_t i) {
+  const float scale = image.exposure_scale;
+  const bool sampled = image.samples[i] > 0;
+  image.error_bound_pct[i] =
+      sampled ? static_cast<float>(renderer::error_bound_pct(image.error_bound_mean[i] * scale))
+              : 0.0f;
+  image.noise_pct[i] = static_cast<float>(renderer::std_error_pct(image.std_error[i], scale));
+  if (image.has_missed) {
+    image.missed_pct[i] =
+        sampled ? static_cast<float>(renderer::missed_pct(image.missed_mean[i], scale)) : 0.0f;
+    image.missed_std_error_pct[i] =
+        sampled
+            ? static_cast<float>(renderer::missed_std_error_pct(image.missed_std_error[i], scale))
+            : 0.0f;
+  }
 }
 
 void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
@@ -77,7 +105,7 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
     image.tiles_done_in_pass = 0;
   }
   image.tiles_done_in_pass += 1;
-  const bool missed = !u.missed_pct.empty();
+  const bool missed = !u.missed_mean.empty();
   if (missed) image.has_missed = true;
   std::size_t k = 0;
   for (int y = u.rect.y0; y < u.rect.y1; ++y) {
@@ -87,16 +115,17 @@ void apply_tile_update(DisplayImage& image, const TileUpdate& u) {
       image.samples[i] = u.samples[k];
       image.lights_tested[i] = u.lights_tested[k];
       image.nodes_visited[i] = u.nodes_visited[k];
-      image.error_bound_pct[i] = u.error_bound_pct[k];
-      image.noise_pct[i] = u.noise_pct[k];
+      image.std_error[i] = u.std_error[k];
+      image.error_bound_mean[i] = u.error_bound_mean[k];
       if (missed) {
-        image.missed_pct[i] = u.missed_pct[k];
-        image.missed_std_error_pct[i] = u.missed_std_error_pct[k];
+        image.missed_mean[i] = u.missed_mean[k];
+        image.missed_std_error[i] = u.missed_std_error[k];
       }
+      expose_pixel_figures(image, i);
       // Pixels skipped by a subsample keep the backdrop.
       if (u.samples[k] == 0) continue;
-      for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = u.rgb[3 * k + c];
       image.radiance[i] = u.radiance[k];
+      exposed_rgb8(image.radiance[i], image.exposure_scale, &image.rgb[3 * i]);
       const std::uint32_t n = u.samples[k];
       if ((n & (n - 1)) == 0) {
         const auto level = static_cast<std::size_t>(power_of_two_level(n));
@@ -142,7 +171,8 @@ void apply_preview_update(PreviewImage& preview, const TileUpdate& u) {
           preview.radiance[i] = u.radiance[k];
           preview.lights_tested[i] = u.lights_tested[k];
           preview.nodes_visited[i] = u.nodes_visited[k];
-          preview.error_bound_pct[i] = u.error_bound_pct[k];
+          preview.error_bound_pct[i] = static_cast<float>(
+              renderer::error_bound_pct(u.error_bound_mean[k] * u.exposure_scale));
         }
       }
     }
@@ -159,7 +189,7 @@ bool shows_preview(const DisplayImage& image, const PreviewImage* preview, std::
 void follow_generation(DisplayImage& image, const TileUpdate& u) {
   if (u.generation > image.generation || image.width != u.image_width ||
       image.height != u.image_height) {
-    start_generation(image, u.generation, u.image_width, u.image_height);
+    start_generation(image, u.generation, u.image_width, u.image_height, u.exposure_scale);
   }
 }
 
@@ -169,6 +199,17 @@ void clear_display_image(DisplayImage& image) {
   const std::uint64_t version = image.version;
   image = DisplayImage{};
   image.version = version + 1;
+}
+
+bool expose_display_image(DisplayImage& image, float exposure_scale) {
+  if (image.exposure_scale == exposure_scale) return false;
+  image.exposure_scale = exposure_scale;
+  for (std::size_t i = 0; i < image.samples.size(); ++i) {
+    expose_pixel_figures(image, i);
+    exposed_rgb8(image.radiance[i], exposure_scale, &image.rgb[3 * i]);
+  }
+  image.version += 1;
+  return true;
 }
 
 bool apply_tile_updates(DisplayImage& image, const std::vector<TileUpdate>& updates) {

@@ -22,6 +22,9 @@ struct DisplayImage {
   int width = 0;
   int height = 0;
   std::uint64_t generation = 0;
+  // The exposure (2^EV) of rgb and of every figure in percent below: the render's when its first
+  // tile arrives, then the one the UI shows (expose_display_image).
+  float exposure_scale = 1.0f;
   std::vector<std::uint8_t> rgb;    // latest mean colour, exposed linear 8-bit
   std::vector<glm::vec3> radiance;  // latest mean scene-linear radiance (shown)
   // The mean radiance after 1, 2, 4, ... samples (level L: 2^L), kept so that an error against
@@ -45,6 +48,11 @@ struct DisplayImage {
   std::vector<float> missed_pct;
   std::vector<float> missed_std_error_pct;
   bool has_missed = false;
+  // The same figures before the exposure (TileUpdate), from which the percentages are made.
+  std::vector<double> std_error;
+  std::vector<glm::vec3> error_bound_mean;
+  std::vector<glm::vec3> missed_mean;
+  std::vector<glm::vec3> missed_std_error;
 };
 
 // The coarse preview of the render in `generation`: per image pixel, the value of the preview
@@ -75,6 +83,13 @@ bool apply_preview_updates(PreviewImage& preview, DisplayImage& image,
                            const std::vector<TileUpdate>& updates);
 
 TileTotals sum_tile_totals(const DisplayImage& image);
+
+// Puts the 8-bit colours and every figure in percent (bound, noise, missed light) at another
+// exposure, as a render at that exposure reports them, bit for bit: a method whose radiance does
+// not depend on the exposure goes on rendering when it changes (app::restart_needed), and the
+// hover, the statistics and the snapshots then read the image at the exposure shown. Returns
+// true when anything changed.
+bool expose_display_image(DisplayImage& image, float exposure_scale);
 
 // Pixel error of the image against the reference (docs/design.md: |dR|+|dG|+|dB| of 765, in
 // percent), over the pixels both have rendered, and the signed difference (dR+dG+dB of 765,

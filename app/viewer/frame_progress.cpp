@@ -56,6 +56,11 @@ void take_worker_results(ViewerState& state, RenderWorker& worker, FrameLog& log
     clear_display_image(state.reference);
   }
   apply_tile_updates(state.reference, reference.updates);
+  // A render that goes on at a new exposure (rt, the samplers, lightcuts) is shown at it: its
+  // colours, bound, noise and missed light as a render at that exposure reports them.
+  const float exposure_scale = renderer::exposure_scale(state.settings.display.exposure_ev);
+  expose_display_image(state.image, exposure_scale);
+  expose_display_image(state.reference, exposure_scale);
   state.in_flight = worker.tiles_in_flight();
   follow_reference(state.trade, state.status.reference_generation);
   state.trade.reference_pass0_seconds = state.status.reference_first_pass_seconds;

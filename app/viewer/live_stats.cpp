@@ -19,6 +19,22 @@ std::optional<double> noise_average_pct(const DisplayImage& image) {
   return sum / static_cast<double>(pixels);
 }
 
+// Over the rendered pixels, as renderer::error_bound_stats does over a framebuffer's totals, but
+// from the pixels at the exposure shown (the tiles' totals are at the render's).
+std::optional<renderer::PixelErrorStats> error_bound_stats(const DisplayImage& image) {
+  renderer::PixelErrorStats s;
+  std::size_t pixels = 0;
+  for (std::size_t i = 0; i < image.error_bound_pct.size(); ++i) {
+    if (image.samples[i] == 0) continue;
+    s.average_pct += image.error_bound_pct[i];
+    s.max_pct = std::max(s.max_pct, static_cast<double>(image.error_bound_pct[i]));
+    ++pixels;
+  }
+  if (pixels == 0) return std::nullopt;
+  s.average_pct /= static_cast<double>(pixels);
+  return s;
+}
+
 // Over the rendered pixels, as renderer::missed_light_stats does over a framebuffer.
 std::optional<renderer::MissedLightStats> missed_light_stats(const DisplayImage& image) {
   if (!image.has_missed) return std::nullopt;
@@ -50,7 +66,7 @@ LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& stat
     s.shading_points = t.shading_points;
     s.shadow_rays = t.shadow_rays;
     s.lights_tested_max = t.lights_tested_max;
-    if (t.pixels_sampled > 0) s.error_bound = renderer::error_bound_stats(t);
+    s.error_bound = error_bound_stats(image);
     if (t.shading_points > 0) {
       s.lights_tested_avg =
           static_cast<double>(t.lights_tested) / static_cast<double>(t.shading_points);

@@ -7,6 +7,8 @@
 // is missing.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -109,6 +111,51 @@ TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
   EXPECT_EQ(exr_before.width, 64);
   EXPECT_EQ(exr_before.channels.at("R"), exr_after.channels.at("R"));
   EXPECT_EQ(exr_before.channels.count("lights_tested"), 1u);
+}
+
+// lightcuts goes on at a new exposure (its cut is relative to the point's own total), so the
+// window's figures of the render it holds are put at the new exposure: the snapshot's bound and
+// noise equal `levrt render`'s at that exposure, not those of the exposure the render was made
+// at. (No method that goes on estimates missed light: rt, the samplers and lightcuts leave none
+// out; display_image_test checks its figures are re-exposed all the same.)
+TEST_F(DisplayRemap, TheFiguresOfARenderThatGoesOnAreThoseOfARenderAtTheNewExposure) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::vector<std::string> render = {
+      "--lights", "64", "--method", "lightcuts", "--width", "48", "--height", "36", "--spp", "2"};
+  std::vector<std::string> view = render;
+  for (const char* a : {"--window", "800x600", "--frames", "6", "--set", "await=idle@0", "--set",
+                        "exposure=2@1", "--set", "await=idle@2"})
+    view.push_back(a);
+  view.push_back("--set");
+  view.push_back("snapshot=" + path("after") + "@3");
+  const CommandRun r = levrt_test::run_viewer_on_xvfb(view);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto after = nlohmann::json::parse(read_bytes(file_ending(dir_ / "after", "_stats.json")));
+  EXPECT_EQ(after["exposure_ev"], 2.0);
+
+  const auto headless = [&](const char* ev, const std::string& stats) {
+    std::vector<std::string> args = {"render"};
+    args.insert(args.end(), render.begin(), render.end());
+    for (const std::string& a : {std::string("--exposure"), std::string(ev), std::string("--stats"),
+                                 path(stats), std::string("--quiet")})
+      args.push_back(a);
+    const CommandRun run = levrt_test::run_levrt(args);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return nlohmann::json::parse(read_bytes(path(stats)));
+  };
+  const auto at_two = headless("2", "two.json");
+  const auto at_zero = headless("0", "zero.json");
+  int differ_from_zero = 0;
+  for (const char* key : {"error_bound_avg_pct", "error_bound_max_pct", "std_error_avg_pct"}) {
+    ASSERT_TRUE(after[key].is_number()) << key << " " << after.dump();
+    const double want = at_two[key].get<double>();
+    // The window sums float pixels where `render` sums doubles.
+    EXPECT_NEAR(after[key].get<double>(), want, 1e-4 * std::max(1.0, want)) << key;
+    if (std::abs(at_zero[key].get<double>() - want) > 1e-3 * std::max(1.0, want))
+      ++differ_from_zero;
+  }
+  EXPECT_EQ(differ_from_zero, 3);  // the check can fail: each figure moves with the exposure
 }
 
 }  // namespace
