@@ -2,7 +2,8 @@
 // and setting of the method table that meets it: its speedup over rt and its lights tested per
 // point. Every row of the table is swept over its bench tolerances, in turns with rt on the same
 // pixels, as control does; the whole sweep is written beside the summary. The same sweep is
-// checked for monotonicity (monotonicity.h): every deterministic method's violations are printed.
+// checked for monotonicity (monotonicity.h): every deterministic method's violations are printed,
+// and so is every deterministic render slower than rt (time_against_rt.h), with why.
 #include "app/bench/experiment_support.h"
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "app/bench/monotonicity.h"
+#include "app/bench/time_against_rt.h"
 #include "lev/methods.h"
 
 namespace app::bench {
@@ -80,6 +82,7 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
   std::vector<HeadlineRow> headline;
   std::optional<double> street_lev_seconds, bare_street_lev_seconds;
   std::vector<MonotonicityViolation> violations;
+  std::vector<SlowerThanRt> slower_than_rt;
   int scene_index = 0;
   for (const auto& [scene, wanted_lights] : c.target_renders) {
     const std::optional<ReferencedScene> where = referenced_scene(run, scene, wanted_lights);
@@ -117,6 +120,12 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
       SweptRender r{&info, requests[i].tolerance, m.full_frame_cpu_seconds(),
                     pixel_errors(m, reference), m.lights_tested_avg()};
       renders.push_back(r);
+      if (!info.stochastic && !info.is_reference && !run.planning()) {
+        if (const std::optional<SlowerThanRt> slower =
+                check_time_against_rt(scene_name, info.name, r.tolerance, r.seconds, rt_seconds,
+                                      r.lights_tested, reference.lights_tested_avg()))
+          slower_than_rt.push_back(*slower);
+      }
       if (sweep_method != &info) check_sweep();
       sweep_method = &info;
       sweep_points.push_back({r.tolerance, r.errors});
@@ -180,6 +189,10 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
          "error against rt (targets' sweeps)",
          "0 violations", "-", std::to_string(violations.size()) + " violations",
          status(!c.quick, violations.empty())});
+    headline.push_back({"deterministic methods: at most " + format_ratio(kMaxTimeOverRt) +
+                            " rt's time at every setting (targets' sweeps), or the bench says why",
+                        "0 slower", "-", std::to_string(slower_than_rt.size()) + " slower",
+                        status(!c.quick, slower_than_rt.empty())});
   }
   std::string monotonicity =
       "Monotonicity (every deterministic method's sweep, each tighter "
@@ -191,6 +204,18 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
     for (const MonotonicityViolation& v : violations) {
       std::cerr << "monotonicity: " << violation_text(v) << "\n";
       monotonicity += "- " + violation_text(v) + "\n";
+    }
+    monotonicity += "\n";
+  }
+  monotonicity += "Time against rt (every deterministic render of the sweeps over " +
+                  format_ratio(kMaxTimeOverRt) + " rt's CPU time, made in turns with it): ";
+  if (slower_than_rt.empty()) {
+    monotonicity += "none.\n\n";
+  } else {
+    monotonicity += std::to_string(slower_than_rt.size()) + " renders:\n\n";
+    for (const SlowerThanRt& s : slower_than_rt) {
+      std::cerr << "slower than rt: " << slower_text(s) << "\n";
+      monotonicity += "- " + slower_text(s) + "\n";
     }
     monotonicity += "\n";
   }
