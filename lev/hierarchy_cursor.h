@@ -3,10 +3,10 @@
 // know what each does to it, its role: a light ends the walk, a transform moves the frame into its
 // child, a bounded node culls its child by its volume, a reference stands for its master's
 // subtree, a group has children. node_role is the one switch over the kinds that says what they
-// do (node_kind_name, light_tree.h, names them); the walks, the aggregate and volume builders, the
-// inspector, the samplers and the scene-side conversion step through the hierarchy with the
-// functions below and switch on roles, so a new kind that does what one of these does is one line
-// in node_role. The functions are inline: the culling walk calls them per node.
+// do (node_kind_name, light_description.h, names them); the walks, the aggregate and volume
+// builders, the inspector, the samplers and the scene-side conversion step through the hierarchy
+// with the functions below and switch on roles, so a new kind that does what one of these does is
+// one line in node_role. The functions are inline: the culling walk calls them per node.
 //
 // Below the cursor sit what a walk reads at a node through it: the aggregate it keeps and the
 // irradiance and radiance bounds of its subtree at a point (light_bounds.h).
@@ -15,8 +15,8 @@
 #include <cstdint>
 
 #include "lev/light_bounds.h"
+#include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
-#include "lev/light_tree.h"
 #include "lev/transform.h"
 
 namespace lev {

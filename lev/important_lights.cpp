@@ -951,7 +951,7 @@ std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {
 
 namespace {
 
-void flatten_tree_node(const LightTree& tree, const LightTreeNode& node,
+void flatten_tree_node(const LightDescription& tree, const LightDescriptionNode& node,
                        const Similarity& world_from_local, std::vector<Light>& out) {
   switch (node_role(node.kind)) {
     case NodeRole::light:
@@ -962,7 +962,7 @@ void flatten_tree_node(const LightTree& tree, const LightTreeNode& node,
       break;
     case NodeRole::bounded:
     case NodeRole::group:
-      for (const LightTreeNode& child : node.children)
+      for (const LightDescriptionNode& child : node.children)
         flatten_tree_node(tree, child, world_from_local, out);
       break;
     case NodeRole::reference:
@@ -973,7 +973,7 @@ void flatten_tree_node(const LightTree& tree, const LightTreeNode& node,
 
 }  // namespace
 
-std::vector<Light> flatten_light_tree(const LightTree& tree) {
+std::vector<Light> flatten_light_description(const LightDescription& tree) {
   std::vector<Light> lights;
   flatten_tree_node(tree, tree.root, Similarity{}, lights);
   return lights;

@@ -10,8 +10,8 @@
 
 #include "lev/light.h"
 #include "lev/light_bounds.h"
+#include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
-#include "lev/light_tree.h"
 
 namespace lev {
 
@@ -267,10 +267,10 @@ void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volume
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy);
 
 // Reference: every light of the description in world space, by plain recursion over the
-// LightTree (instances expanded, transforms composed from the root down, each light moved by
+// LightDescription (instances expanded, transforms composed from the root down, each light moved by
 // transform_light). Independent of build_hierarchy and of the walk, it yields the same lights in
 // the same order, and with the same floats (the walk's arithmetic is this composition's, split).
-std::vector<Light> flatten_light_tree(const LightTree& tree);
+std::vector<Light> flatten_light_description(const LightDescription& tree);
 
 // Reference: the lights of a flattened list that pass is_important (for tests).
 std::vector<Light> important_lights_brute_force(const std::vector<Light>& world_lights,

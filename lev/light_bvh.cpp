@@ -33,11 +33,11 @@ Iter split_at_median(const std::vector<glm::vec3>& centres, Iter begin, Iter end
   return mid;
 }
 
-LightTreeNode build(std::vector<BvhItem>& items, const std::vector<glm::vec3>& centres, Iter begin,
-                    Iter end) {
+LightDescriptionNode build(std::vector<BvhItem>& items, const std::vector<glm::vec3>& centres,
+                           Iter begin, Iter end) {
   const auto count = static_cast<std::size_t>(end - begin);
   if (count == 1) return std::move(items[*begin].node);
-  std::vector<LightTreeNode> children;
+  std::vector<LightDescriptionNode> children;
   if (count <= kLeafSize) {
     // Keep the input order inside a leaf so a sorted list stays sorted.
     std::vector<std::uint32_t> leaf(begin, end);
@@ -57,7 +57,7 @@ LightTreeNode build(std::vector<BvhItem>& items, const std::vector<glm::vec3>& c
 
 }  // namespace
 
-LightTreeNode build_bvh(std::vector<BvhItem> items) {
+LightDescriptionNode build_bvh(std::vector<BvhItem> items) {
   if (items.empty()) return union_node({});
   // The centre of a light's box is its position, exactly (p + p and the halving are exact).
   std::vector<glm::vec3> centres;
@@ -69,14 +69,14 @@ LightTreeNode build_bvh(std::vector<BvhItem> items) {
   return build(items, centres, order.begin(), order.end());
 }
 
-LightTreeNode build_light_bvh(const std::vector<Light>& lights) {
+LightDescriptionNode build_light_bvh(const std::vector<Light>& lights) {
   std::vector<BvhItem> items;
   items.reserve(lights.size());
   for (const Light& l : lights) items.push_back({light_node(l), Bounds{l.position, l.position}});
   return build_bvh(std::move(items));
 }
 
-Bounds light_positions(const LightTreeNode& node,
+Bounds light_positions(const LightDescriptionNode& node,
                        const std::vector<Bounds>& master_light_positions) {
   switch (node_role(node.kind)) {
     case NodeRole::light:
@@ -91,7 +91,7 @@ Bounds light_positions(const LightTreeNode& node,
       break;
   }
   Bounds b;
-  for (const LightTreeNode& child : node.children)
+  for (const LightDescriptionNode& child : node.children)
     b = merge(b, light_positions(child, master_light_positions));
   return b;
 }

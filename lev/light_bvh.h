@@ -10,26 +10,26 @@
 
 #include "lev/bounds.h"
 #include "lev/light.h"
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 
 namespace lev {
 
 // One leaf of the hierarchy: a subtree that holds lights, and the box around its light positions
 // in the frame of the union it stands in.
 struct BvhItem {
-  LightTreeNode node;
+  LightDescriptionNode node;
   Bounds light_positions;
 };
 
 // Splits at the median of the items' box centres along the widest axis of those centres; an item
 // alone is returned as it is. The order of the items is kept inside a leaf.
-LightTreeNode build_bvh(std::vector<BvhItem> items);
+LightDescriptionNode build_bvh(std::vector<BvhItem> items);
 // build_bvh over one light node per light (a light's box is its position).
-LightTreeNode build_light_bvh(const std::vector<Light>& lights);
+LightDescriptionNode build_light_bvh(const std::vector<Light>& lights);
 
 // The box around a subtree's light positions in the frame it is entered with; an instance's is its
 // master's, master_light_positions[master] (empty for a master without lights).
-Bounds light_positions(const LightTreeNode& node,
+Bounds light_positions(const LightDescriptionNode& node,
                        const std::vector<Bounds>& master_light_positions);
 
 }  // namespace lev

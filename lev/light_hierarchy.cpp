@@ -18,9 +18,10 @@ class Flattener {
  public:
   explicit Flattener(LightHierarchy& h) : h_(h) {}
 
-  std::uint32_t add(const LightTreeNode& src, int depth, std::uint32_t current_master) {
+  std::uint32_t add(const LightDescriptionNode& src, int depth, std::uint32_t current_master) {
     if (depth > kMaxTreeDepth) {
-      throw std::invalid_argument("light tree nested deeper than " + std::to_string(kMaxTreeDepth));
+      throw std::invalid_argument("light description nested deeper than " +
+                                  std::to_string(kMaxTreeDepth));
     }
     const auto index = static_cast<std::uint32_t>(h_.nodes.size());
     h_.nodes.push_back({});
@@ -60,7 +61,8 @@ class Flattener {
       }
       case NodeRole::bounded:
         if (src.kind == NodeKind::master) {
-          throw std::invalid_argument("master nodes are declared in LightTree::masters only");
+          throw std::invalid_argument(
+              "master nodes are declared in LightDescription::masters only");
         }
         expect_children(1);
         add(src.children[0], depth + 1, current_master);
@@ -150,7 +152,7 @@ void attach_aggregates(LightHierarchy& h) {
 
 }  // namespace
 
-LightHierarchy build_hierarchy(const LightTree& tree) {
+LightHierarchy build_hierarchy(const LightDescription& tree) {
   LightHierarchy h;
   Flattener flattener(h);
   for (std::uint32_t m = 0; m < tree.masters.size(); ++m) {

@@ -1,5 +1,5 @@
 // The light hierarchy as queries use it: a flat array of 8-byte nodes addressed by index, built
-// once from a LightTree and never changed after (many renders read one scene's hierarchy at
+// once from a LightDescription and never changed after (many renders read one scene's hierarchy at
 // once, each at its own tolerance). A node's only child (affine, extent volume, master) sits
 // right after it; a union lists its children in `union_children`; an instance names its master's
 // node. Every node's children have larger indices than the node, and every master precedes (in
@@ -24,7 +24,7 @@
 #include "lev/bounds.h"
 #include "lev/light.h"
 #include "lev/light_bounds.h"
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 #include "lev/transform.h"
 
 namespace lev {
@@ -78,13 +78,13 @@ struct ExtentVolumes {
   float tolerance = 0.0f;
 };
 
-// Deepest LightTree nesting accepted (a guard for scene files, not a limit scenes reach).
+// Deepest LightDescription nesting accepted (a guard for scene files, not a limit scenes reach).
 inline constexpr int kMaxTreeDepth = 1000;
 
 // Flattens a description. Throws std::invalid_argument for malformed trees (wrong child counts,
 // an instance of an undefined or later master, nesting deeper than kMaxTreeDepth, a non-positive
 // or non-finite scale).
-LightHierarchy build_hierarchy(const LightTree& tree);
+LightHierarchy build_hierarchy(const LightDescription& tree);
 
 // Every node's extent volume for `tolerance` (>= 0), the structure unchanged.
 ExtentVolumes fit_extent_volumes(const LightHierarchy& hierarchy, float tolerance);

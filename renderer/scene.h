@@ -7,8 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
-#include "lev/light_tree.h"
 #include "renderer/camera.h"
 #include "renderer/directional_light.h"
 #include "renderer/geometry.h"
@@ -21,7 +21,7 @@ struct Scene {
   std::string name;
   int level = 0;  // model level (0 for scenes without one)
   Camera camera;
-  lev::LightTree light_tree;
+  lev::LightDescription light_description;
   lev::LightHierarchy lights;
   std::vector<DirectionalLight> directional_lights;
   Geometry geometry;

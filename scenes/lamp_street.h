@@ -1,8 +1,9 @@
 // Scene class "lamp street": a town of parallel streets lit by one lamp design placed
 // thousands of times, each lamp an `instance` of one master (post, arm, head and a spotlight
 // shining down) under a translation and a turn, all of them children of one union. The scene
-// format puts no box above them; light_tree_conversion gives the union its automatic hierarchy
-// over the instances, keeping the master shared. The same town with the lights written bare
+// format puts no box above them; light_description_conversion gives the union its automatic
+// hierarchy over the instances, keeping the master shared. The same town with the lights written
+// bare
 // (`instanced` false: the master holds the lamp's geometry only, every light stands in the root
 // union where the instance would place it) is the yardstick of that hierarchy.
 // Parameters make other towns of the class; the model's level L has 2^(L-2) streets with

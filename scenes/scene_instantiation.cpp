@@ -4,7 +4,7 @@
 
 #include "lev/light_hierarchy.h"
 #include "scenes/geometry_baking.h"
-#include "scenes/light_tree_conversion.h"
+#include "scenes/light_description_conversion.h"
 
 namespace scenes {
 
@@ -29,9 +29,9 @@ renderer::Scene instantiate_scene(const SceneDescription& description) {
     move_subtree(*moved_root, -scene.world_origin);
   }
   const SceneNode& root = moved_root ? *moved_root : description.root;
-  scene.light_tree = convert_lights(description, root, analysis);
+  scene.light_description = convert_lights(description, root, analysis);
   scene.geometry = bake_geometry(description, root, analysis);
-  scene.lights = lev::build_hierarchy(scene.light_tree);
+  scene.lights = lev::build_hierarchy(scene.light_description);
   return scene;
 }
 

@@ -1,10 +1,10 @@
 // Scene class "stage rig": thousands of coloured spotlights, overlapping, all aimed at
 // one stage on which a mirror and glass objects stand, written as one flat list of lights (the
-// automatic hierarchy of light_tree_conversion is all the structure they get). Every point on the
-// stage is lit by a large share of the rig and each spot gives it little: the many-dim-lights
-// case, with reflected and refracted rays that need their own selection.
-// Parameters make other rigs of the class; the model's level L has 72 * 4^(L-3) spots (72, 288,
-// 1,152, 4,608, 18,432 for L = 3..7), whose summed intensity is the same at every level.
+// automatic hierarchy of light_description_conversion is all the structure they get). Every point
+// on the stage is lit by a large share of the rig and each spot gives it little: the
+// many-dim-lights case, with reflected and refracted rays that need their own selection. Parameters
+// make other rigs of the class; the model's level L has 72 * 4^(L-3) spots (72, 288, 1,152, 4,608,
+// 18,432 for L = 3..7), whose summed intensity is the same at every level.
 #pragma once
 
 #include <cstdint>

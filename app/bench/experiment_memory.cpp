@@ -58,7 +58,7 @@ Section run_memory(BenchRun& run, const std::string& out_dir) {
             instanced = lev::hierarchy_bytes(s.lights);
             // Without instancing: the same lights as a flat list, under the automatic BVH a scene
             // file without structure gets (docs/design.md).
-            lev::LightTree flat_tree;
+            lev::LightDescription flat_tree;
             flat_tree.root = lev::build_light_bvh(lev::flatten_lights(s.lights));
             flat = lev::hierarchy_bytes(lev::build_hierarchy(flat_tree));
             ast = lev::make_selector(s.lights, {lev::Method::ast, static_cast<float>(c.tolerance)})

@@ -75,9 +75,9 @@ template <typename Check>
 void for_each_query(std::uint64_t seeds, Check check) {
   for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
     const std::vector<glm::vec3> points = query_points(r, world_lights);
     lev::WalkScratch scratch;
     for (const float tau : kTolerances) {
@@ -140,7 +140,7 @@ TEST(CulledBound, APointBesideACulledSubtreesLightsGetsATightBound) {
   lev::Light left = lev::make_point_light({-10.0f, 0.0f, 0.0f}, glm::vec3(0.5f, 0.5f, 0.0f));
   lev::Light right = lev::make_point_light({10.0f, 0.0f, 0.0f}, glm::vec3(0.5f, 0.25f, 0.0f));
   left.range = right.range = 1.0f;
-  lev::LightTree tree;
+  lev::LightDescription tree;
   tree.masters.push_back(lev::union_node({lev::light_node(left), lev::light_node(right)}));
   tree.root = lev::union_node(
       {lev::affine_node(lev::make_translation(glm::vec3(0.0f)), lev::instance_node(0)),
@@ -233,12 +233,12 @@ TEST(CulledBound, RadianceBoundNeverBelowTheUnshadowedRadianceOfTheLightsNotRetu
 // lobe, what they can add is a fifth of it, and the radiance bound says so.
 TEST(CulledBound, AShinyFloorUnderCulledCeilingLightsGetsARadianceBoundFarBelowSaturation) {
   const float tau = 0.3f;
-  std::vector<lev::LightTreeNode> ceiling;
+  std::vector<lev::LightDescriptionNode> ceiling;
   for (const float cx : {-6.0f, -2.0f, 2.0f, 6.0f}) {
     for (const float cy : {-6.0f, -2.0f, 2.0f, 6.0f})
       ceiling.push_back(lev::light_node(lev::make_point_light({cx, cy, 3.0f}, glm::vec3(2.4f))));
   }
-  lev::LightTree tree;
+  lev::LightDescription tree;
   tree.masters.push_back(lev::union_node(ceiling));
   tree.root = lev::union_node(
       {lev::affine_node(lev::make_translation(glm::vec3(0.0f)), lev::instance_node(0)),
@@ -258,7 +258,7 @@ TEST(CulledBound, AShinyFloorUnderCulledCeilingLightsGetsARadianceBoundFarBelowS
   lev::find_important_lights_tight_bound(h, volumes, tau, x, scratch, found, counters, &irradiance);
   EXPECT_TRUE(found.empty());
   ASSERT_TRUE(radiance.bounded);
-  const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
   const glm::dvec3 exact_radiance = lev::culled_radiance_brute_force(world_lights, point, tau);
   const glm::dvec3 exact_irradiance = brute_force_culled(world_lights, x, tau);
   const glm::vec3 largest = lev::largest_response(point.surface_response());
@@ -293,9 +293,9 @@ TEST(CulledBound, AShinyFloorUnderCulledCeilingLightsGetsARadianceBoundFarBelowS
 
 TEST(CulledBound, SelectorsReportWhatTheyLeftOut) {
   Random r(11);
-  const lev::LightTree tree = lev_test::random_instanced_tree(r);
+  const lev::LightDescription tree = lev_test::random_instanced_tree(r);
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
-  const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
   const lev::RtSelector rt(h);
   for (const float tau : kTolerances) {
     const lev::LevSelector lev_selector(h, tau);

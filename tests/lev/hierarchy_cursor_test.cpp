@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "lev/important_lights.h"
+#include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
-#include "lev/light_tree.h"
 
 namespace {
 
@@ -14,8 +14,8 @@ namespace {
 // spotlight; master 1 is an extent volume over a union of two instances of master 0, one behind
 // a translation, one behind a chain of a rotation and a translation; the root is a union of an
 // instance of master 1, an extent volume over a translated light, and a translated instance.
-lev::LightTree every_kind_tree() {
-  lev::LightTree tree;
+lev::LightDescription every_kind_tree() {
+  lev::LightDescription tree;
   const lev::Similarity turn =
       lev::compose(lev::make_rotation({0.0f, 1.0f, 0.0f}, 0.4f), lev::make_scale(1.5f));
   tree.masters.push_back(lev::union_node(
@@ -70,11 +70,11 @@ TEST(HierarchyCursor, EveryKindHasItsRole) {
 }
 
 TEST(HierarchyCursor, FindsEveryLightOfTheDescription) {
-  const lev::LightTree tree = every_kind_tree();
+  const lev::LightDescription tree = every_kind_tree();
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
   std::vector<lev::Light> found;
   lights_by_cursor(h, h.root, lev::Similarity{}, found);
-  const std::vector<lev::Light> expected = lev::flatten_light_tree(tree);
+  const std::vector<lev::Light> expected = lev::flatten_light_description(tree);
   ASSERT_EQ(found.size(), 9u);  // 2 instances of master 1, each 2 of master 0's 2 lights, + 1
   ASSERT_EQ(found.size(), expected.size());
   for (std::size_t i = 0; i < found.size(); ++i)
@@ -167,7 +167,7 @@ TEST(HierarchyCursor, AffineChainCarriesPointAndNormalIntoTheLocalFrame) {
 }
 
 TEST(HierarchyCursor, LightsAreReadAtTheLeaves) {
-  const lev::LightTree tree = every_kind_tree();
+  const lev::LightDescription tree = every_kind_tree();
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
   std::vector<lev::Light> leaves;
   for (const lev::HierarchyNode& n : h.nodes) {

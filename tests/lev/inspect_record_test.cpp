@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "lev/inspect_record.h"
+#include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
 #include "lev/light_selector.h"
-#include "lev/light_tree.h"
 #include "tests/lev/open_point.h"
 
 namespace {
@@ -37,12 +37,12 @@ class CancellingPoint final : public lev::ShadingPoint {
 };
 
 lev::LightHierarchy many_lights(std::size_t count) {
-  std::vector<lev::LightTreeNode> lights;
+  std::vector<lev::LightDescriptionNode> lights;
   for (std::size_t i = 0; i < count; ++i) {
     const glm::vec3 position(static_cast<float>(i % 64), static_cast<float>(i / 64), 5.0f);
     lights.push_back(lev::light_node(lev::make_point_light(position, glm::vec3(1.0f))));
   }
-  lev::LightTree tree;
+  lev::LightDescription tree;
   tree.root = lev::union_node(std::move(lights));
   return lev::build_hierarchy(tree);
 }

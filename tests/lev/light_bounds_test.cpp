@@ -100,18 +100,18 @@ TEST(LightBounds, MasterAggregateBoundsItsInstancedLightsEverywhere) {
   std::uint64_t finite_checks = 0;
   for (std::uint64_t seed = 1; seed <= 60; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
     for (std::uint32_t m = 0; m < tree.masters.size(); ++m) {
       const Placement placement = random_placement(r);
       // The master's lights in the world, by the tree's plain recursion (no aggregate code).
-      lev::LightTree placed = tree;
-      lev::LightTreeNode root = lev::instance_node(m);
+      lev::LightDescription placed = tree;
+      lev::LightDescriptionNode root = lev::instance_node(m);
       for (auto xf = placement.chain.rbegin(); xf != placement.chain.rend(); ++xf) {
         root = lev::affine_node(*xf, std::move(root));
       }
       placed.root = std::move(root);
-      const std::vector<lev::Light> world_lights = lev::flatten_light_tree(placed);
+      const std::vector<lev::Light> world_lights = lev::flatten_light_description(placed);
       const lev::LightAggregate* aggregate = lev::stored_aggregate(h, h.master_ranges[m].begin);
       ASSERT_NE(aggregate, nullptr);
       const lev::LightHierarchy placed_h = lev::build_hierarchy(placed);
@@ -358,10 +358,10 @@ TEST(LightBounds, ScaledInstanceCarriesScaleSquared) {
 // one per master level, and hierarchy_bytes counts them.
 TEST(LightBounds, AggregatesAreStoredOncePerMaster) {
   const auto building = [](int levels) {
-    lev::LightTree tree;
+    lev::LightDescription tree;
     tree.masters.push_back(lev::light_node(lev::make_point_light({0, 0, 1}, glm::vec3(1.0f))));
     for (int k = 1; k <= levels; ++k) {
-      std::vector<lev::LightTreeNode> quarters;
+      std::vector<lev::LightDescriptionNode> quarters;
       for (int q = 0; q < 4; ++q) {
         const float step = static_cast<float>(1 << k);
         quarters.push_back(

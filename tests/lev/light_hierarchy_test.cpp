@@ -4,7 +4,7 @@
 
 #include "lev/important_lights.h"
 #include "lev/light_bvh.h"
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 
 namespace {
 
@@ -16,15 +16,15 @@ bool same_light(const lev::Light& a, const lev::Light& b) {
 
 // A recursively instanced scene in the style of the thesis' building: master 0 holds a point
 // light and a spotlight; master k puts four rotated, translated and scaled copies of k-1.
-lev::LightTree instanced_tree(int levels) {
-  lev::LightTree tree;
+lev::LightDescription instanced_tree(int levels) {
+  lev::LightDescription tree;
   tree.masters.push_back(lev::union_node(
       {lev::light_node(lev::make_point_light({1.0f, 2.0f, 3.0f}, {3.0f, 2.0f, 1.0f})),
        lev::affine_node(lev::make_translation({4.0f, 0.5f, 2.0f}),
                         lev::light_node(lev::make_spot_light({0, 0, 0}, {0.3f, 0.1f, -1.0f},
                                                              {6, 6, 6}, 0.7f, 3.0f)))}));
   for (int k = 1; k <= levels; ++k) {
-    std::vector<lev::LightTreeNode> children;
+    std::vector<lev::LightDescriptionNode> children;
     const float block = 10.0f * static_cast<float>(1 << (k - 1));
     for (int q = 0; q < 4; ++q) {
       lev::Similarity xf =
@@ -49,7 +49,7 @@ std::vector<glm::vec3> probe_points() {
 }
 
 TEST(LightHierarchy, InstancedWalkMatchesFlattenedBruteForce) {
-  const lev::LightTree tree = instanced_tree(3);
+  const lev::LightDescription tree = instanced_tree(3);
   lev::LightHierarchy h = lev::build_hierarchy(tree);
   EXPECT_EQ(h.light_count, 2u * 64u);
   const std::vector<lev::Light> flat = lev::flatten_lights(h);
@@ -92,7 +92,7 @@ TEST(LightHierarchy, ToleranceZeroReturnsEveryLight) {
 }
 
 TEST(LightHierarchy, ScaledInstanceShinesWithScaleSquared) {
-  lev::LightTree tree;
+  lev::LightDescription tree;
   tree.masters.push_back(lev::light_node(lev::make_point_light({1, 0, 0}, {2, 2, 2})));
   tree.root = lev::affine_node(
       lev::compose(lev::make_translation({5, 0, 0}), lev::make_scale(3.0f)), lev::instance_node(0));
@@ -120,17 +120,17 @@ TEST(LightHierarchy, RefitKeepsStructureAndComputesMastersOnce) {
 }
 
 TEST(LightHierarchy, RejectsMalformedTrees) {
-  lev::LightTree forward;
+  lev::LightDescription forward;
   forward.masters.push_back(lev::instance_node(0));  // instances itself
   EXPECT_THROW(lev::build_hierarchy(forward), std::invalid_argument);
-  lev::LightTree bad_scale;
+  lev::LightDescription bad_scale;
   lev::Similarity xf;
   xf.scale = 0.0f;
   bad_scale.root =
       lev::affine_node(xf, lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1})));
   EXPECT_THROW(lev::build_hierarchy(bad_scale), std::invalid_argument);
-  lev::LightTree deep;
-  lev::LightTreeNode n = lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1}));
+  lev::LightDescription deep;
+  lev::LightDescriptionNode n = lev::light_node(lev::make_point_light({0, 0, 0}, {1, 1, 1}));
   for (int i = 0; i < lev::kMaxTreeDepth + 5; ++i) n = lev::extent_volume_node(std::move(n));
   deep.root = std::move(n);
   EXPECT_THROW(lev::build_hierarchy(deep), std::invalid_argument);
@@ -153,7 +153,7 @@ TEST(LightBvh, FlatListGetsAHierarchyThatCullsExactly) {
       lights.push_back(lev::make_point_light(p, glm::vec3(0.5f + 2.0f * uniform(), 1.0f, 0.5f)));
     }
   }
-  lev::LightTree tree;
+  lev::LightDescription tree;
   tree.root = lev::build_light_bvh(lights);
   lev::LightHierarchy h = lev::build_hierarchy(tree);
   EXPECT_EQ(h.light_count, lights.size());

@@ -51,13 +51,13 @@ std::vector<glm::vec3> hard_points(Random& r, const std::vector<lev::Light>& lig
 
 // Lights straight under unions (no extent volume of their own), instanced under random
 // similarities: the descent then weighs each light by itself, in its master's frame.
-lev::LightTree bare_light_tree(Random& r) {
-  lev::LightTree tree;
-  std::vector<lev::LightTreeNode> lights;
+lev::LightDescription bare_light_description(Random& r) {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> lights;
   const int count = r.integer(2, 6);
   for (int c = 0; c < count; ++c) lights.push_back(lev::light_node(lev_test::random_light(r)));
   tree.masters.push_back(lev::union_node(std::move(lights)));
-  std::vector<lev::LightTreeNode> roots;
+  std::vector<lev::LightDescriptionNode> roots;
   for (int i = 0; i < 3; ++i)
     roots.push_back(lev::affine_node(lev_test::random_similarity(r), lev::instance_node(0)));
   roots.push_back(lev::light_node(lev_test::random_light(r)));
@@ -65,8 +65,8 @@ lev::LightTree bare_light_tree(Random& r) {
   return tree;
 }
 
-lev::LightTree random_tree(Random& r, int scene) {
-  return scene % 2 == 0 ? lev_test::random_instanced_tree(r) : bare_light_tree(r);
+lev::LightDescription random_tree(Random& r, int scene) {
+  return scene % 2 == 0 ? lev_test::random_instanced_tree(r) : bare_light_description(r);
 }
 
 bool same_light(const lev::Light& a, const lev::Light& b) {
@@ -202,12 +202,12 @@ namespace {
 // by projection; the sphere around the layer's box would allow cos = 1, hundreds of times too
 // much), and every light still has a non-zero probability.
 TEST(LightSampling, ALayerSeenEdgeOnWeighsLikeItsLights) {
-  std::vector<lev::LightTreeNode> layer;
+  std::vector<lev::LightDescriptionNode> layer;
   for (int i = 0; i < 16; ++i) {
     const glm::vec3 p(static_cast<float>(i % 4), static_cast<float>(i / 4), -0.01f);
     layer.push_back(lev::light_node(lev::make_point_light(p, glm::vec3(1.0f))));
   }
-  lev::LightTree tree;
+  lev::LightDescription tree;
   tree.root = lev::union_node(std::move(layer));
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
   const glm::vec3 normal(0.0f, 0.0f, -1.0f);

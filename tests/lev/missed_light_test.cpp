@@ -77,7 +77,7 @@ TEST(MissedLight, ItsMeanIsRtMinusTheMethodWithShadows) {
   int compared = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
     const auto rt = lev::make_selector(h, {lev::Method::rt, 0.0f});
     for (const float tau : {0.01f, 0.1f}) {

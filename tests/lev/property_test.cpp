@@ -19,16 +19,16 @@ namespace {
 using lev_test::Random;
 using lev_test::random_instanced_tree;
 
-// The brute force runs over the tree's own flattening (flatten_light_tree), which shares no code
-// with build_hierarchy or the walk: the walk is checked against a second implementation.
+// The brute force runs over the tree's own flattening (flatten_light_description), which shares no
+// code with build_hierarchy or the walk: the walk is checked against a second implementation.
 TEST(Property, WalkNeverMissesAndNeverAddsALight) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = random_instanced_tree(r);
+    const lev::LightDescription tree = random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
+    const std::vector<lev::Light> flat = lev::flatten_light_description(tree);
     ASSERT_EQ(flat.size(), h.light_count);
-    lev::LightTree twin;
+    lev::LightDescription twin;
     twin.root = lev::build_light_bvh(flat);
     const lev::LightHierarchy flattened = lev::build_hierarchy(twin);
     lev::WalkScratch scratch;
@@ -57,8 +57,8 @@ TEST(Property, WalkNeverMissesAndNeverAddsALight) {
 TEST(Property, FlattenedHierarchyEqualsThePlainRecursion) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = random_instanced_tree(r);
-    const std::vector<lev::Light> plain = lev::flatten_light_tree(tree);
+    const lev::LightDescription tree = random_instanced_tree(r);
+    const std::vector<lev::Light> plain = lev::flatten_light_description(tree);
     ASSERT_FALSE(plain.empty());
     lev_test::expect_same_lights(lev::flatten_lights(lev::build_hierarchy(tree)), plain,
                                  "seed " + std::to_string(seed));
@@ -68,9 +68,9 @@ TEST(Property, FlattenedHierarchyEqualsThePlainRecursion) {
 
 TEST(Property, ExtremeTolerancesNeitherCrashNorProduceNaN) {
   Random r(99);
-  const lev::LightTree tree = random_instanced_tree(r);
+  const lev::LightDescription tree = random_instanced_tree(r);
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
-  const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
+  const std::vector<lev::Light> flat = lev::flatten_light_description(tree);
   lev::WalkScratch scratch;
   const float tiny = std::numeric_limits<float>::denorm_min();
   for (float tau : {tiny, std::numeric_limits<float>::min(), 1e-30f, 1e30f,

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 
 namespace lev_test {
 
@@ -49,11 +49,11 @@ inline lev::Similarity random_similarity(Random& r) {
   return lev::compose(xf, lev::make_scale(std::pow(2.0f, r.uniform(-2.0f, 2.0f))));
 }
 
-inline lev::LightTree random_instanced_tree(Random& r) {
-  lev::LightTree tree;
+inline lev::LightDescription random_instanced_tree(Random& r) {
+  lev::LightDescription tree;
   const int masters = r.integer(1, 4);
   for (int m = 0; m < masters; ++m) {
-    std::vector<lev::LightTreeNode> children;
+    std::vector<lev::LightDescriptionNode> children;
     const int count = r.integer(1, 5);
     for (int c = 0; c < count; ++c) {
       if (m > 0 && r.integer(0, 1) == 0) {
@@ -67,7 +67,7 @@ inline lev::LightTree random_instanced_tree(Random& r) {
     }
     tree.masters.push_back(lev::union_node(std::move(children)));
   }
-  std::vector<lev::LightTreeNode> roots;
+  std::vector<lev::LightDescriptionNode> roots;
   for (int i = 0; i < 4; ++i) {
     roots.push_back(lev::affine_node(
         random_similarity(r),

@@ -26,9 +26,9 @@ TEST(LevBounded, CulledBoundWithinTheToleranceAndAboveWhatWasCulled) {
   std::uint64_t bounded_points = 0;
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
     lev::WalkScratch scratch;
     for (const float tau : {1e-3f, 1e-2f, 0.1f, 1.0f, 1e30f}) {
       const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
@@ -70,7 +70,7 @@ TEST(LevBounded, CulledBoundWithinTheToleranceAndAboveWhatWasCulled) {
 TEST(LevBounded, AtToleranceZeroSelectsWhatRtTests) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
     const std::vector<lev::Light> flat = lev::flatten_lights(h);
     const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);

@@ -78,9 +78,9 @@ TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
   std::uint64_t clustered_points = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
     lev::WalkScratch scratch;
     for (const float tau : {0.0f, 1e-3f, 1e-1f}) {
       const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);

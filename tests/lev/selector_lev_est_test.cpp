@@ -25,10 +25,10 @@ using lev_test::Random;
 
 // A random instanced tree, and for odd seeds one more master whose lights sit right below their
 // transforms, without an extent volume of their own (a moved light is then culled by its box).
-lev::LightTree random_tree(Random& r, std::uint64_t seed) {
-  lev::LightTree tree = lev_test::random_instanced_tree(r);
+lev::LightDescription random_tree(Random& r, std::uint64_t seed) {
+  lev::LightDescription tree = lev_test::random_instanced_tree(r);
   if (seed % 2 == 0) return tree;
-  std::vector<lev::LightTreeNode> lights;
+  std::vector<lev::LightDescriptionNode> lights;
   for (int k = 0; k < 6; ++k) {
     lights.push_back(lev::affine_node(lev_test::random_similarity(r),
                                       lev::light_node(lev_test::random_light(r))));
@@ -44,9 +44,9 @@ TEST(LevEst, ClustersAccountForEveryCulledLightAndTheBoundHolds) {
   std::uint64_t clustered_points = 0;
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = random_tree(r, seed);
+    const lev::LightDescription tree = random_tree(r, seed);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
     lev::WalkScratch scratch;
     for (const float tau : {0.0f, 1e-3f, 1e-2f, 0.1f, 1.0f, 1e30f}) {
       const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
@@ -93,9 +93,9 @@ TEST(LevEst, ClustersAccountForEveryCulledLightAndTheBoundHolds) {
 TEST(LevEst, SelectorBoundHoldsAndToleranceZeroIsRt) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_tree(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
     const lev::RtSelector rt(h);
     for (const float tau : {0.0f, 1e-2f, 1.0f}) {
       const lev::LevEstSelector est(h, tau);

@@ -2,7 +2,8 @@
 // irradiance is within a hair of the tolerance, or within a hair of a spot's cone, seen through
 // random nested rotations, scales of 2^-2 to 2^2 and translations, and lights that sit directly
 // in a union (tested inline, not as frames). The walk must select exactly what the brute-force
-// test selects over the lights of flatten_light_tree, in the same order and with the same floats.
+// test selects over the lights of flatten_light_description, in the same order and with the same
+// floats.
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -76,10 +77,10 @@ void expect_walk_equals_brute_force(const lev::LightHierarchy& h, const lev::Ext
 // Builds the tree's hierarchy, fits its volumes for each tolerance and compares the walk with the
 // brute force (over the tree's plain flattening) at points straddling the edge of every light's
 // extent volume; counts the points and the lights kept.
-void check_every_edge(const lev::LightTree& tree, std::initializer_list<float> tolerances,
+void check_every_edge(const lev::LightDescription& tree, std::initializer_list<float> tolerances,
                       Random& r, std::uint64_t seed, std::size_t& points, std::size_t& kept) {
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
-  const std::vector<lev::Light> flat = lev::flatten_light_tree(tree);
+  const std::vector<lev::Light> flat = lev::flatten_light_description(tree);
   lev::WalkScratch scratch;
   for (float tolerance : tolerances) {
     const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
@@ -97,7 +98,7 @@ TEST(WalkEdges, MatchesTheBruteForceAtTheVolumeEdges) {
   std::size_t points = 0, kept = 0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     Random r(seed);
-    const lev::LightTree tree = lev_test::random_instanced_tree(r);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     check_every_edge(tree, {1e-3f, 0.01f, 1.0f, 100.0f}, r, seed, points, kept);
     if (HasFatalFailure()) return;
   }
@@ -113,9 +114,9 @@ TEST(WalkEdges, MatchesTheBruteForceThroughDeepNesting) {
   std::size_t points = 0, kept = 0;
   for (std::uint64_t seed = 100; seed < 160; ++seed) {
     Random r(seed);
-    std::vector<lev::LightTreeNode> children;
+    std::vector<lev::LightDescriptionNode> children;
     for (int i = 0; i < 12; ++i) {
-      lev::LightTreeNode node = lev::light_node(lev_test::random_light(r));
+      lev::LightDescriptionNode node = lev::light_node(lev_test::random_light(r));
       const int depth = r.integer(0, 3);
       for (int k = 0; k < depth; ++k)
         node = lev::affine_node(lev_test::random_similarity(r), std::move(node));
@@ -124,7 +125,7 @@ TEST(WalkEdges, MatchesTheBruteForceThroughDeepNesting) {
       children.push_back(r.integer(0, 1) == 0 ? lev::extent_volume_node(std::move(node))
                                               : std::move(node));
     }
-    lev::LightTree tree;
+    lev::LightDescription tree;
     tree.root = lev::union_node(std::move(children));
     check_every_edge(tree, {1e-2f, 3.0f}, r, seed, points, kept);
     if (HasFatalFailure()) return;

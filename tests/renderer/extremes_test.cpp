@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
 #include "renderer/shapes.h"
@@ -39,7 +39,7 @@ renderer::Scene extreme_scene() {
   scene.geometry.instances.push_back({0, lev::Similarity{}});
 
   const float big = std::numeric_limits<float>::max();
-  std::vector<lev::LightTreeNode> lights;
+  std::vector<lev::LightDescriptionNode> lights;
   lights.push_back(lev::light_node(lev::make_point_light({0, 4, 3}, {2, 2, 2})));
   lights.push_back(lev::light_node(lev::make_point_light({5, 5, 0}, {1, 1, 1})));  // on the floor
   lights.push_back(
@@ -59,8 +59,8 @@ renderer::Scene extreme_scene() {
       ++i;
     }
   }
-  scene.light_tree.root = lev::union_node(std::move(lights));
-  scene.lights = lev::build_hierarchy(scene.light_tree);
+  scene.light_description.root = lev::union_node(std::move(lights));
+  scene.lights = lev::build_hierarchy(scene.light_description);
   scene.camera.position = {0, -18, 9};
   scene.camera.target = {0, 0, 0};
   return scene;

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 #include "renderer/pixel_noise.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
@@ -50,8 +50,8 @@ renderer::Scene random_scene(std::uint64_t seed) {
   scene.geometry.instances.push_back({0, lev::Similarity{}});
 
   // A master of a few lights, instanced under rotations and scales, plus single lights.
-  lev::LightTree tree;
-  std::vector<lev::LightTreeNode> master;
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> master;
   for (int i = 0; i < 4; ++i) {
     const glm::vec3 p(r.uniform(-2, 2), r.uniform(-2, 2), r.uniform(0.0f, 1.0f));
     const float intensity = r.uniform(0.2f, 2.0f);
@@ -65,7 +65,7 @@ renderer::Scene random_scene(std::uint64_t seed) {
     }
   }
   tree.masters.push_back(lev::union_node(std::move(master)));
-  std::vector<lev::LightTreeNode> roots;
+  std::vector<lev::LightDescriptionNode> roots;
   for (int i = 0; i < 5; ++i) {
     lev::Similarity xf = lev::make_rotation({0, 0, 1}, r.uniform(0.0f, 6.28f));
     xf = lev::compose(xf, lev::make_scale(r.uniform(0.5f, 1.5f)));
@@ -79,8 +79,8 @@ renderer::Scene random_scene(std::uint64_t seed) {
                               glm::vec3(r.uniform(0.05f, 1.0f)))));
   }
   tree.root = lev::union_node(std::move(roots));
-  scene.light_tree = tree;
-  scene.lights = lev::build_hierarchy(scene.light_tree);
+  scene.light_description = tree;
+  scene.lights = lev::build_hierarchy(scene.light_description);
   scene.camera.position = {0, -16, 10};
   scene.camera.target = {0, 0, 0};
   return scene;

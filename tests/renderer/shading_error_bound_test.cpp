@@ -13,7 +13,7 @@
 
 #include "lev/important_lights.h"
 #include "lev/light_bounds.h"
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 #include "lev/methods.h"
 #include "renderer/error_bound.h"
 #include "renderer/ray_scene.h"
@@ -208,7 +208,7 @@ renderer::Scene mirror_and_glass_scene(std::mt19937_64& engine) {
   prototype.spheres.push_back({{2.5f, 0.5f, 1.5f}, 1.5f, 2});
   scene.geometry.prototypes.push_back(prototype);
   scene.geometry.instances.push_back({0, lev::Similarity{}});
-  std::vector<lev::LightTreeNode> lights;
+  std::vector<lev::LightDescriptionNode> lights;
   for (int i = 0; i < 40; ++i) {
     const glm::vec3 p(uniform(-8, 8), uniform(-8, 8), uniform(0.5f, 6.0f));
     const glm::vec3 intensity(uniform(0.05f, 2.0f), uniform(0.05f, 2.0f), uniform(0.05f, 2.0f));
@@ -220,8 +220,8 @@ renderer::Scene mirror_and_glass_scene(std::mt19937_64& engine) {
       lights.push_back(lev::light_node(lev::make_point_light(p, intensity)));
     }
   }
-  scene.light_tree.root = lev::union_node(std::move(lights));
-  scene.lights = lev::build_hierarchy(scene.light_tree);
+  scene.light_description.root = lev::union_node(std::move(lights));
+  scene.lights = lev::build_hierarchy(scene.light_description);
   return scene;
 }
 

@@ -30,7 +30,7 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
     const int level = std::min(model.min_level + 2, model.max_level);
     renderer::Scene scene = model.build(level);
     const std::vector<lev::Light> flat = lev::flatten_lights(scene.lights);
-    lev::LightTree flat_tree;
+    lev::LightDescription flat_tree;
     flat_tree.root = lev::build_light_bvh(flat);
     lev::LightHierarchy bvh = lev::build_hierarchy(flat_tree);
     EXPECT_EQ(bvh.light_count, scene.lights.light_count) << model.name;

@@ -1,4 +1,4 @@
-#include "scenes/light_tree_conversion.h"
+#include "scenes/light_description_conversion.h"
 
 #include <cmath>
 #include <cstddef>
@@ -13,26 +13,26 @@
 namespace scenes {
 namespace {
 
-class LightTreeBuilder {
+class LightDescriptionBuilder {
  public:
   // root: the scene's root, or its stand-in in render space.
-  LightTreeBuilder(const SceneDescription& scene, const SceneNode& root,
-                   const SceneAnalysis& analysis)
+  LightDescriptionBuilder(const SceneDescription& scene, const SceneNode& root,
+                          const SceneAnalysis& analysis)
       : light_master_(scene.masters.size(), kNone) {
     for (std::uint32_t m : analysis.order()) {
       if (analysis.master(m).lights == 0) continue;
-      std::optional<lev::LightTreeNode> node = convert(scene.masters[m].node);
+      std::optional<lev::LightDescriptionNode> node = convert(scene.masters[m].node);
       light_master_[m] = static_cast<std::uint32_t>(tree_.masters.size());
       tree_.masters.push_back(node ? hierarchy(std::move(*node)) : lev::union_node({}));
       master_light_positions_.push_back(
           lev::light_positions(tree_.masters.back(), master_light_positions_));
       tree_.master_names.push_back(scene.masters[m].name);
     }
-    std::optional<lev::LightTreeNode> lights = convert(root);
+    std::optional<lev::LightDescriptionNode> lights = convert(root);
     tree_.root = lights ? hierarchy(std::move(*lights)) : lev::union_node({});
   }
 
-  lev::LightTree take() { return std::move(tree_); }
+  lev::LightDescription take() { return std::move(tree_); }
 
  private:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
@@ -43,22 +43,22 @@ class LightTreeBuilder {
   // intensity), so a light costs one node, and handed down to each atom of a union below it; a
   // union of unions is one union. A union has no box to cull with, so this loses no structure the
   // walk could use, and hierarchy() then builds the one it needs.
-  std::optional<lev::LightTreeNode> convert(const SceneNode& node) const {
+  std::optional<lev::LightDescriptionNode> convert(const SceneNode& node) const {
     if (const auto* a = std::get_if<Affine>(&node.data)) {
-      std::optional<lev::LightTreeNode> child = convert(node.children[0]);
+      std::optional<lev::LightDescriptionNode> child = convert(node.children[0]);
       if (!child) return std::nullopt;
       return place(affine_similarity(*a), std::move(*child));
     }
     if (std::holds_alternative<Union>(node.data)) {
-      std::vector<lev::LightTreeNode> atoms;
+      std::vector<lev::LightDescriptionNode> atoms;
       for (const SceneNode& c : node.children) {
-        std::optional<lev::LightTreeNode> n = convert(c);
+        std::optional<lev::LightDescriptionNode> n = convert(c);
         if (!n) continue;
         if (lev::node_role(n->kind) != lev::NodeRole::group) {
           atoms.push_back(std::move(*n));
           continue;
         }
-        for (lev::LightTreeNode& atom : n->children) atoms.push_back(std::move(atom));
+        for (lev::LightDescriptionNode& atom : n->children) atoms.push_back(std::move(atom));
       }
       if (atoms.empty()) return std::nullopt;
       if (atoms.size() == 1) return std::move(atoms[0]);
@@ -91,7 +91,8 @@ class LightTreeBuilder {
   }
 
   // An atom or a union of atoms seen through xf.
-  static lev::LightTreeNode place(const lev::Similarity& xf, lev::LightTreeNode node) {
+  static lev::LightDescriptionNode place(const lev::Similarity& xf,
+                                         lev::LightDescriptionNode node) {
     if (lev::is_identity(xf)) return node;
     switch (lev::node_role(node.kind)) {
       case lev::NodeRole::light:
@@ -99,7 +100,7 @@ class LightTreeBuilder {
       case lev::NodeRole::transform:
         return lev::affine_node(lev::compose(xf, node.transform), std::move(node.children[0]));
       case lev::NodeRole::group:
-        for (lev::LightTreeNode& atom : node.children) atom = place(xf, std::move(atom));
+        for (lev::LightDescriptionNode& atom : node.children) atom = place(xf, std::move(atom));
         return node;
       case lev::NodeRole::reference:
       case lev::NodeRole::bounded:
@@ -112,13 +113,13 @@ class LightTreeBuilder {
   // atoms (bare lights, instances of a lamp placed thousands of times, or both, whatever unions
   // and transforms they came in) get the automatic hierarchy over the boxes of their light
   // positions, instances kept as instances; fewer stay a union.
-  lev::LightTreeNode hierarchy(lev::LightTreeNode node) const {
+  lev::LightDescriptionNode hierarchy(lev::LightDescriptionNode node) const {
     if (lev::node_role(node.kind) != lev::NodeRole::group ||
         node.children.size() <= kMaxUnstructuredLights)
       return node;
     std::vector<lev::BvhItem> items;
     items.reserve(node.children.size());
-    for (lev::LightTreeNode& atom : node.children) {
+    for (lev::LightDescriptionNode& atom : node.children) {
       const lev::Bounds box = lev::light_positions(atom, master_light_positions_);
       items.push_back({std::move(atom), box});
     }
@@ -127,14 +128,14 @@ class LightTreeBuilder {
 
   std::vector<std::uint32_t> light_master_;
   std::vector<lev::Bounds> master_light_positions_;  // parallel to tree_.masters
-  lev::LightTree tree_;
+  lev::LightDescription tree_;
 };
 
 }  // namespace
 
-lev::LightTree convert_lights(const SceneDescription& scene, const SceneNode& root,
-                              const SceneAnalysis& analysis) {
-  return LightTreeBuilder(scene, root, analysis).take();
+lev::LightDescription convert_lights(const SceneDescription& scene, const SceneNode& root,
+                                     const SceneAnalysis& analysis) {
+  return LightDescriptionBuilder(scene, root, analysis).take();
 }
 
 }  // namespace scenes

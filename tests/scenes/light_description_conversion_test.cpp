@@ -2,7 +2,7 @@
 // 10,000 times renders like the same lights written bare, with a walk of a few dozen nodes per
 // point, and no random union of bare lights, instances, affine subtrees and nested unions makes
 // the walk meet every light.
-#include "scenes/light_tree_conversion.h"
+#include "scenes/light_description_conversion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +70,7 @@ SceneDescription lamp_grid(bool instanced) {
   return s;
 }
 
-TEST(LightTreeConversion, InstancedLampsRenderLikeTheSameLightsWrittenBare) {
+TEST(LightDescriptionConversion, InstancedLampsRenderLikeTheSameLightsWrittenBare) {
   const renderer::Scene instanced = scenes::instantiate_scene(lamp_grid(true));
   const renderer::Scene bare = scenes::instantiate_scene(lamp_grid(false));
   ASSERT_EQ(instanced.lights.light_count, 10000u);
@@ -202,7 +202,7 @@ std::vector<Key> sorted_keys(const std::vector<lev::Light>& lights) {
   return keys;
 }
 
-TEST(LightTreeConversion, NoLightStructureMakesTheWalkMeetEveryLight) {
+TEST(LightDescriptionConversion, NoLightStructureMakesTheWalkMeetEveryLight) {
   constexpr float kTolerance = 0.01f;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     SceneDescription s;

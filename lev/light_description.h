@@ -24,26 +24,26 @@ enum class NodeKind : std::uint8_t {
 
 const char* node_kind_name(NodeKind kind);
 
-struct LightTreeNode {
+struct LightDescriptionNode {
   NodeKind kind = NodeKind::set_union;
-  Light light;                          // point_light, spot_light
-  Similarity transform;                 // affine
-  std::uint32_t master = 0;             // instance: index into LightTree::masters
-  std::vector<LightTreeNode> children;  // affine, extent_volume: exactly one; set_union: any
+  Light light;                                 // point_light, spot_light
+  Similarity transform;                        // affine
+  std::uint32_t master = 0;                    // instance: index into LightDescription::masters
+  std::vector<LightDescriptionNode> children;  // affine, extent_volume: exactly one; set_union: any
 };
 
-struct LightTree {
+struct LightDescription {
   // masters[i] may instance masters[j] only for j < i, so a master is complete before use and
   // no cycle can exist.
-  std::vector<LightTreeNode> masters;
+  std::vector<LightDescriptionNode> masters;
   std::vector<std::string> master_names;  // optional, parallel to masters (for files and errors)
-  LightTreeNode root;
+  LightDescriptionNode root;
 };
 
-LightTreeNode light_node(const Light& light);
-LightTreeNode affine_node(const Similarity& xf, LightTreeNode child);
-LightTreeNode extent_volume_node(LightTreeNode child);
-LightTreeNode union_node(std::vector<LightTreeNode> children);
-LightTreeNode instance_node(std::uint32_t master);
+LightDescriptionNode light_node(const Light& light);
+LightDescriptionNode affine_node(const Similarity& xf, LightDescriptionNode child);
+LightDescriptionNode extent_volume_node(LightDescriptionNode child);
+LightDescriptionNode union_node(std::vector<LightDescriptionNode> children);
+LightDescriptionNode instance_node(std::uint32_t master);
 
 }  // namespace lev

@@ -1,4 +1,4 @@
-#include "lev/light_tree.h"
+#include "lev/light_description.h"
 
 #include <utility>
 
@@ -24,37 +24,37 @@ const char* node_kind_name(NodeKind kind) {
   return "unknown";
 }
 
-LightTreeNode light_node(const Light& light) {
-  LightTreeNode n;
+LightDescriptionNode light_node(const Light& light) {
+  LightDescriptionNode n;
   n.kind = light.kind == LightKind::point ? NodeKind::point_light : NodeKind::spot_light;
   n.light = light;
   return n;
 }
 
-LightTreeNode affine_node(const Similarity& xf, LightTreeNode child) {
-  LightTreeNode n;
+LightDescriptionNode affine_node(const Similarity& xf, LightDescriptionNode child) {
+  LightDescriptionNode n;
   n.kind = NodeKind::affine;
   n.transform = xf;
   n.children.push_back(std::move(child));
   return n;
 }
 
-LightTreeNode extent_volume_node(LightTreeNode child) {
-  LightTreeNode n;
+LightDescriptionNode extent_volume_node(LightDescriptionNode child) {
+  LightDescriptionNode n;
   n.kind = NodeKind::extent_volume;
   n.children.push_back(std::move(child));
   return n;
 }
 
-LightTreeNode union_node(std::vector<LightTreeNode> children) {
-  LightTreeNode n;
+LightDescriptionNode union_node(std::vector<LightDescriptionNode> children) {
+  LightDescriptionNode n;
   n.kind = NodeKind::set_union;
   n.children = std::move(children);
   return n;
 }
 
-LightTreeNode instance_node(std::uint32_t master) {
-  LightTreeNode n;
+LightDescriptionNode instance_node(std::uint32_t master) {
+  LightDescriptionNode n;
   n.kind = NodeKind::instance;
   n.master = master;
   return n;
