@@ -44,6 +44,19 @@ struct SweptRender {
   double lights_tested = kNaN;
 };
 
+// A check's paragraph for results.md ("Title: none." or "Title: 2 renders:" and a list), each
+// line also printed on stderr after `tag`.
+std::string findings_text(const std::string& title, const char* tag, const char* none,
+                          const char* plural, const std::vector<std::string>& lines) {
+  if (lines.empty()) return title + ": " + none + ".\n\n";
+  std::string text = title + ": " + std::to_string(lines.size()) + " " + plural + ":\n\n";
+  for (const std::string& line : lines) {
+    std::cerr << tag << ": " << line << "\n";
+    text += "- " + line + "\n";
+  }
+  return text + "\n";
+}
+
 }  // namespace
 
 Section run_targets(BenchRun& run, const std::string& out_dir) {
@@ -194,34 +207,21 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
                         "0 slower", "-", std::to_string(slower_than_rt.size()) + " slower",
                         status(!c.quick, slower_than_rt.empty())});
   }
-  std::string monotonicity =
-      "Monotonicity (every deterministic method's sweep, each tighter "
-      "setting against every looser one): ";
-  if (violations.empty()) {
-    monotonicity += "no violation.\n\n";
-  } else {
-    monotonicity += std::to_string(violations.size()) + " violations:\n\n";
-    for (const MonotonicityViolation& v : violations) {
-      std::cerr << "monotonicity: " << violation_text(v) << "\n";
-      monotonicity += "- " + violation_text(v) + "\n";
-    }
-    monotonicity += "\n";
-  }
-  monotonicity += "Time against rt (every deterministic render of the sweeps over " +
-                  format_ratio(kMaxTimeOverRt) + " rt's CPU time, made in turns with it): ";
-  if (slower_than_rt.empty()) {
-    monotonicity += "none.\n\n";
-  } else {
-    monotonicity += std::to_string(slower_than_rt.size()) + " renders:\n\n";
-    for (const SlowerThanRt& s : slower_than_rt) {
-      std::cerr << "slower than rt: " << slower_text(s) << "\n";
-      monotonicity += "- " + slower_text(s) + "\n";
-    }
-    monotonicity += "\n";
-  }
+  // Each check's findings: printed on stderr as they are listed in results.md.
+  std::vector<std::string> violation_lines, slower_lines;
+  for (const MonotonicityViolation& v : violations) violation_lines.push_back(violation_text(v));
+  for (const SlowerThanRt& s : slower_than_rt) slower_lines.push_back(slower_text(s));
+  const std::string checks =
+      findings_text(
+          "Monotonicity (every deterministic method's sweep, each tighter setting "
+          "against every looser one)",
+          "monotonicity", "no violation", "violations", violation_lines) +
+      findings_text("Time against rt (every deterministic render of the sweeps over " +
+                        format_ratio(kMaxTimeOverRt) + " rt's CPU time, made in turns with it)",
+                    "slower than rt", "none", "renders", slower_lines);
   write_table(run, out_dir, "targets_sweep", sweep);
   SectionText text;
-  text.before_table = monotonicity;
+  text.before_table = checks;
   text.heading = "targets: the fastest setting that meets an error target, per scene (new)";
   text.intro =
       "Per scene, rt's time and, for two error targets against rt on the same pixels (max < " +
