@@ -159,6 +159,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   s.rendered_pixels = result.rendered_pixels;
   s.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
   s.method_bytes = result.method_bytes;
+  s.rt_fallback = result.rt_fallback;
   s.camera = loaded.scene.camera;
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);

@@ -71,6 +71,14 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
   j["nodes_visited_avg"] = static_cast<double>(t.nodes_visited) / points;
   j["hierarchy_bytes"] = s.hierarchy_bytes;
   j["method_bytes"] = s.method_bytes;
+  if (s.rt_fallback) {
+    j["rt_fallback"] = {{"used", s.rt_fallback->use_rt},
+                        {"probe_points", s.rt_fallback->points},
+                        {"method_cost_rays", s.rt_fallback->method_cost_rays},
+                        {"rt_cost_rays", s.rt_fallback->rt_cost_rays}};
+  } else {
+    j["rt_fallback"] = nullptr;
+  }
   if (s.error_bound) {
     j["error_bound_avg_pct"] = s.error_bound->average_pct;
     j["error_bound_max_pct"] = s.error_bound->max_pct;

@@ -18,6 +18,7 @@
 #include "renderer/heatmap.h"
 #include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
+#include "renderer/rt_fallback.h"
 
 namespace app {
 
@@ -56,6 +57,9 @@ struct RenderStats {
   std::uint64_t rendered_pixels = 0;  // pixels with a sample (the subsample's)
   std::size_t hierarchy_bytes = 0;
   std::size_t method_bytes = 0;
+  // The probe that chose between the method and rt's loop (renderer/rt_fallback.h); absent when
+  // none was made (rt, a sampler, --rt-fallback off).
+  std::optional<renderer::RtFallbackProbe> rt_fallback;
   std::optional<RenderPixelError> error;  // against the rt reference
   // The certified bound of that error, known without the reference (renderer/error_bound.h);
   // absent when the render did not compute it.

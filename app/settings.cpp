@@ -87,6 +87,22 @@ const char* relative_error_unused(const Settings& s) {
              : "only lightcuts and lev_cut cut by the relative error";
 }
 
+const char* rt_fallback_unused(const Settings& s) {
+  return lev::rt_fallback_applies(lev::method_info(s.method.method))
+             ? nullptr
+             : "rt is the fallback, and a sampler's passes converge to rt's image anyway";
+}
+
+std::vector<std::string> rt_fallback_options() {
+  return {"on", "off"};
+}
+
+const char* rt_fallback_summary(const std::string& option) {
+  return option == "on" ? "shade with rt's loop where a probe of the frame says the method's walk "
+                          "would cost more than rt's shadow rays (exact, and no slower than rt)"
+                        : "always the method's own selection";
+}
+
 const char* camera_unused(const Settings& s) {
   return scenes::reads_camera_index(s.scene) ? nullptr
                                              : "only glTF files have cameras of their own";
@@ -139,6 +155,13 @@ const std::vector<SettingSpec>& setting_table() {
        RealRange{in_group<&Settings::method, &lev::MethodChoice::relative_error>(), 0.0, 1.0, true,
                  1e-4, 1.0},
        relative_error_unused},
+      {"rt-fallback", "RT fallback",
+       "deterministic methods: where a probe of the frame says the method would cost more than "
+       "rt (its culling admits most lights), shade with rt's loop instead",
+       Choice{[](const Settings& s) { return std::string(s.method.rt_fallback ? "on" : "off"); },
+              [](Settings& s, const std::string& v) { s.method.rt_fallback = v == "on"; },
+              rt_fallback_options, nullptr, rt_fallback_summary},
+       rt_fallback_unused},
       {"depth", "Depth", "reflection and refraction depth",
        IntRange{in_group<&Settings::image, &renderer::ImageSettings::depth>(), 0, 64}},
       {"threads", "Threads", "worker threads (0 = all cores)",
@@ -323,6 +346,7 @@ renderer::RenderSettings render_settings_from(const Settings& settings) {
   rs.tolerance = static_cast<float>(settings.method.tolerance);
   rs.lights_per_point = settings.method.lights_per_point;
   rs.relative_error = static_cast<float>(settings.method.relative_error);
+  rs.rt_fallback = settings.method.rt_fallback;
   if (image.missed_draws != 0 && image.missed_draws < renderer::kMinMissedDraws) {
     throw UsageError("--missed-draws: must be 0 (off) or at least " +
                      std::to_string(renderer::kMinMissedDraws) + ", got '" +

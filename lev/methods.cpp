@@ -30,7 +30,8 @@ std::vector<MethodInfo> built_in_rows() {
        {},
        [](const LightHierarchy& h, const MethodParams&) -> std::unique_ptr<LightSelector> {
          return std::make_unique<RtSelector>(h);
-       }},
+       },
+       WorkCost{0.0, 0.03, 0.02}},
       {Method::ast,
        "ast",
        "AST (Ward 1991)",
@@ -40,7 +41,8 @@ std::vector<MethodInfo> built_in_rows() {
        {1.0, 0.3, 0.1, 0.03, 0.01},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<AstSelector>(h, scene_tolerance(p));
-       }},
+       },
+       WorkCost{0.0, 0.5, 0.02}},
       {Method::lev,
        "lev",
        "LEV (extent volumes)",
@@ -102,7 +104,8 @@ std::vector<MethodInfo> built_in_rows() {
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LightcutsSelector>(h, p.relative_error);
-       }},
+       },
+       WorkCost{0.0, 2.0, 0.0}},
       {Method::lev_cut,
        "lev_cut",
        "LEV cut (relative)",
@@ -114,7 +117,8 @@ std::vector<MethodInfo> built_in_rows() {
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevCutSelector>(h, p.relative_error, p.display_scale);
-       }},
+       },
+       WorkCost{0.6, 0.03, 0.0}},
   };
 }
 
@@ -144,7 +148,7 @@ __attribute__((weak)) std::vector<MethodInfo> extra_method_rows() {
 
 MethodInfo::MethodInfo(Method id_, const char* name_, const char* label_, const char* summary_,
                        unsigned traits, std::vector<double> bench_tolerances_,
-                       MakeSelector make_selector_)
+                       MakeSelector make_selector_, WorkCost work_cost_)
     : id(id_),
       name(name_),
       label(label_),
@@ -156,7 +160,8 @@ MethodInfo::MethodInfo(Method id_, const char* name_, const char* label_, const 
       scans_every_light((traits & kScansEveryLight) != 0),
       reads_display_scale((traits & (kUsesTolerance | kReadsDisplayScale)) != 0),
       bench_tolerances(std::move(bench_tolerances_)),
-      make_selector(make_selector_) {}
+      make_selector(make_selector_),
+      work_cost(work_cost_) {}
 
 const std::vector<MethodInfo>& method_table() {
   static const std::vector<MethodInfo> table = make_method_table();
@@ -210,6 +215,10 @@ float MethodParams::*swept_setting(const MethodInfo& method) {
                                                               : &MethodParams::tolerance;
 }
 
+bool rt_fallback_applies(const MethodInfo& info) {
+  return !info.is_reference && !info.stochastic;
+}
+
 MethodChoice used_settings(const MethodChoice& choice) {
   const MethodInfo& info = method_info(choice.method);
   const MethodChoice defaults;
@@ -217,16 +226,18 @@ MethodChoice used_settings(const MethodChoice& choice) {
   if (!info.uses_tolerance) used.tolerance = defaults.tolerance;
   if (!info.uses_relative_error) used.relative_error = defaults.relative_error;
   if (!info.stochastic) used.lights_per_point = defaults.lights_per_point;
+  if (!rt_fallback_applies(info)) used.rt_fallback = defaults.rt_fallback;
   return used;
 }
 
 bool operator==(const MethodChoice& a, const MethodChoice& b) {
   // Binding every member: a member added to MethodChoice stops this compiling until it is
   // compared too.
-  const auto [method, tolerance, relative_error, lights_per_point] = used_settings(a);
+  const auto [method, tolerance, relative_error, lights_per_point, rt_fallback] = used_settings(a);
   const MethodChoice other = used_settings(b);
   return method == other.method && tolerance == other.tolerance &&
-         relative_error == other.relative_error && lights_per_point == other.lights_per_point;
+         relative_error == other.relative_error && lights_per_point == other.lights_per_point &&
+         rt_fallback == other.rt_fallback;
 }
 
 bool operator!=(const MethodChoice& a, const MethodChoice& b) {

@@ -73,6 +73,9 @@ struct MethodChoice {
   double tolerance = kDefaultTolerance;           // colour units, 1.0 = 255
   double relative_error = kDefaultRelativeError;  // lightcuts: a cluster's bound / the total
   int lights_per_point = 1;  // lights a sampling method draws per shading point and pass
+  // A deterministic method may shade with rt's loop where a probe of the frame says its walk
+  // would cost more than rt's shadow rays save (renderer/rt_fallback.h); off: never.
+  bool rt_fallback = true;
 };
 
 // The choice with every setting its method does not read at its default, so that choices equal
@@ -101,9 +104,24 @@ enum MethodTrait : unsigned {
   kReadsDisplayScale = 1u << 5,
 };
 
+// What a method's work at one shading point costs, in shadow rays, per unit of what it counts
+// (SelectionCounters) and per light of the scene: the render's choice to shade a deterministic
+// method with rt's loop instead (renderer/rt_fallback.h) weighs a probe's counts with it, never a
+// clock, so that the choice is the same on every machine. Measured on the bench scenes
+// (docs/results/rt_fallback.md): a shadow ray costs about 1 us there, an extent volume test a
+// fifth of that, a light's radiance a few percent; AST's heap and Lightcuts' cluster bounds more.
+struct WorkCost {
+  double per_node_visited = 0.2;
+  // Beyond its shadow ray, which counts apart: its unshadowed radiance, and what the method does
+  // per light or cluster it tests (a heap's pop, a cluster's bound).
+  double per_light_tested = 0.03;
+  double per_scene_light = 0.0;  // a method that scans every light at every point
+};
+
 struct MethodInfo {
   MethodInfo(Method id, const char* name, const char* label, const char* summary, unsigned traits,
-             std::vector<double> bench_tolerances, MakeSelector make_selector);
+             std::vector<double> bench_tolerances, MakeSelector make_selector,
+             WorkCost work_cost = {});
 
   Method id;
   const char* name;     // CLI value and stats JSON
@@ -122,6 +140,7 @@ struct MethodInfo {
   // method that uses that and not the tolerance (swept_setting).
   std::vector<double> bench_tolerances;
   MakeSelector make_selector;
+  WorkCost work_cost;
 };
 
 const std::vector<MethodInfo>& method_table();
@@ -129,6 +148,9 @@ const MethodInfo& method_info(Method method);
 std::optional<Method> parse_method(std::string_view name);
 // The one row with is_reference (rt).
 Method reference_method();
+// Whether a render of the method may fall back on rt's loop (MethodChoice::rt_fallback): every
+// deterministic method but rt itself; a sampler's passes converge to rt's image anyway.
+bool rt_fallback_applies(const MethodInfo& info);
 
 // The selector for one render (params.lights_per_point in [1, kMaxLightsPerPoint], the relative
 // error in [0, 1]; else std::invalid_argument). It reads the hierarchy (which it never changes, so

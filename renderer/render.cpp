@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -16,7 +17,9 @@ struct RenderState {
   const Scene& scene;
   const RayScene& rays;
   RenderSettings settings;
+  // The method's selector, or rt's when the probe chose rt's loop (rt_fallback).
   std::unique_ptr<lev::LightSelector> selector;
+  std::optional<RtFallbackProbe> rt_fallback;
   Framebuffer framebuffer;
   // Preview passes of a method that learns between passes (AST's statistics): their own
   // selector (made at the first preview), so that it never learns from preview samples. Every
@@ -172,6 +175,19 @@ RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
   state->selector = lev::make_selector(scene.lights, method_params(settings));
+  if (settings.rt_fallback && lev::rt_fallback_applies(lev::method_info(settings.method))) {
+    // A selector that learns would learn from the probe's points: it is probed through a copy.
+    std::unique_ptr<lev::LightSelector> probed;
+    if (state->selector->learns_between_passes())
+      probed = lev::make_selector(scene.lights, method_params(settings));
+    state->rt_fallback =
+        probe_rt_fallback(scene, rays, settings, probed ? *probed : *state->selector);
+    if (state->rt_fallback->use_rt) {
+      lev::MethodParams rt = method_params(settings);
+      rt.method = lev::reference_method();
+      state->selector = lev::make_selector(scene.lights, rt);
+    }
+  }
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->framebuffer.exposure_scale = exposure_scale(settings.exposure_ev);
   if (settings.missed_draws > 0) allocate_missed_light(state->framebuffer);
@@ -255,6 +271,9 @@ double render_seconds(const RenderState& state) {
 }
 const lev::LightSelector& render_selector(const RenderState& state) {
   return *state.selector;
+}
+const RtFallbackProbe* render_rt_fallback(const RenderState& state) {
+  return state.rt_fallback ? &*state.rt_fallback : nullptr;
 }
 int render_tile_count(const RenderState& state) {
   return state.tiles_x * state.tiles_y;

@@ -19,6 +19,7 @@
 #include "renderer/framebuffer.h"
 #include "renderer/ray_log.h"
 #include "renderer/ray_scene.h"
+#include "renderer/rt_fallback.h"
 #include "renderer/scene.h"
 
 namespace renderer {
@@ -71,6 +72,10 @@ struct RenderSettings {
   // they mean the same on the displayed image at any exposure. The radiance itself stays
   // scene-linear. The framebuffer records it (Framebuffer::exposure_scale).
   double exposure_ev = 0.0;
+  // A deterministic method may shade with rt's loop where a probe of the frame says its work
+  // would cost more than rt's (rt_fallback.h). Off by default, so that a state renders the method
+  // it is given; the user's settings turn it on (lev::MethodChoice::rt_fallback).
+  bool rt_fallback = false;
 };
 
 // The primary ray of pixel (x, y)'s sample in pass `pass`, with the method's and the missed-light
@@ -128,6 +133,9 @@ const RenderSettings& render_settings(const RenderState& state);
 int render_passes_done(const RenderState& state);
 double render_seconds(const RenderState& state);  // wall time spent in render_pass
 const lev::LightSelector& render_selector(const RenderState& state);
+// The probe that chose between the method and rt's loop (rt_fallback.h); null when the settings
+// asked for none or the method cannot fall back.
+const RtFallbackProbe* render_rt_fallback(const RenderState& state);
 // Tile grid and the live status of each tile (for the viewer's in-flight markers).
 int render_tile_count(const RenderState& state);
 TileStatus render_tile_status(const RenderState& state, int tile);

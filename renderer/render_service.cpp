@@ -36,6 +36,7 @@ RenderResult RenderJob::result() const {
   r.setup_seconds = setup_seconds_;
   r.render_seconds = render_seconds(*state_);
   r.method_bytes = render_selector(*state_).bookkeeping_bytes();
+  if (const RtFallbackProbe* probe = render_rt_fallback(*state_)) r.rt_fallback = *probe;
   return r;
 }
 

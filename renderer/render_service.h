@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "renderer/framebuffer.h"
@@ -27,6 +28,8 @@ struct RenderResult {
   double setup_seconds = 0.0;    // make_render_state: selector and extent volumes
   double render_seconds = 0.0;   // wall time inside the passes
   std::size_t method_bytes = 0;  // the method's own bookkeeping (AST)
+  // The probe that chose between the method and rt's loop (rt_fallback.h), when one was made.
+  std::optional<RtFallbackProbe> rt_fallback;
 };
 
 class RenderJob {

@@ -227,6 +227,7 @@ lev::MethodChoice method_choice(const MeasureRequest& r) {
   } else {
     choice.tolerance = r.tolerance;
   }
+  choice.rt_fallback = r.rt_fallback;
   return choice;
 }
 
@@ -242,6 +243,7 @@ BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
           used.tolerance,
           used.relative_error,
           used.lights_per_point,
+          used.rt_fallback,
           r.stride,
           r.error_bound};
 }
@@ -359,6 +361,7 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     m.full_pixels =
         static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
     m.totals = p.last.totals;
+    m.rt_fallback_used = p.last.rt_fallback && p.last.rt_fallback->use_rt;
     m.pixels = m.totals.samples;
     m.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
     m.rgb = std::move(p.last.rendered_rgb);

@@ -104,6 +104,10 @@ struct MeasureRequest {
   // Also compute the certified error bound (RenderSettings::compute_error_bound); it costs time,
   // so a render with it is a measurement of its own.
   bool error_bound = false;
+  // Lets a deterministic method shade with rt's loop where the probe says so
+  // (lev::MethodChoice::rt_fallback): what a user gets. Off, the method's own selection, which
+  // the thesis' experiments measure.
+  bool rt_fallback = false;
 };
 
 struct Measurement {
@@ -120,6 +124,7 @@ struct Measurement {
   std::uint64_t pixels = 0;  // pixels rendered
   std::uint64_t full_pixels = 0;
   renderer::FramebufferTotals totals;
+  bool rt_fallback_used = false;  // the render shaded with rt's loop (request.rt_fallback)
   std::size_t hierarchy_bytes = 0;
   std::vector<std::uint8_t> rgb;  // the rendered pixels, 8-bit RGB, for pixel errors
   // With request.error_bound: each rendered pixel's certified bound (percent of 765), in rgb's
@@ -237,7 +242,7 @@ class BenchRun {
  private:
   // The scene, level, method choice (lev::used_settings: what its method reads), stride and
   // error bound: what a measurement measured.
-  using Key = std::tuple<std::string, int, lev::Method, double, double, int, int, bool>;
+  using Key = std::tuple<std::string, int, lev::Method, double, double, int, bool, int, bool>;
   static constexpr int kProbeStride = 8;
   Key key_of(const MeasureRequest& request) const;
   renderer::RenderSettings render_settings_for(const MeasureRequest& request) const;

@@ -29,7 +29,10 @@ std::string slower_text(const SlowerThanRt& s) {
                 s.scene.c_str(), s.method.c_str(), tolerance_text(s.setting).c_str(),
                 s.time_over_rt, 100.0 * s.lights_tested_share);
   const char* why =
-      s.lights_tested_share >= 1.0
+      s.shaded_with_rt
+          ? " per point: it shaded with rt's loop (its probe chose rt), so the excess is the "
+            "probe, the method's set-up or the machine's noise"
+      : s.lights_tested_share >= 1.0
           ? " per point or more (clusters of lights rt skips as unlit): its walk or cut saves no "
             "shadow ray and is all overhead"
       : s.lights_tested_share >= kMostLights

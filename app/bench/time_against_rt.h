@@ -21,6 +21,9 @@ struct SlowerThanRt {
   double setting = 0.0;
   double time_over_rt = 0.0;         // the method's CPU time over rt's
   double lights_tested_share = 0.0;  // its shadow-tested lights per point over rt's
+  // It shaded with rt's loop (renderer/rt_fallback.h): the excess is then the probe that chose
+  // so, its set-up, or the machine's noise.
+  bool shaded_with_rt = false;
 };
 
 // The render when it took more than kMaxTimeOverRt times rt's time; nothing when it did not, or

@@ -114,6 +114,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
                           : s.totals.samples;
   r.hierarchy_bytes = status.hierarchy_bytes;
   r.method_bytes = status.method_bytes;
+  r.rt_fallback = status.rt_fallback;
   r.error_bound = s.error_bound;
   if (s.error_avg_pct) {
     r.error = RenderPixelError{*s.error_avg_pct, *s.error_max_pct, s.error_pixels,

@@ -337,6 +337,9 @@ struct Worker {
       const double setup_seconds = job->setup_seconds();
       const int tiles = renderer::render_tile_count(job->state());
       const std::size_t method_bytes = renderer::render_selector(job->state()).bookkeeping_bytes();
+      std::optional<renderer::RtFallbackProbe> rt_fallback;
+      if (const renderer::RtFallbackProbe* probe = renderer::render_rt_fallback(job->state()))
+        rt_fallback = *probe;
       publish_main(std::move(job));
       main_settings = rs;
       generation = serial;
@@ -354,6 +357,7 @@ struct Worker {
         st.setup_seconds = setup_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);
         st.method_bytes = method_bytes;
+        st.rt_fallback = rt_fallback;
         st.passes_done = 0;
         st.render_seconds = 0.0;
         st.pass_running = false;

@@ -81,6 +81,8 @@ struct WorkerStatus {
   int missed_draws = 0;        // the missed-light estimate's draws per point (0: off)
   double setup_seconds = 0.0;  // making the render state: extent volumes and selector
   std::size_t method_bytes = 0;
+  // The probe that chose between the method and rt's loop (renderer/rt_fallback.h), if made.
+  std::optional<renderer::RtFallbackProbe> rt_fallback;
   int passes_done = 0;
   int passes_target = 0;
   double render_seconds = 0.0;  // inside render_pass, up to the last call's end

@@ -108,6 +108,11 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
     row("method", "%s (ignores the tolerance)", method.name);
   else
     row("method", "%s, tolerance %g", method.name, st.tolerance);
+  if (st.rt_fallback) {
+    row("rt fallback", "%s: %.0f shadow rays' work per point, rt's %.0f",
+        st.rt_fallback->use_rt ? "shading with rt's loop" : "not needed",
+        st.rt_fallback->method_cost_rays, st.rt_fallback->rt_cost_rays);
+  }
   row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
   row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
   row("Mrays/s", "%.2f (primary + shadow)", s.mrays_per_second);

@@ -241,9 +241,11 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   // ast carries per-light statistics from pass to pass: a preview that fed them would change
-  // pass 1. Two passes, a typed size, the same settings as the headless render below.
-  const std::vector<std::string> settings = {"--lights", "256",      "--method", "ast",   "--width",
-                                             "96",       "--height", "64",       "--spp", "2"};
+  // pass 1. Two passes, a typed size, the same settings as the headless render below; ast's own
+  // selection, not rt's loop (renderer/rt_fallback.h).
+  const std::vector<std::string> settings = {"--lights", "256", "--method",      "ast",
+                                             "--width",  "96",  "--height",      "64",
+                                             "--spp",    "2",   "--rt-fallback", "off"};
   std::vector<std::string> view_args = settings;
   for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
     view_args.emplace_back(a);
@@ -276,13 +278,50 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   }
 }
 
+// The viewer makes the rt fallback's choice as `levrt render` does (renderer/rt_fallback.h): lev
+// at tolerance 0 casts every ray rt casts and walks besides, so both shade with rt's loop, walk
+// no hierarchy, and say so in their stats; the image is the same.
+TEST_F(ViewerWindow, TheRtFallbackIsChosenAsTheHeadlessRenderChoosesIt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::vector<std::string> settings = {"--lights", "64", "--tolerance", "0", "--width", "64",
+                                             "--height", "48", "--spp",       "1"};
+  std::vector<std::string> view_args = settings;
+  for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
+    view_args.emplace_back(a);
+  view_args.push_back("snapshot=" + path("snap") + "@1");
+  const CommandRun view = run_viewer(view_args);
+  ASSERT_EQ(view.exit_code, 0) << view.output;
+
+  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
+  for (const std::string& a : settings) render += " " + shell_quote(a);
+  render += " --out " + shell_quote(path("headless.png")) + " --stats " +
+            shell_quote(path("headless_stats.json"));
+  const CommandRun headless = run_shell(render);
+  ASSERT_EQ(headless.exit_code, 0) << headless.output;
+
+  const fs::path snap = dir_ / "snap" / "view_building_64_lev_0.png";
+  ASSERT_TRUE(fs::exists(snap)) << view.output;
+  EXPECT_TRUE(read_file_bytes(snap) == read_file_bytes(path("headless.png")));
+  const nlohmann::json a = read_json(dir_ / "snap" / "view_building_64_lev_0_stats.json");
+  const nlohmann::json b = read_json(path("headless_stats.json"));
+  ASSERT_FALSE(a.is_discarded() || b.is_discarded());
+  ASSERT_TRUE(a["rt_fallback"].is_object()) << a.dump();
+  EXPECT_TRUE(a["rt_fallback"]["used"].get<bool>());
+  EXPECT_EQ(a["rt_fallback"], b["rt_fallback"]);
+  EXPECT_EQ(a["nodes_visited_avg"].get<double>(), 0.0);
+  EXPECT_EQ(a["shadow_rays"], b["shadow_rays"]);
+}
+
 // The "Error bound" view needs no reference: it shows the certified bound per pixel, its hover
 // read-out and stats say the same as `levrt render` of the same settings, and no rt is rendered.
 TEST_F(ViewerWindow, TheErrorBoundViewShowsTheBoundWithoutTheReference) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
-  const std::vector<std::string> settings = {"--scene", "hall",     "--lights", "256",   "--width",
-                                             "128",     "--height", "96",       "--spp", "1"};
+  // lev's own selection, whose bound is not zero (rt's loop, renderer/rt_fallback.h, has none).
+  const std::vector<std::string> settings = {"--scene", "hall", "--lights",      "256",
+                                             "--width", "128",  "--height",      "96",
+                                             "--spp",   "1",    "--rt-fallback", "off"};
   std::vector<std::string> view_args = settings;
   // clang-format off
   for (const std::string& a : std::vector<std::string>{
