@@ -75,7 +75,8 @@ nlohmann::ordered_json render_stats_json(const RenderStats& s) {
     j["rt_fallback"] = {{"used", s.rt_fallback->use_rt},
                         {"probe_points", s.rt_fallback->points},
                         {"method_cost_rays", s.rt_fallback->method_cost_rays},
-                        {"rt_cost_rays", s.rt_fallback->rt_cost_rays}};
+                        {"rt_cost_rays", s.rt_fallback->rt_cost_rays},
+                        {"rt_cost_is_lower_bound", s.rt_fallback->rt_cost_is_lower_bound}};
   } else {
     j["rt_fallback"] = nullptr;
   }

@@ -81,18 +81,26 @@ RtFallbackProbe probe_rt_fallback(const Scene& scene, const RayScene& rays,
                                   const RenderSettings& settings,
                                   const lev::LightSelector& selector) {
   DenormalModeGuard denormals;
-  std::vector<lev::Light> world_lights = lev::flatten_lights(scene.lights);
-  const std::size_t light_count = world_lights.size();
+  const std::size_t light_count = scene.lights.light_count;
   const int side = probe_grid_side(light_count);
   RtFallbackProbe probe;
   probe.points = side * side;
   const PathCounters method = probe_counters(scene, rays, settings, selector, side);
-  const RtWorkCounter rt_counter(std::move(world_lights));
-  const PathCounters rt = probe_counters(scene, rays, settings, rt_counter, side);
   probe.method_cost_rays =
       cost_in_rays(method, lev::method_info(settings.method).work_cost, light_count, probe.points);
-  probe.rt_cost_rays = cost_in_rays(rt, lev::method_info(lev::reference_method()).work_cost,
-                                    light_count, probe.points);
+  const lev::WorkCost& rt_cost = lev::method_info(lev::reference_method()).work_cost;
+  // rt's scan of every light at every hit alone, a lower bound of its work: where the method's
+  // work is below it (a walk that culls well among many lights), rt's rays need no counting.
+  PathCounters rt_scan;
+  rt_scan.shading_points = method.shading_points;
+  probe.rt_cost_rays = cost_in_rays(rt_scan, rt_cost, light_count, probe.points);
+  if (probe.method_cost_rays < probe.rt_cost_rays) {
+    probe.rt_cost_is_lower_bound = true;
+    return probe;
+  }
+  const RtWorkCounter rt_counter(lev::flatten_lights(scene.lights));
+  const PathCounters rt = probe_counters(scene, rays, settings, rt_counter, side);
+  probe.rt_cost_rays = cost_in_rays(rt, rt_cost, light_count, probe.points);
   probe.use_rt = probe.rt_cost_rays > 0.0 && probe.method_cost_rays >= probe.rt_cost_rays;
   return probe;
 }

@@ -5,6 +5,8 @@
 // (shadow rays, extent volumes tested, lights tested), and counts there, without casting, the
 // shadow rays rt would cast. Each side's counts are turned into shadow rays by its method row's
 // WorkCost (lev/methods.h); when the method's come to at least rt's, the render shades with rt.
+// rt's rays are counted only when its scan of every light alone costs less than the method's
+// work (among a million lights, a walk that culls well settles it with 16 points of its own).
 // The choice reads counts alone, never a clock, and the same pixels whatever the thread count,
 // tile size or subsample: the image stays deterministic.
 #pragma once
@@ -28,8 +30,11 @@ inline constexpr double kProbeLightBudget = 16.0 * 1024.0 * 1024.0;
 struct RtFallbackProbe {
   int points = 0;                 // primary rays cast (one that hits nothing costs neither)
   double method_cost_rays = 0.0;  // the method's work per probe point, in shadow rays
-  double rt_cost_rays = 0.0;      // rt's, likewise
-  bool use_rt = false;            // the render shades with rt's loop
+  double rt_cost_rays = 0.0;      // rt's, likewise, or its lower bound (below)
+  // rt_cost_rays is rt's scan of every light alone, which was already more than the method's
+  // work: rt's shadow rays were not counted.
+  bool rt_cost_is_lower_bound = false;
+  bool use_rt = false;  // the render shades with rt's loop
 };
 
 // The probe grid's side for a scene of `light_count` lights.

@@ -57,6 +57,7 @@ TEST(RtFallback, AWalkThatAdmitsEveryLightShadesWithRtsLoop) {
   EXPECT_FALSE(own.probe);  // not asked
   ASSERT_TRUE(chosen.probe);
   EXPECT_TRUE(chosen.probe->use_rt);
+  EXPECT_FALSE(chosen.probe->rt_cost_is_lower_bound);  // rt's rays were counted
   EXPECT_GT(chosen.probe->method_cost_rays, chosen.probe->rt_cost_rays);
   EXPECT_GT(chosen.probe->points, 0);
   EXPECT_TRUE(bitwise_equal(chosen.image, rt.image));
@@ -114,6 +115,22 @@ TEST(RtFallback, TheChoiceIsTheSameForAnyThreadsTilesAndSubsample) {
     EXPECT_EQ(one.probe->method_cost_rays, other.probe->method_cost_rays);
     EXPECT_EQ(one.probe->rt_cost_rays, other.probe->rt_cost_rays);
   }
+}
+
+// Among many lights a walk that culls well costs less than rt's scan of every light alone: rt's
+// rays are then not counted (the probe stays cheap at a million lights), and the choice is the
+// method's. With rt's rays counted the same choice is made (the lower bound only skips work).
+TEST(RtFallback, AWalkCheaperThanRtsScanAloneSkipsCountingRtsRays) {
+  const renderer::Scene scene = scenes::build_building(7);
+  const renderer::RayScene rays(scene);
+  const renderer::RenderSettings settings = fallback_settings(lev::Method::lev, 0.01f, true);
+  auto state = renderer::make_render_state(scene, rays, settings);
+  const renderer::RtFallbackProbe* probe = renderer::render_rt_fallback(*state);
+  ASSERT_TRUE(probe);
+  EXPECT_TRUE(probe->rt_cost_is_lower_bound);
+  EXPECT_FALSE(probe->use_rt);
+  EXPECT_LT(probe->method_cost_rays, probe->rt_cost_rays);
+  EXPECT_GT(probe->method_cost_rays, 0.0);
 }
 
 TEST(RtFallback, TheProbeGridShrinksAsTheLightsGrow) {

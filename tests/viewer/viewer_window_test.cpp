@@ -237,37 +237,56 @@ TEST_F(ViewerWindow, OnceThePreviewIsDoneNoPixelIsGreyAfterAChangeToRt) {
   EXPECT_FALSE(uniform(png));
 }
 
+// The viewer's snapshot of `settings` at its first idle frame and `levrt render` of the same
+// settings, both in `dir`, the snapshot named `snapshot_name` (without its ending): both PNGs'
+// bytes and both stats (empty or discarded when a run failed, with its output in `failures`).
+struct SnapshotBesideRender {
+  std::string snapshot_png, render_png;
+  nlohmann::json snapshot_stats, render_stats;
+  std::string failures;
+};
+
+SnapshotBesideRender snapshot_beside_render(const fs::path& dir,
+                                            const std::vector<std::string>& settings,
+                                            const std::string& snapshot_name) {
+  SnapshotBesideRender out;
+  std::vector<std::string> view_args = settings;
+  for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
+    view_args.emplace_back(a);
+  view_args.push_back("snapshot=" + (dir / "snap").string() + "@1");
+  const CommandRun view = run_viewer(view_args);
+  if (view.exit_code != 0) out.failures += view.output;
+
+  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
+  for (const std::string& a : settings) render += " " + shell_quote(a);
+  render += " --out " + shell_quote((dir / "headless.png").string()) + " --stats " +
+            shell_quote((dir / "headless_stats.json").string());
+  const CommandRun headless = run_shell(render);
+  if (headless.exit_code != 0) out.failures += headless.output;
+
+  out.snapshot_png = read_file_bytes(dir / "snap" / (snapshot_name + ".png"));
+  out.render_png = read_file_bytes(dir / "headless.png");
+  out.snapshot_stats = read_json(dir / "snap" / (snapshot_name + "_stats.json"));
+  out.render_stats = read_json(dir / "headless_stats.json");
+  return out;
+}
+
 TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   // ast carries per-light statistics from pass to pass: a preview that fed them would change
-  // pass 1. Two passes, a typed size, the same settings as the headless render below; ast's own
+  // pass 1. Two passes, a typed size, the same settings as the headless render; ast's own
   // selection, not rt's loop (renderer/rt_fallback.h).
-  const std::vector<std::string> settings = {"--lights", "256", "--method",      "ast",
-                                             "--width",  "96",  "--height",      "64",
-                                             "--spp",    "2",   "--rt-fallback", "off"};
-  std::vector<std::string> view_args = settings;
-  for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
-    view_args.emplace_back(a);
-  view_args.push_back("snapshot=" + path("snap") + "@1");
-  const CommandRun view = run_viewer(view_args);
-  ASSERT_EQ(view.exit_code, 0) << view.output;
-
-  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
-  for (const std::string& a : settings) render += " " + shell_quote(a);
-  render += " --out " + shell_quote(path("headless.png")) + " --stats " +
-            shell_quote(path("headless_stats.json"));
-  const CommandRun headless = run_shell(render);
-  ASSERT_EQ(headless.exit_code, 0) << headless.output;
-
-  const fs::path snap = dir_ / "snap" / "view_building_256_ast_0.01.png";
-  ASSERT_TRUE(fs::exists(snap)) << view.output;
-  const std::string snapshot_png = read_file_bytes(snap);
-  EXPECT_FALSE(snapshot_png.empty());
-  EXPECT_TRUE(snapshot_png == read_file_bytes(path("headless.png")));
-
-  const nlohmann::json a = read_json(dir_ / "snap" / "view_building_256_ast_0.01_stats.json");
-  const nlohmann::json b = read_json(path("headless_stats.json"));
+  const SnapshotBesideRender r =
+      snapshot_beside_render(dir_,
+                             {"--lights", "256", "--method", "ast", "--width", "96", "--height",
+                              "64", "--spp", "2", "--rt-fallback", "off"},
+                             "view_building_256_ast_0.01");
+  ASSERT_TRUE(r.failures.empty()) << r.failures;
+  EXPECT_FALSE(r.snapshot_png.empty());
+  EXPECT_TRUE(r.snapshot_png == r.render_png);
+  const nlohmann::json& a = r.snapshot_stats;
+  const nlohmann::json& b = r.render_stats;
   ASSERT_FALSE(a.is_discarded() || b.is_discarded());
   for (const char* key :
        {"lights", "method", "tolerance", "relative_error", "lights_per_point", "width", "height",
@@ -284,27 +303,14 @@ TEST_F(ViewerWindow, PreviewSamplesNeverReachASnapshot) {
 TEST_F(ViewerWindow, TheRtFallbackIsChosenAsTheHeadlessRenderChoosesIt) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
-  const std::vector<std::string> settings = {"--lights", "64", "--tolerance", "0", "--width", "64",
-                                             "--height", "48", "--spp",       "1"};
-  std::vector<std::string> view_args = settings;
-  for (const char* a : {"--window", "1024x640", "--frames", "3", "--set", "await=idle@0", "--set"})
-    view_args.emplace_back(a);
-  view_args.push_back("snapshot=" + path("snap") + "@1");
-  const CommandRun view = run_viewer(view_args);
-  ASSERT_EQ(view.exit_code, 0) << view.output;
-
-  std::string render = shell_quote(LEVRT_BINARY) + " render --quiet";
-  for (const std::string& a : settings) render += " " + shell_quote(a);
-  render += " --out " + shell_quote(path("headless.png")) + " --stats " +
-            shell_quote(path("headless_stats.json"));
-  const CommandRun headless = run_shell(render);
-  ASSERT_EQ(headless.exit_code, 0) << headless.output;
-
-  const fs::path snap = dir_ / "snap" / "view_building_64_lev_0.png";
-  ASSERT_TRUE(fs::exists(snap)) << view.output;
-  EXPECT_TRUE(read_file_bytes(snap) == read_file_bytes(path("headless.png")));
-  const nlohmann::json a = read_json(dir_ / "snap" / "view_building_64_lev_0_stats.json");
-  const nlohmann::json b = read_json(path("headless_stats.json"));
+  const SnapshotBesideRender r = snapshot_beside_render(
+      dir_, {"--lights", "64", "--tolerance", "0", "--width", "64", "--height", "48", "--spp", "1"},
+      "view_building_64_lev_0");
+  ASSERT_TRUE(r.failures.empty()) << r.failures;
+  EXPECT_FALSE(r.snapshot_png.empty());
+  EXPECT_TRUE(r.snapshot_png == r.render_png);
+  const nlohmann::json& a = r.snapshot_stats;
+  const nlohmann::json& b = r.render_stats;
   ASSERT_FALSE(a.is_discarded() || b.is_discarded());
   ASSERT_TRUE(a["rt_fallback"].is_object()) << a.dump();
   EXPECT_TRUE(a["rt_fallback"]["used"].get<bool>());
