@@ -15,9 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
-#include "tests/support/read_file.h"
 
 namespace {
 
@@ -109,8 +109,9 @@ TEST(AccuracyGateCli, AFailedGateStillWritesEveryOutput) {
   const levrt_test::TempDir dir("levrt_gate_");
   const fs::path image = dir.path() / "img.png";
   const fs::path error = dir.path() / "error.png";
-  const CommandRun r = run_levrt(gate_render_args({"--reference", "rt", "--fail-above", "avg=0", "--out",
-                                              image.string(), "--heatmap-error", error.string()}));
+  const CommandRun r =
+      run_levrt(gate_render_args({"--reference", "rt", "--fail-above", "avg=0", "--out",
+                                  image.string(), "--heatmap-error", error.string()}));
   EXPECT_EQ(r.exit_code, app::kAccuracyGateExitCode) << r.output;
   EXPECT_TRUE(fs::is_regular_file(image));
   EXPECT_TRUE(fs::is_regular_file(error));
@@ -146,7 +147,7 @@ TEST(AccuracyGateCli, ReferenceOutIsRtsImageAndTheErrorHeatmapIsZeroAgainstItsel
   const fs::path rt_image = dir.path() / "rt.png";
   const CommandRun lev =
       run_levrt(gate_render_args({"--reference", "rt", "--reference-out", reference.string(),
-                             "--heatmap-error", error.string(), "--stats", stats.string()}));
+                                  "--heatmap-error", error.string(), "--stats", stats.string()}));
   ASSERT_EQ(lev.exit_code, 0) << lev.output;
   const CommandRun rt = run_levrt(gate_render_args({"--method", "rt", "--out", rt_image.string()}));
   ASSERT_EQ(rt.exit_code, 0) << rt.output;
@@ -161,7 +162,7 @@ TEST(AccuracyGateCli, ReferenceOutIsRtsImageAndTheErrorHeatmapIsZeroAgainstItsel
   const fs::path rt_stats = dir.path() / "rt.json";
   const CommandRun self = run_levrt(
       gate_render_args({"--method", "rt", "--reference", "rt", "--heatmap-error", rt_error.string(),
-                   "--stats", rt_stats.string(), "--fail-above", "avg=0,max=0"}));
+                        "--stats", rt_stats.string(), "--fail-above", "avg=0,max=0"}));
   EXPECT_EQ(self.exit_code, 0) << self.output;
   const nlohmann::json rt_json = nlohmann::json::parse(read_file(rt_stats));
   EXPECT_EQ(rt_json["heatmap_error_range"][1].get<double>(), 0.0);

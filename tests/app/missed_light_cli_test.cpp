@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/json_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
-#include "tests/support/json_file.h"
 
 namespace {
 
@@ -52,7 +52,8 @@ TEST(MissedLightCli, OffUnlessAskedAndACountOfOneIsRefused) {
   const CommandRun off = run_levrt(missed_render_args({"--stats", stats.string()}));
   ASSERT_EQ(off.exit_code, 0) << off.output;
   EXPECT_FALSE(read_json(stats).contains("missed_estimate_avg_pct"));
-  const CommandRun on = run_levrt(missed_render_args({"--missed-draws", "4", "--stats", stats.string()}));
+  const CommandRun on =
+      run_levrt(missed_render_args({"--missed-draws", "4", "--stats", stats.string()}));
   ASSERT_EQ(on.exit_code, 0) << on.output;
   EXPECT_EQ(read_json(stats)["missed_draws"].get<int>(), 4);
   const CommandRun one = run_levrt(missed_render_args({"--missed-draws", "1"}));

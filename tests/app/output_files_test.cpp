@@ -16,8 +16,8 @@
 #include <gtest/gtest.h>
 
 #include "app/settings.h"
-#include "tests/support/temp_dir.h"
 #include "tests/support/read_file.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 

@@ -19,8 +19,8 @@
 
 #include "app/settings.h"
 #include "tests/support/folder_test.h"
-#include "tests/support/run_command.h"
 #include "tests/support/read_file.h"
+#include "tests/support/run_command.h"
 
 namespace {
 
@@ -139,7 +139,8 @@ TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
   fs::create_directories(dir_ / "sub");
   for (const std::string& other :
        std::vector<std::string>{"./X.png", "sub/../X.png", path("X.png")}) {
-    const CommandRun r = run_here(output_render_args({"--out", "X.png", "--heatmap-lights", other}));
+    const CommandRun r =
+        run_here(output_render_args({"--out", "X.png", "--heatmap-lights", other}));
     EXPECT_EQ(r.exit_code, 2) << other << ": " << r.output;
     EXPECT_NE(r.output.find("another output also writes"), std::string::npos) << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
@@ -158,8 +159,8 @@ TEST_F(Outputs, AHardLinkToAnotherOutputIsTheSameFile) {
 
 TEST_F(Outputs, ANameTooLongIsRefusedBeforeRenderingWithNothingWritten) {
   const std::string long_name = std::string(296, 'n') + ".png";
-  const CommandRun r =
-      run_levrt(output_render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
+  const CommandRun r = run_levrt(
+      output_render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("file name of 300 bytes"), std::string::npos) << r.output;
   EXPECT_TRUE(entries().empty());
@@ -226,7 +227,8 @@ TEST_F(Outputs, WroteLineNamesEveryFileAndQuietSilencesIt) {
 }
 
 TEST_F(Outputs, SubsampledStatsEstimateTheFullFrameTime) {
-  const CommandRun r = run_levrt(output_render_args({"--subsample", "4", "--stats", path("s.json")}));
+  const CommandRun r =
+      run_levrt(output_render_args({"--subsample", "4", "--stats", path("s.json")}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(read_file(path("s.json")).find("\"time_render_full_frame_estimate_s\""),
             std::string::npos);

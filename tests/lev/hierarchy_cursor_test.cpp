@@ -177,7 +177,8 @@ TEST(HierarchyCursor, LightsAreReadAtTheLeaves) {
   ASSERT_EQ(leaves.size(), 3u);
   EXPECT_TRUE(same_light_with_range(leaves[0], tree.masters[0].children[0].light));
   EXPECT_TRUE(same_light_with_range(leaves[1], tree.masters[0].children[1].children[0].light));
-  EXPECT_TRUE(same_light_with_range(leaves[2], tree.root.children[1].children[0].children[0].light));
+  EXPECT_TRUE(
+      same_light_with_range(leaves[2], tree.root.children[1].children[0].children[0].light));
 }
 
 }  // namespace

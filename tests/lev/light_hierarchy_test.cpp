@@ -64,7 +64,8 @@ TEST(LightHierarchy, InstancedWalkMatchesFlattenedBruteForce) {
       const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
       ASSERT_EQ(found.size(), expected.size()) << "tau " << tau;
       for (std::size_t i = 0; i < found.size(); ++i) {
-        ASSERT_TRUE(same_light_with_dropoff(found[i], expected[i])) << "tau " << tau << " light " << i;
+        ASSERT_TRUE(same_light_with_dropoff(found[i], expected[i]))
+            << "tau " << tau << " light " << i;
       }
       if (tau > 0.0f) {
         EXPECT_GT(counters.nodes_visited, 0u);
@@ -169,7 +170,8 @@ TEST(LightBvh, FlatListGetsAHierarchyThatCullsExactly) {
       lev::find_important_lights(h, volumes, tau, p, scratch, found, counters);
       const auto expected = lev::important_lights_brute_force(flat, p, tau);
       ASSERT_EQ(found.size(), expected.size());
-      for (std::size_t i = 0; i < found.size(); ++i) ASSERT_TRUE(same_light_with_dropoff(found[i], expected[i]));
+      for (std::size_t i = 0; i < found.size(); ++i)
+        ASSERT_TRUE(same_light_with_dropoff(found[i], expected[i]));
       visited += counters.nodes_visited;
     }
     // The hierarchy culls: far fewer volumes tested than lights.

@@ -138,8 +138,8 @@ TEST(LightSampling, DrawnLightsComeWithTheirEnumeratedProbabilityAndFrequency) {
       std::uint64_t visited = 0;
       lev::sample_light(h, lev::whole_hierarchy(h, x), at, random, weights, s, visited);
       std::size_t i = 0;
-      while (i < flat.size() &&
-             !(same_light_placement(flat[i], s.light) && enumerated[i].probability == s.probability))
+      while (i < flat.size() && !(same_light_placement(flat[i], s.light) &&
+                                  enumerated[i].probability == s.probability))
         ++i;
       ASSERT_LT(i, flat.size()) << "a drawn light or its probability is not the enumeration's";
       ++drawn[i];
@@ -299,8 +299,10 @@ TEST(LightSampling, OpeningWidePartsKeepsEveryLightOnceWithinTheBudget) {
       double total = 0.0;
       for (const lev::SampledLight& l : after) {
         int in_before = 0, in_after = 0;
-        for (const lev::SampledLight& b : before) in_before += same_light_placement(b.light, l.light) ? 1 : 0;
-        for (const lev::SampledLight& a : after) in_after += same_light_placement(a.light, l.light) ? 1 : 0;
+        for (const lev::SampledLight& b : before)
+          in_before += same_light_placement(b.light, l.light) ? 1 : 0;
+        for (const lev::SampledLight& a : after)
+          in_after += same_light_placement(a.light, l.light) ? 1 : 0;
         EXPECT_EQ(in_after, in_before) << "scene " << scene;
         if (contribution(l.light, x, normal) > 0.0) {
           EXPECT_GT(l.probability, 0.0) << "scene " << scene << ": lights the point, no chance";

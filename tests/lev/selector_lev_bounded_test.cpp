@@ -45,8 +45,9 @@ TEST(LevBounded, CulledBoundWithinTheToleranceAndAboveWhatWasCulled) {
         // Still a bound of what was not returned.
         glm::dvec3 exact(0.0);
         for (const lev::Light& l : world_lights) {
-          const bool returned = std::any_of(bounded.begin(), bounded.end(),
-                                            [&](const lev::Light& b) { return same_light_placement(b, l); });
+          const bool returned =
+              std::any_of(bounded.begin(), bounded.end(),
+                          [&](const lev::Light& b) { return same_light_placement(b, l); });
           if (!returned) exact += glm::dvec3(lev::irradiance(l, x));
         }
         for (int c = 0; c < 3; ++c) ASSERT_GE(static_cast<double>(culled[c]), exact[c]) << context;

@@ -35,8 +35,9 @@ constexpr int kBoundWidth = 32;
 constexpr int kBoundHeight = 24;
 constexpr double kRoundingPct = renderer::kErrorBoundRoundingPct;
 
-renderer::Framebuffer render_with_bound(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, bool compute_error_bound = true) {
+renderer::Framebuffer render_with_bound(const renderer::Scene& scene,
+                                        const renderer::RayScene& rays, lev::Method method,
+                                        float tolerance, bool compute_error_bound = true) {
   renderer::RenderSettings rs = test_render_settings(method, kBoundWidth, kBoundHeight);
   rs.tolerance = tolerance;
   rs.compute_error_bound = compute_error_bound;
@@ -169,7 +170,8 @@ TEST(ErrorBoundRender, NothingIsComputedUnlessAsked) {
   const renderer::RayScene rays(scene);
   // At 0.1, where lev leaves light out (at 0.01 it culls only lights that cannot reach the
   // stage, and its tightened bound is 0 there, as is its error).
-  const renderer::Framebuffer without = render_with_bound(scene, rays, lev::Method::lev, 0.1f, false);
+  const renderer::Framebuffer without =
+      render_with_bound(scene, rays, lev::Method::lev, 0.1f, false);
   const renderer::Framebuffer with = render_with_bound(scene, rays, lev::Method::lev, 0.1f, true);
   EXPECT_EQ(without.radiance_sum, with.radiance_sum);  // the bound never changes the image
   for (const glm::vec3& b : without.error_bound_sum) EXPECT_EQ(b, glm::vec3(0.0f));
@@ -183,8 +185,9 @@ glm::vec3 traced_bound(const renderer::Scene& scene, const renderer::RayScene& r
   renderer::TraceContext context{scene, rays, selector, scratch};
   context.compute_error_bound = true;
   renderer::PathCounters counters;
-  const renderer::Ray ray = renderer::primary_ray(
-      scene.camera, kBoundWidth, kBoundHeight, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+  const renderer::Ray ray =
+      renderer::primary_ray(scene.camera, kBoundWidth, kBoundHeight, static_cast<float>(x) + 0.5f,
+                            static_cast<float>(y) + 0.5f);
   renderer::trace_radiance(context, ray, 0, counters);
   return counters.error_bound;
 }

@@ -40,7 +40,7 @@ struct ExposedRender {
 };
 
 ExposedRender render_at_exposure(const scenes::SceneDescription& description, lev::Method method,
-                double exposure_ev) {
+                                 double exposure_ev) {
   const renderer::Scene scene = scenes::instantiate_scene(description);
   const renderer::RayScene rays(scene);
   renderer::RenderSettings settings = test_render_settings(method, 48, 36);

@@ -67,7 +67,7 @@ renderer::Scene extreme_scene() {
 }
 
 renderer::Framebuffer render_extreme(renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tau) {
+                                     lev::Method method, float tau) {
   renderer::RenderSettings rs;
   rs.width = 96;
   rs.height = 72;

@@ -13,7 +13,7 @@
 namespace {
 
 renderer::Framebuffer render_bounded(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, int threads) {
+                                     lev::Method method, float tolerance, int threads) {
   return render_test_image(scene, rays, method, tolerance, threads, 2);
 }
 
@@ -21,7 +21,8 @@ TEST(LevBoundedRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
   const renderer::Scene scene = scenes::build_building(3);
   const renderer::RayScene rays(scene);
   const renderer::Framebuffer rt = render_bounded(scene, rays, lev::Method::rt, 0.0f, 0);
-  const renderer::Framebuffer exact = render_bounded(scene, rays, lev::Method::lev_bounded, 0.0f, 0);
+  const renderer::Framebuffer exact =
+      render_bounded(scene, rays, lev::Method::lev_bounded, 0.0f, 0);
   EXPECT_TRUE(bitwise_equal(rt, exact));
   EXPECT_EQ(rt.lights_tested, exact.lights_tested);
   const renderer::Framebuffer one = render_bounded(scene, rays, lev::Method::lev_bounded, 0.01f, 1);

@@ -17,8 +17,8 @@
 namespace {
 
 renderer::Framebuffer render_est(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, int threads, int width = 64,
-                             int height = 48) {
+                                 lev::Method method, float tolerance, int threads, int width = 64,
+                                 int height = 48) {
   return render_test_image(scene, rays, method, tolerance, threads, 1, width, height);
 }
 
@@ -59,7 +59,8 @@ TEST_P(LevEstHall, DeterministicAndFarCloserToRtThanLev) {
   EXPECT_EQ(one.shadow_rays, two.shadow_rays);
   const renderer::Framebuffer plain =
       render_est(scene, rays, lev::Method::lev, 0.01f, 2, kWidth, kHeight);
-  const renderer::Framebuffer rt = render_est(scene, rays, lev::Method::rt, 0.0f, 2, kWidth, kHeight);
+  const renderer::Framebuffer rt =
+      render_est(scene, rays, lev::Method::rt, 0.0f, 2, kWidth, kHeight);
   const renderer::PixelErrorStats est = error_against(one, rt);
   const renderer::PixelErrorStats dropped = error_against(plain, rt);
   // The culled rest matters here (lev is visibly off), and the estimate recovers almost all of

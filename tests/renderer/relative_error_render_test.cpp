@@ -19,8 +19,8 @@
 namespace {
 
 renderer::Framebuffer render_relative(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float relative_error, int threads, int width = 48,
-                             int height = 36) {
+                                      lev::Method method, float relative_error, int threads,
+                                      int width = 48, int height = 36) {
   renderer::RenderSettings rs = test_render_settings(method, width, height);
   rs.relative_error = relative_error;
   rs.threads = threads;

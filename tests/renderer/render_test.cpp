@@ -22,8 +22,8 @@ struct TestScene {
   }
 };
 
-renderer::Framebuffer render_test_scene(TestScene& t, lev::Method method, float tolerance, int threads,
-                             int passes, int width = 64, int height = 48) {
+renderer::Framebuffer render_test_scene(TestScene& t, lev::Method method, float tolerance,
+                                        int threads, int passes, int width = 64, int height = 48) {
   return render_test_image(t.scene, *t.rays, method, tolerance, threads, passes, width, height);
 }
 

@@ -88,7 +88,7 @@ renderer::Scene random_scene(std::uint64_t seed) {
 }
 
 renderer::RenderSettings sampling_settings(lev::Method method, float tolerance, int threads = 2,
-                                      int tile_size = 8, int lights_per_point = 1) {
+                                           int tile_size = 8, int lights_per_point = 1) {
   renderer::RenderSettings rs;
   rs.lights_per_point = lights_per_point;
   rs.width = 40;
@@ -218,9 +218,11 @@ TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
   const renderer::RayScene rays(scene);
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
     renderer::RenderSettings rs = sampling_settings(method, 0.05f);
-    const renderer::FramebufferTotals one = renderer::sum_framebuffer(render_test_image(scene, rays, rs, 1));
+    const renderer::FramebufferTotals one =
+        renderer::sum_framebuffer(render_test_image(scene, rays, rs, 1));
     rs.lights_per_point = 4;
-    const renderer::FramebufferTotals four = renderer::sum_framebuffer(render_test_image(scene, rays, rs, 1));
+    const renderer::FramebufferTotals four =
+        renderer::sum_framebuffer(render_test_image(scene, rays, rs, 1));
     EXPECT_GT(four.lights_tested, one.lights_tested) << lev::method_info(method).name;
   }
   renderer::RenderSettings bad = sampling_settings(lev::Method::lev_mc, 0.05f);
@@ -233,7 +235,8 @@ TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
 TEST(SamplingRender, LevMcAtToleranceZeroEqualsRtBitForBit) {
   for (const renderer::Scene& scene : {random_scene(7), scenes::build_building(3)}) {
     const renderer::RayScene rays(scene);
-    const renderer::Framebuffer rt = render_test_image(scene, rays, sampling_settings(lev::Method::rt, 0.0f), 2);
+    const renderer::Framebuffer rt =
+        render_test_image(scene, rays, sampling_settings(lev::Method::rt, 0.0f), 2);
     renderer::RenderSettings rs = sampling_settings(lev::Method::lev_mc, 0.0f);
     rs.lights_per_point = 3;
     const renderer::Framebuffer exact = render_test_image(scene, rays, rs, 2);

@@ -68,7 +68,8 @@ scenes::Affine scaled(float scale) {
   return a;
 }
 
-std::vector<std::uint8_t> render_far_rgb8(const scenes::SceneDescription& description, lev::Method method) {
+std::vector<std::uint8_t> render_far_rgb8(const scenes::SceneDescription& description,
+                                          lev::Method method) {
   renderer::Scene scene = scenes::instantiate_scene(description);
   const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;

@@ -26,7 +26,8 @@ std::string word(std::uint32_t v) {
 }
 
 // `json` as a binary glTF: header (magic, version, length plus `length_delta`), one JSON chunk.
-std::string glb_with_header(std::string json, std::uint32_t version = 2, std::int64_t length_delta = 0) {
+std::string glb_with_header(std::string json, std::uint32_t version = 2,
+                            std::int64_t length_delta = 0) {
   while (json.size() % 4 != 0) json += ' ';
   const auto length =
       static_cast<std::uint32_t>(20 + static_cast<std::int64_t>(json.size()) + length_delta);
@@ -52,8 +53,10 @@ TEST(GltfDocument, AHeaderThatDisagreesWithTheFileIsRefused) {
                                   "binary glTF: header length " +
                                       std::to_string(longer.size() - 4) + " bytes, the file has " +
                                       std::to_string(longer.size()));
-  levrt_test::expect_gltf_refused(glb_with_header(kJson, 2, 8), "long.glb", "binary glTF: header length");
-  levrt_test::expect_gltf_refused(glb_with_header(kJson, 1), "v1.glb", "binary glTF: header version 1");
+  levrt_test::expect_gltf_refused(glb_with_header(kJson, 2, 8), "long.glb",
+                                  "binary glTF: header length");
+  levrt_test::expect_gltf_refused(glb_with_header(kJson, 1), "v1.glb",
+                                  "binary glTF: header version 1");
 }
 
 }  // namespace

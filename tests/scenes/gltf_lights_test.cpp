@@ -84,8 +84,8 @@ void add_lights_camera(GltfBuilder& builder, tinygltf::Node node, double yfov) {
   builder.add_node(node);
 }
 
-renderer::Framebuffer render_lights(const renderer::Scene& scene, lev::Method method, float tolerance,
-                             int size = 40) {
+renderer::Framebuffer render_lights(const renderer::Scene& scene, lev::Method method,
+                                    float tolerance, int size = 40) {
   const renderer::RayScene rays(scene);
   renderer::RenderSettings rs = test_render_settings(method, size, size);
   rs.tolerance = tolerance;

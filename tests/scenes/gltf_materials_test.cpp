@@ -55,7 +55,8 @@ int add_material(GltfBuilder& builder, const tinygltf::Material& material) {
 
 // A camera at `position` looking along the node's -Z, turned by the quaternion (x, y, z, w).
 void add_materials_camera(GltfBuilder& builder, const std::vector<double>& position,
-                const std::vector<double>& rotation = {}, double orthographic_ymag = 0.0) {
+                          const std::vector<double>& rotation = {},
+                          double orthographic_ymag = 0.0) {
   tinygltf::Camera camera;
   if (orthographic_ymag > 0.0) {
     camera.type = "orthographic";
@@ -170,7 +171,8 @@ TEST(GltfMaterials, EmissionIsSeenDirectlyAndInAMirrorAndLightsNothing) {
   const auto reflected = render_materials(mirrored, 1);
   const auto dark = render_materials(mirrored, 0);
   expect_channels_near(reflected->pixel(kSize / 2, kSize / 2), {2.0f, 1.0f, 0.5f}, "in the mirror");
-  expect_channels_near(dark->pixel(kSize / 2, kSize / 2), glm::vec3(0.0f), "no reflection at depth 0");
+  expect_channels_near(dark->pixel(kSize / 2, kSize / 2), glm::vec3(0.0f),
+                       "no reflection at depth 0");
 }
 
 TEST(GltfMaterials, ABackFaceIsNotDrawnWhenSingleSidedAndLitWhenDoubleSided) {
@@ -186,7 +188,7 @@ TEST(GltfMaterials, ABackFaceIsNotDrawnWhenSingleSidedAndLitWhenDoubleSided) {
     renderer::SurfaceHit hit;
     EXPECT_EQ(r->hit(kSize / 2, kSize / 2, hit), double_sided);
     expect_channels_near(r->pixel(kSize / 2, kSize / 2), glm::vec3(double_sided ? 0.5f : 0.0f),
-                double_sided ? "double-sided" : "single-sided");
+                         double_sided ? "double-sided" : "single-sided");
     // From the front the single-sided square is drawn (and dark: the sun is behind it).
     GltfBuilder front = builder;
     front.model.nodes[1].translation = {0.5, 0.5, 2.0};

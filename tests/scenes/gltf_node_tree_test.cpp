@@ -37,7 +37,8 @@ TEST(GltfNodeTree, ANodeReachableTwiceIsRefusedNamingIt) {
        "nodes[1]: cycle in the node tree"},
       {gltf_tree_with("[1]", R"(, {"children": [1]})"), "nodes[1]: cycle in the node tree"},
   };
-  for (const auto& [text, problem] : cases) levrt_test::expect_gltf_refused(text, kTreePath, problem);
+  for (const auto& [text, problem] : cases)
+    levrt_test::expect_gltf_refused(text, kTreePath, problem);
 }
 
 TEST(GltfNodeTree, SeparateTreesAreReadOnceEach) {

@@ -38,8 +38,8 @@ struct SampleRender {
 };
 
 std::unique_ptr<SampleRender> render_sample(const std::string& relative,
-                                        lev::Method method = lev::Method::rt,
-                                        float tolerance = 0.0f) {
+                                            lev::Method method = lev::Method::rt,
+                                            float tolerance = 0.0f) {
   auto r = std::make_unique<SampleRender>();
   r->scene =
       scenes::instantiate_scene(scenes::load_scene_file((samples_dir() / relative).string()));

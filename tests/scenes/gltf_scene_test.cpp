@@ -21,7 +21,7 @@ namespace {
 constexpr char kScenePath[] = "test.gltf";
 
 std::string gltf_scene_with(const std::string& lights, const std::string& nodes,
-                      const std::string& extra = "") {
+                            const std::string& extra = "") {
   return R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
     "extensions": {"KHR_lights_punctual": {"lights": [)" +
          lights + R"(]}}, "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [)" + nodes + "]" +
@@ -67,7 +67,8 @@ TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
 TEST(GltfScene, LightIntensityIsColourTimesIntensityAsAuthored) {
   const std::string point = R"({"type": "point", "color": [0, 1, 0.5], "intensity": 4})";
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_scene_with(point, node), kScenePath);
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_scene_with(point, node), kScenePath);
   const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
   EXPECT_EQ(light.intensity, glm::vec3(0.0f, 4.0f, 2.0f));
 }
@@ -94,7 +95,8 @@ TEST(GltfScene, WithoutACameraTheViewFramesTheLightsFromFrontAbove) {
   const std::string point = R"({"type": "point"})";
   const std::string node =
       R"({"translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_scene_with(point, node), kScenePath);
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_scene_with(point, node), kScenePath);
   EXPECT_EQ(scene.camera.target, glm::vec3(2.0f, 0.0f, 0.0f));
   EXPECT_GT(scene.camera.position.y, scene.camera.target.y);
   EXPECT_GT(scene.camera.position.z, scene.camera.target.z);
@@ -106,27 +108,28 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
       {"{\"asset\": ", "invalid JSON at line 1, column 11 (syntax error"},
       {gltf_scene_with(R"({"type": "point", "intensity": -1})", node), "lights[0].intensity: -1"},
       {gltf_scene_with(R"({"type": "point", "range": -2})", node), "lights[0].range: -2"},
-      {gltf_scene_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})",
-                 node),
+      {gltf_scene_with(
+           R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})", node),
        "lights[0].spot.innerConeAngle: 0.6"},
       {gltf_scene_with(R"({"type": "spot", "spot": {"outerConeAngle": 2}})", node),
        "lights[0].spot.outerConeAngle: 2"},
       {gltf_scene_with(R"({"type": "area"})", node), "lights[0].type: 'area'"},
       {gltf_scene_with(R"({"type": "point"})",
-                 R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
+                       R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
        "KHR_lights_punctual.light: 3"},
       {gltf_scene_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
        "cycle in the node tree"},
       {gltf_scene_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0].scale: 2 values"},
       {gltf_scene_with(R"({"type": "point"})", R"({})",
-                 R"(, "buffers": [{"byteLength": 12,
+                       R"(, "buffers": [{"byteLength": 12,
                     "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
                     "bufferViews": [{"buffer": 0, "byteLength": 12}],
                     "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3",
                                    "count": 2}])"),
        "accessors[0]: 2 elements beyond the view's 12 bytes"},
   };
-  for (const auto& [text, problem] : cases) levrt_test::expect_gltf_refused(text, kScenePath, problem);
+  for (const auto& [text, problem] : cases)
+    levrt_test::expect_gltf_refused(text, kScenePath, problem);
 }
 
 // A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
@@ -151,8 +154,9 @@ TEST(GltfScene, BinaryFilesReadTheJsonChunkAndCheckTheLength) {
       scenes::parse_gltf_scene(glb_with_length(gltf_scene_with(point, node), 0), "test.glb");
   EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
             glm::vec3(0.0f, 1.0f, 0.0f));
-  EXPECT_THROW(scenes::parse_gltf_scene(glb_with_length(gltf_scene_with(point, node), 4), "test.glb"),
-               std::invalid_argument);
+  EXPECT_THROW(
+      scenes::parse_gltf_scene(glb_with_length(gltf_scene_with(point, node), 4), "test.glb"),
+      std::invalid_argument);
 }
 
 TEST(GltfScene, FileNames) {

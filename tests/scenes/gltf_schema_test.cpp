@@ -93,10 +93,11 @@ TEST(GltfSchema, IgnoredUsedExtensionsGiveOneWarningLine) {
       R"(, "extensionsUsed": ["KHR_lights_punctual", "KHR_texture_transform", "EXT_made_up"])";
   const std::string warnings = warnings_of(gltf(top));
   EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 1) << warnings;
-  EXPECT_EQ(warnings.rfind(std::string(kSchemaPath) + ": warning: extensionsUsed: KHR_texture_transform, "
+  EXPECT_EQ(
+      warnings.rfind(std::string(kSchemaPath) + ": warning: extensionsUsed: KHR_texture_transform, "
                                                 "EXT_made_up ignored",
-                           0),
-            0u)
+                     0),
+      0u)
       << warnings;
 }
 
@@ -157,7 +158,8 @@ TEST(GltfSchema, IndicesPastTheirArrayAreRefusedWhereverTheArrayComes) {
       {gltf("", light, R"({"extensions": {"KHR_lights_punctual": {}}})"),
        "nodes[0].extensions.KHR_lights_punctual.light: missing"},
   };
-  for (const auto& [text, problem] : refused) levrt_test::expect_gltf_refused(text, kSchemaPath, problem);
+  for (const auto& [text, problem] : refused)
+    levrt_test::expect_gltf_refused(text, kSchemaPath, problem);
 }
 
 TEST(GltfSchema, AWholeNumberWrittenWithAFractionIsAnIndex) {

@@ -60,7 +60,8 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
         lev::WalkCounters ca, cb;
         lev::find_important_lights(scene.lights, scene_volumes, tau, p, scratch, a, ca);
         lev::find_important_lights(bvh, bvh_volumes, tau, p, scratch, b, cb);
-        ASSERT_EQ(sorted_instance_keys(a), sorted_instance_keys(b)) << model.name << " tau " << tau << " point " << k;
+        ASSERT_EQ(sorted_instance_keys(a), sorted_instance_keys(b))
+            << model.name << " tau " << tau << " point " << k;
       }
     }
   }

@@ -24,8 +24,8 @@
 
 namespace {
 
-using levrt_test::read_file;
 using levrt_test::CommandRun;
+using levrt_test::read_file;
 namespace fs = std::filesystem;
 
 using AbPng = levrt_test::PngImage;

@@ -21,9 +21,9 @@
 #include "tests/support/exr_file.h"
 #include "tests/support/folder_test.h"
 #include "tests/support/png_file.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/xvfb_server.h"
-#include "tests/support/read_file.h"
 
 namespace {
 
@@ -83,14 +83,13 @@ TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
   });
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const RemapPng linear = read_png_image(path("linear.png")),
-            exposed = read_png_image(path("exposed.png")),
-            neutral = read_png_image(path("neutral.png"));
+                 exposed = read_png_image(path("exposed.png")),
+                 neutral = read_png_image(path("neutral.png"));
   ASSERT_GT(linear.width, 0);
   EXPECT_GT(picture_differences(linear, exposed), 100);
   EXPECT_GT(picture_differences(exposed, neutral), 100);
 
-  const auto before =
-      nlohmann::json::parse(read_file(file_ending(dir_ / "before", "_stats.json")));
+  const auto before = nlohmann::json::parse(read_file(file_ending(dir_ / "before", "_stats.json")));
   const auto after = nlohmann::json::parse(read_file(file_ending(dir_ / "after", "_stats.json")));
   EXPECT_EQ(before["exposure_ev"], 0.0);
   EXPECT_EQ(before["display"], "linear");

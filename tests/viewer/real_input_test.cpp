@@ -23,8 +23,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
-#include "tests/support/run_command.h"
 #include "tests/support/read_file.h"
+#include "tests/support/run_command.h"
 
 namespace {
 
