@@ -2,54 +2,41 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
-#include <numeric>
 #include <utility>
 
 #include "lev/hierarchy_cursor.h"
+#include "lev/light_split.h"
 
 namespace lev {
 namespace {
 
 constexpr std::size_t kLeafSize = 4;
 
-using Iter = std::vector<std::uint32_t>::iterator;
-
-// Splits [begin, end) at its median along the widest axis of the item centres.
-Iter split_at_median(const std::vector<glm::vec3>& centres, Iter begin, Iter end) {
-  glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-  for (Iter it = begin; it != end; ++it) {
-    lo = glm::min(lo, centres[*it]);
-    hi = glm::max(hi, centres[*it]);
-  }
-  const glm::vec3 extent = hi - lo;
-  const int axis =
-      extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-  Iter mid = begin + (end - begin) / 2;
-  std::nth_element(begin, mid, end, [&](std::uint32_t a, std::uint32_t b) {
-    const float pa = centres[a][axis], pb = centres[b][axis];
-    return pa < pb || (pa == pb && a < b);
-  });
-  return mid;
-}
-
-LightDescriptionNode build(std::vector<BvhItem>& items, const std::vector<glm::vec3>& centres,
-                           Iter begin, Iter end) {
-  const auto count = static_cast<std::size_t>(end - begin);
-  if (count == 1) return std::move(items[*begin].node);
+// The node over split[begin, end) (non-empty; an item's id is its index in `items`), `depth`
+// binary splits below the root.
+LightDescriptionNode build(std::vector<BvhItem>& items, std::vector<SplitItem>& split,
+                           std::size_t begin, std::size_t end, int depth) {
+  const std::size_t count = end - begin;
+  if (count == 1) return std::move(items[split[begin].id].node);
   std::vector<LightDescriptionNode> children;
   if (count <= kLeafSize) {
     // Keep the input order inside a leaf so a sorted list stays sorted.
-    std::vector<std::uint32_t> leaf(begin, end);
+    std::vector<std::uint32_t> leaf;
+    for (std::size_t i = begin; i < end; ++i) leaf.push_back(split[i].id);
     std::sort(leaf.begin(), leaf.end());
     for (std::uint32_t i : leaf) children.push_back(std::move(items[i].node));
   } else {
-    const Iter mid = split_at_median(centres, begin, end);
-    const Iter left_mid = split_at_median(centres, begin, mid);
-    const Iter right_mid = split_at_median(centres, mid, end);
-    for (auto [b, e] : {std::pair{begin, left_mid}, std::pair{left_mid, mid},
-                        std::pair{mid, right_mid}, std::pair{right_mid, end}}) {
-      if (b != e) children.push_back(build(items, centres, b, e));
+    // Two binary splits make the four children (three when a first part is a single item: only
+    // the median of two or three makes one).
+    const std::size_t mid = split_items(split, begin, end, depth, SplitAt::median);
+    for (auto [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
+      if (e - b == 1) {
+        children.push_back(build(items, split, b, e, depth + 1));
+        continue;
+      }
+      const std::size_t quarter = split_items(split, b, e, depth + 1, SplitAt::median);
+      children.push_back(build(items, split, b, quarter, depth + 2));
+      children.push_back(build(items, split, quarter, e, depth + 2));
     }
   }
   return extent_volume_node(union_node(std::move(children)));
@@ -59,41 +46,45 @@ LightDescriptionNode build(std::vector<BvhItem>& items, const std::vector<glm::v
 
 LightDescriptionNode build_bvh(std::vector<BvhItem> items) {
   if (items.empty()) return union_node({});
-  // The centre of a light's box is its position, exactly (p + p and the halving are exact).
-  std::vector<glm::vec3> centres;
-  centres.reserve(items.size());
-  for (const BvhItem& item : items)
-    centres.push_back(0.5f * (item.light_positions.lo + item.light_positions.hi));
-  std::vector<std::uint32_t> order(items.size());
-  std::iota(order.begin(), order.end(), 0u);
-  return build(items, centres, order.begin(), order.end());
+  std::vector<SplitItem> split;
+  split.reserve(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i)
+    split.push_back(split_item(items[i].lights.positions, items[i].lights.aggregate,
+                               static_cast<std::uint32_t>(i)));
+  return build(items, split, 0, split.size(), 0);
 }
 
 LightDescriptionNode build_light_bvh(const std::vector<Light>& lights) {
   std::vector<BvhItem> items;
   items.reserve(lights.size());
-  for (const Light& l : lights) items.push_back({light_node(l), Bounds{l.position, l.position}});
+  for (const Light& l : lights)
+    items.push_back({light_node(l), {{l.position, l.position}, light_aggregate(l)}});
   return build_bvh(std::move(items));
 }
 
-Bounds light_positions(const LightDescriptionNode& node,
-                       const std::vector<Bounds>& master_light_positions) {
+SubtreeLights subtree_lights(const LightDescriptionNode& node,
+                             const std::vector<SubtreeLights>& master_lights) {
   switch (node_role(node.kind)) {
     case NodeRole::light:
-      return {node.light.position, node.light.position};
-    case NodeRole::transform:
-      return transform_bounds(light_positions(node.children.at(0), master_light_positions),
-                              node.transform);
+      return {{node.light.position, node.light.position}, light_aggregate(node.light)};
+    case NodeRole::transform: {
+      const SubtreeLights child = subtree_lights(node.children.at(0), master_lights);
+      return {transform_bounds(child.positions, node.transform),
+              transform_aggregate(child.aggregate, node.transform)};
+    }
     case NodeRole::reference:
-      return master_light_positions.at(node.master);
+      return master_lights.at(node.master);
     case NodeRole::bounded:
     case NodeRole::group:
       break;
   }
-  Bounds b;
-  for (const LightDescriptionNode& child : node.children)
-    b = merge(b, light_positions(child, master_light_positions));
-  return b;
+  SubtreeLights all;
+  for (const LightDescriptionNode& child : node.children) {
+    const SubtreeLights c = subtree_lights(child, master_lights);
+    all.positions = merge(all.positions, c.positions);
+    all.aggregate = merge_aggregates(all.aggregate, c.aggregate);
+  }
+  return all;
 }
 
 }  // namespace lev

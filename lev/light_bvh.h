@@ -1,7 +1,7 @@
 // The automatic hierarchy for a structure without boxes to cull with: a flat list of lights (a
 // scene file without structure, an import), or a union of many subtrees (instances of a lamp
 // placed thousands of times, bare lights and affine subtrees side by side). A 4-wide bounding
-// volume hierarchy over the positions of the items' lights, each inner node an extent volume over
+// volume hierarchy over the items' lights, each inner node an extent volume over
 // a union; the items themselves are its leaves, so an instance stays an instance and its master
 // stays shared. Built once; like any hierarchy, each render fits its extent volumes.
 #pragma once
@@ -10,26 +10,39 @@
 
 #include "lev/bounds.h"
 #include "lev/light.h"
+#include "lev/light_bounds.h"
 #include "lev/light_description.h"
 
 namespace lev {
 
-// One leaf of the hierarchy: a subtree that holds lights, and the box around its light positions
-// in the frame of the union it stands in.
-struct BvhItem {
-  LightDescriptionNode node;
-  Bounds light_positions;
+// What the split weighs of a subtree's lights, in the frame it is entered with: the box around
+// their positions, exact (a light's box is its position, bit for bit, however it was placed, so
+// that instanced lights and the same lights written bare split alike), and their aggregate
+// (intensity and spot cones).
+struct SubtreeLights {
+  Bounds positions;
+  LightAggregate aggregate;
 };
 
-// Splits at the median of the items' box centres along the widest axis of those centres; an item
-// alone is returned as it is. The order of the items is kept inside a leaf.
+// One leaf of the hierarchy: a subtree that holds lights, and its lights in the frame of the union
+// it stands in.
+struct BvhItem {
+  LightDescriptionNode node;
+  SubtreeLights lights;
+};
+
+// Splits each set in two at the median along an axis of the spot axes where position and
+// orientation together price that cheapest, else along the widest axis of the item centres
+// (light_split.h), and each half in two again, so spots aimed different ways part early and the
+// tree stays balanced; an item alone is returned as it is. The order of the items is kept inside a
+// leaf.
 LightDescriptionNode build_bvh(std::vector<BvhItem> items);
-// build_bvh over one light node per light (a light's box is its position).
+// build_bvh over one light node per light.
 LightDescriptionNode build_light_bvh(const std::vector<Light>& lights);
 
-// The box around a subtree's light positions in the frame it is entered with; an instance's is its
-// master's, master_light_positions[master] (empty for a master without lights).
-Bounds light_positions(const LightDescriptionNode& node,
-                       const std::vector<Bounds>& master_light_positions);
+// A subtree's lights in the frame it is entered with; an instance's are its master's,
+// master_lights[master] (empty for a master without lights).
+SubtreeLights subtree_lights(const LightDescriptionNode& node,
+                             const std::vector<SubtreeLights>& master_lights);
 
 }  // namespace lev

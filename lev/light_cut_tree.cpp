@@ -1,9 +1,9 @@
 #include "lev/light_cut_tree.h"
 
 #include <algorithm>
-#include <numeric>
 
 #include "lev/important_lights.h"
+#include "lev/light_split.h"
 
 namespace lev {
 
@@ -24,21 +24,21 @@ namespace {
 
 struct Builder {
   const std::vector<Light>& lights;
+  std::vector<SplitItem>& items;  // one per light (its id the light's index), partitioned in place
   std::vector<CutTreeNode>& nodes;
-  std::vector<std::uint32_t>& order;  // light indices, partitioned in place
 
-  // The node over order[begin, end) (non-empty); returns its index.
-  std::uint32_t build(std::size_t begin, std::size_t end) {
+  // The node over items[begin, end) (non-empty) at `depth` below the root; returns its index.
+  std::uint32_t build(std::size_t begin, std::size_t end, int depth) {
     const auto index = static_cast<std::uint32_t>(nodes.size());
     nodes.emplace_back();
     if (end - begin == 1) {
-      nodes[index].aggregate = light_aggregate(lights[order[begin]]);
-      nodes[index].representative = order[begin];
+      nodes[index].aggregate = light_aggregate(lights[items[begin].id]);
+      nodes[index].representative = items[begin].id;
       return index;
     }
-    const std::size_t middle = split(begin, end);
-    const std::uint32_t left = build(begin, middle);
-    const std::uint32_t right = build(middle, end);
+    const std::size_t middle = split(begin, end, depth);
+    const std::uint32_t left = build(begin, middle, depth + 1);
+    const std::uint32_t right = build(middle, end, depth + 1);
     CutTreeNode& node = nodes[index];
     node.children[0] = left;
     node.children[1] = right;
@@ -52,28 +52,16 @@ struct Builder {
     return index;
   }
 
-  // Where order[begin, end) splits: point lights apart from spots first, else at the median of
-  // the longest axis of the positions' box. Ties keep the flatten order, so the tree is the same
-  // on every platform.
-  std::size_t split(std::size_t begin, std::size_t end) {
-    const auto first = order.begin() + static_cast<std::ptrdiff_t>(begin);
-    const auto last = order.begin() + static_cast<std::ptrdiff_t>(end);
-    const auto is_point = [&](std::uint32_t i) { return lights[i].kind == LightKind::point; };
+  // Where items[begin, end) splits: point lights apart from spots first, else where position and
+  // orientation together say (light_split.h). Either keeps the flatten order within each part.
+  std::size_t split(std::size_t begin, std::size_t end, int depth) {
+    const auto first = items.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto last = items.begin() + static_cast<std::ptrdiff_t>(end);
+    const auto is_point = [&](const SplitItem& i) { return lights[i.id].kind == LightKind::point; };
     const auto kinds_end = std::stable_partition(first, last, is_point);
     if (kinds_end != first && kinds_end != last)
-      return static_cast<std::size_t>(kinds_end - order.begin());
-    Bounds box;
-    for (auto it = first; it != last; ++it)
-      box = merge(box, {lights[*it].position, lights[*it].position});
-    const glm::vec3 extent = box.hi - box.lo;
-    const int axis =
-        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    const auto middle = first + (last - first) / 2;
-    std::nth_element(first, middle, last, [&](std::uint32_t a, std::uint32_t b) {
-      const float pa = lights[a].position[axis], pb = lights[b].position[axis];
-      return pa < pb || (pa == pb && a < b);
-    });
-    return static_cast<std::size_t>(middle - order.begin());
+      return static_cast<std::size_t>(kinds_end - items.begin());
+    return split_items(items, begin, end, depth, SplitAt::cheapest_boundary);
   }
 };
 
@@ -83,10 +71,15 @@ LightCutTree build_light_cut_tree(std::vector<Light> world_lights) {
   LightCutTree tree;
   tree.lights = std::move(world_lights);
   if (tree.lights.empty()) return tree;
-  std::vector<std::uint32_t> order(tree.lights.size());
-  std::iota(order.begin(), order.end(), 0u);
+  std::vector<SplitItem> items;
+  items.reserve(tree.lights.size());
+  for (std::size_t i = 0; i < tree.lights.size(); ++i) {
+    const Light& light = tree.lights[i];
+    items.push_back(split_item({light.position, light.position}, light_aggregate(light),
+                               static_cast<std::uint32_t>(i)));
+  }
   tree.nodes.reserve(2 * tree.lights.size() - 1);
-  Builder{tree.lights, tree.nodes, order}.build(0, order.size());
+  Builder{tree.lights, items, tree.nodes}.build(0, items.size(), 0);
   return tree;
 }
 

@@ -8,8 +8,10 @@
 //
 // The tree is built top down: a set of lights mixing point lights and spots is first split by
 // kind (the paper keeps one tree per kind, as a spot cone says nothing in a cluster with a point
-// light), then at the median of the longest axis of its positions' box. A flat array: a node's
-// children are two nodes with larger indices; a leaf is one light.
+// light), then where position and orientation together price the two parts cheapest
+// (light_split.h), so that spots aimed different ways part early and a cluster's cone bounds
+// something. A flat array: a node's children are two nodes with larger indices; a leaf is one
+// light.
 #pragma once
 
 #include <cstdint>

@@ -24,8 +24,7 @@ class LightDescriptionBuilder {
       std::optional<lev::LightDescriptionNode> node = convert(scene.masters[m].node);
       light_master_[m] = static_cast<std::uint32_t>(tree_.masters.size());
       tree_.masters.push_back(node ? hierarchy(std::move(*node)) : lev::union_node({}));
-      master_light_positions_.push_back(
-          lev::light_positions(tree_.masters.back(), master_light_positions_));
+      master_lights_.push_back(lev::subtree_lights(tree_.masters.back(), master_lights_));
       tree_.master_names.push_back(scene.masters[m].name);
     }
     std::optional<lev::LightDescriptionNode> lights = convert(root);
@@ -111,8 +110,8 @@ class LightDescriptionBuilder {
 
   // A master's or the root's light part as the walk gets it: more than kMaxUnstructuredLights
   // atoms (bare lights, instances of a lamp placed thousands of times, or both, whatever unions
-  // and transforms they came in) get the automatic hierarchy over the boxes of their light
-  // positions, instances kept as instances; fewer stay a union.
+  // and transforms they came in) get the automatic hierarchy over their lights (positions,
+  // intensities and spot cones), instances kept as instances; fewer stay a union.
   lev::LightDescriptionNode hierarchy(lev::LightDescriptionNode node) const {
     if (lev::node_role(node.kind) != lev::NodeRole::group ||
         node.children.size() <= kMaxUnstructuredLights)
@@ -120,14 +119,14 @@ class LightDescriptionBuilder {
     std::vector<lev::BvhItem> items;
     items.reserve(node.children.size());
     for (lev::LightDescriptionNode& atom : node.children) {
-      const lev::Bounds box = lev::light_positions(atom, master_light_positions_);
-      items.push_back({std::move(atom), box});
+      const lev::SubtreeLights lights = lev::subtree_lights(atom, master_lights_);
+      items.push_back({std::move(atom), lights});
     }
     return lev::build_bvh(std::move(items));
   }
 
   std::vector<std::uint32_t> light_master_;
-  std::vector<lev::Bounds> master_light_positions_;  // parallel to tree_.masters
+  std::vector<lev::SubtreeLights> master_lights_;  // parallel to tree_.masters
   lev::LightDescription tree_;
 };
 

@@ -172,6 +172,53 @@ TEST(LightCutTree, RepresentativesAreFixedAndNeverADarkLightForALitCluster) {
   EXPECT_GT(representatives_seen, 40);
 }
 
+// Random sets, degenerate ones among them (every light at one place, every light the same): each
+// light is one leaf, and a second build gives the same tree, node for node.
+TEST(LightCutTree, HoldsEveryLightOnceAndIsTheSameTreeEveryTime) {
+  Random r(12);
+  for (int set = 0; set < 60; ++set) {
+    std::vector<lev::Light> lights = random_lights(r, r.integer(1, 400));
+    for (lev::Light& l : lights) {
+      if (set % 3 == 0) l.position = lights[0].position;
+      if (set % 3 == 1) l = lights[0];
+    }
+    const lev::LightCutTree a = lev::build_light_cut_tree(lights);
+    const lev::LightCutTree b = lev::build_light_cut_tree(lights);
+    ASSERT_EQ(a.nodes.size(), 2 * lights.size() - 1) << "set " << set;
+    std::vector<int> covered(lights.size(), 0);
+    cover(a, 0, covered);
+    for (std::size_t i = 0; i < covered.size(); ++i) ASSERT_EQ(covered[i], 1) << "light " << i;
+    ASSERT_EQ(b.nodes.size(), a.nodes.size());
+    for (std::size_t n = 0; n < a.nodes.size(); ++n) {
+      EXPECT_EQ(a.nodes[n].children[0], b.nodes[n].children[0]) << "node " << n;
+      EXPECT_EQ(a.nodes[n].children[1], b.nodes[n].children[1]) << "node " << n;
+      EXPECT_EQ(a.nodes[n].representative, b.nodes[n].representative) << "node " << n;
+      EXPECT_EQ(a.nodes[n].aggregate.positions.lo, b.nodes[n].aggregate.positions.lo);
+      EXPECT_EQ(a.nodes[n].aggregate.positions.hi, b.nodes[n].aggregate.positions.hi);
+    }
+  }
+}
+
+// At every place of a grid a spot aimed up and one aimed down: the root parts them by their aim
+// (a split by position alone would leave both ways on each side), so each side's cone of axes is
+// a single axis and bounds something.
+TEST(LightCutTree, PartsSpotsAimedOppositeWaysAtTheRoot) {
+  const std::vector<lev::Light> lights = lev_test::opposite_spot_grid();
+  const lev::LightCutTree tree = lev::build_light_cut_tree(lights);
+  for (const std::uint32_t side : tree.nodes[0].children) {
+    std::vector<int> covered(lights.size(), 0);
+    cover(tree, side, covered);
+    int count = 0;
+    for (std::size_t i = 0; i < covered.size(); ++i) {
+      if (covered[i] == 0) continue;
+      ++count;
+      EXPECT_EQ(lights[i].direction, tree.lights[tree.nodes[side].representative].direction);
+    }
+    EXPECT_EQ(count, 64);
+    EXPECT_GT(tree.nodes[side].aggregate.cos_axis_spread, 0.999f);
+  }
+}
+
 // Each light represents the root with probability proportional to its intensity: over many
 // trees of two lights (other positions, so other draws per tree shape), the brighter one, three
 // times as bright, represents the root about three quarters of the time.

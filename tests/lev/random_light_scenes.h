@@ -1,6 +1,7 @@
 // Random light scenes for property tests (fixed seeds): lights with intensities over six decades,
-// spotlights at the extremes of their parameters, and instanced trees of random similarities; and
-// the check that two light selections are the same lights, in the same order, bit for bit.
+// spotlights at the extremes of their parameters, and instanced trees of random similarities; a
+// grid of spots aimed opposite ways, for the light trees' splits; and the check that two light
+// selections are the same lights, in the same order, bit for bit.
 #pragma once
 
 #include <cmath>
@@ -75,6 +76,19 @@ inline lev::LightDescription random_instanced_tree(Random& r) {
   }
   tree.root = lev::union_node(std::move(roots));
   return tree;
+}
+
+// At each of 64 places of a grid (z = 10) a spot aimed up and then one aimed down, the down one
+// moved by `offset`: a split by position alone (or by the middle of the list) puts both ways into
+// each part.
+inline std::vector<lev::Light> opposite_spot_grid(const glm::vec3& offset = glm::vec3(0.0f)) {
+  std::vector<lev::Light> lights;
+  for (int k = 0; k < 64; ++k) {
+    const glm::vec3 at(static_cast<float>(k % 8), static_cast<float>(k / 8), 10.0f);
+    lights.push_back(lev::make_spot_light(at, {0, 0, 1}, glm::vec3(1.0f), 0.4f, 2.0f));
+    lights.push_back(lev::make_spot_light(at + offset, {0, 0, -1}, glm::vec3(1.0f), 0.4f, 2.0f));
+  }
+  return lights;
 }
 
 // Same count, order, positions, intensities and directions; `context` names the case on failure.
