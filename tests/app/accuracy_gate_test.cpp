@@ -15,27 +15,20 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
+
+using levrt_test::line_count;
+using levrt_test::read_file;
 namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::run_levrt;
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-long line_count(const std::string& text) {
-  return std::count(text.begin(), text.end(), '\n');
-}
-
 // A small lev render with visible culling error (a coarse tolerance).
-std::vector<std::string> render_args(std::vector<std::string> more) {
+std::vector<std::string> gate_render_args(std::vector<std::string> more) {
   std::vector<std::string> args = {"render", "--width",     "24",  "--height",
                                    "18",     "--tolerance", "0.3", "--quiet"};
   args.insert(args.end(), more.begin(), more.end());
@@ -85,9 +78,9 @@ TEST(AccuracyGate, FailsOnlyAboveALimit) {
 TEST(AccuracyGateCli, ExitsThreeWithOneLineAboveAndZeroAtOrBelow) {
   const levrt_test::TempDir dir("levrt_gate_");
   const std::string stats = (dir.path() / "s.json").string();
-  const CommandRun measured = run_levrt(render_args({"--reference", "rt", "--stats", stats}));
+  const CommandRun measured = run_levrt(gate_render_args({"--reference", "rt", "--stats", stats}));
   ASSERT_EQ(measured.exit_code, 0) << measured.output;
-  const nlohmann::json json = nlohmann::json::parse(read_bytes(stats));
+  const nlohmann::json json = nlohmann::json::parse(read_file(stats));
   const double avg = json["pixel_error_avg_pct"].get<double>();
   const double max = json["pixel_error_max_pct"].get<double>();
   ASSERT_GT(avg, 0.0) << "the render must have an error for the gate to see";
@@ -96,7 +89,7 @@ TEST(AccuracyGateCli, ExitsThreeWithOneLineAboveAndZeroAtOrBelow) {
     std::ostringstream text;
     text.precision(17);
     text << "avg=" << a << ",max=" << m;
-    return run_levrt(render_args({"--reference", "rt", "--fail-above", text.str()}));
+    return run_levrt(gate_render_args({"--reference", "rt", "--fail-above", text.str()}));
   };
   const CommandRun at = gate(avg, max);
   EXPECT_EQ(at.exit_code, 0) << at.output;
@@ -116,8 +109,9 @@ TEST(AccuracyGateCli, AFailedGateStillWritesEveryOutput) {
   const levrt_test::TempDir dir("levrt_gate_");
   const fs::path image = dir.path() / "img.png";
   const fs::path error = dir.path() / "error.png";
-  const CommandRun r = run_levrt(render_args({"--reference", "rt", "--fail-above", "avg=0", "--out",
-                                              image.string(), "--heatmap-error", error.string()}));
+  const CommandRun r =
+      run_levrt(gate_render_args({"--reference", "rt", "--fail-above", "avg=0", "--out",
+                                  image.string(), "--heatmap-error", error.string()}));
   EXPECT_EQ(r.exit_code, app::kAccuracyGateExitCode) << r.output;
   EXPECT_TRUE(fs::is_regular_file(image));
   EXPECT_TRUE(fs::is_regular_file(error));
@@ -136,7 +130,7 @@ TEST(AccuracyGateCli, BadValuesAndAMissingReferenceExitTwoWithOneLine) {
       {"--reference", "rt", "--heatmap-error", (dir.path() / "x.jpg").string()},
   };
   for (const std::vector<std::string>& flags : bad) {
-    const CommandRun r = run_levrt(render_args(flags));
+    const CommandRun r = run_levrt(gate_render_args(flags));
     EXPECT_EQ(r.exit_code, 2) << flags[0] << " " << flags[1] << ": " << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
     EXPECT_NE(r.output.find(flags[0] == "--reference" ? flags[2] : flags[0]), std::string::npos)
@@ -152,13 +146,13 @@ TEST(AccuracyGateCli, ReferenceOutIsRtsImageAndTheErrorHeatmapIsZeroAgainstItsel
   const fs::path stats = dir.path() / "s.json";
   const fs::path rt_image = dir.path() / "rt.png";
   const CommandRun lev =
-      run_levrt(render_args({"--reference", "rt", "--reference-out", reference.string(),
-                             "--heatmap-error", error.string(), "--stats", stats.string()}));
+      run_levrt(gate_render_args({"--reference", "rt", "--reference-out", reference.string(),
+                                  "--heatmap-error", error.string(), "--stats", stats.string()}));
   ASSERT_EQ(lev.exit_code, 0) << lev.output;
-  const CommandRun rt = run_levrt(render_args({"--method", "rt", "--out", rt_image.string()}));
+  const CommandRun rt = run_levrt(gate_render_args({"--method", "rt", "--out", rt_image.string()}));
   ASSERT_EQ(rt.exit_code, 0) << rt.output;
-  EXPECT_EQ(read_bytes(reference), read_bytes(rt_image));
-  const nlohmann::json json = nlohmann::json::parse(read_bytes(stats));
+  EXPECT_EQ(read_file(reference), read_file(rt_image));
+  const nlohmann::json json = nlohmann::json::parse(read_file(stats));
   // The heatmap spans the per-pixel errors: its top is the maximum error.
   EXPECT_DOUBLE_EQ(json["heatmap_error_range"][1].get<double>(),
                    json["pixel_error_max_pct"].get<double>());
@@ -167,12 +161,12 @@ TEST(AccuracyGateCli, ReferenceOutIsRtsImageAndTheErrorHeatmapIsZeroAgainstItsel
   const fs::path rt_error = dir.path() / "rt_error.png";
   const fs::path rt_stats = dir.path() / "rt.json";
   const CommandRun self = run_levrt(
-      render_args({"--method", "rt", "--reference", "rt", "--heatmap-error", rt_error.string(),
-                   "--stats", rt_stats.string(), "--fail-above", "avg=0,max=0"}));
+      gate_render_args({"--method", "rt", "--reference", "rt", "--heatmap-error", rt_error.string(),
+                        "--stats", rt_stats.string(), "--fail-above", "avg=0,max=0"}));
   EXPECT_EQ(self.exit_code, 0) << self.output;
-  const nlohmann::json rt_json = nlohmann::json::parse(read_bytes(rt_stats));
+  const nlohmann::json rt_json = nlohmann::json::parse(read_file(rt_stats));
   EXPECT_EQ(rt_json["heatmap_error_range"][1].get<double>(), 0.0);
-  EXPECT_NE(read_bytes(rt_error), read_bytes(error));
+  EXPECT_NE(read_file(rt_error), read_file(error));
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::run_levrt;
 
-std::vector<std::string> render_args(std::vector<std::string> more) {
+std::vector<std::string> heatmap_render_args(std::vector<std::string> more) {
   std::vector<std::string> args = {"render", "--scene",  "maze", "--level", "1",        "--width",
                                    "24",     "--height", "18",   "--quiet", "--method", "lev"};
   args.insert(args.end(), more.begin(), more.end());
@@ -31,7 +31,7 @@ TEST(HeatmapRangeCli, EveryHeatmapOfEveryRenderIsDrawnOverTheGivenRange) {
   const levrt_test::TempDir dir("levrt_range_");
   for (const std::string tolerance : {"0.01", "0.3"}) {
     const fs::path stats = dir.path() / ("s" + tolerance + ".json");
-    const CommandRun r = run_levrt(render_args(
+    const CommandRun r = run_levrt(heatmap_render_args(
         {"--tolerance", tolerance, "--heatmap-range", "2,40", "--heatmap-lights",
          (dir.path() / ("l" + tolerance + ".png")).string(), "--stats", stats.string()}));
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -59,7 +59,7 @@ TEST(HeatmapRangeCli, ABadRangeExitsTwoWithOneLineAndWritesNothing) {
   const fs::path png = dir.path() / "l.png";
   for (const std::string bad : {"1", "5,2", "3,3", "-1,2", "a,b", "nan,4", "1,inf", "1,2,3", ""}) {
     const CommandRun r =
-        run_levrt(render_args({"--heatmap-range", bad, "--heatmap-lights", png.string()}));
+        run_levrt(heatmap_render_args({"--heatmap-range", bad, "--heatmap-lights", png.string()}));
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     EXPECT_NE(r.output.find("--heatmap-range"), std::string::npos) << bad << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << bad << ": " << r.output;

@@ -11,23 +11,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/json_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
 
+using levrt_test::line_count;
+using levrt_test::read_json;
 using levrt_test::run_levrt;
-
-nlohmann::json read_json(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return nlohmann::json::parse(text.str());
-}
-
-std::size_t line_count(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
 
 TEST(InspectCli, PrintsTheTableAndWritesTheCompleteListsAsJson) {
   const levrt_test::TempDir dir("levrt-inspect-cli-");
@@ -103,12 +95,12 @@ TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
     command.insert(command.end(), args.begin(), args.end());
     const auto run = run_levrt(command);
     EXPECT_EQ(run.exit_code, 2) << args[1] << ": " << run.output;
-    EXPECT_EQ(line_count(run.output), 1u) << run.output;
+    EXPECT_EQ(line_count(run.output), 1) << run.output;
     EXPECT_FALSE(std::filesystem::exists(json_path));
   }
   const auto missing = run_levrt({"inspect"});
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
-  EXPECT_EQ(line_count(missing.output), 1u) << missing.output;
+  EXPECT_EQ(line_count(missing.output), 1) << missing.output;
   const auto wrong_extension =
       run_levrt({"inspect", "--pixel", "1,1", "--json", (dir.path() / "pixel.txt").string()});
   EXPECT_EQ(wrong_extension.exit_code, 2) << wrong_extension.output;

@@ -16,17 +16,13 @@
 #include <gtest/gtest.h>
 
 #include "app/settings.h"
+#include "tests/support/read_file.h"
 #include "tests/support/temp_dir.h"
 
 namespace {
-namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using levrt_test::read_file;
+namespace fs = std::filesystem;
 
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -61,8 +57,8 @@ TEST(OutputFiles, AnEncoderThatFailsLeavesEveryOldFile) {
                                         {(dir / "b.txt").string(),
                                          []() -> std::string { throw std::runtime_error("no"); }}}),
                std::runtime_error);
-  EXPECT_EQ(read_bytes(dir / "a.txt"), "old a");
-  EXPECT_EQ(read_bytes(dir / "b.txt"), "old b");
+  EXPECT_EQ(read_file(dir / "a.txt"), "old a");
+  EXPECT_EQ(read_file(dir / "b.txt"), "old b");
   EXPECT_EQ(entries(dir), (std::vector<std::string>{"a.txt", "b.txt"}));
 }
 
@@ -79,7 +75,7 @@ TEST(OutputFiles, AMissingFolderForTheLastOutputWritesNone) {
               std::string::npos)
         << e.what();
   }
-  EXPECT_EQ(read_bytes(dir / "a.txt"), "old a");
+  EXPECT_EQ(read_file(dir / "a.txt"), "old a");
   EXPECT_EQ(entries(dir), std::vector<std::string>{"a.txt"});
 }
 
@@ -93,7 +89,7 @@ TEST(OutputFiles, ARenameThatFailsPutsBackTheFilesRenamedBeforeIt) {
                                         {(dir / "new.txt").string(), text("new")},
                                         {(dir / "folder").string(), text("never")}}),
                std::runtime_error);
-  EXPECT_EQ(read_bytes(dir / "a.txt"), "old a");
+  EXPECT_EQ(read_file(dir / "a.txt"), "old a");
   EXPECT_EQ(entries(dir), (std::vector<std::string>{"a.txt", "folder"}));
 }
 
@@ -103,8 +99,8 @@ TEST(OutputFiles, AllOutputsAreWrittenTogether) {
   std::ofstream(dir / "a.txt") << "old a";
   app::write_output_files(
       {{(dir / "a.txt").string(), text("new a")}, {(dir / "b.txt").string(), text("new b")}});
-  EXPECT_EQ(read_bytes(dir / "a.txt"), "new a");
-  EXPECT_EQ(read_bytes(dir / "b.txt"), "new b");
+  EXPECT_EQ(read_file(dir / "a.txt"), "new a");
+  EXPECT_EQ(read_file(dir / "b.txt"), "new b");
   EXPECT_EQ(entries(dir), (std::vector<std::string>{"a.txt", "b.txt"}));
 }
 
@@ -129,7 +125,7 @@ TEST(OutputFiles, AnOutputThatIsAnInputIsRefusedHoweverSpelled) {
   }
   EXPECT_NO_THROW(app::check_output_paths(
       {{"--stats", (dir / "other.json").string(), ".json", "JSON"}}, {(dir / "in.json").string()}));
-  EXPECT_EQ(read_bytes(dir / "in.json"), "{}");
+  EXPECT_EQ(read_file(dir / "in.json"), "{}");
 }
 
 TEST(OutputFiles, ASymlinkLoopIsRefusedByTheCheckAndTheWriter) {
@@ -166,9 +162,9 @@ TEST(OutputFiles, PublishingAStagingFolderFollowsTheRule) {
   fs::create_directories(dir / "elsewhere");
   fs::create_symlink(dir / "elsewhere" / "a.csv", dir / "out" / "a.csv");
   app::publish_staging_folder((dir / "out" / ".staging").string(), (dir / "out").string());
-  EXPECT_EQ(read_bytes(dir / "out" / "results.md"), "new results");
+  EXPECT_EQ(read_file(dir / "out" / "results.md"), "new results");
   EXPECT_TRUE(fs::is_symlink(dir / "out" / "a.csv"));
-  EXPECT_EQ(read_bytes(dir / "elsewhere" / "a.csv"), "new csv");
+  EXPECT_EQ(read_file(dir / "elsewhere" / "a.csv"), "new csv");
   EXPECT_EQ(entries(dir / "out"), (std::vector<std::string>{"a.csv", "results.md"}));
 }
 

@@ -19,9 +19,13 @@
 
 #include "app/settings.h"
 #include "tests/support/folder_test.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
 namespace {
+
+using levrt_test::line_count;
+using levrt_test::read_file;
 namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::run_levrt;
@@ -30,18 +34,11 @@ using levrt_test::shell_quote;
 
 const std::vector<std::string> kTiny = {"--width", "8", "--height", "8", "--quiet"};
 
-std::vector<std::string> render_args(std::vector<std::string> outputs) {
+std::vector<std::string> output_render_args(std::vector<std::string> outputs) {
   std::vector<std::string> args = {"render"};
   args.insert(args.end(), kTiny.begin(), kTiny.end());
   args.insert(args.end(), outputs.begin(), outputs.end());
   return args;
-}
-
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // A shell prefix limiting the address space to `kib` KiB. AddressSanitizer reserves terabytes of
@@ -57,10 +54,6 @@ std::string address_space_limit(long kib) {
 
 bool is_png(const std::string& bytes) {
   return bytes.size() > 8 && bytes.compare(1, 3, "PNG") == 0;
-}
-
-long line_count(const std::string& text) {
-  return std::count(text.begin(), text.end(), '\n');
 }
 
 class Outputs : public levrt_test::FolderTest {
@@ -87,11 +80,11 @@ std::string render_into_fifo(const fs::path& fifo, const std::string& flag) {
   std::thread reader([&] {
     run_shell("cat " + shell_quote(fifo.string()) + " > " + shell_quote(received.string()));
   });
-  const CommandRun r = run_levrt(render_args({flag, fifo.string()}));
+  const CommandRun r = run_levrt(output_render_args({flag, fifo.string()}));
   reader.join();
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::is_fifo(fifo));
-  return read_bytes(received);
+  return read_file(received);
 }
 
 TEST_F(Outputs, AFifoReadByAnotherProcessReceivesThePngAndStaysAFifo) {
@@ -107,10 +100,10 @@ TEST_F(Outputs, ASymlinkIsFollowedAndStaysASymlink) {
   fs::create_directories(dir_ / "elsewhere");
   const fs::path target = dir_ / "elsewhere" / "real.png";
   fs::create_symlink(target, path("link.png"));
-  const CommandRun r = run_levrt(render_args({"--out", path("link.png")}));
+  const CommandRun r = run_levrt(output_render_args({"--out", path("link.png")}));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::is_symlink(path("link.png")));
-  EXPECT_TRUE(is_png(read_bytes(target)));
+  EXPECT_TRUE(is_png(read_file(target)));
   EXPECT_EQ(entries(), (std::vector<std::string>{"elsewhere", "link.png"}));
 }
 
@@ -120,7 +113,7 @@ TEST_F(Outputs, DashWritesThePngToStandardOutput) {
                                  " render --width 8 --height 8 --out - 2>/dev/null > " +
                                  shell_quote(path("stdout.bin")) + ")");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const std::string bytes = read_bytes(path("stdout.bin"));
+  const std::string bytes = read_file(path("stdout.bin"));
   EXPECT_TRUE(is_png(bytes));
   // Nothing but the PNG: it ends with its IEND chunk and CRC.
   ASSERT_GT(bytes.size(), 12u);
@@ -132,12 +125,12 @@ TEST_F(Outputs, ExportToDashWritesOnlyTheSceneFileToStandardOutput) {
                                  " export --scene maze --level 1 --out - 2>/dev/null > " +
                                  shell_quote(path("maze.json")) + ")");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const CommandRun rendered = run_levrt(render_args({"--scene", path("maze.json")}));
+  const CommandRun rendered = run_levrt(output_render_args({"--scene", path("maze.json")}));
   EXPECT_EQ(rendered.exit_code, 0) << rendered.output;
 }
 
 TEST_F(Outputs, TwoOutputsOnStandardOutputAreRefused) {
-  const CommandRun r = run_levrt(render_args({"--out", "-", "--heatmap-lights", "-"}));
+  const CommandRun r = run_levrt(output_render_args({"--out", "-", "--heatmap-lights", "-"}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
 }
@@ -146,7 +139,8 @@ TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
   fs::create_directories(dir_ / "sub");
   for (const std::string& other :
        std::vector<std::string>{"./X.png", "sub/../X.png", path("X.png")}) {
-    const CommandRun r = run_here(render_args({"--out", "X.png", "--heatmap-lights", other}));
+    const CommandRun r =
+        run_here(output_render_args({"--out", "X.png", "--heatmap-lights", other}));
     EXPECT_EQ(r.exit_code, 2) << other << ": " << r.output;
     EXPECT_NE(r.output.find("another output also writes"), std::string::npos) << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
@@ -158,15 +152,15 @@ TEST_F(Outputs, AHardLinkToAnotherOutputIsTheSameFile) {
   { std::ofstream(path("a.png")) << "old"; }
   fs::create_hard_link(path("a.png"), path("b.png"));
   const CommandRun r =
-      run_levrt(render_args({"--out", path("a.png"), "--heatmap-nodes", path("b.png")}));
+      run_levrt(output_render_args({"--out", path("a.png"), "--heatmap-nodes", path("b.png")}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_EQ(read_bytes(path("a.png")), "old");
+  EXPECT_EQ(read_file(path("a.png")), "old");
 }
 
 TEST_F(Outputs, ANameTooLongIsRefusedBeforeRenderingWithNothingWritten) {
   const std::string long_name = std::string(296, 'n') + ".png";
-  const CommandRun r =
-      run_levrt(render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
+  const CommandRun r = run_levrt(
+      output_render_args({"--out", path("fine.png"), "--heatmap-lights", path(long_name)}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("file name of 300 bytes"), std::string::npos) << r.output;
   EXPECT_TRUE(entries().empty());
@@ -178,7 +172,7 @@ TEST_F(Outputs, AWrongExtensionIsRefusedWithNothingWritten) {
                                                         {"--heatmap-lights", "x.json"},
                                                         {"--stats", "x.png"},
                                                         {"--out", "noext"}}) {
-    const CommandRun r = run_levrt(render_args({flag, path(name)}));
+    const CommandRun r = run_levrt(output_render_args({flag, path(name)}));
     EXPECT_EQ(r.exit_code, 2) << flag << " " << name << ": " << r.output;
     EXPECT_NE(r.output.find("must end in"), std::string::npos) << r.output;
     EXPECT_TRUE(entries().empty()) << name;
@@ -189,7 +183,7 @@ TEST_F(Outputs, DevFullStaysADeviceAndTheErrorNamesTheReason) {
   if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full";
   struct stat before {};
   ASSERT_EQ(::stat("/dev/full", &before), 0);
-  const CommandRun r = run_levrt(render_args({"--out", "/dev/full"}));
+  const CommandRun r = run_levrt(output_render_args({"--out", "/dev/full"}));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
@@ -227,18 +221,19 @@ TEST_F(Outputs, WroteLineNamesEveryFileAndQuietSilencesIt) {
   EXPECT_NE(r.output.find("wrote " + path("a.png") + ", " + path("s.json") + "\n"),
             std::string::npos)
       << r.output;
-  const CommandRun quiet = run_levrt(render_args({"--out", path("b.png")}));
+  const CommandRun quiet = run_levrt(output_render_args({"--out", path("b.png")}));
   EXPECT_EQ(quiet.exit_code, 0);
   EXPECT_EQ(quiet.output, "");
 }
 
 TEST_F(Outputs, SubsampledStatsEstimateTheFullFrameTime) {
-  const CommandRun r = run_levrt(render_args({"--subsample", "4", "--stats", path("s.json")}));
+  const CommandRun r =
+      run_levrt(output_render_args({"--subsample", "4", "--stats", path("s.json")}));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(read_bytes(path("s.json")).find("\"time_render_full_frame_estimate_s\""),
+  EXPECT_NE(read_file(path("s.json")).find("\"time_render_full_frame_estimate_s\""),
             std::string::npos);
-  const CommandRun full = run_levrt(render_args({"--stats", path("full.json")}));
-  EXPECT_EQ(read_bytes(path("full.json")).find("time_render_full_frame_estimate_s"),
+  const CommandRun full = run_levrt(output_render_args({"--stats", path("full.json")}));
+  EXPECT_EQ(read_file(path("full.json")).find("time_render_full_frame_estimate_s"),
             std::string::npos);
 }
 
@@ -274,7 +269,7 @@ TEST_F(Outputs, AMasterNameWithNewlinesAndEscapesIsReportedOnOneLine) {
 
 TEST_F(Outputs, LightCountsAreReportedAsTyped) {
   for (const std::string typed : {" -1", "99999999999999999999", "+64", "64 "}) {
-    const CommandRun r = run_levrt(render_args({"--lights", typed}));
+    const CommandRun r = run_levrt(output_render_args({"--lights", typed}));
     EXPECT_EQ(r.exit_code, 2) << typed;
     EXPECT_NE(r.output.find("got '" + typed + "'"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("18446744073709551615"), std::string::npos) << r.output;
@@ -341,7 +336,7 @@ std::map<std::string, std::string> snapshot_of(const fs::path& dir) {
   for (const auto& e : fs::recursive_directory_iterator(dir)) {
     const std::string name = fs::relative(e.path(), dir).string();
     files[name] = e.is_symlink()        ? "-> " + fs::read_symlink(e.path()).string()
-                  : e.is_regular_file() ? read_bytes(e.path())
+                  : e.is_regular_file() ? read_file(e.path())
                                         : "(other)";
   }
   return files;
@@ -353,7 +348,7 @@ TEST_F(Outputs, AnOutputThatIsTheSceneFileIsRefusedHoweverSpelled) {
   fs::create_directories(dir_ / "sub");
   const auto before = snapshot_of(dir_);
   for (const char* spelled : {"in.json", "./in.json", "sub/../in.json", "link.json"}) {
-    const CommandRun r = run_here(render_args({"--scene", "in.json", "--stats", spelled}));
+    const CommandRun r = run_here(output_render_args({"--scene", "in.json", "--stats", spelled}));
     EXPECT_EQ(r.exit_code, 2) << spelled << ": " << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
     EXPECT_NE(r.output.find("--stats: names a file this command reads"), std::string::npos)
@@ -379,7 +374,7 @@ TEST_F(Outputs, AnOutputThatIsAGltfBufferOrTextureIsRefused) {
            {"--out", "model/base colour.png"},
            {"--heatmap-lights", "model/geometry.png"},
            {"--heatmap-noise", "model/../model/base colour.png"}}) {
-    const CommandRun r = run_here(render_args({"--scene", "model/scene.gltf", flag, name}));
+    const CommandRun r = run_here(output_render_args({"--scene", "model/scene.gltf", flag, name}));
     EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
     EXPECT_NE(r.output.find(flag + ": names a file this command reads"), std::string::npos)
@@ -402,7 +397,7 @@ TEST_F(Outputs, AnOutputThatIsAGlbTextureIsRefused) {
   std::ofstream(path("scene.glb"), std::ios::binary) << glb;
   std::ofstream(path("t.png")) << "texture bytes";
   const auto before = snapshot_of(dir_);
-  const CommandRun r = run_here(render_args({"--scene", "scene.glb", "--out", "t.png"}));
+  const CommandRun r = run_here(output_render_args({"--scene", "scene.glb", "--out", "t.png"}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_EQ(snapshot_of(dir_), before);
@@ -410,7 +405,7 @@ TEST_F(Outputs, AnOutputThatIsAGlbTextureIsRefused) {
 
 TEST_F(Outputs, ASymlinkLoopIsRefusedWithOneLineAndStaysALink) {
   fs::create_symlink("loop.png", path("loop.png"));
-  const CommandRun r = run_here(render_args({"--out", "loop.png"}));
+  const CommandRun r = run_here(output_render_args({"--out", "loop.png"}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("--out: is a symlink loop"), std::string::npos) << r.output;

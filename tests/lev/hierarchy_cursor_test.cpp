@@ -37,7 +37,7 @@ lev::LightDescription every_kind_tree() {
   return tree;
 }
 
-bool same_light(const lev::Light& a, const lev::Light& b) {
+bool same_light_with_range(const lev::Light& a, const lev::Light& b) {
   return a.position == b.position && a.intensity == b.intensity && a.direction == b.direction &&
          a.kind == b.kind && a.range == b.range && a.cos_cone_half_angle == b.cos_cone_half_angle;
 }
@@ -78,7 +78,7 @@ TEST(HierarchyCursor, FindsEveryLightOfTheDescription) {
   ASSERT_EQ(found.size(), 9u);  // 2 instances of master 1, each 2 of master 0's 2 lights, + 1
   ASSERT_EQ(found.size(), expected.size());
   for (std::size_t i = 0; i < found.size(); ++i)
-    EXPECT_TRUE(same_light(found[i], expected[i])) << "light " << i;
+    EXPECT_TRUE(same_light_with_range(found[i], expected[i])) << "light " << i;
 }
 
 TEST(HierarchyCursor, ReferencesLeadToTheirMasters) {
@@ -175,9 +175,10 @@ TEST(HierarchyCursor, LightsAreReadAtTheLeaves) {
   }
   // Stored once each in their own frames: master 0's two and the root's one.
   ASSERT_EQ(leaves.size(), 3u);
-  EXPECT_TRUE(same_light(leaves[0], tree.masters[0].children[0].light));
-  EXPECT_TRUE(same_light(leaves[1], tree.masters[0].children[1].children[0].light));
-  EXPECT_TRUE(same_light(leaves[2], tree.root.children[1].children[0].children[0].light));
+  EXPECT_TRUE(same_light_with_range(leaves[0], tree.masters[0].children[0].light));
+  EXPECT_TRUE(same_light_with_range(leaves[1], tree.masters[0].children[1].children[0].light));
+  EXPECT_TRUE(
+      same_light_with_range(leaves[2], tree.root.children[1].children[0].children[0].light));
 }
 
 }  // namespace

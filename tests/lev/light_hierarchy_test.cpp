@@ -8,7 +8,7 @@
 
 namespace {
 
-bool same_light(const lev::Light& a, const lev::Light& b) {
+bool same_light_with_dropoff(const lev::Light& a, const lev::Light& b) {
   return a.position == b.position && a.intensity == b.intensity && a.direction == b.direction &&
          a.kind == b.kind && a.cos_cone_half_angle == b.cos_cone_half_angle &&
          a.dropoff == b.dropoff;
@@ -40,7 +40,7 @@ lev::LightDescription instanced_tree(int levels) {
   return tree;
 }
 
-std::vector<glm::vec3> probe_points() {
+std::vector<glm::vec3> hierarchy_probe_points() {
   std::vector<glm::vec3> points;
   for (int i = 0; i < 40; ++i) {
     points.push_back({1.7f * i - 3.0f, 0.9f * i + 1.0f, 0.25f * (i % 7)});
@@ -57,14 +57,15 @@ TEST(LightHierarchy, InstancedWalkMatchesFlattenedBruteForce) {
   lev::WalkScratch scratch;
   for (float tau : {0.0f, 0.001f, 0.01f, 0.1f, 1.0f}) {
     const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
-    for (const glm::vec3& p : probe_points()) {
+    for (const glm::vec3& p : hierarchy_probe_points()) {
       std::vector<lev::Light> found;
       lev::WalkCounters counters;
       lev::find_important_lights(h, volumes, tau, p, scratch, found, counters);
       const std::vector<lev::Light> expected = lev::important_lights_brute_force(flat, p, tau);
       ASSERT_EQ(found.size(), expected.size()) << "tau " << tau;
       for (std::size_t i = 0; i < found.size(); ++i) {
-        ASSERT_TRUE(same_light(found[i], expected[i])) << "tau " << tau << " light " << i;
+        ASSERT_TRUE(same_light_with_dropoff(found[i], expected[i]))
+            << "tau " << tau << " light " << i;
       }
       if (tau > 0.0f) {
         EXPECT_GT(counters.nodes_visited, 0u);
@@ -169,7 +170,8 @@ TEST(LightBvh, FlatListGetsAHierarchyThatCullsExactly) {
       lev::find_important_lights(h, volumes, tau, p, scratch, found, counters);
       const auto expected = lev::important_lights_brute_force(flat, p, tau);
       ASSERT_EQ(found.size(), expected.size());
-      for (std::size_t i = 0; i < found.size(); ++i) ASSERT_TRUE(same_light(found[i], expected[i]));
+      for (std::size_t i = 0; i < found.size(); ++i)
+        ASSERT_TRUE(same_light_with_dropoff(found[i], expected[i]));
       visited += counters.nodes_visited;
     }
     // The hierarchy culls: far fewer volumes tested than lights.

@@ -65,13 +65,11 @@ lev::LightDescription bare_light_description(Random& r) {
   return tree;
 }
 
-lev::LightDescription random_tree(Random& r, int scene) {
+lev::LightDescription random_sampling_tree(Random& r, int scene) {
   return scene % 2 == 0 ? lev_test::random_instanced_tree(r) : bare_light_description(r);
 }
 
-bool same_light(const lev::Light& a, const lev::Light& b) {
-  return a.position == b.position && a.intensity == b.intensity && a.direction == b.direction;
-}
+using lev_test::same_light_placement;
 
 // What the estimator weighs a light by, on the light's own side of a surface with this normal.
 double contribution(const lev::Light& light, const glm::vec3& x, const glm::vec3& normal) {
@@ -88,7 +86,7 @@ TEST(LightSampling, ProbabilitiesSumToOneAndReachEveryContributingLight) {
   Random r(20261123);
   int checked_points = 0, contributing = 0;
   for (int scene = 0; scene < 200; ++scene) {
-    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const lev::LightHierarchy h = lev::build_hierarchy(random_sampling_tree(r, scene));
     const std::vector<lev::Light> flat = lev::flatten_lights(h);
     for (const glm::vec3& x : hard_points(r, flat)) {
       for (const glm::vec3 normal : {glm::vec3(0.0f), r.direction()}) {
@@ -99,7 +97,7 @@ TEST(LightSampling, ProbabilitiesSumToOneAndReachEveryContributingLight) {
         double total = 0.0, exact = 0.0, expected = 0.0;
         for (std::size_t i = 0; i < flat.size(); ++i) {
           // The descent composes frames as the walk does: the same world lights, bit for bit.
-          ASSERT_TRUE(same_light(enumerated[i].light, flat[i]))
+          ASSERT_TRUE(same_light_placement(enumerated[i].light, flat[i]))
               << "scene " << scene << ", light " << i;
           const double p = enumerated[i].probability;
           const double f = contribution(flat[i], x, normal);
@@ -125,7 +123,7 @@ TEST(LightSampling, ProbabilitiesSumToOneAndReachEveryContributingLight) {
 TEST(LightSampling, DrawnLightsComeWithTheirEnumeratedProbabilityAndFrequency) {
   Random r(7);
   for (int scene = 0; scene < 10; ++scene) {
-    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const lev::LightHierarchy h = lev::build_hierarchy(random_sampling_tree(r, scene));
     const std::vector<lev::Light> flat = lev::flatten_lights(h);
     const glm::vec3 x(r.uniform(-10, 10), r.uniform(-10, 10), r.uniform(-5, 5));
     const lev::SamplingPoint at{x, r.direction()};
@@ -140,8 +138,8 @@ TEST(LightSampling, DrawnLightsComeWithTheirEnumeratedProbabilityAndFrequency) {
       std::uint64_t visited = 0;
       lev::sample_light(h, lev::whole_hierarchy(h, x), at, random, weights, s, visited);
       std::size_t i = 0;
-      while (i < flat.size() &&
-             !(same_light(flat[i], s.light) && enumerated[i].probability == s.probability))
+      while (i < flat.size() && !(same_light_placement(flat[i], s.light) &&
+                                  enumerated[i].probability == s.probability))
         ++i;
       ASSERT_LT(i, flat.size()) << "a drawn light or its probability is not the enumeration's";
       ++drawn[i];
@@ -158,7 +156,7 @@ TEST(LightSampling, DrawnLightsComeWithTheirEnumeratedProbabilityAndFrequency) {
 TEST(LightSampling, WalkLightsAndCulledPartsAreEveryContributingLightOnce) {
   Random r(99);
   for (int scene = 0; scene < 30; ++scene) {
-    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const lev::LightHierarchy h = lev::build_hierarchy(random_sampling_tree(r, scene));
     const std::vector<lev::Light> flat = lev::flatten_lights(h);
     const float tolerance = std::pow(10.0f, r.uniform(-4.0f, 1.0f));
     const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
@@ -178,10 +176,10 @@ TEST(LightSampling, WalkLightsAndCulledPartsAreEveryContributingLightOnce) {
       }
       for (std::size_t i = 0; i < flat.size(); ++i) {
         int found = 0;
-        for (const lev::Light& l : parts) found += same_light(l, flat[i]) ? 1 : 0;
+        for (const lev::Light& l : parts) found += same_light_placement(l, flat[i]) ? 1 : 0;
         // Lights of one scene may coincide (instances of one master placed alike): count them too.
         int twins = 0;
-        for (const lev::Light& l : flat) twins += same_light(l, flat[i]) ? 1 : 0;
+        for (const lev::Light& l : flat) twins += same_light_placement(l, flat[i]) ? 1 : 0;
         if (lev::irradiance(flat[i], x) != glm::vec3(0.0f)) {
           EXPECT_EQ(found, twins) << "scene " << scene << ", light " << i;
         } else {
@@ -270,7 +268,7 @@ TEST(LightSampling, OpeningWidePartsKeepsEveryLightOnceWithinTheBudget) {
   Random r(4242);
   int opened = 0;
   for (int scene = 0; scene < 60; ++scene) {
-    const lev::LightHierarchy h = lev::build_hierarchy(random_tree(r, scene));
+    const lev::LightHierarchy h = lev::build_hierarchy(random_sampling_tree(r, scene));
     const std::vector<lev::Light> flat = lev::flatten_lights(h);
     const float tolerance = std::pow(10.0f, r.uniform(-4.0f, 1.0f));
     const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
@@ -301,8 +299,10 @@ TEST(LightSampling, OpeningWidePartsKeepsEveryLightOnceWithinTheBudget) {
       double total = 0.0;
       for (const lev::SampledLight& l : after) {
         int in_before = 0, in_after = 0;
-        for (const lev::SampledLight& b : before) in_before += same_light(b.light, l.light) ? 1 : 0;
-        for (const lev::SampledLight& a : after) in_after += same_light(a.light, l.light) ? 1 : 0;
+        for (const lev::SampledLight& b : before)
+          in_before += same_light_placement(b.light, l.light) ? 1 : 0;
+        for (const lev::SampledLight& a : after)
+          in_after += same_light_placement(a.light, l.light) ? 1 : 0;
         EXPECT_EQ(in_after, in_before) << "scene " << scene;
         if (contribution(l.light, x, normal) > 0.0) {
           EXPECT_GT(l.probability, 0.0) << "scene " << scene << ": lights the point, no chance";

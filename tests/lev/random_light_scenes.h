@@ -103,4 +103,10 @@ inline void expect_same_lights(const std::vector<lev::Light>& found,
   }
 }
 
+// Two lights at the same place with the same intensity and direction (what a selector's lights are
+// matched by against the brute force's).
+inline bool same_light_placement(const lev::Light& a, const lev::Light& b) {
+  return a.position == b.position && a.intensity == b.intensity && a.direction == b.direction;
+}
+
 }  // namespace lev_test

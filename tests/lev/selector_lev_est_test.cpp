@@ -25,7 +25,7 @@ using lev_test::Random;
 
 // A random instanced tree, and for odd seeds one more master whose lights sit right below their
 // transforms, without an extent volume of their own (a moved light is then culled by its box).
-lev::LightDescription random_tree(Random& r, std::uint64_t seed) {
+lev::LightDescription random_lev_est_tree(Random& r, std::uint64_t seed) {
   lev::LightDescription tree = lev_test::random_instanced_tree(r);
   if (seed % 2 == 0) return tree;
   std::vector<lev::LightDescriptionNode> lights;
@@ -44,7 +44,7 @@ TEST(LevEst, ClustersAccountForEveryCulledLightAndTheBoundHolds) {
   std::uint64_t clustered_points = 0;
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     Random r(seed);
-    const lev::LightDescription tree = random_tree(r, seed);
+    const lev::LightDescription tree = random_lev_est_tree(r, seed);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
     const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
     lev::WalkScratch scratch;

@@ -31,13 +31,14 @@
 
 namespace {
 
-constexpr int kWidth = 32;
-constexpr int kHeight = 24;
+constexpr int kBoundWidth = 32;
+constexpr int kBoundHeight = 24;
 constexpr double kRoundingPct = renderer::kErrorBoundRoundingPct;
 
-renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, bool compute_error_bound = true) {
-  renderer::RenderSettings rs = test_render_settings(method, kWidth, kHeight);
+renderer::Framebuffer render_with_bound(const renderer::Scene& scene,
+                                        const renderer::RayScene& rays, lev::Method method,
+                                        float tolerance, bool compute_error_bound = true) {
+  renderer::RenderSettings rs = test_render_settings(method, kBoundWidth, kBoundHeight);
   rs.tolerance = tolerance;
   rs.compute_error_bound = compute_error_bound;
   // Two passes: the second is jittered, so the bound is a mean over samples as the image is.
@@ -49,14 +50,14 @@ renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RaySc
 double expect_bound_holds(const renderer::Scene& scene, const std::vector<float>& tolerances,
                           const std::string& label) {
   const renderer::RayScene rays(scene);
-  const renderer::Framebuffer rt = render(scene, rays, lev::reference_method(), 0.0f);
+  const renderer::Framebuffer rt = render_with_bound(scene, rays, lev::reference_method(), 0.0f);
   for (const glm::vec3& b : rt.error_bound_sum) EXPECT_EQ(b, glm::vec3(0.0f)) << label;
   const std::vector<std::uint8_t> rt_rgb = renderer::framebuffer_rgb8(rt);
   double largest_error = 0.0;
   for (const lev::MethodInfo& method : lev::method_table()) {
     if (method.is_reference) continue;
     for (float tolerance : tolerances) {
-      const renderer::Framebuffer fb = render(scene, rays, method.id, tolerance);
+      const renderer::Framebuffer fb = render_with_bound(scene, rays, method.id, tolerance);
       const std::vector<double> error =
           renderer::pixel_error_pct(renderer::framebuffer_rgb8(fb), rt_rgb);
       int violations = 0;
@@ -169,8 +170,9 @@ TEST(ErrorBoundRender, NothingIsComputedUnlessAsked) {
   const renderer::RayScene rays(scene);
   // At 0.1, where lev leaves light out (at 0.01 it culls only lights that cannot reach the
   // stage, and its tightened bound is 0 there, as is its error).
-  const renderer::Framebuffer without = render(scene, rays, lev::Method::lev, 0.1f, false);
-  const renderer::Framebuffer with = render(scene, rays, lev::Method::lev, 0.1f, true);
+  const renderer::Framebuffer without =
+      render_with_bound(scene, rays, lev::Method::lev, 0.1f, false);
+  const renderer::Framebuffer with = render_with_bound(scene, rays, lev::Method::lev, 0.1f, true);
   EXPECT_EQ(without.radiance_sum, with.radiance_sum);  // the bound never changes the image
   for (const glm::vec3& b : without.error_bound_sum) EXPECT_EQ(b, glm::vec3(0.0f));
   EXPECT_GT(renderer::error_bound_stats(renderer::sum_framebuffer(with)).max_pct, 0.0);
@@ -183,8 +185,9 @@ glm::vec3 traced_bound(const renderer::Scene& scene, const renderer::RayScene& r
   renderer::TraceContext context{scene, rays, selector, scratch};
   context.compute_error_bound = true;
   renderer::PathCounters counters;
-  const renderer::Ray ray = renderer::primary_ray(
-      scene.camera, kWidth, kHeight, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+  const renderer::Ray ray =
+      renderer::primary_ray(scene.camera, kBoundWidth, kBoundHeight, static_cast<float>(x) + 0.5f,
+                            static_cast<float>(y) + 0.5f);
   renderer::trace_radiance(context, ray, 0, counters);
   return counters.error_bound;
 }
@@ -200,8 +203,8 @@ TEST(ErrorBoundRender, LevBoundedStaysWithinToleranceTimesTheMaterialResponse) {
       const auto bounded = lev::make_selector(scene.lights, {lev::Method::lev_bounded, tolerance});
       const auto plain = lev::make_selector(scene.lights, {lev::Method::lev, tolerance});
       float bounded_largest = 0.0f, plain_excess = 0.0f;
-      for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
+      for (int y = 0; y < kBoundHeight; ++y) {
+        for (int x = 0; x < kBoundWidth; ++x) {
           const glm::vec3 limit = tolerance * traced_bound(scene, rays, unit, x, y);
           const glm::vec3 b = traced_bound(scene, rays, *bounded, x, y);
           const glm::vec3 p = traced_bound(scene, rays, *plain, x, y);
@@ -266,8 +269,8 @@ TEST(ErrorBoundRender, TheRadianceBoundIsFarBelowTheIrradianceRoute) {
       const auto selector = lev::make_selector(scene.lights, params);
       const IrradianceRouteOnly irradiance_route(*selector);
       double sum_with = 0.0, sum_without = 0.0;
-      for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
+      for (int y = 0; y < kBoundHeight; ++y) {
+        for (int x = 0; x < kBoundWidth; ++x) {
           const glm::vec3 with = traced_bound(scene, rays, *selector, x, y);
           const glm::vec3 without = traced_bound(scene, rays, irradiance_route, x, y);
           for (int ch = 0; ch < 3; ++ch) {

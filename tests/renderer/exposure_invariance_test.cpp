@@ -34,20 +34,20 @@ scenes::SceneDescription scaled(scenes::SceneDescription scene, float factor) {
   return scene;
 }
 
-struct Rendered {
+struct ExposedRender {
   renderer::RenderResult result;
   double lights_tested_avg = 0.0;
 };
 
-Rendered render(const scenes::SceneDescription& description, lev::Method method,
-                double exposure_ev) {
+ExposedRender render_at_exposure(const scenes::SceneDescription& description, lev::Method method,
+                                 double exposure_ev) {
   const renderer::Scene scene = scenes::instantiate_scene(description);
   const renderer::RayScene rays(scene);
   renderer::RenderSettings settings = test_render_settings(method, 48, 36);
   settings.tolerance = 0.01f;
   settings.exposure_ev = exposure_ev;
   settings.compute_error_bound = true;
-  Rendered r;
+  ExposedRender r;
   EXPECT_TRUE(renderer::render_passes(scene, rays, settings, 1, r.result));
   r.lights_tested_avg = static_cast<double>(r.result.totals.lights_tested) /
                         static_cast<double>(r.result.totals.shading_points);
@@ -60,8 +60,8 @@ TEST_P(ExposureInvariance, ADarkerSceneAtAHigherExposureCullsTheSame) {
   const double ev = std::log2(100.0);
   for (const scenes::SceneDescription& scene :
        {scenes::describe_building(3), scenes::describe_hall(3)}) {
-    const Rendered bright = render(scene, GetParam(), 0.0);
-    const Rendered dark = render(scaled(scene, 0.01f), GetParam(), ev);
+    const ExposedRender bright = render_at_exposure(scene, GetParam(), 0.0);
+    const ExposedRender dark = render_at_exposure(scaled(scene, 0.01f), GetParam(), ev);
     const std::string label = scene.name + " " + lev::method_info(GetParam()).name;
     ASSERT_GT(bright.lights_tested_avg, 0.0) << label;
     EXPECT_NEAR(dark.lights_tested_avg / bright.lights_tested_avg, 1.0, 0.01) << label;
@@ -75,7 +75,7 @@ TEST_P(ExposureInvariance, ADarkerSceneAtAHigherExposureCullsTheSame) {
                 0.01 * bound_bright.average_pct + 1e-6)
         << label;
     // Without the exposure the dark scene culls far more: the tolerance would mean 100x more.
-    const Rendered unexposed = render(scaled(scene, 0.01f), GetParam(), 0.0);
+    const ExposedRender unexposed = render_at_exposure(scaled(scene, 0.01f), GetParam(), 0.0);
     if (GetParam() != lev::Method::lev_cut) {
       EXPECT_LT(unexposed.lights_tested_avg, 0.9 * bright.lights_tested_avg) << label;
     }

@@ -66,8 +66,8 @@ renderer::Scene extreme_scene() {
   return scene;
 }
 
-renderer::Framebuffer render(renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tau) {
+renderer::Framebuffer render_extreme(renderer::Scene& scene, const renderer::RayScene& rays,
+                                     lev::Method method, float tau) {
   renderer::RenderSettings rs;
   rs.width = 96;
   rs.height = 72;
@@ -92,7 +92,7 @@ TEST(Extremes, NoInfOrNaNReachesAPixel) {
   for (lev::Method method : {lev::Method::rt, lev::Method::ast, lev::Method::lev}) {
     for (float tau :
          {0.0f, tiny, 1e-30f, 0.01f, 1.0f, 1e30f, std::numeric_limits<float>::infinity()}) {
-      expect_finite(render(scene, rays, method, tau),
+      expect_finite(render_extreme(scene, rays, method, tau),
                     std::string(lev::method_info(method).name) + " " + std::to_string(tau));
     }
   }
@@ -101,8 +101,8 @@ TEST(Extremes, NoInfOrNaNReachesAPixel) {
 TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene);
-  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f);
-  const renderer::Framebuffer lev = render(scene, rays, lev::Method::lev, 0.0f);
+  const renderer::Framebuffer rt = render_extreme(scene, rays, lev::Method::rt, 0.0f);
+  const renderer::Framebuffer lev = render_extreme(scene, rays, lev::Method::lev, 0.0f);
   ASSERT_EQ(rt.radiance_sum.size(), lev.radiance_sum.size());
   EXPECT_EQ(std::memcmp(rt.radiance_sum.data(), lev.radiance_sum.data(),
                         rt.radiance_sum.size() * sizeof(glm::vec3)),
@@ -110,7 +110,7 @@ TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   // A denormal tolerance reaches the hierarchy as itself: no light is culled that rt shades
   // except those below it, and none of this scene's lights is that dim except the 1e-30 one.
   const renderer::Framebuffer denormal =
-      render(scene, rays, lev::Method::lev, std::numeric_limits<float>::denorm_min());
+      render_extreme(scene, rays, lev::Method::lev, std::numeric_limits<float>::denorm_min());
   EXPECT_EQ(renderer::framebuffer_rgb8(denormal), renderer::framebuffer_rgb8(rt));
 }
 
@@ -118,7 +118,7 @@ TEST(Extremes, InfiniteToleranceTestsNoLight) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene);
   const auto totals = renderer::sum_framebuffer(
-      render(scene, rays, lev::Method::lev, std::numeric_limits<float>::infinity()));
+      render_extreme(scene, rays, lev::Method::lev, std::numeric_limits<float>::infinity()));
   EXPECT_EQ(totals.lights_tested, 0u);
   EXPECT_GT(totals.shading_points, 0u);
 }

@@ -16,9 +16,9 @@
 
 namespace {
 
-renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, int threads, int width = 64,
-                             int height = 48) {
+renderer::Framebuffer render_est(const renderer::Scene& scene, const renderer::RayScene& rays,
+                                 lev::Method method, float tolerance, int threads, int width = 64,
+                                 int height = 48) {
   return render_test_image(scene, rays, method, tolerance, threads, 1, width, height);
 }
 
@@ -31,8 +31,8 @@ renderer::PixelErrorStats error_against(const renderer::Framebuffer& image,
 TEST(LevEstRender, EqualsRtAtToleranceZeroAndIsDeterministic) {
   const renderer::Scene scene = scenes::build_building(3);
   const renderer::RayScene rays(scene);
-  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 0);
-  const renderer::Framebuffer exact = render(scene, rays, lev::Method::lev_est, 0.0f, 0);
+  const renderer::Framebuffer rt = render_est(scene, rays, lev::Method::rt, 0.0f, 0);
+  const renderer::Framebuffer exact = render_est(scene, rays, lev::Method::lev_est, 0.0f, 0);
   EXPECT_TRUE(bitwise_equal(rt, exact));
   EXPECT_EQ(rt.lights_tested, exact.lights_tested);
   EXPECT_EQ(rt.shadow_rays, exact.shadow_rays);
@@ -52,14 +52,15 @@ TEST_P(LevEstHall, DeterministicAndFarCloserToRtThanLev) {
   // one are where TBB's task memory, handed between threads unseen, outlives TSan's history
   // (render_pass reads its task early for the same reason).
   const renderer::Framebuffer one =
-      render(scene, rays, lev::Method::lev_est, 0.01f, 1, kWidth, kHeight);
+      render_est(scene, rays, lev::Method::lev_est, 0.01f, 1, kWidth, kHeight);
   const renderer::Framebuffer two =
-      render(scene, rays, lev::Method::lev_est, 0.01f, 2, kWidth, kHeight);
+      render_est(scene, rays, lev::Method::lev_est, 0.01f, 2, kWidth, kHeight);
   EXPECT_TRUE(bitwise_equal(one, two));
   EXPECT_EQ(one.shadow_rays, two.shadow_rays);
   const renderer::Framebuffer plain =
-      render(scene, rays, lev::Method::lev, 0.01f, 2, kWidth, kHeight);
-  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2, kWidth, kHeight);
+      render_est(scene, rays, lev::Method::lev, 0.01f, 2, kWidth, kHeight);
+  const renderer::Framebuffer rt =
+      render_est(scene, rays, lev::Method::rt, 0.0f, 2, kWidth, kHeight);
   const renderer::PixelErrorStats est = error_against(one, rt);
   const renderer::PixelErrorStats dropped = error_against(plain, rt);
   // The culled rest matters here (lev is visibly off), and the estimate recovers almost all of

@@ -16,9 +16,9 @@
 
 namespace {
 
-renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float tolerance, int missed_draws,
-                             std::uint64_t seed, int threads, int width, int height) {
+renderer::Framebuffer render_missed(const renderer::Scene& scene, const renderer::RayScene& rays,
+                                    lev::Method method, float tolerance, int missed_draws,
+                                    std::uint64_t seed, int threads, int width, int height) {
   renderer::RenderSettings rs = test_render_settings(method, width, height);
   rs.tolerance = tolerance;
   rs.threads = threads;
@@ -39,14 +39,17 @@ TEST(MissedLightRender, ItsMeanOverSeedsIsRtMinusLev) {
   constexpr int kWidth = 24, kHeight = 18;
   constexpr float kTolerance = 0.05f;
   const glm::dvec3 lost =
-      sum(render(scene, rays, lev::Method::rt, 0.0f, 0, 0, 0, kWidth, kHeight).radiance_sum) -
-      sum(render(scene, rays, lev::Method::lev, kTolerance, 0, 0, 0, kWidth, kHeight).radiance_sum);
+      sum(render_missed(scene, rays, lev::Method::rt, 0.0f, 0, 0, 0, kWidth, kHeight)
+              .radiance_sum) -
+      sum(render_missed(scene, rays, lev::Method::lev, kTolerance, 0, 0, 0, kWidth, kHeight)
+              .radiance_sum);
   ASSERT_GT(lost.x, 0.01) << "lev must lose light here for the check to mean something";
   constexpr int kSeeds = 24;
   glm::dvec3 mean(0.0), variance(0.0);
   for (int seed = 1; seed <= kSeeds; ++seed) {
-    const renderer::Framebuffer fb = render(scene, rays, lev::Method::lev, kTolerance, 4,
-                                            static_cast<std::uint64_t>(seed), 0, kWidth, kHeight);
+    const renderer::Framebuffer fb =
+        render_missed(scene, rays, lev::Method::lev, kTolerance, 4,
+                      static_cast<std::uint64_t>(seed), 0, kWidth, kHeight);
     mean += sum(fb.missed_sum);
     variance += sum(fb.missed_variance_sum);
   }
@@ -60,7 +63,8 @@ TEST(MissedLightRender, ItsMeanOverSeedsIsRtMinusLev) {
 TEST(MissedLightRender, ReadsAboutZeroWhereWallsHideTheCulledLights) {
   const renderer::Scene scene = scenes::build_building(4);
   const renderer::RayScene rays(scene);
-  const renderer::Framebuffer fb = render(scene, rays, lev::Method::lev, 0.01f, 16, 0, 0, 48, 36);
+  const renderer::Framebuffer fb =
+      render_missed(scene, rays, lev::Method::lev, 0.01f, 16, 0, 0, 48, 36);
   const renderer::MissedLightStats s = renderer::missed_light_stats(fb);
   EXPECT_LT(s.average_pct, 0.05);
   // The certified bound, which assumes no shadows, says far more there.
@@ -71,11 +75,11 @@ TEST(MissedLightRender, SameForAnyThreadCountAndTheImageIsUntouched) {
   const renderer::Scene scene = scenes::build_maze(1);
   const renderer::RayScene rays(scene);
   const renderer::Framebuffer one =
-      render(scene, rays, lev::Method::lev_est, 0.05f, 8, 3, 1, 32, 24);
+      render_missed(scene, rays, lev::Method::lev_est, 0.05f, 8, 3, 1, 32, 24);
   const renderer::Framebuffer two =
-      render(scene, rays, lev::Method::lev_est, 0.05f, 8, 3, 2, 32, 24);
+      render_missed(scene, rays, lev::Method::lev_est, 0.05f, 8, 3, 2, 32, 24);
   const renderer::Framebuffer off =
-      render(scene, rays, lev::Method::lev_est, 0.05f, 0, 3, 2, 32, 24);
+      render_missed(scene, rays, lev::Method::lev_est, 0.05f, 0, 3, 2, 32, 24);
   EXPECT_EQ(one.missed_sum, two.missed_sum);
   EXPECT_EQ(one.missed_variance_sum, two.missed_variance_sum);
   EXPECT_TRUE(bitwise_equal(one, off));

@@ -23,8 +23,8 @@
 
 namespace {
 
-constexpr int kWidth = 24;
-constexpr int kHeight = 18;
+constexpr int kInspectWidth = 24;
+constexpr int kInspectHeight = 18;
 
 struct ScenePair {
   renderer::Scene scene;
@@ -33,8 +33,8 @@ struct ScenePair {
       : scene(scenes::find_scene_model(model)->build(level)), rays(scene) {}
 };
 
-renderer::RenderSettings settings_for(lev::Method method, float tolerance) {
-  renderer::RenderSettings rs = test_render_settings(method, kWidth, kHeight);
+renderer::RenderSettings inspection_settings(lev::Method method, float tolerance) {
+  renderer::RenderSettings rs = test_render_settings(method, kInspectWidth, kInspectHeight);
   rs.tolerance = tolerance;
   rs.compute_error_bound = true;  // as levrt render, and as the inspector asks
   rs.lights_per_point = 4;
@@ -77,7 +77,7 @@ TEST(PixelInspection, EveryLightAppearsOnceAsTestedCulledOrClustered) {
       int hits = 0;
       for (const auto& [x, y] : {std::pair{12, 9}, std::pair{3, 15}, std::pair{20, 4}}) {
         const renderer::PixelInspection inspection =
-            inspect(s, settings_for(method.id, 0.05f), x, y);
+            inspect(s, inspection_settings(method.id, 0.05f), x, y);
         for (const renderer::InspectedHit& hit : inspection.hits) {
           ++hits;
           std::vector<glm::vec3> seen = accounted_positions(hit);
@@ -101,12 +101,12 @@ TEST(PixelInspection, ShadesWhatTheRenderShadedAtThatPixel) {
   const ScenePair s("hall", 3);
   for (const lev::MethodInfo& method : lev::method_table()) {
     SCOPED_TRACE(method.name);
-    const renderer::RenderSettings rs = settings_for(method.id, 0.05f);
+    const renderer::RenderSettings rs = inspection_settings(method.id, 0.05f);
     const renderer::Framebuffer fb = render_test_image(s.scene, s.rays, rs, 1);
     std::uint64_t tested_somewhere = 0;
-    for (int y = 0; y < kHeight; y += 4) {
-      for (int x = 0; x < kWidth; x += 3) {
-        const std::size_t pixel = static_cast<std::size_t>(y) * kWidth + x;
+    for (int y = 0; y < kInspectHeight; y += 4) {
+      for (int x = 0; x < kInspectWidth; x += 3) {
+        const std::size_t pixel = static_cast<std::size_t>(y) * kInspectWidth + x;
         const renderer::PixelInspection inspection = inspect(s, rs, x, y);
         EXPECT_EQ(inspection.totals.shaded, fb.lights_tested[pixel]) << x << "," << y;
         EXPECT_EQ(inspection.counters.selection.lights_tested, fb.lights_tested[pixel]);
@@ -123,14 +123,14 @@ TEST(PixelInspection, LevLostSumIsRtPixelMinusLevPixel) {
        {std::pair{"building", 3}, std::pair{"hall", 3}, std::pair{"maze", 1}}) {
     SCOPED_TRACE(model);
     const ScenePair s(model, level);
-    const renderer::RenderSettings lev_settings = settings_for(lev::Method::lev, 0.1f);
+    const renderer::RenderSettings lev_settings = inspection_settings(lev::Method::lev, 0.1f);
     const renderer::Framebuffer lev_fb = render_test_image(s.scene, s.rays, lev_settings, 1);
     const renderer::Framebuffer rt_fb =
-        render_test_image(s.scene, s.rays, settings_for(lev::Method::rt, 0.1f), 1);
+        render_test_image(s.scene, s.rays, inspection_settings(lev::Method::rt, 0.1f), 1);
     double lost_total = 0.0;
-    for (int y = 0; y < kHeight; y += 2) {
-      for (int x = 0; x < kWidth; x += 2) {
-        const std::size_t pixel = static_cast<std::size_t>(y) * kWidth + x;
+    for (int y = 0; y < kInspectHeight; y += 2) {
+      for (int x = 0; x < kInspectWidth; x += 2) {
+        const std::size_t pixel = static_cast<std::size_t>(y) * kInspectWidth + x;
         const renderer::PixelInspection inspection = inspect(s, lev_settings, x, y);
         const glm::dvec3 difference =
             glm::dvec3(rt_fb.radiance_sum[pixel]) - glm::dvec3(lev_fb.radiance_sum[pixel]);
@@ -197,7 +197,7 @@ TEST(PixelInspection, RanksAreATotalOrderWithNanLast) {
 // raises it for a new pixel, Clear or quitting, and discards what comes back).
 TEST(PixelInspection, ARaisedCancelStopsTheInspection) {
   const ScenePair s("hall", 3);
-  const renderer::RenderSettings rs = settings_for(lev::Method::lev, 0.01f);
+  const renderer::RenderSettings rs = inspection_settings(lev::Method::lev, 0.01f);
   const auto selector = lev::make_selector(s.scene.lights, renderer::method_params(rs));
   std::atomic<bool> cancel{false};
   const renderer::PixelInspection whole =

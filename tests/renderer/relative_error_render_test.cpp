@@ -18,9 +18,9 @@
 
 namespace {
 
-renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             lev::Method method, float relative_error, int threads, int width = 48,
-                             int height = 36) {
+renderer::Framebuffer render_relative(const renderer::Scene& scene, const renderer::RayScene& rays,
+                                      lev::Method method, float relative_error, int threads,
+                                      int width = 48, int height = 36) {
   renderer::RenderSettings rs = test_render_settings(method, width, height);
   rs.relative_error = relative_error;
   rs.threads = threads;
@@ -46,8 +46,8 @@ TEST_P(RelativeErrorRender, EqualsRtAtRelativeErrorZero) {
   for (const bool hall : {false, true}) {
     const renderer::Scene scene = hall ? scenes::build_hall(4) : scenes::build_building(3);
     const renderer::RayScene rays(scene);
-    const renderer::Framebuffer exact = render(scene, rays, GetParam(), 0.0f, 2);
-    const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
+    const renderer::Framebuffer exact = render_relative(scene, rays, GetParam(), 0.0f, 2);
+    const renderer::Framebuffer rt = render_relative(scene, rays, lev::Method::rt, 0.0f, 2);
     EXPECT_TRUE(bitwise_equal(rt, exact)) << (hall ? "hall" : "building");
     EXPECT_EQ(renderer::sum_framebuffer(rt).shadow_rays,
               renderer::sum_framebuffer(exact).shadow_rays);
@@ -58,13 +58,13 @@ TEST_P(RelativeErrorRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
   const renderer::Scene scene = scenes::build_hall(5);
   const renderer::RayScene rays(scene);
   const auto default_error = static_cast<float>(lev::kDefaultRelativeError);
-  const renderer::Framebuffer one = render(scene, rays, GetParam(), default_error, 1);
-  const renderer::Framebuffer two = render(scene, rays, GetParam(), default_error, 2);
+  const renderer::Framebuffer one = render_relative(scene, rays, GetParam(), default_error, 1);
+  const renderer::Framebuffer two = render_relative(scene, rays, GetParam(), default_error, 2);
   EXPECT_TRUE(bitwise_equal(one, two));
   EXPECT_EQ(one.shadow_rays, two.shadow_rays);
   EXPECT_EQ(one.lights_tested, two.lights_tested);
   EXPECT_EQ(one.nodes_visited, two.nodes_visited);
-  const renderer::Framebuffer rt = render(scene, rays, lev::Method::rt, 0.0f, 2);
+  const renderer::Framebuffer rt = render_relative(scene, rays, lev::Method::rt, 0.0f, 2);
   const renderer::PixelErrorStats error = renderer::summarize_pixel_error(
       renderer::pixel_error_pct(renderer::framebuffer_rgb8(one), renderer::framebuffer_rgb8(rt)));
   EXPECT_LT(error.average_pct, 0.5);

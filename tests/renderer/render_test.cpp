@@ -22,16 +22,16 @@ struct TestScene {
   }
 };
 
-renderer::Framebuffer render(TestScene& t, lev::Method method, float tolerance, int threads,
-                             int passes, int width = 64, int height = 48) {
+renderer::Framebuffer render_test_scene(TestScene& t, lev::Method method, float tolerance,
+                                        int threads, int passes, int width = 64, int height = 48) {
   return render_test_image(t.scene, *t.rays, method, tolerance, threads, passes, width, height);
 }
 
 TEST(Render, LevAtToleranceZeroEqualsRtBitForBit) {
   for (int level : {2, 3}) {
     TestScene t(level);
-    const renderer::Framebuffer rt = render(t, lev::Method::rt, 0.0f, 0, 1, 80, 60);
-    const renderer::Framebuffer lev = render(t, lev::Method::lev, 0.0f, 0, 1, 80, 60);
+    const renderer::Framebuffer rt = render_test_scene(t, lev::Method::rt, 0.0f, 0, 1, 80, 60);
+    const renderer::Framebuffer lev = render_test_scene(t, lev::Method::lev, 0.0f, 0, 1, 80, 60);
     EXPECT_TRUE(bitwise_equal(rt, lev)) << "level " << level;
     EXPECT_EQ(renderer::framebuffer_rgb8(rt), renderer::framebuffer_rgb8(lev));
     EXPECT_EQ(rt.lights_tested, lev.lights_tested);
@@ -45,8 +45,8 @@ TEST(Render, LevAtToleranceZeroEqualsRtBitForBit) {
 
 TEST(Render, LevAtPositiveToleranceTestsFewerLights) {
   TestScene t(3);
-  const auto rt = renderer::sum_framebuffer(render(t, lev::Method::rt, 0.0f, 0, 1));
-  const auto lev = renderer::sum_framebuffer(render(t, lev::Method::lev, 0.01f, 0, 1));
+  const auto rt = renderer::sum_framebuffer(render_test_scene(t, lev::Method::rt, 0.0f, 0, 1));
+  const auto lev = renderer::sum_framebuffer(render_test_scene(t, lev::Method::lev, 0.01f, 0, 1));
   EXPECT_EQ(rt.shading_points, lev.shading_points);
   EXPECT_LT(lev.lights_tested * 2, rt.lights_tested);
   EXPECT_GT(lev.nodes_visited, 0u);
@@ -55,8 +55,8 @@ TEST(Render, LevAtPositiveToleranceTestsFewerLights) {
 TEST(Render, SameImageWhateverTheThreadCount) {
   TestScene t(3);
   for (lev::Method method : {lev::Method::rt, lev::Method::lev, lev::Method::ast}) {
-    const renderer::Framebuffer one = render(t, method, 0.01f, 1, 3);
-    const renderer::Framebuffer two = render(t, method, 0.01f, 2, 3);
+    const renderer::Framebuffer one = render_test_scene(t, method, 0.01f, 1, 3);
+    const renderer::Framebuffer two = render_test_scene(t, method, 0.01f, 2, 3);
     EXPECT_TRUE(bitwise_equal(one, two)) << lev::method_info(method).name;
     EXPECT_EQ(one.lights_tested, two.lights_tested);
     EXPECT_EQ(one.nodes_visited, two.nodes_visited);
@@ -126,7 +126,7 @@ TEST(Render, CancelledPassResumesWithoutRepeatingTiles) {
   EXPECT_TRUE(renderer::render_pass(*state, &cancel));
   EXPECT_TRUE(renderer::render_pass(*state, &cancel));
   for (std::uint32_t s : renderer::render_framebuffer(*state).samples) ASSERT_EQ(s, 2u);
-  const renderer::Framebuffer uninterrupted = render(t, lev::Method::lev, 0.01f, 0, 2);
+  const renderer::Framebuffer uninterrupted = render_test_scene(t, lev::Method::lev, 0.01f, 0, 2);
   EXPECT_TRUE(bitwise_equal(renderer::render_framebuffer(*state), uninterrupted));
   for (int tile = 0; tile < renderer::render_tile_count(*state); ++tile) {
     EXPECT_EQ(renderer::render_tile_status(*state, tile), renderer::TileStatus::done);
@@ -228,7 +228,7 @@ TEST(Render, WithoutJitterEveryPassSamplesThePixelCentres) {
 
 TEST(Render, HugeToleranceLeavesOnlyAmbient) {
   TestScene t(2);
-  const renderer::Framebuffer fb = render(t, lev::Method::lev, 1e30f, 0, 1);
+  const renderer::Framebuffer fb = render_test_scene(t, lev::Method::lev, 1e30f, 0, 1);
   const auto totals = renderer::sum_framebuffer(fb);
   EXPECT_EQ(totals.lights_tested, 0u);
   EXPECT_EQ(totals.shadow_rays, 0u);

@@ -49,12 +49,12 @@ const std::string kMirror = R"({"name": "mirror", "kd": 0.2, "kr": 0.8})";
 const std::string kBox =
     R"({"type": "box", "material": "mirror", "lo": [-1, -1, 0], "hi": [1, 1, 2]})";
 
-struct Rendered {
+struct RobustRender {
   bool finite = true;
   std::uint64_t samples = 0, shading_points = 0;
 };
 
-Rendered render_text(const std::string& text, int depth = 5) {
+RobustRender render_text(const std::string& text, int depth = 5) {
   renderer::Scene scene = scenes::instantiate_scene(scenes::parse_scene_json(text, "test.json"));
   const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
@@ -65,7 +65,7 @@ Rendered render_text(const std::string& text, int depth = 5) {
   EXPECT_TRUE(renderer::render_pass(*state));
   EXPECT_TRUE(renderer::render_pass(*state));
   const renderer::Framebuffer& fb = renderer::render_framebuffer(*state);
-  Rendered r;
+  RobustRender r;
   for (std::size_t i = 0; i < fb.radiance_sum.size(); ++i) {
     for (int c = 0; c < 3; ++c) r.finite = r.finite && std::isfinite(fb.radiance_sum[i][c]);
     r.samples += fb.samples[i];
@@ -76,7 +76,7 @@ Rendered render_text(const std::string& text, int depth = 5) {
 
 TEST(Robustness, TinyCameraUpRendersFinitePixels) {
   for (const char* up : {"1e-19", "1e-30", "1e-37"}) {
-    const Rendered r = render_text(scene_text(
+    const RobustRender r = render_text(scene_text(
         R"({"position": [0, -10, 5], "target": [0, 0, 0], "up": [0, 0, )" + std::string(up) + "]}",
         kMirror, kBox));
     EXPECT_TRUE(r.finite) << up;
@@ -86,7 +86,7 @@ TEST(Robustness, TinyCameraUpRendersFinitePixels) {
 }
 
 TEST(Robustness, CameraTinyDistanceFromItsTargetRendersFinitePixels) {
-  const Rendered r = render_text(
+  const RobustRender r = render_text(
       scene_text(R"({"position": [0, -1e-20, 1e-20], "target": [0, 0, 0]})", kMirror, kBox));
   EXPECT_TRUE(r.finite);
   EXPECT_GT(r.shading_points, 0u);
@@ -106,7 +106,7 @@ TEST(Robustness, CameraDegenerateInTheRenderFloatModeIsRefused) {
 
 // The box's geometric normal (a cross product of 1e-10 edges, 1e-20) squared to zero before.
 TEST(Robustness, TinyReflectiveBoxRendersFinitePixels) {
-  const Rendered r = render_text(
+  const RobustRender r = render_text(
       scene_text(R"({"position": [3e-10, -4e-10, 2e-10], "target": [0, 0, 0.5e-10]})", kMirror,
                  R"({"type": "box", "material": "mirror", "lo": [-1e-10, -1e-10, 0], )"
                  R"("hi": [1e-10, 1e-10, 1e-10]})"));
@@ -129,7 +129,7 @@ TEST(Robustness, ExtremeRefractionIndexIsRefusedAndTheLimitRendersFinitePixels) 
   for (const char* ior : {"0.01", "100"}) {
     std::string material = glass;
     material.replace(material.find("IOR"), 3, ior);
-    const Rendered r = render_text(scene_text(head_on, material, box));
+    const RobustRender r = render_text(scene_text(head_on, material, box));
     EXPECT_TRUE(r.finite) << ior;
   }
 }

@@ -18,6 +18,7 @@
 #include "scenes/building.h"
 #include "tests/lev/random_light_scenes.h"
 #include "tests/support/framebuffer_compare.h"
+#include "tests/support/test_render.h"
 
 namespace {
 
@@ -86,8 +87,8 @@ renderer::Scene random_scene(std::uint64_t seed) {
   return scene;
 }
 
-renderer::RenderSettings settings_for(lev::Method method, float tolerance, int threads = 2,
-                                      int tile_size = 8, int lights_per_point = 1) {
+renderer::RenderSettings sampling_settings(lev::Method method, float tolerance, int threads = 2,
+                                           int tile_size = 8, int lights_per_point = 1) {
   renderer::RenderSettings rs;
   rs.lights_per_point = lights_per_point;
   rs.width = 40;
@@ -98,13 +99,6 @@ renderer::RenderSettings settings_for(lev::Method method, float tolerance, int t
   rs.tile_size = tile_size;
   rs.max_depth = 2;
   return rs;
-}
-
-renderer::Framebuffer render(const renderer::Scene& scene, const renderer::RayScene& rays,
-                             const renderer::RenderSettings& rs, int passes) {
-  auto state = renderer::make_render_state(scene, rays, rs);
-  for (int i = 0; i < passes; ++i) EXPECT_TRUE(renderer::render_pass(*state));
-  return renderer::render_framebuffer(*state);
 }
 
 constexpr int kPasses = 256;
@@ -131,9 +125,9 @@ double mean_error(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3
 void expect_converges_to_rt(lev::Method method, float tolerance, std::uint64_t seed) {
   const renderer::Scene scene = random_scene(seed);
   const renderer::RayScene rays(scene);
-  auto rt = renderer::make_render_state(scene, rays, settings_for(lev::Method::rt, 0.0f));
+  auto rt = renderer::make_render_state(scene, rays, sampling_settings(lev::Method::rt, 0.0f));
   auto sampled = renderer::make_render_state(
-      scene, rays, settings_for(method, tolerance, 2, 8, kLightsPerPoint));
+      scene, rays, sampling_settings(method, tolerance, 2, 8, kLightsPerPoint));
   const std::size_t n = 40 * 30;
   // Per pixel: the passes' samples summed, and the difference sampled - rt per pass (its mean
   // and spread): both states draw the same jitter for a pass, so only the light sampling differs.
@@ -205,13 +199,13 @@ TEST(SamplingRender, ImagesDoNotDependOnThreadsOrTiles) {
   const renderer::RayScene rays(scene);
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
     for (int k : {1, 3, 4}) {  // 4: the parts are opened (light_sampling.h)
-      renderer::RenderSettings rs = settings_for(method, 0.05f, 1, 8);
+      renderer::RenderSettings rs = sampling_settings(method, 0.05f, 1, 8);
       rs.lights_per_point = k;
-      const renderer::Framebuffer one = render(scene, rays, rs, 3);
+      const renderer::Framebuffer one = render_test_image(scene, rays, rs, 3);
       rs.threads = 2;
-      const renderer::Framebuffer two = render(scene, rays, rs, 3);
+      const renderer::Framebuffer two = render_test_image(scene, rays, rs, 3);
       rs.tile_size = 5;
-      const renderer::Framebuffer tiles = render(scene, rays, rs, 3);
+      const renderer::Framebuffer tiles = render_test_image(scene, rays, rs, 3);
       EXPECT_TRUE(bitwise_equal(one, two)) << lev::method_info(method).name << " k " << k;
       EXPECT_TRUE(bitwise_equal(one, tiles)) << lev::method_info(method).name << " k " << k;
       EXPECT_EQ(one.radiance_square_sum, two.radiance_square_sum);
@@ -223,13 +217,15 @@ TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
   const renderer::Scene scene = random_scene(6);
   const renderer::RayScene rays(scene);
   for (lev::Method method : {lev::Method::lev_mc, lev::Method::light_tree}) {
-    renderer::RenderSettings rs = settings_for(method, 0.05f);
-    const renderer::FramebufferTotals one = renderer::sum_framebuffer(render(scene, rays, rs, 1));
+    renderer::RenderSettings rs = sampling_settings(method, 0.05f);
+    const renderer::FramebufferTotals one =
+        renderer::sum_framebuffer(render_test_image(scene, rays, rs, 1));
     rs.lights_per_point = 4;
-    const renderer::FramebufferTotals four = renderer::sum_framebuffer(render(scene, rays, rs, 1));
+    const renderer::FramebufferTotals four =
+        renderer::sum_framebuffer(render_test_image(scene, rays, rs, 1));
     EXPECT_GT(four.lights_tested, one.lights_tested) << lev::method_info(method).name;
   }
-  renderer::RenderSettings bad = settings_for(lev::Method::lev_mc, 0.05f);
+  renderer::RenderSettings bad = sampling_settings(lev::Method::lev_mc, 0.05f);
   for (int k : {0, -1, lev::kMaxLightsPerPoint + 1}) {
     bad.lights_per_point = k;
     EXPECT_THROW(renderer::make_render_state(scene, rays, bad), std::invalid_argument) << k;
@@ -239,10 +235,11 @@ TEST(SamplingRender, MoreSamplesPerPointDrawMoreLights) {
 TEST(SamplingRender, LevMcAtToleranceZeroEqualsRtBitForBit) {
   for (const renderer::Scene& scene : {random_scene(7), scenes::build_building(3)}) {
     const renderer::RayScene rays(scene);
-    const renderer::Framebuffer rt = render(scene, rays, settings_for(lev::Method::rt, 0.0f), 2);
-    renderer::RenderSettings rs = settings_for(lev::Method::lev_mc, 0.0f);
+    const renderer::Framebuffer rt =
+        render_test_image(scene, rays, sampling_settings(lev::Method::rt, 0.0f), 2);
+    renderer::RenderSettings rs = sampling_settings(lev::Method::lev_mc, 0.0f);
     rs.lights_per_point = 3;
-    const renderer::Framebuffer exact = render(scene, rays, rs, 2);
+    const renderer::Framebuffer exact = render_test_image(scene, rays, rs, 2);
     EXPECT_TRUE(bitwise_equal(rt, exact)) << scene.name;
   }
 }
@@ -251,7 +248,7 @@ TEST(SamplingRender, NoiseEstimateIsTheSpreadOfThePasses) {
   const renderer::Scene scene = random_scene(8);
   const renderer::RayScene rays(scene);
   const renderer::Framebuffer fb =
-      render(scene, rays, settings_for(lev::Method::light_tree, 0.0f), 16);
+      render_test_image(scene, rays, sampling_settings(lev::Method::light_tree, 0.0f), 16);
   const std::vector<double> noise = renderer::pixel_std_error_pct(fb);
   // A pixel's estimate from its own samples: recompute from the sums with the formula written out.
   double average = 0.0;
@@ -272,7 +269,7 @@ TEST(SamplingRender, NoiseEstimateIsTheSpreadOfThePasses) {
   EXPECT_NEAR(renderer::std_error_avg_pct(fb), average, 1e-9 * average);
   // One pass: no spread known.
   const renderer::Framebuffer single =
-      render(scene, rays, settings_for(lev::Method::light_tree, 0.0f), 1);
+      render_test_image(scene, rays, sampling_settings(lev::Method::light_tree, 0.0f), 1);
   EXPECT_EQ(renderer::std_error_avg_pct(single), 0.0);
 }
 

@@ -68,7 +68,8 @@ scenes::Affine scaled(float scale) {
   return a;
 }
 
-std::vector<std::uint8_t> render(const scenes::SceneDescription& description, lev::Method method) {
+std::vector<std::uint8_t> render_far_rgb8(const scenes::SceneDescription& description,
+                                          lev::Method method) {
   renderer::Scene scene = scenes::instantiate_scene(description);
   const renderer::RayScene rays(scene);
   renderer::RenderSettings rs;
@@ -107,8 +108,8 @@ Difference compare(const std::vector<std::uint8_t>& image,
 void expect_same_picture(const scenes::Affine& placement, const std::string& label) {
   for (lev::Method method : {lev::Method::rt, lev::Method::lev}) {
     const std::string what = label + " " + lev::method_info(method).name;
-    const std::vector<std::uint8_t> reference = render(shadow_scene(at_origin()), method);
-    const std::vector<std::uint8_t> image = render(shadow_scene(placement), method);
+    const std::vector<std::uint8_t> reference = render_far_rgb8(shadow_scene(at_origin()), method);
+    const std::vector<std::uint8_t> image = render_far_rgb8(shadow_scene(placement), method);
     const Difference d = compare(image, reference);
     EXPECT_LT(d.differing_fraction, 0.005) << what;
     EXPECT_LE(d.brighter, 2) << what << ": light leaks";
@@ -165,8 +166,8 @@ scenes::SceneDescription floor_scene(float edge, float scale) {
 // +inf and its normal came out zero, so it rendered unlit. It must render as a 1e6 floor does.
 TEST(FarScene, HugeQuadUnderScaleOneMillionIsLitLikeTheUnscaledFloor) {
   for (lev::Method method : {lev::Method::rt, lev::Method::lev}) {
-    const std::vector<std::uint8_t> reference = render(floor_scene(1e6f, 1.0f), method);
-    const std::vector<std::uint8_t> image = render(floor_scene(1e4f, 1e6f), method);
+    const std::vector<std::uint8_t> reference = render_far_rgb8(floor_scene(1e6f, 1.0f), method);
+    const std::vector<std::uint8_t> image = render_far_rgb8(floor_scene(1e4f, 1e6f), method);
     int lit = 0;
     for (std::uint8_t v : reference) lit += v > 0 ? 1 : 0;
     EXPECT_GT(lit, static_cast<int>(reference.size() / 2));

@@ -26,7 +26,8 @@ std::string word(std::uint32_t v) {
 }
 
 // `json` as a binary glTF: header (magic, version, length plus `length_delta`), one JSON chunk.
-std::string glb_of(std::string json, std::uint32_t version = 2, std::int64_t length_delta = 0) {
+std::string glb_with_header(std::string json, std::uint32_t version = 2,
+                            std::int64_t length_delta = 0) {
   while (json.size() % 4 != 0) json += ' ';
   const auto length =
       static_cast<std::uint32_t>(20 + static_cast<std::int64_t>(json.size()) + length_delta);
@@ -35,10 +36,10 @@ std::string glb_of(std::string json, std::uint32_t version = 2, std::int64_t len
 }
 
 TEST(GltfDocument, TheContentNotTheNameTellsBinaryFromText) {
-  EXPECT_TRUE(scenes::is_glb(glb_of(kJson)));
+  EXPECT_TRUE(scenes::is_glb(glb_with_header(kJson)));
   EXPECT_FALSE(scenes::is_glb(kJson));
   EXPECT_FALSE(scenes::is_glb("glT"));
-  for (const std::string& bytes : {glb_of(kJson), kJson}) {
+  for (const std::string& bytes : {glb_with_header(kJson), kJson}) {
     for (const std::string name : {"named.gltf", "named.glb"}) {
       EXPECT_EQ(scenes::parse_gltf_scene(bytes, name).root.children.size(), 1u) << name;
     }
@@ -47,13 +48,15 @@ TEST(GltfDocument, TheContentNotTheNameTellsBinaryFromText) {
 
 TEST(GltfDocument, AHeaderThatDisagreesWithTheFileIsRefused) {
   // A short header length: the file goes on past where the header says it ends.
-  std::string longer = glb_of(kJson) + "    ";
+  std::string longer = glb_with_header(kJson) + "    ";
   levrt_test::expect_gltf_refused(longer, "short.glb",
                                   "binary glTF: header length " +
                                       std::to_string(longer.size() - 4) + " bytes, the file has " +
                                       std::to_string(longer.size()));
-  levrt_test::expect_gltf_refused(glb_of(kJson, 2, 8), "long.glb", "binary glTF: header length");
-  levrt_test::expect_gltf_refused(glb_of(kJson, 1), "v1.glb", "binary glTF: header version 1");
+  levrt_test::expect_gltf_refused(glb_with_header(kJson, 2, 8), "long.glb",
+                                  "binary glTF: header length");
+  levrt_test::expect_gltf_refused(glb_with_header(kJson, 1), "v1.glb",
+                                  "binary glTF: header version 1");
 }
 
 }  // namespace

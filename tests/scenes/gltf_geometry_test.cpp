@@ -21,10 +21,10 @@ namespace {
 
 using levrt_test::GltfBuilder;
 
-constexpr char kPath[] = "mesh.gltf";
+constexpr char kGeometryPath[] = "mesh.gltf";
 
-scenes::SceneDescription parse(GltfBuilder& builder) {
-  return scenes::parse_gltf_scene(builder.text(), kPath);
+scenes::SceneDescription parse_geometry(GltfBuilder& builder) {
+  return scenes::parse_gltf_scene(builder.text(), kGeometryPath);
 }
 
 const renderer::TriangleMesh& only_part(const scenes::SceneDescription& scene) {
@@ -65,7 +65,7 @@ std::vector<WorldTriangle> world_triangles(const renderer::Scene& scene) {
   return out;
 }
 
-void expect_near(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-5f) {
+void expect_vec3_near(const glm::vec3& a, const glm::vec3& b, float tolerance = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, tolerance);
   EXPECT_NEAR(a.y, b.y, tolerance);
   EXPECT_NEAR(a.z, b.z, tolerance);
@@ -78,7 +78,7 @@ void check_index_type(int component_type) {
   const int indices = builder.add_accessor(builder.add_view(std::vector<Index>{0, 1, 2, 0, 2, 3}),
                                            component_type, TINYGLTF_TYPE_SCALAR, 6);
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}}, indices)));
-  const scenes::SceneDescription scene = parse(builder);
+  const scenes::SceneDescription scene = parse_geometry(builder);
   // No normals: flat, so each triangle has three vertices of its own, in the file's order.
   const renderer::TriangleMesh& part = only_part(scene);
   ASSERT_EQ(part.triangles.size(), 2u);
@@ -105,7 +105,7 @@ TEST(GltfGeometry, UnindexedStripsAndFans) {
   builder.add_node(mesh_node(
       builder.add_mesh({{"POSITION", strip_positions}}, -1, TINYGLTF_MODE_TRIANGLE_STRIP)));
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
-  const scenes::SceneDescription scene = parse(builder);
+  const scenes::SceneDescription scene = parse_geometry(builder);
   ASSERT_EQ(scene.meshes.size(), 3u);
   EXPECT_EQ(scene.meshes[0].parts.at(0).triangles.size(), 2u);  // fan 0-1-2, 0-2-3
   EXPECT_EQ(scene.meshes[1].parts.at(0).triangles.size(), 2u);  // strip 0-1-2, 1-3-2
@@ -135,7 +135,7 @@ TEST(GltfGeometry, InterleavedStridesAndGivenNormals) {
                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6);
   builder.add_node(
       mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}}, indices)));
-  const renderer::TriangleMesh part = only_part(parse(builder));
+  const renderer::TriangleMesh part = only_part(parse_geometry(builder));
   EXPECT_EQ(part.positions, kQuad);
   EXPECT_EQ(part.triangles, kQuadTriangles);
   for (const glm::vec3& n : part.normals) EXPECT_EQ(n, normal);
@@ -163,7 +163,7 @@ TEST(GltfGeometry, SparseAccessorsSubstituteTheirElements) {
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}})));
   builder.add_node(
       mesh_node(builder.add_mesh({{"POSITION", zero_positions}, {"NORMAL", normals}})));
-  const scenes::SceneDescription scene = parse(builder);
+  const scenes::SceneDescription scene = parse_geometry(builder);
   ASSERT_EQ(scene.meshes.size(), 2u);
   const std::vector<glm::vec3> moved = {kQuad[0], kQuad[1], {5, 6, 7}, kQuad[3]};
   EXPECT_EQ(scene.meshes[0].parts.at(0).positions, moved);
@@ -183,7 +183,7 @@ TEST(GltfGeometry, NormalizedIntegersDecodeAsTheSpecSays) {
   const int normals = builder.add_vec3s(std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)));
   builder.add_node(mesh_node(
       builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}})));
-  const renderer::TriangleMesh part = only_part(parse(builder));
+  const renderer::TriangleMesh part = only_part(parse_geometry(builder));
   const std::vector<glm::vec3> expected = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   EXPECT_EQ(part.positions, expected);
   ASSERT_EQ(part.uvs.size(), 3u);
@@ -201,17 +201,17 @@ std::vector<WorldTriangle> scaled_triangle(const std::vector<double>& scale) {
   tinygltf::Node node = mesh_node(builder.add_mesh({{"POSITION", positions}, {"NORMAL", normals}}));
   node.scale = scale;
   builder.add_node(node);
-  return world_triangles(scenes::instantiate_scene(parse(builder)));
+  return world_triangles(scenes::instantiate_scene(parse_geometry(builder)));
 }
 
 TEST(GltfGeometry, NonUniformScaleTransformsNormalsByTheInverseTranspose) {
   const std::vector<WorldTriangle> triangles = scaled_triangle({2, 1, 1});
   ASSERT_EQ(triangles.size(), 1u);
-  expect_near(triangles[0].p[0], {2, 0, 0});
-  expect_near(triangles[0].p[1], {0, 1, 0});
+  expect_vec3_near(triangles[0].p[0], {2, 0, 0});
+  expect_vec3_near(triangles[0].p[1], {0, 1, 0});
   // The plane x/2 + y = 1: normal along (1/2, 1, 0), perpendicular to both edges.
   const glm::vec3 expected = glm::normalize(glm::vec3(0.5f, 1.0f, 0.0f));
-  for (const glm::vec3& n : triangles[0].n) expect_near(n, expected);
+  for (const glm::vec3& n : triangles[0].n) expect_vec3_near(n, expected);
   EXPECT_NEAR(glm::dot(expected, triangles[0].p[1] - triangles[0].p[0]), 0.0f, 1e-5f);
 }
 
@@ -225,7 +225,7 @@ TEST(GltfGeometry, MirroringKeepsWindingAndNormalsOnTheSameSide) {
     const glm::vec3 winding = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
     // The file's triangle winds counter-clockwise about its normal; so must the placed one.
     EXPECT_GT(glm::dot(winding, t.n[0]), 0.0f) << scale[0] << " " << scale[1] << " " << scale[2];
-    expect_near(t.p[0], {static_cast<float>(scale[0]), 0, 0});
+    expect_vec3_near(t.p[0], {static_cast<float>(scale[0]), 0, 0});
   }
 }
 
@@ -244,7 +244,7 @@ TEST(GltfGeometry, AMeshDrawnByManyNodesIsOnePrototypePlacedManyTimes) {
   const int child = builder.add_node(moved, false);
   turned.children = {child};
   builder.add_node(turned);
-  const renderer::Scene scene = scenes::instantiate_scene(parse(builder));
+  const renderer::Scene scene = scenes::instantiate_scene(parse_geometry(builder));
   EXPECT_EQ(scene.geometry.prototypes.size(), 1u);
   EXPECT_EQ(scene.geometry.instances.size(), 4u);  // the turned node draws the mesh itself too
   // The child: turned by 90 degrees about +y and scaled by 3 after moving 5 along x: at z = -15.
@@ -261,7 +261,7 @@ TEST(GltfGeometry, AMeshDrawnByManyNodesIsOnePrototypePlacedManyTimes) {
   builder.add_node(stretched);
   stretched.translation = {0, 9, 0};
   builder.add_node(stretched);
-  const renderer::Scene with_stretched = scenes::instantiate_scene(parse(builder));
+  const renderer::Scene with_stretched = scenes::instantiate_scene(parse_geometry(builder));
   EXPECT_EQ(with_stretched.geometry.prototypes.size(), 2u);
   EXPECT_EQ(with_stretched.geometry.instances.size(), 6u);
 }
@@ -276,7 +276,7 @@ TEST(GltfGeometry, PointsAndLinesAreSkippedWithOneWarningNamingTheMesh) {
   builder.add_node(mesh_node(
       builder.add_mesh({{"POSITION", positions}}, -1, TINYGLTF_MODE_TRIANGLES, -1, "triangle")));
   testing::internal::CaptureStderr();
-  const scenes::SceneDescription scene = parse(builder);
+  const scenes::SceneDescription scene = parse_geometry(builder);
   const std::string warnings = testing::internal::GetCapturedStderr();
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].name, "triangle");
@@ -287,14 +287,14 @@ TEST(GltfGeometry, PointsAndLinesAreSkippedWithOneWarningNamingTheMesh) {
   // With nothing else, one more line says that only the background remains.
   builder.model.scenes[0].nodes.pop_back();
   testing::internal::CaptureStderr();
-  EXPECT_TRUE(parse(builder).meshes.empty());
+  EXPECT_TRUE(parse_geometry(builder).meshes.empty());
   const std::string alone = testing::internal::GetCapturedStderr();
   EXPECT_NE(alone.find("nothing to render"), std::string::npos) << alone;
   EXPECT_EQ(std::count(alone.begin(), alone.end(), '\n'), 3) << alone;
 }
 
 void expect_refused(GltfBuilder& builder, const std::string& problem) {
-  levrt_test::expect_gltf_refused(builder.text(), kPath, problem);
+  levrt_test::expect_gltf_refused(builder.text(), kGeometryPath, problem);
 }
 
 TEST(GltfGeometry, BadAccessorsFailWithOneLine) {

@@ -74,7 +74,7 @@ void add_light_node(GltfBuilder& builder, const tinygltf::Light& light, tinygltf
   builder.add_node(with_light);
 }
 
-void add_camera(GltfBuilder& builder, tinygltf::Node node, double yfov) {
+void add_lights_camera(GltfBuilder& builder, tinygltf::Node node, double yfov) {
   tinygltf::Camera camera;
   camera.type = "perspective";
   camera.perspective.yfov = yfov;
@@ -84,8 +84,8 @@ void add_camera(GltfBuilder& builder, tinygltf::Node node, double yfov) {
   builder.add_node(node);
 }
 
-renderer::Framebuffer render(const renderer::Scene& scene, lev::Method method, float tolerance,
-                             int size = 40) {
+renderer::Framebuffer render_lights(const renderer::Scene& scene, lev::Method method,
+                                    float tolerance, int size = 40) {
   const renderer::RayScene rays(scene);
   renderer::RenderSettings rs = test_render_settings(method, size, size);
   rs.tolerance = tolerance;
@@ -93,7 +93,7 @@ renderer::Framebuffer render(const renderer::Scene& scene, lev::Method method, f
   return render_test_image(scene, rays, rs);
 }
 
-scenes::SceneDescription parse(GltfBuilder& builder, int camera = 0) {
+scenes::SceneDescription parse_lights(GltfBuilder& builder, int camera = 0) {
   return scenes::parse_gltf_scene(builder.text(), "lights.gltf", camera);
 }
 
@@ -120,13 +120,13 @@ GltfBuilder street() {
   tinygltf::Node sun;
   sun.rotation = {-0.5, -0.5, 0, std::sqrt(0.5)};
   add_light_node(builder, light_of("directional", {1, 1, 0.9}, 0.3), sun);
-  add_camera(builder, looking_down(0, 12, 0), 1.5);
+  add_lights_camera(builder, looking_down(0, 12, 0), 1.5);
   return builder;
 }
 
 TEST(GltfLights, RangeSmoothConesAndSunsReachTheRenderedScene) {
   GltfBuilder builder = street();
-  const renderer::Scene scene = scenes::instantiate_scene(parse(builder));
+  const renderer::Scene scene = scenes::instantiate_scene(parse_lights(builder));
   const std::vector<lev::Light> lights = lev::flatten_lights(scene.lights);
   ASSERT_EQ(lights.size(), 38u);
   int ranged_points = 0, smooth_spots = 0;
@@ -157,9 +157,9 @@ TEST(GltfLights, RangeSmoothConesAndSunsReachTheRenderedScene) {
 
 TEST(GltfLights, LevAtToleranceZeroEqualsRtBitForBitWithASun) {
   GltfBuilder builder = street();
-  const renderer::Scene scene = scenes::instantiate_scene(parse(builder));
-  const renderer::Framebuffer rt = render(scene, lev::Method::rt, 0.0f);
-  const renderer::Framebuffer lev = render(scene, lev::Method::lev, 0.0f);
+  const renderer::Scene scene = scenes::instantiate_scene(parse_lights(builder));
+  const renderer::Framebuffer rt = render_lights(scene, lev::Method::rt, 0.0f);
+  const renderer::Framebuffer lev = render_lights(scene, lev::Method::lev, 0.0f);
   EXPECT_TRUE(bitwise_equal(rt, lev));
   EXPECT_EQ(rt.shadow_rays, lev.shadow_rays);
   EXPECT_EQ(rt.lights_tested, lev.lights_tested);
@@ -172,13 +172,13 @@ TEST(GltfLights, LevAtToleranceZeroEqualsRtBitForBitWithASun) {
 // In the roof's shadow such a pixel is black (the scene's ambient is 0).
 TEST(GltfLights, RangeAndSunShadowHoldInEveryMethod) {
   GltfBuilder builder = street();
-  const renderer::Scene scene = scenes::instantiate_scene(parse(builder));
+  const renderer::Scene scene = scenes::instantiate_scene(parse_lights(builder));
   const renderer::RayScene rays(scene);
   const std::vector<lev::Light> lights = lev::flatten_lights(scene.lights);
   const int size = 72;
   const renderer::DirectionalLight sun = scene.directional_lights.at(0);
   for (const lev::Method method : {lev::Method::rt, lev::Method::ast, lev::Method::lev}) {
-    const renderer::Framebuffer image = render(scene, method, 0.001f, size);
+    const renderer::Framebuffer image = render_lights(scene, method, 0.001f, size);
     int sun_only = 0, shadowed = 0, lit = 0;
     for (int y = 0; y < size; ++y) {
       for (int x = 0; x < size; ++x) {
@@ -218,13 +218,13 @@ TEST(GltfLights, RangeAndSunShadowHoldInEveryMethod) {
 
 TEST(GltfLights, CameraIndexPicksACameraInNodeOrder) {
   GltfBuilder builder = street();
-  add_camera(builder, looking_down(3, 7, 0), 0.8);
-  EXPECT_NEAR(parse(builder, 0).camera.position.y, 12.0f, 1e-5f);
-  const renderer::Camera second = parse(builder, 1).camera;
+  add_lights_camera(builder, looking_down(3, 7, 0), 0.8);
+  EXPECT_NEAR(parse_lights(builder, 0).camera.position.y, 12.0f, 1e-5f);
+  const renderer::Camera second = parse_lights(builder, 1).camera;
   EXPECT_NEAR(second.position.x, 3.0f, 1e-5f);
   EXPECT_NEAR(second.vertical_fov_deg, 0.8 * 180.0 / kPi, 1e-3);
   try {
-    parse(builder, 2);
+    parse_lights(builder, 2);
     FAIL() << "camera 2 of 2";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "lights.gltf: camera: 2 (the file has 2 cameras in its scene)");

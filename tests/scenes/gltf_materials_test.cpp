@@ -21,7 +21,7 @@ using levrt_test::GltfBuilder;
 
 constexpr int kSize = 64;
 
-tinygltf::Material matte(std::vector<double> factor, bool double_sided = true) {
+tinygltf::Material matte_material(std::vector<double> factor, bool double_sided = true) {
   tinygltf::Material m;
   m.pbrMetallicRoughness.baseColorFactor = std::move(factor);
   m.pbrMetallicRoughness.metallicFactor = 0.0;
@@ -54,8 +54,9 @@ int add_material(GltfBuilder& builder, const tinygltf::Material& material) {
 }
 
 // A camera at `position` looking along the node's -Z, turned by the quaternion (x, y, z, w).
-void add_camera(GltfBuilder& builder, const std::vector<double>& position,
-                const std::vector<double>& rotation = {}, double orthographic_ymag = 0.0) {
+void add_materials_camera(GltfBuilder& builder, const std::vector<double>& position,
+                          const std::vector<double>& rotation = {},
+                          double orthographic_ymag = 0.0) {
   tinygltf::Camera camera;
   if (orthographic_ymag > 0.0) {
     camera.type = "orthographic";
@@ -90,7 +91,7 @@ void add_sun(GltfBuilder& builder, const std::vector<double>& rotation = {}) {
 const std::vector<double> kFacingUp = {0.0, 1.0, 0.0, 0.0};
 
 // The file rendered by rt, and what each camera ray of a pixel hits.
-struct Rendered {
+struct MaterialRender {
   renderer::Scene scene;
   std::unique_ptr<renderer::RayScene> rays;
   renderer::Framebuffer image;
@@ -104,8 +105,8 @@ struct Rendered {
   }
 };
 
-std::unique_ptr<Rendered> render(GltfBuilder& builder, int max_depth = 0) {
-  auto r = std::make_unique<Rendered>();
+std::unique_ptr<MaterialRender> render_materials(GltfBuilder& builder, int max_depth = 0) {
+  auto r = std::make_unique<MaterialRender>();
   r->scene = scenes::instantiate_scene(scenes::parse_gltf_scene(builder.text(), "m.gltf"));
   r->rays = std::make_unique<renderer::RayScene>(r->scene);
   renderer::RenderSettings rs;
@@ -118,12 +119,12 @@ std::unique_ptr<Rendered> render(GltfBuilder& builder, int max_depth = 0) {
   return r;
 }
 
-void expect_near(const glm::vec3& got, const glm::vec3& want, const std::string& what) {
+void expect_channels_near(const glm::vec3& got, const glm::vec3& want, const std::string& what) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-4f) << what << " channel " << c;
 }
 
 tinygltf::Material emissive() {
-  tinygltf::Material m = matte({0.0, 0.0, 0.0, 1.0});
+  tinygltf::Material m = matte_material({0.0, 0.0, 0.0, 1.0});
   m.emissiveFactor = {1.0, 0.5, 0.25};
   tinygltf::Value::Object strength;
   strength["emissiveStrength"] = tinygltf::Value(2.0);
@@ -136,9 +137,9 @@ TEST(GltfMaterials, EmissionIsSeenDirectlyAndInAMirrorAndLightsNothing) {
   GltfBuilder direct;
   direct.model.extensionsUsed.push_back("KHR_materials_emissive_strength");
   add_square(direct, 0, 0, 1, 0, true, add_material(direct, emissive()));
-  add_square(direct, 1.05f, 0, 1, 0, true, add_material(direct, matte({1, 1, 1, 1})));
-  add_camera(direct, {1.0, 0.5, 3.0});
-  const auto seen = render(direct);
+  add_square(direct, 1.05f, 0, 1, 0, true, add_material(direct, matte_material({1, 1, 1, 1})));
+  add_materials_camera(direct, {1.0, 0.5, 3.0});
+  const auto seen = render_materials(direct);
   EXPECT_EQ(seen->scene.materials.at(0).emission, glm::vec3(2.0f, 1.0f, 0.5f));
   int emissive_pixels = 0, white_pixels = 0;
   for (int y = 0; y < kSize; ++y) {
@@ -146,10 +147,10 @@ TEST(GltfMaterials, EmissionIsSeenDirectlyAndInAMirrorAndLightsNothing) {
       renderer::SurfaceHit hit;
       if (!seen->hit(x, y, hit)) continue;
       if (hit.position.x < 0.95f) {
-        expect_near(seen->pixel(x, y), {2.0f, 1.0f, 0.5f}, "the emissive square");
+        expect_channels_near(seen->pixel(x, y), {2.0f, 1.0f, 0.5f}, "the emissive square");
         ++emissive_pixels;
       } else if (hit.position.x > 1.1f) {
-        expect_near(seen->pixel(x, y), glm::vec3(0.0f), "the square beside it");
+        expect_channels_near(seen->pixel(x, y), glm::vec3(0.0f), "the square beside it");
         ++white_pixels;
       }
     }
@@ -161,16 +162,17 @@ TEST(GltfMaterials, EmissionIsSeenDirectlyAndInAMirrorAndLightsNothing) {
   // by the reflected rays.
   GltfBuilder mirrored;
   mirrored.model.extensionsUsed.push_back("KHR_materials_emissive_strength");
-  tinygltf::Material mirror = matte({1, 1, 1, 1});
+  tinygltf::Material mirror = matte_material({1, 1, 1, 1});
   mirror.pbrMetallicRoughness.metallicFactor = 1.0;
   mirror.pbrMetallicRoughness.roughnessFactor = 0.0;
   add_square(mirrored, -5, -5, 10, 0, true, add_material(mirrored, mirror));
   add_square(mirrored, -5, -5, 10, 3, false, add_material(mirrored, emissive()));
-  add_camera(mirrored, {0.0, 0.0, 2.0});
-  const auto reflected = render(mirrored, 1);
-  const auto dark = render(mirrored, 0);
-  expect_near(reflected->pixel(kSize / 2, kSize / 2), {2.0f, 1.0f, 0.5f}, "in the mirror");
-  expect_near(dark->pixel(kSize / 2, kSize / 2), glm::vec3(0.0f), "no reflection at depth 0");
+  add_materials_camera(mirrored, {0.0, 0.0, 2.0});
+  const auto reflected = render_materials(mirrored, 1);
+  const auto dark = render_materials(mirrored, 0);
+  expect_channels_near(reflected->pixel(kSize / 2, kSize / 2), {2.0f, 1.0f, 0.5f}, "in the mirror");
+  expect_channels_near(dark->pixel(kSize / 2, kSize / 2), glm::vec3(0.0f),
+                       "no reflection at depth 0");
 }
 
 TEST(GltfMaterials, ABackFaceIsNotDrawnWhenSingleSidedAndLitWhenDoubleSided) {
@@ -178,20 +180,20 @@ TEST(GltfMaterials, ABackFaceIsNotDrawnWhenSingleSidedAndLitWhenDoubleSided) {
     // The square faces +Z; the camera and the sun are below it, on its back.
     GltfBuilder builder;
     add_square(builder, 0, 0, 1, 0, true,
-               add_material(builder, matte({0.5, 0.5, 0.5, 1}, double_sided)));
-    add_camera(builder, {0.5, 0.5, -2.0}, kFacingUp);
+               add_material(builder, matte_material({0.5, 0.5, 0.5, 1}, double_sided)));
+    add_materials_camera(builder, {0.5, 0.5, -2.0}, kFacingUp);
     add_sun(builder, kFacingUp);
-    const auto r = render(builder);
+    const auto r = render_materials(builder);
     EXPECT_EQ(r->scene.materials.at(0).cull_back_faces, !double_sided);
     renderer::SurfaceHit hit;
     EXPECT_EQ(r->hit(kSize / 2, kSize / 2, hit), double_sided);
-    expect_near(r->pixel(kSize / 2, kSize / 2), glm::vec3(double_sided ? 0.5f : 0.0f),
-                double_sided ? "double-sided" : "single-sided");
+    expect_channels_near(r->pixel(kSize / 2, kSize / 2), glm::vec3(double_sided ? 0.5f : 0.0f),
+                         double_sided ? "double-sided" : "single-sided");
     // From the front the single-sided square is drawn (and dark: the sun is behind it).
     GltfBuilder front = builder;
     front.model.nodes[1].translation = {0.5, 0.5, 2.0};
     front.model.nodes[1].rotation = {};
-    EXPECT_TRUE(render(front)->hit(kSize / 2, kSize / 2, hit));
+    EXPECT_TRUE(render_materials(front)->hit(kSize / 2, kSize / 2, hit));
   }
 }
 
@@ -207,12 +209,12 @@ struct Shadow {
 };
 
 Shadow shadow_of(const tinygltf::Material& material, GltfBuilder builder = GltfBuilder()) {
-  add_square(builder, -3, -2, 6, 0, true, add_material(builder, matte({1, 1, 1, 1})));
+  add_square(builder, -3, -2, 6, 0, true, add_material(builder, matte_material({1, 1, 1, 1})));
   add_square(builder, 0, 0, 1, 1, true, add_material(builder, material));
-  add_camera(builder, {1.0, 0.5, 4.0});
+  add_materials_camera(builder, {1.0, 0.5, 4.0});
   // -Z turned 45 degrees about -Y: the sun shines along (1, 0, -1) / sqrt(2).
   add_sun(builder, {0.0, -std::sin(M_PI / 8), 0.0, std::cos(M_PI / 8)});
-  const auto r = render(builder);
+  const auto r = render_materials(builder);
   Shadow s;
   for (int y = 0; y < kSize; ++y) {
     for (int x = 0; x < kSize; ++x) {
@@ -241,7 +243,7 @@ Shadow shadow_of(const tinygltf::Material& material, GltfBuilder builder = GltfB
 
 TEST(GltfMaterials, ASingleSidedSurfaceCastsItsShadowFromBehindToo) {
   // The shadow rays from the floor meet the square's back face: it still blocks the sun.
-  const Shadow s = shadow_of(matte({1, 1, 1, 1}, false));
+  const Shadow s = shadow_of(matte_material({1, 1, 1, 1}, false));
   EXPECT_EQ(s.left_max, 0.0f);
   EXPECT_EQ(s.right_max, 0.0f);
 }
@@ -252,7 +254,7 @@ TEST(GltfMaterials, AMaskCutOutIsSeenThroughAndCastsACutOutShadow) {
   const int texture = builder.add_png_texture(2, 1, {255, 255, 255, 255, 255, 255, 255, 0},
                                               TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE,
                                               TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE, 4);
-  tinygltf::Material cut_out = matte({1, 1, 1, 1});
+  tinygltf::Material cut_out = matte_material({1, 1, 1, 1});
   cut_out.alphaMode = "MASK";
   cut_out.alphaCutoff = 0.5;
   cut_out.pbrMetallicRoughness.baseColorTexture.index = texture;
@@ -275,16 +277,16 @@ TEST(GltfMaterials, AMaskCutOutIsSeenThroughAndCastsACutOutShadow) {
 TEST(GltfMaterials, UnlitShowsTheBaseColourAsIs) {
   GltfBuilder builder;
   builder.model.extensionsUsed.push_back("KHR_materials_unlit");
-  tinygltf::Material unlit = matte({0.2, 0.4, 0.6, 1});
+  tinygltf::Material unlit = matte_material({0.2, 0.4, 0.6, 1});
   unlit.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object());
   add_square(builder, 0, 0, 1, 0, true, add_material(builder, unlit));
-  add_camera(builder, {0.5, 0.5, 2.0});
+  add_materials_camera(builder, {0.5, 0.5, 2.0});
   // A sun at a grazing angle and one from behind: neither changes the colour.
   add_sun(builder, {0.0, std::sin(0.7), 0.0, std::cos(0.7)});
   add_sun(builder, kFacingUp);
-  const auto r = render(builder, 3);
+  const auto r = render_materials(builder, 3);
   EXPECT_TRUE(r->scene.materials.at(0).unlit);
-  expect_near(r->pixel(kSize / 2, kSize / 2), {0.2f, 0.4f, 0.6f}, "unlit");
+  expect_channels_near(r->pixel(kSize / 2, kSize / 2), {0.2f, 0.4f, 0.6f}, "unlit");
 }
 
 TEST(GltfMaterials, WhatIsNotRenderedIsNamedInOneWarningLinePerKind) {
@@ -292,7 +294,7 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInOneWarningLinePerKind) {
   const int texture = builder.add_png_texture(1, 1, {255, 255, 255}, TINYGLTF_TEXTURE_WRAP_REPEAT,
                                               TINYGLTF_TEXTURE_WRAP_REPEAT);
   for (int i = 0; i < 2; ++i) {
-    tinygltf::Material blend = matte({1, 1, 1, 0.5});
+    tinygltf::Material blend = matte_material({1, 1, 1, 0.5});
     blend.alphaMode = "BLEND";
     blend.normalTexture.index = texture;
     add_square(builder, 2.0f * static_cast<float>(i), 0, 1, 0, true, add_material(builder, blend));
@@ -309,8 +311,8 @@ TEST(GltfMaterials, WhatIsNotRenderedIsNamedInOneWarningLinePerKind) {
 // The pixels whose camera ray hits the unit square seen from `distance` above it.
 int square_pixels(double distance, double orthographic_ymag) {
   GltfBuilder builder;
-  add_square(builder, 0, 0, 1, 0, true, add_material(builder, matte({1, 1, 1, 1})));
-  add_camera(builder, {0.5, 0.5, distance}, {}, orthographic_ymag);
+  add_square(builder, 0, 0, 1, 0, true, add_material(builder, matte_material({1, 1, 1, 1})));
+  add_materials_camera(builder, {0.5, 0.5, distance}, {}, orthographic_ymag);
   const renderer::Scene scene =
       scenes::instantiate_scene(scenes::parse_gltf_scene(builder.text(), "o.gltf"));
   EXPECT_EQ(scene.camera.orthographic_half_height, static_cast<float>(orthographic_ymag));

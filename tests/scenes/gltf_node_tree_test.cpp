@@ -12,10 +12,10 @@
 
 namespace {
 
-constexpr char kPath[] = "tree.gltf";
+constexpr char kTreePath[] = "tree.gltf";
 
 // Node 0 carries the one point light; `roots` lists the scene's nodes, `nodes` follow node 0.
-std::string gltf_with(const std::string& roots, const std::string& nodes) {
+std::string gltf_tree_with(const std::string& roots, const std::string& nodes) {
   return R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
     "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}},
     "scenes": [{"nodes": )" +
@@ -25,24 +25,25 @@ std::string gltf_with(const std::string& roots, const std::string& nodes) {
 
 TEST(GltfNodeTree, ANodeReachableTwiceIsRefusedNamingIt) {
   const std::pair<std::string, std::string> cases[] = {
-      {gltf_with("[1, 2]", R"(, {"children": [0]}, {"children": [0]})"),
+      {gltf_tree_with("[1, 2]", R"(, {"children": [0]}, {"children": [0]})"),
        "nodes[0]: a child of both nodes[1] and nodes[2] (a node has one parent)"},
-      {gltf_with("[1]", R"(, {"children": [0, 0]})"),
+      {gltf_tree_with("[1]", R"(, {"children": [0, 0]})"),
        "nodes[0]: listed twice in nodes[1].children"},
-      {gltf_with("[0, 0]", ""), "nodes[0]: listed twice in scenes[0].nodes"},
-      {gltf_with("[0, 1]", R"(, {"children": [0]})"),
+      {gltf_tree_with("[0, 0]", ""), "nodes[0]: listed twice in scenes[0].nodes"},
+      {gltf_tree_with("[0, 1]", R"(, {"children": [0]})"),
        "nodes[0]: a root of scenes[0].nodes and a child of nodes[1] (reachable twice)"},
       // Outside the scene: nodes 1 and 2 are each other's parent.
-      {gltf_with("[0]", R"(, {"children": [2]}, {"children": [1]})"),
+      {gltf_tree_with("[0]", R"(, {"children": [2]}, {"children": [1]})"),
        "nodes[1]: cycle in the node tree"},
-      {gltf_with("[1]", R"(, {"children": [1]})"), "nodes[1]: cycle in the node tree"},
+      {gltf_tree_with("[1]", R"(, {"children": [1]})"), "nodes[1]: cycle in the node tree"},
   };
-  for (const auto& [text, problem] : cases) levrt_test::expect_gltf_refused(text, kPath, problem);
+  for (const auto& [text, problem] : cases)
+    levrt_test::expect_gltf_refused(text, kTreePath, problem);
 }
 
 TEST(GltfNodeTree, SeparateTreesAreReadOnceEach) {
   const scenes::SceneDescription scene = scenes::parse_gltf_scene(
-      gltf_with("[1, 3]", R"(, {"children": [0, 2]}, {}, {"children": [4]}, {})"), kPath);
+      gltf_tree_with("[1, 3]", R"(, {"children": [0, 2]}, {}, {"children": [4]}, {})"), kTreePath);
   EXPECT_EQ(scene.root.children.size(), 1u);  // the light, once
 }
 

@@ -30,17 +30,17 @@ fs::path samples_dir() {
   return LEVRT_GLTF_SAMPLES_DIR;
 }
 
-struct Rendered {
+struct SampleRender {
   renderer::Scene scene;
   std::unique_ptr<renderer::RayScene> rays;
   renderer::Framebuffer image;
   int width = 160, height = 120;
 };
 
-std::unique_ptr<Rendered> render_sample(const std::string& relative,
-                                        lev::Method method = lev::Method::rt,
-                                        float tolerance = 0.0f) {
-  auto r = std::make_unique<Rendered>();
+std::unique_ptr<SampleRender> render_sample(const std::string& relative,
+                                            lev::Method method = lev::Method::rt,
+                                            float tolerance = 0.0f) {
+  auto r = std::make_unique<SampleRender>();
   r->scene =
       scenes::instantiate_scene(scenes::load_scene_file((samples_dir() / relative).string()));
   r->rays = std::make_unique<renderer::RayScene>(r->scene);
@@ -57,7 +57,7 @@ std::unique_ptr<Rendered> render_sample(const std::string& relative,
 
 // The pixel whose primary hit lies nearest to `target`, and its radiance; fails when no pixel's
 // hit comes within `within`.
-glm::vec3 pixel_at(const Rendered& r, const glm::vec3& target, float within) {
+glm::vec3 pixel_at(const SampleRender& r, const glm::vec3& target, float within) {
   float best = std::numeric_limits<float>::infinity();
   glm::vec3 radiance(0.0f);
   for (int y = 0; y < r.height; ++y) {

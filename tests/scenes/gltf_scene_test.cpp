@@ -18,10 +18,10 @@
 
 namespace {
 
-constexpr char kPath[] = "test.gltf";
+constexpr char kScenePath[] = "test.gltf";
 
-std::string gltf_with(const std::string& lights, const std::string& nodes,
-                      const std::string& extra = "") {
+std::string gltf_scene_with(const std::string& lights, const std::string& nodes,
+                            const std::string& extra = "") {
   return R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
     "extensions": {"KHR_lights_punctual": {"lights": [)" +
          lights + R"(]}}, "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [)" + nodes + "]" +
@@ -44,7 +44,7 @@ const scenes::SceneNode& only_light(const scenes::SceneDescription& scene) {
 
 TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(kSpot, kNestedNodes), kPath);
+      scenes::parse_gltf_scene(gltf_scene_with(kSpot, kNestedNodes), kScenePath);
   const scenes::SceneNode& placed = only_light(scene);
   const auto& affine = std::get<scenes::Affine>(placed.data);
   EXPECT_NEAR(affine.translate.x, 3.0f, 1e-5f);
@@ -67,7 +67,8 @@ TEST(GltfScene, SpotLightSitsAtTheWorldPositionAndDirectionUnscaled) {
 TEST(GltfScene, LightIntensityIsColourTimesIntensityAsAuthored) {
   const std::string point = R"({"type": "point", "color": [0, 1, 0.5], "intensity": 4})";
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, node), kPath);
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_scene_with(point, node), kScenePath);
   const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
   EXPECT_EQ(light.intensity, glm::vec3(0.0f, 4.0f, 2.0f));
 }
@@ -81,7 +82,7 @@ TEST(GltfScene, MatrixNodesAndTheFirstPerspectiveCamera) {
   const std::string cameras =
       R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 1.0, "znear": 0.1}}])";
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(point, nodes, cameras), kPath);
+      scenes::parse_gltf_scene(gltf_scene_with(point, nodes, cameras), kScenePath);
   EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
             glm::vec3(5.0f, 6.0f, 7.0f));
   EXPECT_EQ(scene.camera.position, glm::vec3(5.0f, 6.0f, 17.0f));
@@ -94,7 +95,8 @@ TEST(GltfScene, WithoutACameraTheViewFramesTheLightsFromFrontAbove) {
   const std::string point = R"({"type": "point"})";
   const std::string node =
       R"({"translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
-  const scenes::SceneDescription scene = scenes::parse_gltf_scene(gltf_with(point, node), kPath);
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_scene_with(point, node), kScenePath);
   EXPECT_EQ(scene.camera.target, glm::vec3(2.0f, 0.0f, 0.0f));
   EXPECT_GT(scene.camera.position.y, scene.camera.target.y);
   EXPECT_GT(scene.camera.position.z, scene.camera.target.z);
@@ -104,33 +106,34 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
   const std::pair<std::string, std::string> cases[] = {
       {"{\"asset\": ", "invalid JSON at line 1, column 11 (syntax error"},
-      {gltf_with(R"({"type": "point", "intensity": -1})", node), "lights[0].intensity: -1"},
-      {gltf_with(R"({"type": "point", "range": -2})", node), "lights[0].range: -2"},
-      {gltf_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})",
-                 node),
+      {gltf_scene_with(R"({"type": "point", "intensity": -1})", node), "lights[0].intensity: -1"},
+      {gltf_scene_with(R"({"type": "point", "range": -2})", node), "lights[0].range: -2"},
+      {gltf_scene_with(
+           R"({"type": "spot", "spot": {"innerConeAngle": 0.6, "outerConeAngle": 0.5}})", node),
        "lights[0].spot.innerConeAngle: 0.6"},
-      {gltf_with(R"({"type": "spot", "spot": {"outerConeAngle": 2}})", node),
+      {gltf_scene_with(R"({"type": "spot", "spot": {"outerConeAngle": 2}})", node),
        "lights[0].spot.outerConeAngle: 2"},
-      {gltf_with(R"({"type": "area"})", node), "lights[0].type: 'area'"},
-      {gltf_with(R"({"type": "point"})",
-                 R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
+      {gltf_scene_with(R"({"type": "area"})", node), "lights[0].type: 'area'"},
+      {gltf_scene_with(R"({"type": "point"})",
+                       R"({"extensions": {"KHR_lights_punctual": {"light": 3}}})"),
        "KHR_lights_punctual.light: 3"},
-      {gltf_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
+      {gltf_scene_with(R"({"type": "point"})", R"({"children": [1]}, {"children": [0]})"),
        "cycle in the node tree"},
-      {gltf_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0].scale: 2 values"},
-      {gltf_with(R"({"type": "point"})", R"({})",
-                 R"(, "buffers": [{"byteLength": 12,
+      {gltf_scene_with(R"({"type": "point"})", R"({"scale": [1, 2]})"), "nodes[0].scale: 2 values"},
+      {gltf_scene_with(R"({"type": "point"})", R"({})",
+                       R"(, "buffers": [{"byteLength": 12,
                     "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}],
                     "bufferViews": [{"buffer": 0, "byteLength": 12}],
                     "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3",
                                    "count": 2}])"),
        "accessors[0]: 2 elements beyond the view's 12 bytes"},
   };
-  for (const auto& [text, problem] : cases) levrt_test::expect_gltf_refused(text, kPath, problem);
+  for (const auto& [text, problem] : cases)
+    levrt_test::expect_gltf_refused(text, kScenePath, problem);
 }
 
 // A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
-std::string glb_of(std::string json, std::uint32_t length_delta_bytes) {
+std::string glb_with_length(std::string json, std::uint32_t length_delta_bytes) {
   while (json.size() % 4 != 0) json += ' ';
   auto word = [](std::uint32_t v) {
     std::string bytes(4, '\0');
@@ -148,11 +151,12 @@ TEST(GltfScene, BinaryFilesReadTheJsonChunkAndCheckTheLength) {
   const std::string node =
       R"({"translation": [0, 1, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}})";
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 0), "test.glb");
+      scenes::parse_gltf_scene(glb_with_length(gltf_scene_with(point, node), 0), "test.glb");
   EXPECT_EQ(std::get<scenes::Affine>(only_light(scene).data).translate,
             glm::vec3(0.0f, 1.0f, 0.0f));
-  EXPECT_THROW(scenes::parse_gltf_scene(glb_of(gltf_with(point, node), 4), "test.glb"),
-               std::invalid_argument);
+  EXPECT_THROW(
+      scenes::parse_gltf_scene(glb_with_length(gltf_scene_with(point, node), 4), "test.glb"),
+      std::invalid_argument);
 }
 
 TEST(GltfScene, FileNames) {
@@ -179,14 +183,14 @@ TEST(GltfScene, ZeroScaleHidesMeshesButPlacesPointLights) {
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(lights, nodes, mesh), kPath);
+      scenes::parse_gltf_scene(gltf_scene_with(lights, nodes, mesh), kScenePath);
   const std::string warnings = testing::internal::GetCapturedStderr();
   EXPECT_TRUE(scene.meshes.empty());
   const scenes::SceneNode& placed = only_light(scene);
   // The child's translation is scaled by 0 too: the light sits at its parent's origin.
   EXPECT_EQ(std::get<scenes::Affine>(placed.data).translate, glm::vec3(1.0f, 2.0f, 3.0f));
   EXPECT_TRUE(std::holds_alternative<scenes::PointLightSource>(placed.children.at(0).data));
-  EXPECT_EQ(warnings, std::string(kPath) +
+  EXPECT_EQ(warnings, std::string(kScenePath) +
                           ": warning: nodes[3]: spot light under a zero scale has no direction; "
                           "skipped\n");
 }
@@ -205,10 +209,10 @@ TEST(GltfScene, PrimitivesWithoutPositionAreSkippedWithOneWarning) {
                  {"primitives": [{"attributes": {}}, {"attributes": {"TEXCOORD_0": 0}}]}])";
   testing::internal::CaptureStderr();
   const scenes::SceneDescription scene =
-      scenes::parse_gltf_scene(gltf_with(point, nodes, meshes), kPath);
+      scenes::parse_gltf_scene(gltf_scene_with(point, nodes, meshes), kScenePath);
   const std::string warnings = testing::internal::GetCapturedStderr();
   EXPECT_TRUE(scene.meshes.empty());
-  EXPECT_EQ(warnings, std::string(kPath) +
+  EXPECT_EQ(warnings, std::string(kScenePath) +
                           ": warning: 3 primitive(s) without POSITION skipped (the first: "
                           "meshes[0].primitives[0])\n");
 }

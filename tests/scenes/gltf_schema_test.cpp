@@ -18,7 +18,7 @@
 
 namespace {
 
-constexpr char kPath[] = "schema.gltf";
+constexpr char kSchemaPath[] = "schema.gltf";
 
 // One point light on one node; `top` adds members to the document, `light` replaces the light.
 std::string gltf(
@@ -31,7 +31,7 @@ std::string gltf(
 
 std::string warnings_of(const std::string& text) {
   testing::internal::CaptureStderr();
-  (void)scenes::parse_gltf_scene(text, kPath);
+  (void)scenes::parse_gltf_scene(text, kSchemaPath);
   return testing::internal::GetCapturedStderr();
 }
 
@@ -41,7 +41,7 @@ TEST(GltfSchema, RequiredExtensionsLevrtCannotHonourAreRefusedByName) {
     const std::string top = R"(, "extensionsUsed": ["KHR_lights_punctual", ")" + name +
                             R"("], "extensionsRequired": ["KHR_lights_punctual", ")" + name +
                             R"("])";
-    levrt_test::expect_gltf_refused(gltf(top), kPath,
+    levrt_test::expect_gltf_refused(gltf(top), kSchemaPath,
                                     "extensionsRequired[1]: '" + name + "' (an extension");
   }
 }
@@ -70,11 +70,11 @@ TEST(GltfSchema, EmptyArraysAndRepeatedExtensionsAreRefusedByPath) {
       {R"(, "materials": [{"emissiveFactor": [2, 0, 0]}])", "materials[0].emissiveFactor[0]: 2"},
   };
   for (const auto& [top, problem] : cases)
-    levrt_test::expect_gltf_refused(gltf(top), kPath, problem);
+    levrt_test::expect_gltf_refused(gltf(top), kSchemaPath, problem);
   // The light list itself.
   levrt_test::expect_gltf_refused(
       R"({"asset": {"version": "2.0"}, "extensions": {"KHR_lights_punctual": {"lights": []}}})",
-      kPath, "extensions.KHR_lights_punctual.lights: an empty array");
+      kSchemaPath, "extensions.KHR_lights_punctual.lights: an empty array");
 }
 
 TEST(GltfSchema, HonouredRequiredExtensionsAreRead) {
@@ -82,7 +82,7 @@ TEST(GltfSchema, HonouredRequiredExtensionsAreRead) {
                           R"("extensionsRequired": ["KHR_lights_punctual"])";
   EXPECT_EQ(warnings_of(gltf(top)), "");
   levrt_test::expect_gltf_refused(
-      gltf(R"(, "extensionsRequired": ["KHR_lights_punctual"])"), kPath,
+      gltf(R"(, "extensionsRequired": ["KHR_lights_punctual"])"), kSchemaPath,
       "extensionsRequired[0]: 'KHR_lights_punctual' (required but not in extensionsUsed)");
   EXPECT_TRUE(scenes::is_honoured_gltf_extension("KHR_lights_punctual"));
   EXPECT_FALSE(scenes::is_honoured_gltf_extension("KHR_draco_mesh_compression"));
@@ -93,10 +93,11 @@ TEST(GltfSchema, IgnoredUsedExtensionsGiveOneWarningLine) {
       R"(, "extensionsUsed": ["KHR_lights_punctual", "KHR_texture_transform", "EXT_made_up"])";
   const std::string warnings = warnings_of(gltf(top));
   EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 1) << warnings;
-  EXPECT_EQ(warnings.rfind(std::string(kPath) + ": warning: extensionsUsed: KHR_texture_transform, "
+  EXPECT_EQ(
+      warnings.rfind(std::string(kSchemaPath) + ": warning: extensionsUsed: KHR_texture_transform, "
                                                 "EXT_made_up ignored",
-                           0),
-            0u)
+                     0),
+      0u)
       << warnings;
 }
 
@@ -113,13 +114,13 @@ TEST(GltfSchema, VersionsOtherThanTwoAndMinVersionsAboveTwoPointZeroAreRefused) 
     levrt_test::expect_gltf_refused(
         gltf("", R"({"type": "point"})", R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})",
              asset),
-        kPath, problem);
+        kSchemaPath, problem);
   for (const std::string asset :
        {R"({"version": "2.0", "minVersion": "2.0"})", R"({"version": "2.1"})"}) {
     EXPECT_NO_THROW((void)scenes::parse_gltf_scene(
         gltf("", R"({"type": "point"})", R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})",
              asset),
-        kPath))
+        kSchemaPath))
         << asset;
   }
 }
@@ -139,7 +140,7 @@ TEST(GltfSchema, WrongTypesAndValuesOutOfRangeAreRefusedWithTheGltfPath) {
       {R"({"type": "spot", "spot": 0.5})", lights + "spot: 0.5 (an object is expected)"},
   };
   for (const auto& [light, problem] : refused)
-    levrt_test::expect_gltf_refused(gltf("", light), kPath, problem);
+    levrt_test::expect_gltf_refused(gltf("", light), kSchemaPath, problem);
 }
 
 TEST(GltfSchema, IndicesPastTheirArrayAreRefusedWhereverTheArrayComes) {
@@ -157,14 +158,15 @@ TEST(GltfSchema, IndicesPastTheirArrayAreRefusedWhereverTheArrayComes) {
       {gltf("", light, R"({"extensions": {"KHR_lights_punctual": {}}})"),
        "nodes[0].extensions.KHR_lights_punctual.light: missing"},
   };
-  for (const auto& [text, problem] : refused) levrt_test::expect_gltf_refused(text, kPath, problem);
+  for (const auto& [text, problem] : refused)
+    levrt_test::expect_gltf_refused(text, kSchemaPath, problem);
 }
 
 TEST(GltfSchema, AWholeNumberWrittenWithAFractionIsAnIndex) {
   const scenes::SceneDescription scene =
       scenes::parse_gltf_scene(gltf("", R"({"type": "point", "intensity": 2})",
                                     R"({"extensions": {"KHR_lights_punctual": {"light": 0.0}}})"),
-                               kPath);
+                               kSchemaPath);
   EXPECT_EQ(scene.root.children.size(), 1u);
 }
 

@@ -13,10 +13,10 @@
 
 namespace {
 
-using Key = std::tuple<float, float, float, float, float, float>;
+using InstanceLightKey = std::tuple<float, float, float, float, float, float>;
 
-std::vector<Key> sorted_keys(const std::vector<lev::Light>& lights) {
-  std::vector<Key> keys;
+std::vector<InstanceLightKey> sorted_instance_keys(const std::vector<lev::Light>& lights) {
+  std::vector<InstanceLightKey> keys;
   for (const lev::Light& l : lights) {
     keys.emplace_back(l.position.x, l.position.y, l.position.z, l.intensity.x, l.intensity.y,
                       l.intensity.z);
@@ -60,7 +60,8 @@ TEST(Instancing, InstancedHierarchyAndFlattenedBvhSelectTheSameLights) {
         lev::WalkCounters ca, cb;
         lev::find_important_lights(scene.lights, scene_volumes, tau, p, scratch, a, ca);
         lev::find_important_lights(bvh, bvh_volumes, tau, p, scratch, b, cb);
-        ASSERT_EQ(sorted_keys(a), sorted_keys(b)) << model.name << " tau " << tau << " point " << k;
+        ASSERT_EQ(sorted_instance_keys(a), sorted_instance_keys(b))
+            << model.name << " tau " << tau << " point " << k;
       }
     }
   }

@@ -193,9 +193,9 @@ class RandomStructure {
   std::vector<std::uint32_t> masters_;
 };
 
-using Key = std::tuple<float, float, float, float>;
-std::vector<Key> sorted_keys(const std::vector<lev::Light>& lights) {
-  std::vector<Key> keys;
+using ConvertedLightKey = std::tuple<float, float, float, float>;
+std::vector<ConvertedLightKey> sorted_converted_keys(const std::vector<lev::Light>& lights) {
+  std::vector<ConvertedLightKey> keys;
   for (const lev::Light& l : lights)
     keys.emplace_back(l.position.x, l.position.y, l.position.z, l.intensity.x);
   std::sort(keys.begin(), keys.end());
@@ -226,8 +226,8 @@ TEST(LightDescriptionConversion, NoLightStructureMakesTheWalkMeetEveryLight) {
       std::vector<lev::Light> found;
       lev::WalkCounters counters;
       lev::find_important_lights(scene.lights, volumes, kTolerance, p, scratch, found, counters);
-      ASSERT_EQ(sorted_keys(found),
-                sorted_keys(lev::important_lights_brute_force(world, p, kTolerance)))
+      ASSERT_EQ(sorted_converted_keys(found),
+                sorted_converted_keys(lev::important_lights_brute_force(world, p, kTolerance)))
           << "seed " << seed << " point " << k;
       visited += counters.nodes_visited;
       found_total += found.size();

@@ -17,7 +17,7 @@
 
 namespace {
 
-renderer::Framebuffer render(renderer::Scene& scene, lev::Method method, float tolerance) {
+renderer::Framebuffer render_model(renderer::Scene& scene, lev::Method method, float tolerance) {
   const renderer::RayScene rays(scene);
   renderer::RenderSettings rs = test_render_settings(method, 48, 36);
   rs.tolerance = tolerance;
@@ -40,8 +40,8 @@ TEST(SceneModels, ExportedFileRendersTheSameImageAndHierarchy) {
           << model.name << " " << level;
       EXPECT_EQ(loaded.lights.nodes.size(), built.lights.nodes.size());
       EXPECT_EQ(loaded.geometry.instances.size(), built.geometry.instances.size());
-      const renderer::Framebuffer a = render(built, lev::Method::lev, 0.01f);
-      const renderer::Framebuffer b = render(loaded, lev::Method::lev, 0.01f);
+      const renderer::Framebuffer a = render_model(built, lev::Method::lev, 0.01f);
+      const renderer::Framebuffer b = render_model(loaded, lev::Method::lev, 0.01f);
       EXPECT_TRUE(bitwise_equal(a, b)) << model.name << " " << level;
       EXPECT_EQ(renderer::framebuffer_rgb8(a), renderer::framebuffer_rgb8(b))
           << model.name << " " << level;
@@ -55,8 +55,8 @@ TEST(SceneModels, LevAtToleranceZeroEqualsRtBitForBit) {
     ASSERT_NE(model, nullptr);
     for (int level : {model->min_level, model->min_level + 1}) {
       renderer::Scene scene = model->build(level);
-      const renderer::Framebuffer rt = render(scene, lev::Method::rt, 0.0f);
-      const renderer::Framebuffer lev = render(scene, lev::Method::lev, 0.0f);
+      const renderer::Framebuffer rt = render_model(scene, lev::Method::rt, 0.0f);
+      const renderer::Framebuffer lev = render_model(scene, lev::Method::lev, 0.0f);
       EXPECT_TRUE(bitwise_equal(rt, lev)) << name << " " << level;
       EXPECT_EQ(renderer::framebuffer_rgb8(rt), renderer::framebuffer_rgb8(lev));
       EXPECT_EQ(rt.lights_tested, lev.lights_tested);

@@ -4,6 +4,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <string>
@@ -21,6 +22,11 @@ inline std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+}
+
+// How many lines a command printed (a one-line error is 1).
+inline long line_count(const std::string& output) {
+  return std::count(output.begin(), output.end(), '\n');
 }
 
 inline CommandRun run_shell(const std::string& command) {

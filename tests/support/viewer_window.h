@@ -93,9 +93,7 @@ inline int not_rendered_pixels(const Png& png) {
 
 class ViewerWindow : public levrt_test::FolderTest {};
 
-inline long line_count(const std::string& text) {
-  return std::count(text.begin(), text.end(), '\n');
-}
+using levrt_test::line_count;
 
 // Every file in the folder with its bytes (or its kind), to show that nothing changed.
 inline std::map<std::string, std::string> files_in(const fs::path& dir) {

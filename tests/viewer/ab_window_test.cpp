@@ -25,28 +25,25 @@
 namespace {
 
 using levrt_test::CommandRun;
+using levrt_test::read_file;
 namespace fs = std::filesystem;
 
-using Png = levrt_test::PngImage;
+using AbPng = levrt_test::PngImage;
 
-std::vector<int> rgb(const Png& png, int x, int y) {
+std::vector<int> rgb(const AbPng& png, int x, int y) {
   const unsigned char* p = png.at(x, y);
   return {p[0], p[1], p[2]};
 }
 
-Png read_png(const fs::path& path) {
+AbPng read_png(const fs::path& path) {
   return levrt_test::read_png_image(path);
-}
-
-std::string read_text(const fs::path& path) {
-  return levrt_test::read_file(path);
 }
 
 // Where the picture is in the window, and how many window pixels an image pixel spans.
 struct Picture {
   double x0 = 0.0, y0 = 0.0, scale = 0.0;
   // The window pixel at the centre of image pixel (x, y).
-  std::vector<int> at(const Png& window, int x, int y) const {
+  std::vector<int> at(const AbPng& window, int x, int y) const {
     return rgb(window, static_cast<int>(std::floor(x0 + (x + 0.5) * scale)),
                static_cast<int>(std::floor(y0 + (y + 0.5) * scale)));
   }
@@ -66,7 +63,7 @@ const std::vector<std::string> kSettings = {"--scene",     "building",
 class AbWindow : public levrt_test::FolderTest {
  protected:
   // The headless render of `method` with the test's settings, as a PNG.
-  Png headless(const std::string& method) {
+  AbPng headless(const std::string& method) {
     std::string command = levrt_test::shell_quote(LEVRT_BINARY) + " render --quiet";
     for (const std::string& a : kSettings) command += " " + levrt_test::shell_quote(a);
     const std::string out = path("headless_" + method + ".png");
@@ -78,7 +75,7 @@ class AbWindow : public levrt_test::FolderTest {
 
   Picture picture() {
     const nlohmann::json controls =
-        nlohmann::json::parse(read_text(path("controls.json")), nullptr, false);
+        nlohmann::json::parse(read_file(path("controls.json")), nullptr, false);
     Picture p;
     if (controls.is_discarded() || !controls["controls"].contains("image")) return p;
     const nlohmann::json& r = controls["controls"]["image"];
@@ -118,16 +115,16 @@ TEST_F(AbWindow, FlipSwipeDifferenceAndMaskDrawWhatTheyCompare) {
   // clang-format on
   const CommandRun view = levrt_test::run_viewer_on_xvfb(args);
   ASSERT_EQ(view.exit_code, 0) << view.output;
-  const Png method = headless("lev");
-  const Png rt = headless("rt");
+  const AbPng method = headless("lev");
+  const AbPng rt = headless("rt");
   ASSERT_TRUE(method.ok() && rt.ok());
   const Picture p = picture();
   ASSERT_GE(p.scale, 2.0) << view.output;
-  const Png shown_method = read_png(path("method.png"));
-  const Png shown_rt = read_png(path("rt.png"));
-  const Png swipe = read_png(path("swipe.png"));
-  const Png difference = read_png(path("difference.png"));
-  const Png mask = read_png(path("mask.png"));
+  const AbPng shown_method = read_png(path("method.png"));
+  const AbPng shown_rt = read_png(path("rt.png"));
+  const AbPng swipe = read_png(path("swipe.png"));
+  const AbPng difference = read_png(path("difference.png"));
+  const AbPng mask = read_png(path("mask.png"));
   ASSERT_TRUE(shown_method.ok() && shown_rt.ok() && swipe.ok() && difference.ok() && mask.ok());
 
   int differing = 0, equal = 0, masked = 0;
@@ -225,7 +222,7 @@ TEST_F(AbWindow, TheMissedLightViewTurnsTheEstimateOnAndASnapshotCarriesIt) {
   const auto stats_in = [&](const std::string& folder) {
     for (const auto& entry : fs::directory_iterator(dir_ / folder)) {
       if (entry.path().string().find("_stats.json") != std::string::npos)
-        return nlohmann::json::parse(read_text(entry.path()), nullptr, false);
+        return nlohmann::json::parse(read_file(entry.path()), nullptr, false);
     }
     return nlohmann::json();
   };
@@ -240,7 +237,7 @@ TEST_F(AbWindow, TheMissedLightViewTurnsTheEstimateOnAndASnapshotCarriesIt) {
   EXPECT_TRUE(after.contains("heatmap_missed_range"));
   std::string exr;
   for (const auto& entry : fs::directory_iterator(dir_ / "after")) {
-    if (entry.path().extension() == ".exr") exr = read_text(entry.path());
+    if (entry.path().extension() == ".exr") exr = read_file(entry.path());
   }
   const levrt_test::ExrFile file = levrt_test::read_exr(exr);
   EXPECT_EQ(file.channels.count("missed_pct"), 1u);
@@ -252,7 +249,7 @@ TEST_F(AbWindow, TheMissedLightViewTurnsTheEstimateOnAndASnapshotCarriesIt) {
              levrt_test::shell_quote(path("headless.json"));
   const CommandRun headless = levrt_test::run_shell(command);
   ASSERT_EQ(headless.exit_code, 0) << headless.output;
-  const nlohmann::json h = nlohmann::json::parse(read_text(path("headless.json")));
+  const nlohmann::json h = nlohmann::json::parse(read_file(path("headless.json")));
   EXPECT_NEAR(after["missed_estimate_avg_pct"].get<double>(),
               h["missed_estimate_avg_pct"].get<double>(),
               1e-4 + 1e-4 * h["missed_estimate_avg_pct"].get<double>());

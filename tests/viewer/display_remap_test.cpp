@@ -21,19 +21,22 @@
 #include "tests/support/exr_file.h"
 #include "tests/support/folder_test.h"
 #include "tests/support/png_file.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/xvfb_server.h"
 
 namespace {
+
+using levrt_test::read_file;
 namespace fs = std::filesystem;
 using levrt_test::CommandRun;
 using levrt_test::have_xvfb;
 
-using Png = levrt_test::PngImage;
+using RemapPng = levrt_test::PngImage;
 using levrt_test::read_png_image;
 
 // Pixels that differ inside the picture (right of the panel, above the statistics).
-int picture_differences(const Png& a, const Png& b) {
+int picture_differences(const RemapPng& a, const RemapPng& b) {
   int differences = 0;
   for (int y = a.height * 15 / 100; y < a.height * 55 / 100; ++y) {
     for (int x = a.width / 2; x < a.width * 9 / 10; ++x) {
@@ -43,13 +46,6 @@ int picture_differences(const Png& a, const Png& b) {
     }
   }
   return differences;
-}
-
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
 }
 
 // The one file of `folder` whose name ends in `suffix`.
@@ -86,16 +82,15 @@ TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
       "--set",    "snapshot=" + path("after") + "@7",          //
   });
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Png linear = read_png_image(path("linear.png")),
-            exposed = read_png_image(path("exposed.png")),
-            neutral = read_png_image(path("neutral.png"));
+  const RemapPng linear = read_png_image(path("linear.png")),
+                 exposed = read_png_image(path("exposed.png")),
+                 neutral = read_png_image(path("neutral.png"));
   ASSERT_GT(linear.width, 0);
   EXPECT_GT(picture_differences(linear, exposed), 100);
   EXPECT_GT(picture_differences(exposed, neutral), 100);
 
-  const auto before =
-      nlohmann::json::parse(read_bytes(file_ending(dir_ / "before", "_stats.json")));
-  const auto after = nlohmann::json::parse(read_bytes(file_ending(dir_ / "after", "_stats.json")));
+  const auto before = nlohmann::json::parse(read_file(file_ending(dir_ / "before", "_stats.json")));
+  const auto after = nlohmann::json::parse(read_file(file_ending(dir_ / "after", "_stats.json")));
   EXPECT_EQ(before["exposure_ev"], 0.0);
   EXPECT_EQ(before["display"], "linear");
   EXPECT_EQ(after["exposure_ev"], 1.5);
@@ -105,9 +100,9 @@ TEST_F(DisplayRemap, ExposureAndDisplayReMapTheWindowWithoutANewRender) {
     EXPECT_EQ(before[key], after[key]) << key;
   // The snapshot's EXR holds the radiance, the same before and after the re-map.
   const levrt_test::ExrFile exr_before =
-      levrt_test::read_exr(read_bytes(file_ending(dir_ / "before", ".exr")));
+      levrt_test::read_exr(read_file(file_ending(dir_ / "before", ".exr")));
   const levrt_test::ExrFile exr_after =
-      levrt_test::read_exr(read_bytes(file_ending(dir_ / "after", ".exr")));
+      levrt_test::read_exr(read_file(file_ending(dir_ / "after", ".exr")));
   EXPECT_EQ(exr_before.width, 64);
   EXPECT_EQ(exr_before.channels.at("R"), exr_after.channels.at("R"));
   EXPECT_EQ(exr_before.channels.count("lights_tested"), 1u);
@@ -133,7 +128,7 @@ TEST_F(DisplayRemap, TheFiguresOfARenderThatGoesOnAreThoseOfARenderAtTheNewExpos
   view.push_back("snapshot=" + path("after") + "@3");
   const CommandRun r = levrt_test::run_viewer_on_xvfb(view);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto after = nlohmann::json::parse(read_bytes(file_ending(dir_ / "after", "_stats.json")));
+  const auto after = nlohmann::json::parse(read_file(file_ending(dir_ / "after", "_stats.json")));
   EXPECT_EQ(after["exposure_ev"], 2.0);
 
   const auto headless = [&](const char* ev, const std::string& stats) {
@@ -144,7 +139,7 @@ TEST_F(DisplayRemap, TheFiguresOfARenderThatGoesOnAreThoseOfARenderAtTheNewExpos
       args.push_back(a);
     const CommandRun run = levrt_test::run_levrt(args);
     EXPECT_EQ(run.exit_code, 0) << run.output;
-    return nlohmann::json::parse(read_bytes(path(stats)));
+    return nlohmann::json::parse(read_file(path(stats)));
   };
   const auto at_two = headless("2", "two.json");
   const auto at_zero = headless("0", "zero.json");

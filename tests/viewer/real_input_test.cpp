@@ -23,23 +23,18 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
 namespace {
 
+using levrt_test::read_file;
 namespace fs = std::filesystem;
 using levrt_test::shell_quote;
 using Json = nlohmann::json;
 
 bool have_command(const char* name) {
   return std::system(("command -v " + std::string(name) + " > /dev/null 2>&1").c_str()) == 0;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 class RealInput : public ::testing::Test {
@@ -55,9 +50,9 @@ class RealInput : public ::testing::Test {
         "Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>" + shell_quote(path("display")),
         "xvfb.pid", "xvfb.rc");
     ASSERT_TRUE(wait_for([&] {
-      return read_text(path("display")).find('\n') != std::string::npos;
+      return read_file(path("display")).find('\n') != std::string::npos;
     })) << "Xvfb did not start";
-    display_ = ":" + read_text(path("display")).substr(0, read_text(path("display")).find('\n'));
+    display_ = ":" + read_file(path("display")).substr(0, read_file(path("display")).find('\n'));
   }
 
   void TearDown() override {
@@ -65,8 +60,8 @@ class RealInput : public ::testing::Test {
     stop("viewer.pid");
     stop("xvfb.pid");
     for (const std::string name : {"viewer", "xvfb"}) {
-      if (!read_text(path(name + ".pid")).empty())
-        wait_for([&] { return !read_text(path(name + ".rc")).empty(); });
+      if (!read_file(path(name + ".pid")).empty())
+        wait_for([&] { return !read_file(path(name + ".rc")).empty(); });
     }
     fs::remove_all(dir_);
   }
@@ -80,11 +75,11 @@ class RealInput : public ::testing::Test {
                               " 2>&1 & echo $! > " + shell_quote(path(pid_file)) +
                               "; wait $!; echo $? > " + shell_quote(path(rc_file)) + ") &";
     ASSERT_EQ(std::system(shell.c_str()), 0);
-    ASSERT_TRUE(wait_for([&] { return !read_text(path(pid_file)).empty(); }));
+    ASSERT_TRUE(wait_for([&] { return !read_file(path(pid_file)).empty(); }));
   }
 
   void stop(const std::string& pid_file) {
-    const std::string pid = read_text(path(pid_file));
+    const std::string pid = read_file(path(pid_file));
     if (!pid.empty()) ::kill(std::stoi(pid), SIGTERM);
   }
 
@@ -98,7 +93,7 @@ class RealInput : public ::testing::Test {
     return false;
   }
 
-  Json controls() const { return Json::parse(read_text(dir_ / "controls.json"), nullptr, false); }
+  Json controls() const { return Json::parse(read_file(dir_ / "controls.json"), nullptr, false); }
 
   // Waits until the viewer's file satisfies the condition with the mouse released and no control
   // held, and returns it.
@@ -148,8 +143,8 @@ class RealInput : public ::testing::Test {
     EXPECT_FALSE(moved_to.empty()) << control << " is not among the recorded controls";
     // On failure: whether the viewer still runs (its exit code once it ended) and what it said.
     EXPECT_EQ(setting(c, "hovered"), control)
-        << "viewer exit code: '" << read_text(path("viewer.rc"))
-        << "', output: " << read_text(path("viewer.rc.log"));
+        << "viewer exit code: '" << read_file(path("viewer.rc"))
+        << "', output: " << read_file(path("viewer.rc.log"));
     return setting(c, "hovered") == control;
   }
 
@@ -184,7 +179,7 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
   Json c =
       wait_for_controls([](const Json& j) { return j["controls"].contains("tolerance_slider"); });
   ASSERT_TRUE(c.is_object() && c["controls"].contains("tolerance_slider"))
-      << read_text(path("viewer.rc.log"));
+      << read_file(path("viewer.rc.log"));
 
   const auto& range = std::get<app::RealRange>(app::find_setting("tolerance")->kind);
   // Slider clicks from left to right: every value inside the span, each larger than the last.
@@ -240,8 +235,8 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
 
   // SIGTERM closes the window like its close button (exit 130).
   stop("viewer.pid");
-  ASSERT_TRUE(wait_for([&] { return !read_text(path("viewer.rc")).empty(); }));
-  EXPECT_EQ(std::stoi(read_text(path("viewer.rc"))), 130) << read_text(path("viewer.rc.log"));
+  ASSERT_TRUE(wait_for([&] { return !read_file(path("viewer.rc")).empty(); }));
+  EXPECT_EQ(std::stoi(read_file(path("viewer.rc"))), 130) << read_file(path("viewer.rc.log"));
 }
 
 }  // namespace
