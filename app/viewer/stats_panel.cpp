@@ -109,9 +109,10 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   else
     row("method", "%s, tolerance %g", method.name, st.tolerance);
   if (st.rt_fallback) {
-    row("rt fallback", "%s: %.0f shadow rays' work per point, rt's %.0f",
-        st.rt_fallback->use_rt ? "shading with rt's loop" : "not needed",
-        st.rt_fallback->method_cost_rays, st.rt_fallback->rt_cost_rays);
+    // Work per probe point in shadow rays; short enough for the table's column.
+    row("rt fallback", "%s (%.0f vs rt %.0f rays/pt)",
+        st.rt_fallback->use_rt ? "rt's loop" : "own walk", st.rt_fallback->method_cost_rays,
+        st.rt_fallback->rt_cost_rays);
   }
   row(st.passes_done > 0 ? "time per pass" : "pass 1 so far", "%.3f s", s.pass_seconds);
   row("render time", "%.2f s (%d passes)", s.render_seconds, st.passes_done);
