@@ -28,7 +28,8 @@ namespace {
 struct BenchOptions {
   bool quick = false;
   std::string out;
-  std::vector<std::string> only;  // empty: every experiment
+  std::vector<std::string> only;    // empty: every experiment
+  std::vector<std::string> scenes;  // empty: every scene model
   int threads = 0;
 };
 
@@ -79,6 +80,18 @@ BenchOptions parse_options(const BenchFlags& flags) {
       o.only.push_back(name);
     }
   }
+  if (flags.scenes_given) {
+    const std::vector<std::string> valid = bench::suite_scene_names(bench::thesis_suite(o.quick));
+    std::string valid_text;
+    for (const std::string& v : valid) valid_text += (valid_text.empty() ? "" : "|") + v;
+    for (const std::string& name : split_names(flags.scenes)) {
+      if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
+        throw UsageError("--scenes: must be one or more of " + valid_text +
+                         " (comma-separated), got '" + flags.scenes + "'");
+      }
+      o.scenes.push_back(name);
+    }
+  }
   if (flags.threads_given) {
     char* end = nullptr;
     errno = 0;
@@ -119,6 +132,10 @@ std::string command_text(const BenchOptions& o) {
     c += " --only ";
     for (std::size_t i = 0; i < o.only.size(); ++i) c += (i ? "," : "") + o.only[i];
   }
+  if (!o.scenes.empty()) {
+    c += " --scenes ";
+    for (std::size_t i = 0; i < o.scenes.size(); ++i) c += (i ? "," : "") + o.scenes[i];
+  }
   if (o.threads > 0) c += " --threads " + std::to_string(o.threads);
   return c;
 }
@@ -147,6 +164,14 @@ void add_bench_flags(CLI::App& command, BenchFlags& flags) {
       .add_option("--only", flags.only,
                   "run only these experiments (comma-separated: " + names + ")")
       ->each([&flags](const std::string&) { flags.only_given = true; });
+  std::string scenes;
+  for (const std::string& n : bench::suite_scene_names(bench::thesis_suite(false)))
+    scenes += (scenes.empty() ? "" : ", ") + n;
+  command
+      .add_option(
+          "--scenes", flags.scenes,
+          "render only these scene models in every experiment (comma-separated: " + scenes + ")")
+      ->each([&flags](const std::string&) { flags.scenes_given = true; });
   command.add_option("--threads", flags.threads, "worker threads (0 = all cores)")
       ->each([&flags](const std::string&) { flags.threads_given = true; });
 }
@@ -160,7 +185,9 @@ std::size_t run_suite(const BenchOptions& options, const std::string& out_dir) {
   std::fprintf(stderr,
                "levrt bench: warning: not a Release build, the timings are not representative\n");
 #endif
-  bench::BenchRun run(bench::thesis_suite(options.quick), options.threads);
+  bench::SuiteConfig config = bench::thesis_suite(options.quick);
+  if (!options.scenes.empty()) bench::restrict_to_scenes(config, options.scenes);
+  bench::BenchRun run(config, options.threads);
 
   // Planning pass: every selected experiment walks its measurements without rendering, so the
   // progress estimate knows the whole suite.

@@ -23,9 +23,11 @@ struct BenchFlags {
   bool quick = false;
   std::string only;
   std::string threads;
+  std::string scenes;
   // Whether the flag was given at all (an empty value is an error, an absent flag the default).
   bool only_given = false;
   bool threads_given = false;
+  bool scenes_given = false;
 };
 
 // Registers the flags on the `bench` subcommand.

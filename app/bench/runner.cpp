@@ -57,6 +57,44 @@ double scaled_to_frame(double total, double setup, std::uint64_t pixels,
 
 }  // namespace
 
+namespace {
+
+// The (scene, light count) lists of a suite, each experiment's.
+std::vector<std::vector<std::pair<std::string, std::uint64_t>>*> scene_render_lists(
+    SuiteConfig& c) {
+  return {&c.control_renders, &c.converge_renders, &c.target_renders};
+}
+
+bool named(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+std::vector<std::string> suite_scene_names(const SuiteConfig& config) {
+  SuiteConfig c = config;
+  std::vector<std::string> names;
+  const auto add = [&](const std::string& name) {
+    if (!named(names, name)) names.push_back(name);
+  };
+  for (const std::string& name : c.scenes) add(name);
+  for (const auto* list : scene_render_lists(c)) {
+    for (const auto& render : *list) add(render.first);
+  }
+  return names;
+}
+
+void restrict_to_scenes(SuiteConfig& config, const std::vector<std::string>& names) {
+  const auto unnamed = [&](const std::string& name) { return !named(names, name); };
+  config.scenes.erase(std::remove_if(config.scenes.begin(), config.scenes.end(), unnamed),
+                      config.scenes.end());
+  for (auto* list : scene_render_lists(config)) {
+    list->erase(std::remove_if(list->begin(), list->end(),
+                               [&](const auto& render) { return unnamed(render.first); }),
+                list->end());
+  }
+}
+
 double Measurement::full_frame_seconds() const {
   return scaled_to_frame(seconds, setup_seconds, pixels, full_pixels);
 }

@@ -93,6 +93,11 @@ struct SuiteConfig {
 
 SuiteConfig thesis_suite(bool quick);
 
+// Every scene model the suite's experiments render, in the order they first appear.
+std::vector<std::string> suite_scene_names(const SuiteConfig& config);
+// Keeps only the renders of the named scene models in every experiment (`levrt bench --scenes`).
+void restrict_to_scenes(SuiteConfig& config, const std::vector<std::string>& names);
+
 struct MeasureRequest {
   std::string scene;
   int level = 0;

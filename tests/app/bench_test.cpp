@@ -348,6 +348,24 @@ TEST_F(Bench, OnlyRunsTheNamedExperiments) {
             std::string::npos);
 }
 
+TEST_F(Bench, ScenesRendersOnlyTheNamedSceneModels) {
+  const fs::path out = dir_ / "scenes";
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "targets,control", "--scenes",
+                                  "stage,hall", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::set<std::string> scenes;
+  for (const char* csv : {"targets.csv", "control.csv"}) {
+    const std::string text = read_file(out / csv);
+    std::size_t line = text.find('\n');  // after the header
+    while (line != std::string::npos && line + 1 < text.size()) {
+      scenes.insert(text.substr(line + 1, text.find(',', line + 1) - line - 1));
+      line = text.find('\n', line + 1);
+    }
+  }
+  EXPECT_EQ(scenes, (std::set<std::string>{"hall", "stage"}));
+  EXPECT_NE(read_file(out / "results.md").find("--scenes stage,hall"), std::string::npos);
+}
+
 TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
   const std::string out = (dir_ / "never").string();
   const std::string file = (dir_ / "a_file").string();
@@ -364,6 +382,9 @@ TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
       {"--only", "speeed", "--out", out},
       {"--only", "", "--out", out},
       {"--only", "speed,", "--out", out},
+      {"--scenes", "stadium", "--out", out},
+      {"--scenes", "", "--out", out},
+      {"--scenes", "hall,", "--out", out},
       {"--threads", "-1", "--out", out},
       {"--threads", "x", "--out", out},
       {"--threads", "", "--out", out},
