@@ -2,11 +2,15 @@
 
 #include <chrono>
 
+#include "renderer/process_cpu_time.h"
+
 namespace renderer {
 
 RenderJob::RenderJob(const Scene& scene, const RayScene& rays, const RenderSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = process_cpu_seconds();
   state_ = make_render_state(scene, rays, settings);
+  setup_cpu_seconds_ = process_cpu_seconds() - cpu_start;
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -34,6 +38,7 @@ RenderResult RenderJob::result() const {
   r.rendered_pixels = r.rendered_rgb.size() / 3;
   r.passes = render_passes_done(*state_);
   r.setup_seconds = setup_seconds_;
+  r.setup_cpu_seconds = setup_cpu_seconds_;
   r.render_seconds = render_seconds(*state_);
   r.method_bytes = render_selector(*state_).bookkeeping_bytes();
   if (const RtFallbackProbe* probe = render_rt_fallback(*state_)) r.rt_fallback = *probe;

@@ -25,7 +25,10 @@ struct RenderResult {
   std::vector<std::uint8_t> rendered_rgb;
   std::uint64_t rendered_pixels = 0;
   int passes = 0;
-  double setup_seconds = 0.0;    // make_render_state: selector and extent volumes
+  double setup_seconds = 0.0;  // make_render_state: selector and extent volumes
+  // The process' CPU time over that set-up (every thread; process_cpu_time.h). It does not grow
+  // with the pixels rendered, so a subsampled render's time is scaled to the frame without it.
+  double setup_cpu_seconds = 0.0;
   double render_seconds = 0.0;   // wall time inside the passes
   std::size_t method_bytes = 0;  // the method's own bookkeeping (AST)
   // The probe that chose between the method and rt's loop (rt_fallback.h), when one was made.
@@ -44,11 +47,13 @@ class RenderJob {
   RenderState& state() { return *state_; }
   const RenderState& state() const { return *state_; }
   double setup_seconds() const { return setup_seconds_; }
+  double setup_cpu_seconds() const { return setup_cpu_seconds_; }
   RenderResult result() const;
 
  private:
   RenderStatePtr state_;
   double setup_seconds_ = 0.0;
+  double setup_cpu_seconds_ = 0.0;
 };
 
 // The pixels of `framebuffer` with at least one sample, as 8-bit RGB.

@@ -215,12 +215,9 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
         passes.rows.push_back(
             {text_cell(scene), count_cell(lights), text_cell(info.name), text_cell(tolerance),
              count_cell(static_cast<std::uint64_t>(s.passes)), number_cell(seconds, 3),
-             number_cell(s.seconds * static_cast<double>(p.full_pixels) /
-                             static_cast<double>(std::max<std::uint64_t>(p.pixels, 1)),
-                         3),
-             ratio_cell(rt_seconds / seconds), number_cell(e.average_pct, 4),
-             number_cell(e.max_pct, 3), number_cell(s.std_error_avg_pct, 4),
-             text_cell(pixels_text(stride))});
+             number_cell(p.full_frame_seconds(s), 3), ratio_cell(rt_seconds / seconds),
+             number_cell(e.average_pct, 4), number_cell(e.max_pct, 3),
+             number_cell(s.std_error_avg_pct, 4), text_cell(pixels_text(stride))});
         avg_series.x.push_back(seconds);
         max_series.x.push_back(seconds);
         avg_series.y.push_back(error_on_log_axis(e.average_pct));

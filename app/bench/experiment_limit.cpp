@@ -7,6 +7,7 @@
 #include "app/interrupt.h"
 #include "app/settings.h"
 #include "lev/methods.h"
+#include "renderer/process_cpu_time.h"
 #include "renderer/ray_log.h"
 #include "renderer/render_service.h"
 
@@ -78,14 +79,14 @@ Section run_limit(BenchRun& run, const std::string& out_dir) {
         }
         rays = renderer::count_logged_rays(log);
         for (int r = 0; r < c.runs; ++r) {
-          double start = process_cpu_seconds();
+          double start = renderer::process_cpu_seconds();
           renderer::RenderJob job(loaded.scene, *loaded.rays, rs);
           if (!job.pass(&InterruptScope::flag())) throw Interrupted();
-          render_cpu.push_back(process_cpu_seconds() - start);
+          render_cpu.push_back(renderer::process_cpu_seconds() - start);
           render_wall.push_back(renderer::render_seconds(job.state()));
-          start = process_cpu_seconds();
+          start = renderer::process_cpu_seconds();
           bare_wall.push_back(renderer::cast_logged_rays(*loaded.rays, log, run.threads()).seconds);
-          bare_cpu.push_back(process_cpu_seconds() - start);
+          bare_cpu.push_back(renderer::process_cpu_seconds() - start);
           InterruptScope::throw_if_interrupted();
         }
       });

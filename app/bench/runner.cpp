@@ -1,7 +1,5 @@
 #include "app/bench/runner.h"
 
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +10,7 @@
 #include "renderer/error_bound.h"
 #include "renderer/pixel_error.h"
 #include "renderer/pixel_noise.h"
+#include "renderer/process_cpu_time.h"
 #include "renderer/render_service.h"
 #include "scenes/scene_models.h"
 
@@ -45,20 +44,25 @@ SuiteConfig thesis_suite(bool quick) {
   return c;
 }
 
-double Measurement::full_frame_seconds() const {
+namespace {
+
+// A render's time with its passes scaled from `pixels` to `full_pixels` and its set-up, which
+// does not depend on the pixels, counted once.
+double scaled_to_frame(double total, double setup, std::uint64_t pixels,
+                       std::uint64_t full_pixels) {
   if (pixels == 0) return kNaN;
-  return seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
+  const double passes = std::max(total - setup, 0.0);
+  return setup + passes * static_cast<double>(full_pixels) / static_cast<double>(pixels);
+}
+
+}  // namespace
+
+double Measurement::full_frame_seconds() const {
+  return scaled_to_frame(seconds, setup_seconds, pixels, full_pixels);
 }
 
 double Measurement::full_frame_cpu_seconds() const {
-  if (pixels == 0) return kNaN;
-  return cpu_seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
-}
-
-double process_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  return scaled_to_frame(cpu_seconds, setup_cpu_seconds, pixels, full_pixels);
 }
 
 double Measurement::lights_tested_avg() const {
@@ -76,9 +80,13 @@ double Measurement::shadow_rays_avg() const {
                                : kNaN;
 }
 
+double ProgressMeasurement::full_frame_seconds(const PassSnapshot& snapshot) const {
+  return scaled_to_frame(setup_seconds + snapshot.seconds, setup_seconds, pixels, full_pixels);
+}
+
 double ProgressMeasurement::full_frame_cpu_seconds(const PassSnapshot& snapshot) const {
-  if (pixels == 0) return kNaN;
-  return snapshot.cpu_seconds * static_cast<double>(full_pixels) / static_cast<double>(pixels);
+  return scaled_to_frame(setup_cpu_seconds + snapshot.cpu_seconds, setup_cpu_seconds, pixels,
+                         full_pixels);
 }
 
 PixelErrors pixel_errors(const std::vector<std::uint8_t>& image,
@@ -337,15 +345,17 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       if (!base && !extra) continue;
       const MeasureRequest& r = p.m.request;
       LoadedScene& loaded = scene(r.scene, r.level);
-      const double cpu_start = process_cpu_seconds();
+      const double cpu_start = renderer::process_cpu_seconds();
       InterruptScope::throw_if_interrupted();  // the scene may have just been built
       if (!renderer::render_passes(loaded.scene, *loaded.rays, p.render_settings, 1, p.last,
                                    &InterruptScope::flag())) {
         throw Interrupted();
       }
-      p.m.run_cpu_seconds.push_back(process_cpu_seconds() - cpu_start);
-      p.m.run_seconds.push_back(p.last.render_seconds);
-      p.spent += p.last.render_seconds;
+      p.m.run_cpu_seconds.push_back(renderer::process_cpu_seconds() - cpu_start);
+      p.m.run_seconds.push_back(p.last.setup_seconds + p.last.render_seconds);
+      p.m.run_setup_seconds.push_back(p.last.setup_seconds);
+      p.m.run_setup_cpu_seconds.push_back(p.last.setup_cpu_seconds);
+      p.spent += p.last.setup_seconds + p.last.render_seconds;
       any = true;
     }
     if (!any) break;
@@ -358,6 +368,8 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
     m.lights = loaded.scene.lights.light_count;
     m.seconds = median(m.run_seconds);
     m.cpu_seconds = median(m.run_cpu_seconds);
+    m.setup_seconds = median(m.run_setup_seconds);
+    m.setup_cpu_seconds = median(m.run_setup_cpu_seconds);
     m.full_pixels =
         static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
     m.totals = p.last.totals;
@@ -408,6 +420,8 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
     LoadedScene& loaded = scene(m.request.scene, m.request.level);
     InterruptScope::throw_if_interrupted();  // the scene may have just been built
     jobs.push_back(std::make_unique<renderer::RenderJob>(loaded.scene, *loaded.rays, rs));
+    m.setup_seconds = jobs.back()->setup_seconds();
+    m.setup_cpu_seconds = jobs.back()->setup_cpu_seconds();
     m.full_pixels =
         static_cast<std::uint64_t>(config_.width) * static_cast<std::uint64_t>(config_.height);
   }
@@ -417,9 +431,9 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
   for (int pass = 1; pass <= last; ++pass) {
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       if (stopped[i]) continue;
-      const double cpu_start = process_cpu_seconds();
+      const double cpu_start = renderer::process_cpu_seconds();
       if (!jobs[i]->pass(&InterruptScope::flag())) throw Interrupted();
-      cpu_spent[i] += process_cpu_seconds() - cpu_start;
+      cpu_spent[i] += renderer::process_cpu_seconds() - cpu_start;
     }
     if (next_count >= pass_counts.size() || pass != pass_counts[next_count]) continue;
     ++next_count;

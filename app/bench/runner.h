@@ -114,13 +114,20 @@ struct Measurement {
   MeasureRequest request;  // runs = how many were made
   std::uint64_t lights = 0;
   bool planned_only = false;  // the planning pass: no figures
-  double seconds = kNaN;      // median wall time of the render passes
+  double seconds = kNaN;      // median wall time of the whole render: set-up and passes
   std::vector<double> run_seconds;
   // Median CPU time of the process (every thread, user and system, as /bin/time sums it, which
   // is how the thesis timed) over each whole render: what the comparisons use, because the
   // machine's other load moves it far less than the wall time.
   double cpu_seconds = kNaN;
   std::vector<double> run_cpu_seconds;
+  // The share of those spent making the render state (selector, extent volumes, the rt
+  // fallback's probe): the same whatever the pixels rendered, so a subsampled render scales only
+  // the rest to the frame.
+  double setup_seconds = kNaN;
+  double setup_cpu_seconds = kNaN;
+  std::vector<double> run_setup_seconds;
+  std::vector<double> run_setup_cpu_seconds;
   std::uint64_t pixels = 0;  // pixels rendered
   std::uint64_t full_pixels = 0;
   renderer::FramebufferTotals totals;
@@ -131,7 +138,8 @@ struct Measurement {
   // order.
   std::vector<double> error_bound_pct;
 
-  // The median times scaled to every pixel of the frame (the identity without a subsample).
+  // The median times with their passes scaled to every pixel of the frame, the set-up once
+  // (the identity without a subsample).
   double full_frame_seconds() const;
   double full_frame_cpu_seconds() const;
   double lights_tested_avg() const;
@@ -156,8 +164,12 @@ struct ProgressMeasurement {
   std::uint64_t pixels = 0;  // pixels rendered per pass
   std::uint64_t full_pixels = 0;
   std::vector<PassSnapshot> snapshots;  // in the order of the pass counts asked for
+  // Making the render state, before the first pass (Measurement's set-up): counted once.
+  double setup_seconds = kNaN;
+  double setup_cpu_seconds = kNaN;
 
-  // A snapshot's CPU time scaled to every pixel of the frame.
+  // The set-up and a snapshot's passes, scaled to every pixel of the frame.
+  double full_frame_seconds(const PassSnapshot& snapshot) const;
   double full_frame_cpu_seconds(const PassSnapshot& snapshot) const;
 };
 
@@ -176,9 +188,6 @@ double bound_holds_pct(const Measurement& image, const Measurement& reference);
 
 // The middle value (the upper one of an even count); NaN for none.
 double median(std::vector<double> values);
-
-// CPU seconds used so far by the whole process (every thread, user and system).
-double process_cpu_seconds();
 
 // "about 12 s", "about 25 min".
 std::string duration_text(double seconds);

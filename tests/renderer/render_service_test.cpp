@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/process_cpu_time.h"
 #include "renderer/ray_scene.h"
 #include "scenes/building.h"
 
@@ -52,6 +53,28 @@ TEST(RenderService, TheResultIsTheRenderStepsFramebufferWithItsTotalsAndPixels) 
     EXPECT_GT(result.render_seconds, 0.0);
     EXPECT_GT(result.method_bytes, 0u);  // ast's statistics
   }
+}
+
+TEST(RenderService, TheSetupsCpuTimeIsPartOfTheRendersAndDoesNotGrowWithThePixels) {
+  const renderer::Scene scene = scenes::build_building(2);
+  const renderer::RayScene rays(scene);
+  renderer::RenderSettings rs = small_settings(lev::Method::lev, 1);
+  rs.rt_fallback = true;  // its probe is part of the set-up
+  const double cpu_start = renderer::process_cpu_seconds();
+  renderer::RenderResult result;
+  ASSERT_TRUE(renderer::render_passes(scene, rays, rs, 1, result));
+  const double cpu_spent = renderer::process_cpu_seconds() - cpu_start;
+  EXPECT_GT(result.setup_cpu_seconds, 0.0);  // extent volumes fitted, the probe shaded
+  EXPECT_LE(result.setup_cpu_seconds, cpu_spent);
+  ASSERT_TRUE(result.rt_fallback.has_value());
+  // The same set-up work for one pixel in 16: the probe's grid and the volumes do not depend on
+  // the pixels rendered (its time may differ; its counts may not).
+  rs.pixel_stride = 4;
+  renderer::RenderResult subsampled;
+  ASSERT_TRUE(renderer::render_passes(scene, rays, rs, 1, subsampled));
+  ASSERT_TRUE(subsampled.rt_fallback.has_value());
+  EXPECT_EQ(subsampled.rt_fallback->points, result.rt_fallback->points);
+  EXPECT_EQ(subsampled.rt_fallback->method_cost_rays, result.rt_fallback->method_cost_rays);
 }
 
 TEST(RenderService, ACancelledRenderHasNoResult) {
