@@ -90,6 +90,17 @@ inline constexpr int kBoundOpeningsPerPoint = 64;
 // 4: 1.36e9, 4.3 / 31 %; 8: 1.53e9, 3.7 / 24 %; 16: 1.84e9, 3.3 / 22 %; 64: 3.82e9, 2.9 / 18 %.
 inline constexpr int kRadianceOpeningsPerPoint = 8;
 
+// A cluster of the relative cut (find_light_cut) that a centred representative stands for (the
+// centre of its lights' box, lev_est's): the representative at `index` of the lights the walk
+// appended, and the subtree, entered with world_from_local = (linear, translation). Its shadow
+// ray goes to cluster_shadow_target.
+struct CutCluster {
+  std::size_t index = 0;
+  std::uint32_t node = 0;
+  WalkLinear linear;
+  glm::vec3 translation{0.0f};
+};
+
 // A subtree the relative cut (find_light_cut) put aside because its cluster bound was too large
 // for the point's running total: walked later, largest bound first, or kept as a cluster when
 // the total allows. Its frame is kept whole, the rotation by value: it leaves the stack's order.
@@ -107,6 +118,7 @@ struct DeferredSubtree {
   glm::vec3 estimate{0.0f};          // its unshadowed radiance, counted in the running total
   glm::vec3 irradiance_bound{0.0f};  // of the subtree: what its cluster leaves uncertain
   glm::vec3 radiance_bound{0.0f};    // of the subtree at the point's surface (RGB)
+  bool centred = false;              // its representative is centred (CutCluster)
 };
 
 // Reused between queries so that a walk allocates nothing once warm.
@@ -121,6 +133,8 @@ struct WalkScratch {
   // When set (the pixel inspector, SelectorScratch::inspect), the walk also records there what it
   // culls and the clusters it makes; null in renders.
   InspectRecord* inspect = nullptr;
+  // find_light_cut's clusters with a centred representative, in the order of their lights.
+  std::vector<CutCluster> centred_clusters;
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point
@@ -260,6 +274,11 @@ void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volume
                     float relative_error, ShadingPoint& point, WalkScratch& scratch,
                     std::vector<Light>& lights, WalkCounters& counters,
                     glm::vec3* culled_irradiance_bound = nullptr);
+
+// Where a centred cluster's shadow ray goes (CutCluster): one of its lights in world space,
+// drawn in proportion to intensity, fixed per cluster and different between the instances of one
+// master (important_lights.cpp, cluster_draw_shift).
+Light cluster_shadow_target(const LightHierarchy& hierarchy, const CutCluster& cluster);
 
 // Every light of the scene in world space, instances expanded, in the same depth-first order as
 // the walk and through the same arithmetic, so a light here is bit-identical to the one the walk

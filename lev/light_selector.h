@@ -149,17 +149,23 @@ class LightSelector {
 // returned, which the caller discards. visible_irradiance (may be null) gains the brightest
 // channel of irradiance() of each light found visible. record (may be null: the inspector's,
 // SelectorScratch::inspect) gains each selected light as shaded and each other as culled by its
-// own test.
+// own test. shadow_target(i, light), called for the i-th light of `lights` once it can light the
+// surface, names the light its shadow ray goes to instead (a cluster's member: lev_cut), or
+// returns null for the light itself.
 inline constexpr std::size_t kCancelCheckLights = 4096;
-template <typename LightRange, typename Filter>
+struct ShadowRayToTheLight {
+  const Light* operator()(std::size_t, const Light&) const { return nullptr; }
+};
+template <typename LightRange, typename Filter, typename ShadowTarget = ShadowRayToTheLight>
 glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
                              SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr,
-                             float* visible_irradiance = nullptr, InspectRecord* record = nullptr) {
+                             float* visible_irradiance = nullptr, InspectRecord* record = nullptr,
+                             ShadowTarget&& shadow_target = ShadowTarget{}) {
   glm::dvec3 sum(0.0);
-  std::size_t seen = 0;
+  std::size_t index = 0;
   for (const Light& light : lights) {
-    if (cancel && ++seen % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed))
-      break;
+    const std::size_t i = index++;
+    if (cancel && index % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed)) break;
     if (!selected(light)) {
       if (record) record->culled_lights.push_back(light);
       continue;
@@ -174,7 +180,8 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
     }
     if (radiance == glm::vec3(0.0f)) continue;
     ++counters.shadow_rays;
-    const bool visible = point.visible(light);
+    const Light* target = shadow_target(i, light);
+    const bool visible = point.visible(target ? *target : light);
     if (shaded) {
       shaded->shadow_ray = true;
       shaded->visible = visible;

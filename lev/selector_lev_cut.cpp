@@ -26,9 +26,19 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   counters.nodes_visited += walk_counters.nodes_visited;
   // The lights and the clusters' representatives alike: one shadow ray each.
   const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
+  // A centred cluster's ray goes to one of its lights (CutCluster); the rest to the light itself.
+  const std::vector<CutCluster>& centred = scratch.walk.centred_clusters;
+  std::size_t next_centred = 0;
+  Light target;
+  const auto shadow_target = [&](std::size_t i, const Light&) -> const Light* {
+    while (next_centred < centred.size() && centred[next_centred].index < i) ++next_centred;
+    if (next_centred == centred.size() || centred[next_centred].index != i) return nullptr;
+    target = cluster_shadow_target(hierarchy_, centred[next_centred]);
+    return &target;
+  };
   const glm::vec3 radiance = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
-      scratch.inspect);
+      scratch.inspect, shadow_target);
   if (scratch.inspect) scratch.inspect->attach_walk_clusters(shaded_from);
   return radiance;
 }

@@ -2,7 +2,9 @@
 // find_important_lights' walk (the same lights, in the same order, and the same culled bound);
 // above 0 the lights and representatives it returns differ from the sum over every light by at
 // most its culled bound, and they are fewer than the lights at many points. The selector at
-// relative error 0 gives rt's radiance bit for bit.
+// relative error 0 gives rt's radiance bit for bit. A cluster lit by a centred representative
+// casts its shadow ray to one of its own lights, a different one in each instance of a master.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
@@ -126,6 +129,116 @@ TEST(LevCut, SelectorAtRelativeErrorZeroIsRt) {
       ASSERT_EQ(cut.direct_radiance(point, scratch, counters), exact) << "seed " << seed;
     }
   }
+}
+
+// Sees exactly the positions of the scene's lights (within float rounding of the walk's
+// arithmetic) and nothing else, as a point whose view is blocked everywhere but toward the lights
+// themselves; counts its shadow rays. Faces every light with a unit response.
+class SeesOnlyTheLights final : public lev::ShadingPoint {
+ public:
+  SeesOnlyTheLights(const glm::vec3& x, const std::vector<lev::Light>& lights)
+      : x_(x), lights_(lights) {}
+  glm::vec3 position() const override { return x_; }
+  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
+    return lev::irradiance(light, x_);
+  }
+  bool visible(const lev::Light& target) override {
+    ++rays;
+    for (const lev::Light& l : lights_) {
+      if (glm::length(l.position - target.position) <= 1e-4f * (1.0f + lev::max_abs(l.position)))
+        return true;
+    }
+    return false;
+  }
+  lev::SurfaceResponse surface_response() const override {
+    lev::SurfaceResponse unit;
+    unit.diffuse = glm::vec3(1.0f);
+    return unit;
+  }
+  int rays = 0;
+
+ private:
+  glm::vec3 x_;
+  const std::vector<lev::Light>& lights_;
+};
+
+// A master of four point lights (a fixture split in four) placed at 64 places of a grid by
+// translations, as the hall's rig is made.
+lev::LightDescription rig_of_fixtures() {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> quarters;
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec3 at(0.3f * static_cast<float>(k % 2), 0.3f * static_cast<float>(k / 2), 0.0f);
+    quarters.push_back(lev::light_node(lev::make_point_light(at, glm::vec3(1.0f))));
+  }
+  tree.masters.push_back(lev::union_node(std::move(quarters)));
+  std::vector<lev::LightDescriptionNode> fixtures;
+  for (int k = 0; k < 64; ++k) {
+    const glm::vec3 at(2.0f * static_cast<float>(k % 8), 2.0f * static_cast<float>(k / 8), 10.0f);
+    fixtures.push_back(lev::affine_node(lev::make_translation(at), lev::instance_node(0)));
+  }
+  tree.root = lev::union_node(std::move(fixtures));
+  return tree;
+}
+
+TEST(LevCut, ACentredClusterCastsItsRayToOneOfItsLights) {
+  // Every light is seen and the centres of the clusters' boxes are not: the cut's radiance is
+  // then its unshadowed estimate, every cluster counted, as where the lights are all seen.
+  std::uint64_t centred_clusters = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Random r(seed);
+    const lev::LightDescription tree =
+        seed == 1 ? rig_of_fixtures() : lev_test::random_instanced_tree(r);
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+    for (const float relative_error : {0.02f, 0.3f}) {
+      const lev::LevCutSelector cut(h, relative_error);
+      for (int k = 0; k < 30; ++k) {
+        const glm::vec3 x(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
+        const std::string context = "seed " + std::to_string(seed) + " relative error " +
+                                    std::to_string(relative_error) + " k " + std::to_string(k);
+        SeesOnlyTheLights point(x, world_lights);
+        lev::SelectorScratch scratch;
+        lev::SelectionCounters counters;
+        const glm::vec3 radiance = cut.direct_radiance(point, scratch, counters);
+        glm::dvec3 unshadowed(0.0);
+        for (const lev::Light& l : scratch.lights)
+          unshadowed += glm::dvec3(point.unshadowed_radiance(l));
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(radiance[c], unshadowed[c], 1e-5 * (1.0 + unshadowed[c])) << context;
+        ASSERT_EQ(static_cast<std::uint64_t>(point.rays), counters.shadow_rays) << context;
+        centred_clusters += scratch.walk.centred_clusters.size();
+      }
+    }
+  }
+  EXPECT_GT(centred_clusters, 100u);
+}
+
+TEST(LevCut, TheInstancesOfAMasterCastTheirRaysToDifferentLights) {
+  // Below the rig, its fixtures are clusters, instances of one master: the light each one's ray
+  // goes to, taken relative to its fixture (on a grid of 2), is not the same in every fixture.
+  const lev::LightHierarchy h = lev::build_hierarchy(rig_of_fixtures());
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);
+  UnitResponsePoint point({7.0f, 7.0f, -20.0f});
+  lev::WalkScratch scratch;
+  std::vector<lev::Light> lights;
+  lev::WalkCounters counters;
+  lev::find_light_cut(h, volumes, 0.0f, 0.02f, point, scratch, lights, counters);
+  // The clusters that are one fixture each: four unit lights.
+  std::vector<const lev::CutCluster*> fixtures;
+  for (const lev::CutCluster& cluster : scratch.centred_clusters) {
+    const std::uint32_t below = lev::pass_transforms(h, cluster.node);
+    if (lev::kept_aggregate(h, below).intensity.x == 4.0f) fixtures.push_back(&cluster);
+  }
+  ASSERT_GE(fixtures.size(), 8u);
+  std::vector<glm::vec3> within_fixture;
+  for (const lev::CutCluster* cluster : fixtures) {
+    const glm::vec3 target = lev::cluster_shadow_target(h, *cluster).position;
+    const glm::vec3 at = target - 2.0f * glm::floor(0.5f * target);
+    if (std::find(within_fixture.begin(), within_fixture.end(), at) == within_fixture.end())
+      within_fixture.push_back(at);
+  }
+  EXPECT_GT(within_fixture.size(), 1u);
 }
 
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {

@@ -30,6 +30,10 @@ constexpr float kLampSpacing = 4.0f;
 constexpr float kLampHeight = 3.0f;  // a whole number: every light position is exact in float
 constexpr glm::vec3 kLampIntensity{1.0f, 0.9f, 0.7f};
 constexpr float kLampConeDegrees = 60.0f;
+// rt and lev at tolerance 0 test all 10,000 lights at every point of the frame: 32 x 24 keeps
+// that affordable under ASan (the test took 41 CPU s at 64 x 48).
+constexpr int kFrameWidth = 32;
+constexpr int kFrameHeight = 24;
 
 // A street grid of lamps over a floor: each lamp a post and a light at its top. Instanced, one
 // master holds both and is placed at every lamp; bare, a master holds the post alone and every
@@ -93,9 +97,10 @@ TEST(LightDescriptionConversion, InstancedLampsRenderLikeTheSameLightsWrittenBar
   for (const auto& [method, tolerance] :
        {std::pair{lev::Method::rt, 0.0f}, std::pair{lev::Method::lev, 0.0f},
         std::pair{lev::Method::lev, 0.01f}}) {
-    const renderer::Framebuffer a =
-        render_test_image(instanced, instanced_rays, method, tolerance, 2, 1);
-    const renderer::Framebuffer b = render_test_image(bare, bare_rays, method, tolerance, 2, 1);
+    const renderer::Framebuffer a = render_test_image(instanced, instanced_rays, method, tolerance,
+                                                      2, 1, kFrameWidth, kFrameHeight);
+    const renderer::Framebuffer b =
+        render_test_image(bare, bare_rays, method, tolerance, 2, 1, kFrameWidth, kFrameHeight);
     EXPECT_TRUE(bitwise_equal(a, b)) << lev::method_info(method).name << " " << tolerance;
     const renderer::FramebufferTotals ta = renderer::sum_framebuffer(a);
     const renderer::FramebufferTotals tb = renderer::sum_framebuffer(b);
@@ -111,10 +116,10 @@ TEST(LightDescriptionConversion, InstancedLampsRenderLikeTheSameLightsWrittenBar
   // lev_est stands for what it culls by a light per culled subtree, placed from the subtree's
   // aggregate; the subtrees of instances are boxed apart from the lights' own boxes, so its
   // estimate may differ in the last bits, never by more than a trace of a colour step.
-  const renderer::Framebuffer a =
-      render_test_image(instanced, instanced_rays, lev::Method::lev_est, 0.01f, 2, 1);
-  const renderer::Framebuffer b =
-      render_test_image(bare, bare_rays, lev::Method::lev_est, 0.01f, 2, 1);
+  const renderer::Framebuffer a = render_test_image(instanced, instanced_rays, lev::Method::lev_est,
+                                                    0.01f, 2, 1, kFrameWidth, kFrameHeight);
+  const renderer::Framebuffer b = render_test_image(bare, bare_rays, lev::Method::lev_est, 0.01f, 2,
+                                                    1, kFrameWidth, kFrameHeight);
   float max_difference = 0.0f;
   for (std::size_t i = 0; i < a.radiance_sum.size(); ++i) {
     const glm::vec3 d = glm::abs(a.radiance_sum[i] - b.radiance_sum[i]);
