@@ -350,11 +350,11 @@ TEST_F(Bench, OnlyRunsTheNamedExperiments) {
 
 TEST_F(Bench, ScenesRendersOnlyTheNamedSceneModels) {
   const fs::path out = dir_ / "scenes";
-  const CommandRun r = run_levrt({"bench", "--quick", "--only", "targets,control", "--scenes",
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "targets,memory", "--scenes",
                                   "stage,hall", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::set<std::string> scenes;
-  for (const char* csv : {"targets.csv", "control.csv"}) {
+  for (const char* csv : {"targets.csv", "memory.csv"}) {
     const std::string text = read_file(out / csv);
     std::size_t line = text.find('\n');  // after the header
     while (line != std::string::npos && line + 1 < text.size()) {
