@@ -47,6 +47,21 @@ std::vector<std::string> split_names(const std::string& text) {
   return names;
 }
 
+// The comma-separated names of `flag`, each one of `valid` (UsageError otherwise).
+std::vector<std::string> checked_names(const char* flag, const std::string& text,
+                                       const std::vector<std::string>& valid) {
+  std::string valid_text;
+  for (const std::string& v : valid) valid_text += (valid_text.empty() ? "" : "|") + v;
+  std::vector<std::string> names = split_names(text);
+  for (const std::string& name : names) {
+    if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
+      throw UsageError(std::string(flag) + ": must be one or more of " + valid_text +
+                       " (comma-separated), got '" + text + "'");
+    }
+  }
+  return names;
+}
+
 // Every check happens here, before the output folder is created.
 BenchOptions parse_options(const BenchFlags& flags) {
   BenchOptions o;
@@ -68,29 +83,10 @@ BenchOptions parse_options(const BenchFlags& flags) {
   }
   o.out = flags.out;
   o.quick = flags.quick;
-  if (flags.only_given) {
-    const std::vector<std::string> valid = bench_experiment_names();
-    std::string valid_text;
-    for (const std::string& v : valid) valid_text += (valid_text.empty() ? "" : "|") + v;
-    for (const std::string& name : split_names(flags.only)) {
-      if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
-        throw UsageError("--only: must be one or more of " + valid_text +
-                         " (comma-separated), got '" + flags.only + "'");
-      }
-      o.only.push_back(name);
-    }
-  }
+  if (flags.only_given) o.only = checked_names("--only", flags.only, bench_experiment_names());
   if (flags.scenes_given) {
-    const std::vector<std::string> valid = bench::suite_scene_names(bench::thesis_suite(o.quick));
-    std::string valid_text;
-    for (const std::string& v : valid) valid_text += (valid_text.empty() ? "" : "|") + v;
-    for (const std::string& name : split_names(flags.scenes)) {
-      if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
-        throw UsageError("--scenes: must be one or more of " + valid_text +
-                         " (comma-separated), got '" + flags.scenes + "'");
-      }
-      o.scenes.push_back(name);
-    }
+    o.scenes = checked_names("--scenes", flags.scenes,
+                             bench::suite_scene_names(bench::thesis_suite(o.quick)));
   }
   if (flags.threads_given) {
     char* end = nullptr;
