@@ -173,9 +173,9 @@ Section run_converge(BenchRun& run, const std::string& out_dir) {
         requests.push_back({scene, level, *m, tolerance, stride, 1});
     }
     const Measurement& reference = run.measure(rt_request);
-    // A deterministic method stops once its passes cost more than rt's one.
+    // A deterministic method stops once its set-up and passes cost more than rt's frame.
     const std::vector<ProgressMeasurement> progress =
-        run.measure_progress(requests, pass_counts, reference.cpu_seconds);
+        run.measure_progress(requests, pass_counts, reference.full_frame_cpu_seconds());
     const double rt_seconds = reference.full_frame_cpu_seconds();
 
     std::vector<Curve> curves;

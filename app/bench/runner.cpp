@@ -486,8 +486,9 @@ std::vector<ProgressMeasurement> BenchRun::measure_progress(
       snapshot.rgb = std::move(result.rendered_rgb);
       out[i].pixels = result.rendered_pixels;
       out[i].snapshots.push_back(std::move(snapshot));
-      stopped[i] = !lev::method_info(out[i].request.method).stochastic &&
-                   cpu_spent[i] > deterministic_cpu_seconds;
+      stopped[i] =
+          !lev::method_info(out[i].request.method).stochastic &&
+          out[i].full_frame_cpu_seconds(out[i].snapshots.back()) > deterministic_cpu_seconds;
     }
   }
   for (const ProgressMeasurement& m : out) {

@@ -235,7 +235,8 @@ class BenchRun {
   // every pass at the pixel centres (RenderSettings::jitter_pixels off, so a sampling method's
   // passes converge to the one-pass reference), pass k of every request before pass k + 1 of
   // any, and keeps a snapshot after each count in pass_counts. A method that does not sample
-  // repeats its image every pass, so it stops at the first snapshot whose CPU time exceeds
+  // repeats its image every pass, so it stops at the first snapshot whose full-frame CPU time
+  // (ProgressMeasurement::full_frame_cpu_seconds) exceeds
   // deterministic_cpu_seconds (NaN: never): more passes would only add time. Not cached. While
   // planning it only counts (snapshots empty, planned_only).
   std::vector<ProgressMeasurement> measure_progress(const std::vector<MeasureRequest>& requests,
