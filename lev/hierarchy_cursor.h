@@ -93,6 +93,16 @@ inline const Similarity& node_transform(const LightHierarchy& h, const Hierarchy
 inline bool is_translation_only(const HierarchyNode& n) {
   return (n.flags & kTranslationOnly) != 0;
 }
+// frame = compose(frame, the transform node's): a pure translation moves the origin alone, as the
+// full product would (its rotation is the identity and its scale 1), without the matrix product.
+inline void compose_node_transform(const LightHierarchy& h, const HierarchyNode& n,
+                                   Similarity& frame) {
+  if (is_translation_only(n)) {
+    frame.translation = apply_point(frame, node_transform(h, n).translation);
+  } else {
+    frame = compose(frame, node_transform(h, n));
+  }
+}
 
 // Moves a point, and any directions given (normals, view directions), from a transform node's
 // frame into its child's. A pure translation leaves directions alone and moves the point with
@@ -165,13 +175,6 @@ inline const LightAggregate* stored_aggregate(const LightHierarchy& h, std::uint
   return &kept_aggregate(h, node);
 }
 
-// The aggregate of the first node below the transforms at `node`: a light's own, or the kept one.
-inline LightAggregate aggregate_below_transforms(const LightHierarchy& h, std::uint32_t node) {
-  const HierarchyNode& n = h.nodes[node];
-  return node_role(n) == NodeRole::light ? light_aggregate(leaf_light(h, n))
-                                         : kept_aggregate(h, node);
-}
-
 // Upper bound of the summed unshadowed irradiance (RGB) of the node's lights at x, given in the
 // frame the node is entered with (light_bounds.h). Transforms move x into their child's frame.
 inline glm::vec3 irradiance_bound(const LightHierarchy& h, std::uint32_t node,
@@ -206,9 +209,11 @@ inline glm::vec3 radiance_bound(const LightHierarchy& h, std::uint32_t node, con
   node = pass_transforms(h, node, [&](const HierarchyNode& n) {
     enter_transform(h, n, local, local_surface.normal, local_surface.mirrored_view);
   });
-  const LightAggregate aggregate = aggregate_below_transforms(h, node);
-  if (irradiance) *irradiance = irradiance_bound(aggregate, local);
-  return radiance_bound(aggregate, local, local_surface);
+  const HierarchyNode& n = h.nodes[node];
+  if (node_role(n) == NodeRole::light) {
+    return radiance_bound(light_aggregate(leaf_light(h, n)), local, local_surface, irradiance);
+  }
+  return radiance_bound(kept_aggregate(h, node), local, local_surface, irradiance);
 }
 
 }  // namespace lev

@@ -107,8 +107,10 @@ struct CulledSoFar {
   // The radiance error the clusters of the cut may make: per cluster, its estimate E stands for
   // a shadowed radiance C in [0, its radiance bound B], so |E - C| <= max(E, B) (per channel).
   glm::dvec3 cluster_error{0.0};
-  // When relative: the clusters of the cut stood for by a centred representative (CutCluster).
+  // When relative: the clusters of the cut stood for by a centred representative (CutCluster),
+  // and what the cut reads of each node (CutNodeTable).
   std::vector<CutCluster>* centred = nullptr;
+  const CutNodeTable* cut_nodes = nullptr;
   // The pixel inspector's record (WalkScratch::inspect): what is culled and clustered, when set.
   InspectRecord* record = nullptr;
 };
@@ -261,20 +263,35 @@ std::optional<Light> light_below_affine(const LightHierarchy& h, std::uint32_t& 
                                         const WalkLinear& linear, const glm::vec3& translation,
                                         Similarity& world_from_local) {
   world_from_local = Similarity{linear.rotation, linear.scale, translation};
-  node = pass_transforms(h, node, [&](const HierarchyNode& n) {
-    world_from_local = compose(world_from_local, node_transform(h, n));
-  });
+  node = pass_transforms(
+      h, node, [&](const HierarchyNode& n) { compose_node_transform(h, n, world_from_local); });
   const HierarchyNode& top = h.nodes[node];
   if (node_role(top) == NodeRole::light)
     return transform_light(leaf_light(h, top), world_from_local);
   return std::nullopt;
 }
 
+// The first light of a subtree that holds lights (the lights' order), found down the first child
+// that holds any at each union; on_transform(n) is called for each transform passed, top first.
+template <typename OnTransform>
+std::uint32_t first_light(const LightHierarchy& h, std::uint32_t node, OnTransform&& on_transform) {
+  for (;;) {
+    node = pass_to_light_or_group(h, node, on_transform);
+    const HierarchyNode& n = h.nodes[node];
+    if (node_role(n) != NodeRole::group) return node;
+    // The subtree holds lights, so one of the children does.
+    const std::uint32_t* child = group_children(h, n).begin();
+    while (!holds_lights(h, *child)) ++child;
+    node = *child;
+  }
+}
+
 // A culled subtree as one light, its representative (find_lights_and_clusters). Entered with
 // world_from_local = (linear, translation). The centre of the positions rather than one of the
-// lights: measured in lev_est's selector (selector_lev_est.cpp).
-Light representative_light(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
-                           const glm::vec3& translation) {
+// lights: measured in lev_est's selector (selector_lev_est.cpp). `table` (may be null) gives the
+// first light when only translations lie below.
+Light representative_light(const LightHierarchy& h, const CutNodeTable* table, std::uint32_t node,
+                           const WalkLinear& linear, const glm::vec3& translation) {
   Similarity world_from_local;
   if (std::optional<Light> light =
           light_below_affine(h, node, linear, translation, world_from_local)) {
@@ -284,38 +301,32 @@ Light representative_light(const LightHierarchy& h, std::uint32_t node, const Wa
   const Similarity& cluster_from_local = world_from_local;
   // Below, only the first light's parameters are wanted: its frame is composed in full only
   // when its own direction is (the cone of axes is too wide to aim along); else its scale does.
+  // Translations change neither, so a first light found in the table leaves both as they are.
   const bool aim_along_cone = aggregate.cos_axis_spread > 0.0f;
   Similarity light_from_local = cluster_from_local;
   float scale = cluster_from_local.scale;
-  for (;;) {
-    node = pass_to_light_or_group(h, node, [&](const HierarchyNode& n) {
+  std::uint32_t first = table ? table->first_lights[node] : kNoNode;
+  if (first == kNoNode) {
+    first = first_light(h, node, [&](const HierarchyNode& n) {
       scale *= node_transform(h, n).scale;
-      if (!aim_along_cone) light_from_local = compose(light_from_local, node_transform(h, n));
+      if (!aim_along_cone) compose_node_transform(h, n, light_from_local);
     });
-    const HierarchyNode& n = h.nodes[node];
-    if (node_role(n) == NodeRole::group) {
-      // The subtree holds lights (its bound is above 0), so one of the children does.
-      const std::uint32_t* child = group_children(h, n).begin();
-      while (!holds_lights(h, *child)) ++child;
-      node = *child;
-      continue;
-    }
-    Light representative = leaf_light(h, n);
-    if (aim_along_cone) {
-      representative.range *= scale;
-      if (representative.kind == LightKind::spot) {
-        representative.direction =
-            glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
-      }
-    } else {
-      representative = transform_light(representative, light_from_local);
-    }
-    representative.intensity =
-        aggregate.intensity * (cluster_from_local.scale * cluster_from_local.scale);
-    representative.position =
-        apply_point(cluster_from_local, 0.5f * (aggregate.positions.lo + aggregate.positions.hi));
-    return representative;
   }
+  Light representative = leaf_light(h, h.nodes[first]);
+  if (aim_along_cone) {
+    representative.range *= scale;
+    if (representative.kind == LightKind::spot) {
+      representative.direction =
+          glm::normalize(apply_direction(cluster_from_local, aggregate.axis));
+    }
+  } else {
+    representative = transform_light(representative, light_from_local);
+  }
+  representative.intensity =
+      aggregate.intensity * (cluster_from_local.scale * cluster_from_local.scale);
+  representative.position =
+      apply_point(cluster_from_local, 0.5f * (aggregate.positions.lo + aggregate.positions.hi));
+  return representative;
 }
 
 // A subtree whose volume missed the point, the walk's point in the frame (linear, translation) it
@@ -367,7 +378,7 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
     const float brightest_bound = brightest(b);
     if (!(brightest_bound <= culled.cut.refine_above)) return false;  // NaN-safe: +inf refines
     if (brightest_bound > culled.cut.keep_above) {
-      culled.clusters->push_back(representative_light(h, node, linear, translation));
+      culled.clusters->push_back(representative_light(h, nullptr, node, linear, translation));
       if (culled.record) {
         record_subtree_cluster(*culled.record, culled.clusters->size() - 1, node, linear,
                                translation);
@@ -442,24 +453,26 @@ double subtree_weight(const LightHierarchy& h, std::uint32_t node) {
 // each union a child with probability proportional to its intensity (subtree_weight) by
 // node_uniform of the union's index shifted by `shift` (mod 1), so each light is drawn with
 // probability proportional to its intensity and the draw is fixed for the scene. Returns the
-// light's node; world_from_local becomes its frame.
-std::uint32_t draw_light(const LightHierarchy& h, std::uint32_t node, Similarity& world_from_local,
-                         double shift) {
+// light's node; world_from_local becomes its frame, and `transformed` (when given) is set if a
+// transform was passed on the way.
+std::uint32_t draw_light(const LightHierarchy& h, const CutNodeTable& table, std::uint32_t node,
+                         Similarity& world_from_local, double shift, bool* transformed = nullptr) {
   for (;;) {
     node = pass_to_light_or_group(h, node, [&](const HierarchyNode& n) {
-      world_from_local = compose(world_from_local, node_transform(h, n));
+      compose_node_transform(h, n, world_from_local);
+      if (transformed) *transformed = true;
     });
     const HierarchyNode& n = h.nodes[node];
     if (node_role(n) == NodeRole::light) return node;
     const ChildNodes children = group_children(h, n);
     double total = 0.0;
-    for (const std::uint32_t child : children) total += subtree_weight(h, child);
+    for (const std::uint32_t child : children) total += table.draw_weights[child];
     const double u = node_uniform(node) + shift;
     double left = (u - std::floor(u)) * total;
     std::uint32_t chosen = 0;
     for (const std::uint32_t child : children) {
-      const double w = subtree_weight(h, child);
-      if (w <= 0.0 || !holds_lights(h, child)) continue;
+      const double w = table.draw_weights[child];
+      if (w <= 0.0) continue;  // an empty union weighs 0 too
       chosen = child;
       if (left < w) break;
       left -= w;
@@ -474,8 +487,8 @@ std::uint32_t draw_light(const LightHierarchy& h, std::uint32_t node, Similarity
 // clusters, where that light's bias adds up the same way in every cluster (stage 4,608, 80x60,
 // relative error 0.02: avg / max error 2.36 / 27.2 % with it). Entered with world_from_local =
 // (linear, translation).
-Light drawn_representative(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
-                           const glm::vec3& translation) {
+Light drawn_representative(const LightHierarchy& h, const CutNodeTable& table, std::uint32_t node,
+                           const WalkLinear& linear, const glm::vec3& translation) {
   Similarity world_from_local;
   if (std::optional<Light> light =
           light_below_affine(h, node, linear, translation, world_from_local)) {
@@ -483,8 +496,19 @@ Light drawn_representative(const LightHierarchy& h, std::uint32_t node, const Wa
   }
   const glm::vec3 intensity =
       kept_aggregate(h, node).intensity * (world_from_local.scale * world_from_local.scale);
-  const std::uint32_t drawn = draw_light(h, node, world_from_local, 0.0);
-  Light representative = transform_light(leaf_light(h, h.nodes[drawn]), world_from_local);
+  // The draw made once (CutNodeTable) when no transform lies below: world_from_local stays.
+  std::uint32_t drawn = table.drawn_lights[node];
+  if (drawn == kNoNode) drawn = draw_light(h, table, node, world_from_local, 0.0);
+  const Light& leaf = leaf_light(h, h.nodes[drawn]);
+  Light representative;
+  if (world_from_local.scale == 1.0f && world_from_local.rotation == glm::mat3(1.0f)) {
+    // transform_light's floats without the products by one and zero (as push_world_light).
+    representative = leaf;
+    representative.position = leaf.position + world_from_local.translation;
+    if (leaf.kind == LightKind::spot) representative.direction = glm::normalize(leaf.direction);
+  } else {
+    representative = transform_light(leaf, world_from_local);
+  }
   representative.intensity = intensity;
   return representative;
 }
@@ -544,9 +568,10 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
     return;
   }
   if (!(bound >= 0.0f)) bound = std::numeric_limits<float>::infinity();  // NaN: walk it first
-  const bool centred = centred_cluster(h, node);
-  const Light representative = centred ? representative_light(h, node, linear, translation)
-                                       : drawn_representative(h, node, linear, translation);
+  const bool centred = culled.cut_nodes->centred[node] != 0;
+  const Light representative =
+      centred ? representative_light(h, culled.cut_nodes, node, linear, translation)
+              : drawn_representative(h, *culled.cut_nodes, node, linear, translation);
   const glm::vec3 estimate = culled.shading->unshadowed_radiance(representative);
   culled.total += glm::dvec3(estimate);
   if (bound <= largest_cluster_bound(culled)) {
@@ -810,15 +835,50 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
 
 }  // namespace
 
-Light cluster_shadow_target(const LightHierarchy& h, const CutCluster& cluster) {
+CutNodeTable make_cut_node_table(const LightHierarchy& h) {
+  CutNodeTable table;
+  const std::size_t count = h.nodes.size();
+  table.draw_weights.resize(count);
+  table.centred.resize(count);
+  table.drawn_lights.resize(count);
+  table.first_lights.resize(count);
+  for (std::size_t node = 0; node < count; ++node) {
+    const auto i = static_cast<std::uint32_t>(node);
+    table.draw_weights[node] = subtree_weight(h, i);
+    table.drawn_lights[node] = kNoNode;
+    table.first_lights[node] = kNoNode;
+    // A light has no cluster; a transform's is the node below it, as the walk enters it.
+    table.centred[node] = node_role(h.nodes[node]) != NodeRole::light && centred_cluster(h, i);
+  }
+  // After every weight is known: draw_light reads them. A draw that passes a transform is made
+  // per cluster instead (its frame is composed on the way down).
+  for (std::size_t node = 0; node < count; ++node) {
+    const auto i = static_cast<std::uint32_t>(node);
+    const NodeRole role = node_role(h.nodes[node]);
+    if (role == NodeRole::light || role == NodeRole::transform || !holds_lights(h, i)) continue;
+    Similarity unused;
+    bool transformed = false;
+    const std::uint32_t drawn = draw_light(h, table, i, unused, 0.0, &transformed);
+    if (!transformed) table.drawn_lights[node] = drawn;
+    bool rotated_or_scaled = false;
+    const std::uint32_t first = first_light(h, i, [&](const HierarchyNode& n) {
+      if (!is_translation_only(n)) rotated_or_scaled = true;
+    });
+    if (!rotated_or_scaled) table.first_lights[node] = first;
+  }
+  return table;
+}
+
+Light cluster_shadow_target(const LightHierarchy& h, const CutNodeTable& table,
+                            const CutCluster& cluster) {
   Similarity world_from_local{cluster.linear.rotation, cluster.linear.scale, cluster.translation};
   // The shift is that of the frame the subtree's lights are placed in: below its own transforms,
   // where each instance of a master has its own translation.
   const std::uint32_t placed = pass_transforms(h, cluster.node, [&](const HierarchyNode& n) {
-    world_from_local = compose(world_from_local, node_transform(h, n));
+    compose_node_transform(h, n, world_from_local);
   });
-  const std::uint32_t drawn =
-      draw_light(h, placed, world_from_local, cluster_draw_shift(world_from_local.translation));
+  const std::uint32_t drawn = draw_light(h, table, placed, world_from_local,
+                                         cluster_draw_shift(world_from_local.translation));
   Light target = leaf_light(h, h.nodes[drawn]);
   target.position = apply_point(world_from_local, target.position);
   return target;
@@ -956,13 +1016,15 @@ void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolum
                                 culled_irradiance_bound ? culled_irradiance_bound : &bound, culled);
 }
 
-void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes, float tolerance,
-                    float relative_error, ShadingPoint& point, WalkScratch& scratch,
-                    std::vector<Light>& lights, WalkCounters& counters,
-                    glm::vec3* culled_irradiance_bound) {
+void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                    const CutNodeTable& table, float tolerance, float relative_error,
+                    ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
+                    WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
   assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(table.draw_weights.size() == hierarchy.nodes.size());
   assert(volumes.tolerance <= tolerance);
   CulledSoFar culled;
+  culled.cut_nodes = &table;
   if (relative_error > 0.0f) {  // at 0 nothing is cut: find_important_lights' walk
     culled.shading = &point;
     culled.surface = point.surface_response();

@@ -180,8 +180,9 @@ glm::vec3 response_bound(const SurfaceResponse& surface, const Bounds& box, cons
 }
 
 glm::vec3 radiance_bound(const LightAggregate& a, const FramePoint& x,
-                         const SurfaceResponse& surface) {
+                         const SurfaceResponse& surface, glm::vec3* irradiance_part) {
   const glm::vec3 irradiance = irradiance_bound(a, x);
+  if (irradiance_part) *irradiance_part = irradiance;
   if (irradiance == glm::vec3(0.0f)) return irradiance;
   const glm::vec3 response = response_bound(surface, a.positions, x);
   glm::vec3 bound(0.0f);

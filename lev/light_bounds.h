@@ -169,8 +169,9 @@ glm::vec3 response_bound(const SurfaceResponse& surface, const Bounds& box, cons
 // aggregate's irradiance bound times the material's response bound over its box. One bound,
 // used by every method that clusters (lightcuts' cut); the certified error bound takes the
 // irradiance part and multiplies by largest_response. Never inf * 0: a channel without light or
-// without response bounds nothing.
+// without response bounds nothing. When `irradiance` is given it receives that irradiance part
+// (irradiance_bound's), computed once for both.
 glm::vec3 radiance_bound(const LightAggregate& a, const FramePoint& x,
-                         const SurfaceResponse& surface);
+                         const SurfaceResponse& surface, glm::vec3* irradiance = nullptr);
 
 }  // namespace lev

@@ -39,10 +39,11 @@ glm::vec3 shade_light_cut(const LightCutTree& tree, const CutSettings& settings,
     e.node = node;
     const CutTreeNode& n = tree.nodes[node];
     if (!n.is_leaf()) {
-      e.radiance_bound = radiance_bound(n.aggregate, x, surface);
+      glm::vec3 irradiance;
+      e.radiance_bound = radiance_bound(n.aggregate, x, surface, &irradiance);
       e.bound = brightest(e.radiance_bound);
       if (e.bound == 0.0f) return e;  // no light of it can add anything here: no ray
-      e.irradiance_bound = irradiance_bound(n.aggregate, x);
+      e.irradiance_bound = irradiance;
     }
     const Light light = cluster_light(tree, node);
     const glm::vec3 radiance = point.unshadowed_radiance(light);

@@ -7,7 +7,8 @@ LevCutSelector::LevCutSelector(const LightHierarchy& hierarchy, float relative_e
     : hierarchy_(hierarchy),
       relative_error_(relative_error),
       tolerance_(relative_error * kDropToleranceOfRelativeError / display_scale),
-      volumes_(fit_extent_volumes(hierarchy, tolerance_)) {}
+      volumes_(fit_extent_volumes(hierarchy, tolerance_)),
+      cut_nodes_(make_cut_node_table(hierarchy)) {}
 
 glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                           SelectionCounters& counters,
@@ -19,7 +20,7 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
     culled_radiance.surface = point.surface_response();
     scratch.walk.radiance = &culled_radiance;
   }
-  find_light_cut(hierarchy_, volumes_, tolerance_, relative_error_, point, scratch.walk,
+  find_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error_, point, scratch.walk,
                  scratch.lights, walk_counters, culled_irradiance_bound);
   scratch.walk.radiance = nullptr;
   if (culled_radiance.bounded) *scratch.culled_radiance = culled_radiance;
@@ -33,7 +34,7 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   const auto shadow_target = [&](std::size_t i, const Light&) -> const Light* {
     while (next_centred < centred.size() && centred[next_centred].index < i) ++next_centred;
     if (next_centred == centred.size() || centred[next_centred].index != i) return nullptr;
-    target = cluster_shadow_target(hierarchy_, centred[next_centred]);
+    target = cluster_shadow_target(hierarchy_, cut_nodes_, centred[next_centred]);
     return &target;
   };
   const glm::vec3 radiance = sum_visible_lights(
@@ -41,6 +42,11 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
       scratch.inspect, shadow_target);
   if (scratch.inspect) scratch.inspect->attach_walk_clusters(shaded_from);
   return radiance;
+}
+
+std::size_t LevCutSelector::bookkeeping_bytes() const {
+  return cut_nodes_.draw_weights.size() * sizeof(double) + cut_nodes_.centred.size() +
+         (cut_nodes_.drawn_lights.size() + cut_nodes_.first_lights.size()) * sizeof(std::uint32_t);
 }
 
 }  // namespace lev

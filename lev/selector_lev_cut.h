@@ -30,12 +30,15 @@ class LevCutSelector final : public LightSelector {
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
+  // The cut's table of the nodes (CutNodeTable).
+  std::size_t bookkeeping_bytes() const override;
 
  private:
   const LightHierarchy& hierarchy_;
   const float relative_error_;
   const float tolerance_;
   const ExtentVolumes volumes_;
+  const CutNodeTable cut_nodes_;
 };
 
 }  // namespace lev

@@ -4,6 +4,7 @@
 // most its culled bound, and they are fewer than the lights at many points. The selector at
 // relative error 0 gives rt's radiance bit for bit. A cluster lit by a centred representative
 // casts its shadow ray to one of its own lights, a different one in each instance of a master.
+// The table of the nodes the cut reads per cluster names the lights a walk down would find.
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -14,6 +15,7 @@
 
 #include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
+#include "lev/light_cut_tree.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
 #include "lev/selector_lev_cut.h"
@@ -55,6 +57,7 @@ TEST(LevCut, RelativeErrorZeroIsLevsWalk) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Random r(seed);
     const lev::LightHierarchy h = lev::build_hierarchy(lev_test::random_instanced_tree(r));
+    const lev::CutNodeTable table = lev::make_cut_node_table(h);
     lev::WalkScratch scratch;
     for (const float tau : {0.0f, 1e-3f, 1e-2f, 1.0f}) {
       const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
@@ -68,7 +71,8 @@ TEST(LevCut, RelativeErrorZeroIsLevsWalk) {
         glm::vec3 plain_bound(-1.0f), cut_bound(-2.0f);
         lev::find_important_lights(h, volumes, tau, x, scratch, plain, plain_counters,
                                    &plain_bound);
-        lev::find_light_cut(h, volumes, tau, 0.0f, point, scratch, cut, cut_counters, &cut_bound);
+        lev::find_light_cut(h, volumes, table, tau, 0.0f, point, scratch, cut, cut_counters,
+                            &cut_bound);
         lev_test::expect_same_lights(cut, plain, context);
         ASSERT_EQ(cut_bound, plain_bound) << context;
         ASSERT_EQ(cut_counters.nodes_visited, plain_counters.nodes_visited) << context;
@@ -84,6 +88,7 @@ TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
     const lev::LightDescription tree = lev_test::random_instanced_tree(r);
     const lev::LightHierarchy h = lev::build_hierarchy(tree);
     const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+    const lev::CutNodeTable table = lev::make_cut_node_table(h);
     lev::WalkScratch scratch;
     for (const float tau : {0.0f, 1e-3f, 1e-1f}) {
       const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
@@ -97,7 +102,7 @@ TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
           std::vector<lev::Light> cut;
           lev::WalkCounters counters;
           glm::vec3 bound(-1.0f);
-          lev::find_light_cut(h, volumes, tau, relative_error, point, scratch, cut, counters,
+          lev::find_light_cut(h, volumes, table, tau, relative_error, point, scratch, cut, counters,
                               &bound);
           const glm::dvec3 exact = summed_irradiance(world_lights, x);
           const glm::dvec3 estimate = summed_irradiance(cut, x);
@@ -219,11 +224,12 @@ TEST(LevCut, TheInstancesOfAMasterCastTheirRaysToDifferentLights) {
   // goes to, taken relative to its fixture (on a grid of 2), is not the same in every fixture.
   const lev::LightHierarchy h = lev::build_hierarchy(rig_of_fixtures());
   const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);
+  const lev::CutNodeTable table = lev::make_cut_node_table(h);
   UnitResponsePoint point({7.0f, 7.0f, -20.0f});
   lev::WalkScratch scratch;
   std::vector<lev::Light> lights;
   lev::WalkCounters counters;
-  lev::find_light_cut(h, volumes, 0.0f, 0.02f, point, scratch, lights, counters);
+  lev::find_light_cut(h, volumes, table, 0.0f, 0.02f, point, scratch, lights, counters);
   // The clusters that are one fixture each: four unit lights.
   std::vector<const lev::CutCluster*> fixtures;
   for (const lev::CutCluster& cluster : scratch.centred_clusters) {
@@ -233,12 +239,129 @@ TEST(LevCut, TheInstancesOfAMasterCastTheirRaysToDifferentLights) {
   ASSERT_GE(fixtures.size(), 8u);
   std::vector<glm::vec3> within_fixture;
   for (const lev::CutCluster* cluster : fixtures) {
-    const glm::vec3 target = lev::cluster_shadow_target(h, *cluster).position;
+    const glm::vec3 target = lev::cluster_shadow_target(h, table, *cluster).position;
     const glm::vec3 at = target - 2.0f * glm::floor(0.5f * target);
     if (std::find(within_fixture.begin(), within_fixture.end(), at) == within_fixture.end())
       within_fixture.push_back(at);
   }
   EXPECT_GT(within_fixture.size(), 1u);
+}
+
+// A light of a subtree in the lights' order, with what lies on its way down from the subtree.
+struct LightBelow {
+  std::uint32_t node = 0;
+  double scale2 = 1.0;           // the product of the transforms' scales, squared
+  bool transformed = false;      // some transform lies on the way
+  bool not_translation = false;  // some transform that is not a pure translation does
+};
+
+void collect_lights_below(const lev::LightHierarchy& h, std::uint32_t node, LightBelow way,
+                          std::vector<LightBelow>& out) {
+  const lev::HierarchyNode& n = h.nodes[node];
+  switch (lev::node_role(n)) {
+    case lev::NodeRole::light:
+      way.node = node;
+      out.push_back(way);
+      return;
+    case lev::NodeRole::group:
+      for (const std::uint32_t child : lev::group_children(h, n))
+        collect_lights_below(h, child, way, out);
+      return;
+    case lev::NodeRole::transform: {
+      const double s = lev::node_transform(h, n).scale;
+      way.scale2 *= s * s;
+      way.transformed = true;
+      way.not_translation = way.not_translation || !lev::is_translation_only(n);
+      break;
+    }
+    case lev::NodeRole::bounded:
+    case lev::NodeRole::reference:
+      break;
+  }
+  collect_lights_below(h, lev::only_child(n, node), way, out);
+}
+
+// Nested unions of bare lights and of lights below pure translations: what the cut's table
+// remembers per node instead of walking down per cluster.
+lev::LightDescription translated_union_tree(Random& r) {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> groups;
+  for (int g = 0; g < 6; ++g) {
+    std::vector<lev::LightDescriptionNode> lights;
+    for (int k = r.integer(1, 5); k > 0; --k) {
+      lev::LightDescriptionNode light = lev::light_node(lev_test::random_light(r));
+      if (r.integer(0, 2) == 0) {
+        light = lev::affine_node(
+            lev::make_translation({r.uniform(-5, 5), r.uniform(-5, 5), r.uniform(-5, 5)}),
+            std::move(light));
+      }
+      lights.push_back(std::move(light));
+    }
+    groups.push_back(lev::union_node(std::move(lights)));
+  }
+  tree.root = lev::union_node(std::move(groups));
+  return tree;
+}
+
+// Per node, the table holds the summed intensity a draw weighs the subtree by, and a light it
+// names is the one the walk down would find: for an unshifted draw a light of the subtree with
+// weight and no transform on its way, for the centred representative the subtree's first light
+// with only translations on its way; each is named whenever that condition holds.
+TEST(LevCut, TheNodeTableNamesTheLightsTheWalkDownFinds) {
+  std::uint64_t drawn_named = 0, first_named = 0, translated_first_named = 0;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    Random r(seed);
+    for (const lev::LightDescription& tree :
+         {lev_test::random_instanced_tree(r), translated_union_tree(r)}) {
+      const lev::LightHierarchy h = lev::build_hierarchy(tree);
+      const lev::CutNodeTable table = lev::make_cut_node_table(h);
+      ASSERT_EQ(table.draw_weights.size(), h.nodes.size());
+      ASSERT_EQ(table.drawn_lights.size(), h.nodes.size());
+      ASSERT_EQ(table.first_lights.size(), h.nodes.size());
+      for (std::uint32_t node = 0; node < h.nodes.size(); ++node) {
+        const std::string context =
+            "seed " + std::to_string(seed) + " node " + std::to_string(node);
+        std::vector<LightBelow> below;
+        collect_lights_below(h, node, LightBelow{}, below);
+        double weight = 0.0;
+        for (const LightBelow& l : below)
+          weight += l.scale2 * lev::draw_weight(lev::leaf_light(h, h.nodes[l.node]).intensity);
+        // Summed from the aggregates, which round their sums up.
+        ASSERT_GE(table.draw_weights[node], weight * (1.0 - 1e-6)) << context;
+        ASSERT_LE(table.draw_weights[node], weight * (1.0 + 1e-4) + 1e-30) << context;
+        const lev::NodeRole role = lev::node_role(h.nodes[node]);
+        if (below.empty() || role == lev::NodeRole::light || role == lev::NodeRole::transform) {
+          ASSERT_EQ(table.drawn_lights[node], ~0u) << context;
+          ASSERT_EQ(table.first_lights[node], ~0u) << context;
+          continue;
+        }
+        const bool none_transformed = std::none_of(
+            below.begin(), below.end(), [](const LightBelow& l) { return l.transformed; });
+        if (table.drawn_lights[node] != ~0u) {
+          const auto drawn = std::find_if(below.begin(), below.end(), [&](const LightBelow& l) {
+            return l.node == table.drawn_lights[node];
+          });
+          ASSERT_NE(drawn, below.end()) << context;
+          EXPECT_FALSE(drawn->transformed) << context;
+          EXPECT_GT(lev::draw_weight(lev::leaf_light(h, h.nodes[drawn->node]).intensity), 0.0)
+              << context;
+          ++drawn_named;
+        } else if (none_transformed && weight > 0.0) {
+          ADD_FAILURE() << context << ": no transform below, yet no light named for the draw";
+        }
+        if (below.front().not_translation) {
+          EXPECT_EQ(table.first_lights[node], ~0u) << context;
+        } else {
+          ASSERT_EQ(table.first_lights[node], below.front().node) << context;
+          ++first_named;
+          if (below.front().transformed) ++translated_first_named;
+        }
+      }
+    }
+  }
+  EXPECT_GT(drawn_named, 100u);
+  EXPECT_GT(translated_first_named, 10u);
+  EXPECT_GT(first_named, translated_first_named);
 }
 
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
