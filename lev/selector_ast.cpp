@@ -39,17 +39,24 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   std::vector<AstCandidate>& heap = method_scratch<AstScratch>(scratch).candidates;
   heap.clear();
   double untested = 0.0;
-  for (std::uint32_t i = 0; i < world_lights_.size(); ++i) {
+  // The scan is rt's (sum_visible_lights): the count, the lights and the inspector's record in
+  // locals, which the compiler cannot keep there itself across the calls below. Read through the
+  // members, ast's scan took more instructions than rt's whole loop where few lights pass
+  // (street_bare 16,384 at tolerance 1, no shadow ray: 282 M against rt's 248 M; now 239 M).
+  InspectRecord* const record = scratch.inspect;
+  const Light* const lights = world_lights_.data();
+  const auto light_count = static_cast<std::uint32_t>(world_lights_.size());
+  for (std::uint32_t i = 0; i < light_count; ++i) {
     if (cancelled(i + 1)) return glm::vec3(0.0f);
-    const Light& light = world_lights_[i];
+    const Light& light = lights[i];
     if (!is_important(light, x, 0.0f)) {
-      if (scratch.inspect) scratch.inspect->culled_lights.push_back(light);
+      if (record) record->culled_lights.push_back(light);
       continue;
     }
     const glm::vec3 radiance = point.unshadowed_radiance(light);
     const float potential = brightest(radiance);
     if (potential <= 0.0f) {
-      if (scratch.inspect) scratch.inspect->culled_lights.push_back(light);
+      if (record) record->culled_lights.push_back(light);
       continue;
     }
     heap.push_back({potential, i, radiance});
