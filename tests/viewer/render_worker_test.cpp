@@ -427,7 +427,8 @@ TEST(RenderWorker, ShutsDownPromptlyMidRender) {
   ui->worker.post(request_for(slow, true));
   ASSERT_TRUE(
       ui->run_until([&] { return ui->image.tiles_seen > 0 && ui->reference.tiles_seen > 0; }));
-  ASSERT_EQ(ui->status.passes_done, 0);  // the first of 1,000 passes is still being traced
+  // Far from its 1,000 passes: its second waits for the reference's second (they take turns).
+  ASSERT_LE(ui->status.passes_done, 1);
   const auto start = Clock::now();
   ui.reset();
   // Only the tiles in flight finish (one each per worker thread). A worker that waited for the
