@@ -1,6 +1,7 @@
 #include "app/bench/runner.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -55,14 +56,10 @@ double scaled_to_frame(double total, double setup, std::uint64_t pixels,
   return setup + passes * static_cast<double>(full_pixels) / static_cast<double>(pixels);
 }
 
-}  // namespace
-
-namespace {
-
-// The (scene, light count) lists of a suite, each experiment's.
-std::vector<std::vector<std::pair<std::string, std::uint64_t>>*> scene_render_lists(
-    SuiteConfig& c) {
-  return {&c.control_renders, &c.converge_renders, &c.target_renders};
+// The (scene, light count) lists of a suite, each experiment's (Config: SuiteConfig or const).
+template <typename Config>
+auto scene_render_lists(Config& c) {
+  return std::array{&c.control_renders, &c.converge_renders, &c.target_renders};
 }
 
 bool named(const std::vector<std::string>& names, const std::string& name) {
@@ -72,13 +69,12 @@ bool named(const std::vector<std::string>& names, const std::string& name) {
 }  // namespace
 
 std::vector<std::string> suite_scene_names(const SuiteConfig& config) {
-  SuiteConfig c = config;
   std::vector<std::string> names;
   const auto add = [&](const std::string& name) {
     if (!named(names, name)) names.push_back(name);
   };
-  for (const std::string& name : c.scenes) add(name);
-  for (const auto* list : scene_render_lists(c)) {
+  for (const std::string& name : config.scenes) add(name);
+  for (const auto* list : scene_render_lists(config)) {
     for (const auto& render : *list) add(render.first);
   }
   return names;
