@@ -115,6 +115,7 @@ void DisplayBuffer::raise_floor(std::uint64_t generation) {
 
 void DisplayBuffer::post(TileUpdate update) {
   const std::lock_guard<std::mutex> lock(mutex_);
+  posted_ += 1;
   if (update.generation < floor_) return;
   updates_.push_back(std::move(update));
 }
@@ -125,6 +126,11 @@ TakenTiles DisplayBuffer::take_all() {
   taken.floor = floor_;
   taken.updates.swap(updates_);
   return taken;
+}
+
+std::uint64_t DisplayBuffer::posted() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return posted_;
 }
 
 }  // namespace app::viewer

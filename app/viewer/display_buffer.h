@@ -84,10 +84,14 @@ class DisplayBuffer {
   void raise_floor(std::uint64_t generation);
   void post(TileUpdate update);
   TakenTiles take_all();
+  // Tiles posted so far, kept or dropped: what a caller counts to know how many tiles a worker
+  // finished after some moment (RenderWorker::shut_down).
+  std::uint64_t posted() const;
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::uint64_t floor_ = 0;
+  std::uint64_t posted_ = 0;
   std::vector<TileUpdate> updates_;
 };
 

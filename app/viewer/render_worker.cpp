@@ -586,14 +586,27 @@ RenderWorker::RenderWorker() : shared_(std::make_unique<WorkerShared>()) {
 }
 
 RenderWorker::~RenderWorker() {
+  shut_down();
+}
+
+ShutdownReport RenderWorker::shut_down() {
+  ShutdownReport report;
+  if (!thread_.joinable()) return report;
+  const auto tiles_posted = [&] {
+    return shared_->tiles.posted() + shared_->preview_tiles.posted() +
+           shared_->reference_tiles.posted();
+  };
   {
     const std::lock_guard<std::mutex> lock(shared_->mutex);
     shared_->quit = true;
     shared_->cancel.store(true);
     shared_->quitting.store(true);
   }
+  const std::uint64_t posted_at_quit = tiles_posted();
   shared_->wake.notify_all();
   thread_.join();
+  report.tiles_finished_after_quit = tiles_posted() - posted_at_quit;
+  return report;
 }
 
 std::uint64_t RenderWorker::post(const RenderRequest& request) {

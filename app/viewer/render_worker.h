@@ -116,12 +116,19 @@ struct WorkerStatus {
 double elapsed_render_seconds(const WorkerStatus& status,
                               std::chrono::steady_clock::time_point now);
 
+// What a worker did between the quit and its thread's end: the tiles that finished (render,
+// previews and the rt reference together). Only the tiles in flight at the quit may finish; a
+// worker that went on rendering would report a pass's worth or more.
+struct ShutdownReport {
+  std::uint64_t tiles_finished_after_quit = 0;
+};
+
 struct WorkerShared;  // the mutex-guarded mailbox between the UI and the worker thread
 
 class RenderWorker {
  public:
   RenderWorker();
-  ~RenderWorker();  // cancels everything and joins
+  ~RenderWorker();  // shut_down(), unless called already
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
 
@@ -134,6 +141,9 @@ class RenderWorker {
   TakenTiles take_reference_tiles();
   // Tiles of the current render that a worker is tracing right now.
   std::vector<TileRect> tiles_in_flight() const;
+  // Cancels everything and joins the worker's threads; after it only status() and the take_*
+  // calls may be made. A second call reports nothing more.
+  ShutdownReport shut_down();
 
  private:
   std::unique_ptr<WorkerShared> shared_;
