@@ -57,7 +57,7 @@ Light& push_world_light(std::vector<Light>& out, const Light& light, const WalkL
 constexpr std::uint32_t kNoNode = ~0u;
 
 // The deferred subtrees' heap order: the largest bound on top, the earlier deferral first.
-bool smaller_deferred_bound(const DeferredSubtree& a, const DeferredSubtree& b) {
+bool smaller_deferred_bound(const DeferredKey& a, const DeferredKey& b) {
   return a.bound < b.bound || (a.bound == b.bound && a.sequence > b.sequence);
 }
 
@@ -104,6 +104,9 @@ struct CulledSoFar {
   float relative_error = 0.0f;
   glm::dvec3 total{0.0};
   std::uint32_t deferrals = 0;
+  // The unshadowed radiance of each light and representative appended to the walk's output, in
+  // its order (WalkScratch::cut_estimates): what the total counted, for the shading to reuse.
+  std::vector<glm::vec3>* estimates = nullptr;
   // The radiance error the clusters of the cut may make: per cluster, its estimate E stands for
   // a shadowed radiance C in [0, its radiance bound B], so |E - C| <= max(E, B) (per channel).
   glm::dvec3 cluster_error{0.0};
@@ -191,7 +194,11 @@ inline bool passes(const Light& world, const glm::vec3& point, float tolerance,
   const float falloff = irradiance_falloff(world, point);
   if (is_important_from_falloff(world, falloff, tolerance)) {
     if constexpr (kCulled == Culled::relative) {
-      if (culled.shading) culled.total += glm::dvec3(culled.shading->unshadowed_radiance(world));
+      if (culled.shading) {
+        const glm::vec3 estimate = culled.shading->unshadowed_radiance(world);
+        culled.total += glm::dvec3(estimate);
+        culled.estimates->push_back(estimate);
+      }
     }
     return true;
   }
@@ -556,7 +563,7 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
                          float point_magnitude, const glm::vec3& translation,
                          const WalkLinear& linear, bool identity, bool volume_tested,
                          std::vector<Light>& out, std::vector<DeferredSubtree>& deferred,
-                         CulledSoFar& culled) {
+                         std::vector<DeferredKey>& heap, CulledSoFar& culled) {
   const FramePoint x = walk_frame_point(local_point, point_magnitude, translation, linear.scale);
   const SurfaceResponse surface =
       identity ? culled.surface : surface_in_frame(culled.surface, linear.rotation);
@@ -576,6 +583,7 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
   culled.total += glm::dvec3(estimate);
   if (bound <= largest_cluster_bound(culled)) {
     out.push_back(representative);
+    culled.estimates->push_back(estimate);
     if (centred) culled.centred->push_back({out.size() - 1, node, linear, translation});
     if (culled.record)
       record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
@@ -583,13 +591,13 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
     culled.cluster_error += glm::dvec3(glm::max(estimate, radiance));
     return;
   }
+  heap.push_back({bound, culled.deferrals++, static_cast<std::uint32_t>(deferred.size())});
+  std::push_heap(heap.begin(), heap.end(), smaller_deferred_bound);
   DeferredSubtree& d = deferred.emplace_back();
   d.representative = representative;
   d.estimate = estimate;
   d.irradiance_bound = irradiance;
   d.radiance_bound = radiance;
-  d.bound = bound;
-  d.sequence = culled.deferrals++;
   d.node = node;
   d.volume_tested = volume_tested;
   d.identity = identity;
@@ -597,7 +605,6 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
   d.world_translation = translation;
   d.linear = linear;
   d.centred = centred;
-  std::push_heap(deferred.begin(), deferred.end(), smaller_deferred_bound);
 }
 
 // The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
@@ -614,13 +621,16 @@ inline glm::vec3 compose_translation(const std::vector<WalkLinear>& linear,
 // else it leaves the cut's total and goes on the stack, in its own frame, to be walked. False
 // when none is left.
 bool resume_deferred(std::vector<WalkFrame>& stack, std::vector<WalkLinear>& linear,
-                     std::vector<DeferredSubtree>& deferred, std::vector<Light>& out,
-                     CulledSoFar& culled) {
-  while (!deferred.empty()) {
-    std::pop_heap(deferred.begin(), deferred.end(), smaller_deferred_bound);
-    const DeferredSubtree& d = deferred.back();
-    if (d.bound <= largest_cluster_bound(culled)) {
+                     const std::vector<DeferredSubtree>& deferred, std::vector<DeferredKey>& heap,
+                     std::vector<Light>& out, CulledSoFar& culled) {
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), smaller_deferred_bound);
+    const DeferredKey key = heap.back();
+    heap.pop_back();
+    const DeferredSubtree& d = deferred[key.subtree];
+    if (key.bound <= largest_cluster_bound(culled)) {
       out.push_back(d.representative);
+      culled.estimates->push_back(d.estimate);
       if (d.centred)
         culled.centred->push_back({out.size() - 1, d.node, d.linear, d.world_translation});
       if (culled.record)
@@ -628,7 +638,6 @@ bool resume_deferred(std::vector<WalkFrame>& stack, std::vector<WalkLinear>& lin
                                d.world_translation);
       culled.sum += glm::dvec3(d.irradiance_bound);
       culled.cluster_error += glm::dvec3(glm::max(d.estimate, d.radiance_bound));
-      deferred.pop_back();
       continue;
     }
     culled.total -= glm::dvec3(d.estimate);
@@ -637,7 +646,6 @@ bool resume_deferred(std::vector<WalkFrame>& stack, std::vector<WalkLinear>& lin
     if (!d.identity) linear.push_back(d.linear);
     push_frame(stack, d.local_point, d.node, d.world_translation, d.identity ? 0 : 1,
                d.volume_tested);
-    deferred.pop_back();
     return true;
   }
   return false;
@@ -668,12 +676,14 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
   linear.emplace_back();
   push_frame(stack, point, h.root, glm::vec3(0.0f), 0, false);
   std::vector<DeferredSubtree>& deferred = scratch.deferred;
+  std::vector<DeferredKey>& deferred_heap = scratch.deferred_heap;
   deferred.clear();
+  deferred_heap.clear();
   culled.record = scratch.inspect;
   for (;;) {
     if (stack.empty()) {
       if constexpr (kCulled != Culled::relative) break;
-      if (!resume_deferred(stack, linear, deferred, out, culled)) break;
+      if (!resume_deferred(stack, linear, deferred, deferred_heap, out, culled)) break;
     }
     const WalkFrame& top = stack.back();
     glm::vec3 local_point = top.local_point;
@@ -776,7 +786,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
                   ++visited;
                   cut_or_defer(h, child, local_point, point_magnitude, translation,
                                linear[linear_index], linear_index == 0, tested, out, deferred,
-                               culled);
+                               deferred_heap, culled);
                   continue;
                 }
               }
@@ -1025,8 +1035,10 @@ void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volume
   assert(volumes.tolerance <= tolerance);
   CulledSoFar culled;
   culled.cut_nodes = &table;
+  scratch.cut_estimates.clear();
   if (relative_error > 0.0f) {  // at 0 nothing is cut: find_important_lights' walk
     culled.shading = &point;
+    culled.estimates = &scratch.cut_estimates;
     culled.surface = point.surface_response();
     culled.relative_error = relative_error;
   }

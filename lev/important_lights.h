@@ -124,9 +124,6 @@ struct CutCluster {
 // for the point's running total: walked later, largest bound first, or kept as a cluster when
 // the total allows. Its frame is kept whole, the rotation by value: it leaves the stack's order.
 struct DeferredSubtree {
-  float bound = 0.0f;          // brightest channel of its radiance bound
-  std::uint32_t sequence = 0;  // order of deferral: ties go to the earlier, so nothing is left to
-                               // how the standard library breaks them
   std::uint32_t node = 0;
   bool volume_tested = false;
   bool identity = true;  // the frame's rotation and scale are the identity
@@ -140,12 +137,22 @@ struct DeferredSubtree {
   bool centred = false;              // its representative is centred (CutCluster)
 };
 
+// The heap's entry for a DeferredSubtree: the order is read from these 12 bytes alone, so the
+// heap moves them rather than the 200-byte subtrees.
+struct DeferredKey {
+  float bound = 0.0f;          // brightest channel of its radiance bound
+  std::uint32_t sequence = 0;  // order of deferral: ties go to the earlier, so nothing is left to
+                               // how the standard library breaks them
+  std::uint32_t subtree = 0;   // its index in WalkScratch::deferred
+};
+
 // Reused between queries so that a walk allocates nothing once warm.
 struct WalkScratch {
   std::vector<WalkFrame> stack;
   std::vector<WalkLinear> linear;
   std::vector<BoundPart> bound_parts;
-  std::vector<DeferredSubtree> deferred;     // a heap, largest bound on top
+  std::vector<DeferredSubtree> deferred;     // find_light_cut's subtrees put aside this query
+  std::vector<DeferredKey> deferred_heap;    // their keys, a heap, largest bound on top
   std::vector<RadiancePart> radiance_parts;  // a heap, largest bound on top
   // When set, find_important_lights_tight_bound answers it (CulledRadianceBound); null otherwise.
   CulledRadianceBound* radiance = nullptr;
@@ -154,6 +161,10 @@ struct WalkScratch {
   InspectRecord* inspect = nullptr;
   // find_light_cut's clusters with a centred representative, in the order of their lights.
   std::vector<CutCluster> centred_clusters;
+  // find_light_cut's unshadowed radiance of each light and representative it appends, in their
+  // order, as its running total counted them (when it cuts: relative error above 0; else empty),
+  // so that shading them need not compute it again.
+  std::vector<glm::vec3> cut_estimates;
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point

@@ -151,7 +151,8 @@ class LightSelector {
 // SelectorScratch::inspect) gains each selected light as shaded and each other as culled by its
 // own test. shadow_target(i, light), called for the i-th light of `lights` once it can light the
 // surface, names the light its shadow ray goes to instead (a cluster's member: lev_cut), or
-// returns null for the light itself.
+// returns null for the light itself. unshadowed (may be null) holds, per light of `lights`, its
+// point.unshadowed_radiance already computed (lev_cut's walk computes it for its running total).
 inline constexpr std::size_t kCancelCheckLights = 4096;
 struct ShadowRayToTheLight {
   const Light* operator()(std::size_t, const Light&) const { return nullptr; }
@@ -160,7 +161,8 @@ template <typename LightRange, typename Filter, typename ShadowTarget = ShadowRa
 glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, ShadingPoint& point,
                              SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr,
                              float* visible_irradiance = nullptr, InspectRecord* record = nullptr,
-                             ShadowTarget&& shadow_target = ShadowTarget{}) {
+                             ShadowTarget&& shadow_target = ShadowTarget{},
+                             const glm::vec3* unshadowed = nullptr) {
   glm::dvec3 sum(0.0);
   std::size_t index = 0;
   for (const Light& light : lights) {
@@ -171,7 +173,7 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
       continue;
     }
     ++counters.lights_tested;
-    const glm::vec3 radiance = point.unshadowed_radiance(light);
+    const glm::vec3 radiance = unshadowed ? unshadowed[i] : point.unshadowed_radiance(light);
     ShadedLight* shaded = nullptr;
     if (record) {
       shaded = &record->shaded.emplace_back();

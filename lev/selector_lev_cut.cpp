@@ -1,5 +1,7 @@
 #include "lev/selector_lev_cut.h"
 
+#include <cassert>
+
 namespace lev {
 
 LevCutSelector::LevCutSelector(const LightHierarchy& hierarchy, float relative_error,
@@ -37,9 +39,14 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
     target = cluster_shadow_target(hierarchy_, cut_nodes_, centred[next_centred]);
     return &target;
   };
+  // The walk computed each one's unshadowed radiance for its total when it cut (the same floats).
+  const std::vector<glm::vec3>& estimates = scratch.walk.cut_estimates;
+  assert(estimates.empty() || estimates.size() == scratch.lights.size());
+  const glm::vec3* unshadowed =
+      estimates.size() == scratch.lights.size() ? estimates.data() : nullptr;
   const glm::vec3 radiance = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
-      scratch.inspect, shadow_target);
+      scratch.inspect, shadow_target, unshadowed);
   if (scratch.inspect) scratch.inspect->attach_walk_clusters(shaded_from);
   return radiance;
 }

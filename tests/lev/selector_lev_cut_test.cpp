@@ -4,7 +4,8 @@
 // most its culled bound, and they are fewer than the lights at many points. The selector at
 // relative error 0 gives rt's radiance bit for bit. A cluster lit by a centred representative
 // casts its shadow ray to one of its own lights, a different one in each instance of a master.
-// The table of the nodes the cut reads per cluster names the lights a walk down would find.
+// The table of the nodes the cut reads per cluster names the lights a walk down would find. The
+// unshadowed radiance the walk keeps for the shading is that of each light it returns.
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -104,6 +105,11 @@ TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
           glm::vec3 bound(-1.0f);
           lev::find_light_cut(h, volumes, table, tau, relative_error, point, scratch, cut, counters,
                               &bound);
+          // The estimates the walk keeps for the shading are those of the lights it returns, in
+          // their order, bit for bit (the shading uses them instead of computing them again).
+          ASSERT_EQ(scratch.cut_estimates.size(), cut.size()) << context;
+          for (std::size_t i = 0; i < cut.size(); ++i)
+            ASSERT_EQ(scratch.cut_estimates[i], point.unshadowed_radiance(cut[i])) << context;
           const glm::dvec3 exact = summed_irradiance(world_lights, x);
           const glm::dvec3 estimate = summed_irradiance(cut, x);
           for (int c = 0; c < 3; ++c) {
