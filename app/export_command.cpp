@@ -28,6 +28,7 @@ int run_export(const ExportFlags& flags) {
     apply_light_count_flag(settings.scene, flags.lights);
   }
   if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
+  if (flags.out.empty()) throw UsageError("--out: needs a file name, got ''");
   check_output_paths({{"--out", flags.out, ".json", "a scene file"}},
                      scenes::scene_input_files(settings.scene.name));
   const scenes::SceneDescription description = describe_scene(settings.scene);

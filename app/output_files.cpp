@@ -68,6 +68,17 @@ bool is_symlink_loop(const std::string& path) {
   return ::stat(path.c_str(), &st) != 0 && errno == ELOOP;
 }
 
+// An existing block device (a disk or a partition), symlinks followed: never an output. Writing
+// an image there in place would overwrite the start of the disk.
+bool is_block_device(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISBLK(st.st_mode);
+}
+
+[[noreturn]] void refuse_block_device(const std::string& path) {
+  throw std::runtime_error(path + ": cannot write (a block device: a disk or partition)");
+}
+
 // An existing file that is neither a regular file nor a folder: a pipe, device or socket.
 bool is_existing_special_file(const std::string& path) {
   std::error_code ec;
@@ -75,12 +86,14 @@ bool is_existing_special_file(const std::string& path) {
   return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
 }
 
-// write() until done; returns 0 or the errno of the failure. SIGXFSZ is ignored from the first
-// write on (setting SIG_IGN again is harmless, so concurrent writers cannot race to restore it),
-// so a file-size limit (ulimit -f) comes back as EFBIG, reported and cleaned up, instead of
-// killing the process with the temporary file left behind.
+// write() until done; returns 0 or the errno of the failure. SIGXFSZ and SIGPIPE are ignored from
+// the first write on (setting SIG_IGN again is harmless, so concurrent writers cannot race to
+// restore it), so a file-size limit (ulimit -f) comes back as EFBIG and a reader that went away
+// (`levrt render --out - | true`, a FIFO closed early) as EPIPE, reported and cleaned up, instead
+// of killing the process with the other outputs' temporary files left behind.
 int write_all(int fd, const std::string& bytes) {
   std::signal(SIGXFSZ, SIG_IGN);
+  std::signal(SIGPIPE, SIG_IGN);
   int error = 0;
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -95,11 +108,17 @@ int write_all(int fd, const std::string& bytes) {
   return error;
 }
 
-// An existing pipe, device or socket is written in place: renaming over it would replace the
-// special file (as root, /dev/null itself) and nothing would reach its reader.
+// An existing pipe, character device or socket is written in place: renaming over it would
+// replace the special file (as root, /dev/null itself) and nothing would reach its reader. What
+// was opened is checked again: a name that became a block device since is not written.
 void write_in_place(const std::string& path, const std::string& bytes) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd < 0) throw_errno(path, "cannot write", errno);
+  struct stat opened {};
+  if (::fstat(fd, &opened) != 0 || S_ISBLK(opened.st_mode)) {
+    ::close(fd);
+    refuse_block_device(path);
+  }
   const int error = write_all(fd, bytes);
   const int close_error = ::close(fd) != 0 ? errno : 0;
   if (error != 0) throw_errno(path, "write failed", error);
@@ -245,6 +264,10 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
   if (is_symlink_loop(path)) throw UsageError(flag + ": is a symlink loop, got '" + path + "'");
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw UsageError(flag + ": is a folder, got '" + path + "'");
+  if (is_block_device(path)) {
+    throw UsageError(flag + ": is a block device (a disk or partition), never written, got '" +
+                     path + "'");
+  }
   const std::string identity = output_identity(path);
   if (inputs.count(identity) != 0) {
     throw UsageError(flag + ": names a file this command reads (an input), got '" + path + "'");
@@ -268,6 +291,11 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
       throw UsageError(flag + ": folder does not exist, got '" + path + "'");
     if (::access(parent.c_str(), W_OK) != 0)
       throw UsageError(flag + ": folder is not writable, got '" + path + "'");
+    // An existing file the user may not write (read-only, or immutable even for root) is not
+    // replaced by the rename either: refused here, before any work.
+    struct stat existing {};
+    if (::stat(target.c_str(), &existing) == 0 && ::access(target.c_str(), W_OK) != 0)
+      throw UsageError(flag + ": is not writable, got '" + path + "'");
     const std::size_t name_bytes = target.filename().string().size();
     if (name_bytes > name_max_bytes(parent)) {
       throw UsageError(flag + ": file name of " + std::to_string(name_bytes) +
@@ -323,6 +351,8 @@ void write_output_files(const std::vector<OutputFile>& files) {
       if (file.path != kStandardOutputName && is_symlink_loop(file.path)) {
         throw std::runtime_error(file.path + ": cannot write (is a symlink loop)");
       }
+      if (file.path != kStandardOutputName && is_block_device(file.path))
+        refuse_block_device(file.path);
       if (file.path == kStandardOutputName || is_existing_special_file(file.path)) {
         in_place.emplace_back(file.path, std::move(bytes));
       } else {

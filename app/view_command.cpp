@@ -1,6 +1,7 @@
 #include "app/view_command.h"
 
 #include <cstdlib>
+#include <limits>
 
 #ifdef LEVRT_HAS_VIEWER
 #include "app/viewer/scripted_changes.h"
@@ -11,7 +12,7 @@ namespace app {
 
 void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags) {
   command.add_option("--frames", flags.frames, "scripted: run this many UI frames, then exit")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, std::numeric_limits<int>::max()));
   command.add_option("--screenshot", flags.screenshot,
                      "scripted: write the window to this PNG after the last frame");
   command.add_option(

@@ -30,6 +30,7 @@
 #include "scenes/scene_file.h"
 #include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
+#include "scenes/scene_validation.h"
 
 namespace scenes {
 namespace {
@@ -342,9 +343,13 @@ class Importer {
     // glTF's ymag is the half height seen (a negative one, which the spec advises against, as
     // its magnitude); the width follows the image's aspect ratio, as a perspective camera's does
     // (xmag, like aspectRatio, is not read: scenes/README.md).
+    // Bounded like any length of a scene (kMaxCoordinate): rays start up to ymag times the
+    // aspect ratio from the camera, and Embree refuses (asserts on) origins past about 1.8e18.
     const double ymag = std::abs(camera.orthographic.ymag);
-    if (orthographic && (!std::isfinite(ymag) || !(ymag > 0.0) || !(ymag < 1e30)))
-      fail(path_, camera_where + ".orthographic.ymag", number_text(ymag));
+    if (orthographic && (!std::isfinite(ymag) || !(ymag > 0.0) || !(ymag <= kMaxCoordinate))) {
+      fail(path_, camera_where + ".orthographic.ymag",
+           number_text(ymag) + " (a half height in (0, " + number_text(kMaxCoordinate) + "])");
+    }
     // --camera N: the N-th camera met in the node tree, depth first.
     if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);

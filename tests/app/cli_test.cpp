@@ -147,6 +147,23 @@ TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
   EXPECT_EQ(run_levrt({"render", "--help"}).exit_code, 0);
 }
 
+// inspect's --json '' was taken as "no JSON" (exit 0), and view's --frames -1 printed the largest
+// double in full (a 330-character line): each is one short line naming the flag, exit 2.
+TEST_F(Cli, AnEmptyJsonOrNegativeFrameCountIsOneShortLine) {
+  const CommandRun json =
+      run_levrt({"inspect", "--width", "8", "--height", "8", "--pixel", "1,1", "--json", ""});
+  EXPECT_EQ(json.exit_code, 2) << json.output;
+  EXPECT_NE(json.output.find("--json: needs a value, got ''"), std::string::npos) << json.output;
+  EXPECT_EQ(std::count(json.output.begin(), json.output.end(), '\n'), 1) << json.output;
+  const CommandRun frames = run_levrt({"view", "--frames", "-1"});
+  EXPECT_EQ(frames.exit_code, 2) << frames.output;
+  EXPECT_NE(frames.output.find("--frames"), std::string::npos) << frames.output;
+  EXPECT_NE(frames.output.find("-1"), std::string::npos) << frames.output;
+  EXPECT_EQ(std::count(frames.output.begin(), frames.output.end(), '\n'), 1) << frames.output;
+  EXPECT_LT(frames.output.size(), 120u) << frames.output;
+  EXPECT_TRUE(folder_is_empty());
+}
+
 // A setting an older levrt named otherwise ("samples" meant lights per point): one line naming
 // the flag and what it is called now, exit 2, in every command that renders and in `=` form.
 TEST_F(Cli, ARenamedFlagNamesItsNewName) {

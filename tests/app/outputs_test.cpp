@@ -2,10 +2,14 @@
 // written in place, symlinks followed, standard output, every path checked before the render,
 // write errors with their reason, the memory budget, and one-line messages that repeat what the
 // user typed.
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -418,6 +422,70 @@ TEST_F(Outputs, ASymlinkLoopIsRefusedWithOneLineAndStaysALink) {
   EXPECT_EQ(entries(), (std::vector<std::string>{"loop", "loop.png"}));
 }
 
+// Standard output is a pipe whose reader is gone (`levrt render --out - --stats s.json | true`):
+// the write fails with one line naming it, exit 1, and the stats, staged beside, are not left as a
+// temporary file. Before, SIGPIPE killed the process (exit 141) with the temporary behind. The read
+// end is closed before levrt starts, so the write always meets a broken pipe.
+TEST_F(Outputs, StandardOutputWithoutAReaderLeavesNoTemporaryFile) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  ::close(ends[0]);
+  const std::string stats = path("s.json");
+  const std::string messages = path("messages.txt");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGPIPE, SIG_DFL);  // as a shell starts it, whatever this test process does
+    ::dup2(ends[1], STDOUT_FILENO);
+    const int err = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(err, STDERR_FILENO);
+    const char* binary = LEVRT_BINARY;
+    ::execl(binary, binary, "render", "--width", "64", "--height", "48", "--quiet", "--out", "-",
+            "--stats", stats.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const std::string output = read_file(messages);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": " << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_EQ(line_count(output), 1) << output;
+  EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
+      << output;
+  EXPECT_EQ(entries(), std::vector<std::string>{"messages.txt"});
+}
+
+// A block device (a disk or partition; here a node of a loop device, made in the test's folder) is
+// never written in place, named directly or through a symlink: writing a PNG there would
+// overwrite the start of the disk. Making a device node needs root (CAP_MKNOD).
+TEST_F(Outputs, ABlockDeviceIsRefusedBeforeRenderingAndStaysADevice) {
+  if (::mknod(path("disk.png").c_str(), S_IFBLK | 0600, makedev(7, 250)) != 0)
+    GTEST_SKIP() << "cannot make a device node here (needs root)";
+  fs::create_symlink("disk.png", path("link.png"));
+  for (const std::string name : {"disk.png", "link.png"}) {
+    for (const std::string flag : {"--out", "--stats", "--heatmap-lights"}) {
+      const std::string file = flag == "--stats" ? name.substr(0, 4) + ".json" : name;
+      if (flag == "--stats" && !fs::exists(path(file))) fs::create_symlink("disk.png", path(file));
+      const CommandRun r = run_here(output_render_args({flag, file}));
+      EXPECT_EQ(r.exit_code, 2) << flag << " " << file << ": " << r.output;
+      EXPECT_EQ(line_count(r.output), 1) << r.output;
+      EXPECT_NE(r.output.find(flag + ": is a block device"), std::string::npos) << r.output;
+      EXPECT_NE(r.output.find("'" + file + "'"), std::string::npos) << r.output;
+    }
+  }
+  struct stat st {};
+  ASSERT_EQ(::stat(path("disk.png").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISBLK(st.st_mode));
+  EXPECT_EQ(st.st_rdev, makedev(7, 250));
+  EXPECT_EQ(entries(),
+            (std::vector<std::string>{"disk.json", "disk.png", "link.json", "link.png"}));
+  const CommandRun exported =
+      run_here({"export", "--scene", "maze", "--level", "1", "--out", "disk.json"});
+  EXPECT_EQ(exported.exit_code, 2) << exported.output;
+  EXPECT_NE(exported.output.find("--out: is a block device"), std::string::npos) << exported.output;
+}
+
 // A 64 KiB tmpfs holds the first outputs but not all: the render fails with one line, every old
 // file stays as it was and no temporary is left. Mounting needs root (or a user namespace).
 TEST_F(Outputs, AFullFileSystemWritesNoOutputAndKeepsTheOldFiles) {
@@ -516,6 +584,47 @@ TEST_F(Outputs, WithoutADisplayLevrtSaysItWritesTheSnapshotAndWhere) {
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find((fs::canonical(dir_) / "out").string()), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "out" / "building.png"));
+}
+
+// The snapshot's folder "out" named by a file or a dangling symlink: one line naming it, exit 2,
+// and the file or link left as it was (it was exit 1, "filesystem error: cannot create
+// directories").
+TEST_F(Outputs, ASnapshotWhoseOutIsNotAFolderIsRefusedAndLeavesIt) {
+  std::ofstream(path("out")) << "the user's notes";
+  const CommandRun file = run_here({"snapshot"});
+  EXPECT_EQ(file.exit_code, 2) << file.output;
+  EXPECT_EQ(line_count(file.output), 1) << file.output;
+  EXPECT_NE(file.output.find("snapshot: cannot make the folder 'out'"), std::string::npos)
+      << file.output;
+  EXPECT_EQ(read_file(path("out")), "the user's notes");
+  fs::remove(path("out"));
+  fs::create_symlink("missing/folder", path("out"));
+  const CommandRun link = run_here({"snapshot"});
+  EXPECT_EQ(link.exit_code, 2) << link.output;
+  EXPECT_EQ(line_count(link.output), 1) << link.output;
+  EXPECT_TRUE(fs::is_symlink(path("out")));
+  EXPECT_EQ(entries(), std::vector<std::string>{"out"});
+}
+
+// An existing output the user may not write is refused before rendering and kept: read-only for
+// a user, immutable (chattr +i) for root, whom permissions do not stop. Before, the render ran
+// and its rename replaced a read-only file, or failed on the immutable one with exit 1.
+TEST_F(Outputs, AnExistingOutputThatIsNotWritableIsRefusedBeforeRenderingAndKept) {
+  std::ofstream(path("kept.png")) << "old image";
+  const bool root = ::geteuid() == 0;
+  if (root) {
+    if (run_shell("chattr +i " + shell_quote(path("kept.png")) + " 2>/dev/null").exit_code != 0)
+      GTEST_SKIP() << "chattr +i is not available here";
+  } else {
+    fs::permissions(path("kept.png"), fs::perms::owner_read);
+  }
+  const CommandRun r = run_here(output_render_args({"--out", "kept.png"}));
+  if (root) run_shell("chattr -i " + shell_quote(path("kept.png")));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--out: is not writable, got 'kept.png'"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(path("kept.png")), "old image");
+  EXPECT_EQ(entries(), std::vector<std::string>{"kept.png"});
 }
 
 }  // namespace
