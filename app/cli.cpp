@@ -73,15 +73,6 @@ void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& d
   }
 }
 
-// Refuses an empty value: a flag whose empty text would otherwise mean "not given" (the camera
-// flags, inspect's --json). CLI11 prefixes the flag: "--fov: needs a value, got ''".
-const CLI::Validator& non_empty_value() {
-  static const CLI::Validator check(
-      [](std::string& value) { return value.empty() ? std::string("needs a value, got ''") : ""; },
-      "", "non-empty");
-  return check;
-}
-
 // The camera flags (app/camera_flags.h) of a command that renders a scene.
 void add_camera_flags(CLI::App& command, CameraFlagTexts& texts) {
   command.add_option("--camera-position", texts.position, "the camera's position")

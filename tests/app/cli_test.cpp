@@ -147,8 +147,9 @@ TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
   EXPECT_EQ(run_levrt({"render", "--help"}).exit_code, 0);
 }
 
-// inspect's --json '' was taken as "no JSON" (exit 0), and view's --frames -1 printed the largest
-// double in full (a 330-character line): each is one short line naming the flag, exit 2.
+// inspect's --json '' was taken as "no JSON" (exit 0), as were view's --screenshot, --script,
+// --controls and --window '' (with a display), and view's --frames -1 printed the largest double in
+// full (a 330-character line): each is one short line naming the flag, exit 2.
 TEST_F(Cli, AnEmptyJsonOrNegativeFrameCountIsOneShortLine) {
   const CommandRun json =
       run_levrt({"inspect", "--width", "8", "--height", "8", "--pixel", "1,1", "--json", ""});
@@ -161,6 +162,13 @@ TEST_F(Cli, AnEmptyJsonOrNegativeFrameCountIsOneShortLine) {
   EXPECT_NE(frames.output.find("-1"), std::string::npos) << frames.output;
   EXPECT_EQ(std::count(frames.output.begin(), frames.output.end(), '\n'), 1) << frames.output;
   EXPECT_LT(frames.output.size(), 120u) << frames.output;
+  // The viewer's files and window: refused while the flags are read, display or none.
+  for (const std::string flag : {"--screenshot", "--script", "--controls", "--window"}) {
+    const CommandRun r = run_levrt({"view", "--frames", "1", flag, ""});
+    EXPECT_EQ(r.exit_code, 2) << flag << ": " << r.output;
+    EXPECT_NE(r.output.find(flag + ": needs a value, got ''"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
   EXPECT_TRUE(folder_is_empty());
 }
 
