@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "renderer/denormal_mode.h"
 #include "scenes/scene_validation.h"
 
 namespace app {
@@ -179,7 +180,15 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
   if (flags.orthographic_half_height)
     camera.orthographic_half_height = *flags.orthographic_half_height;
   if (flags.empty()) return camera;
-  const renderer::CameraBasis basis = renderer::camera_basis(camera);
+  // The frame as the render threads compute it, in their float mode (denormals flushed to zero),
+  // as the scene check does (scenes/scene_validation.cpp): an up of 1e-38, or a target 1e-38
+  // from the position, has a frame here but none there (a background-only image in a release
+  // build, the assertion on castable rays in a checked one).
+  renderer::CameraBasis basis;
+  {
+    const renderer::DenormalModeGuard render_float_mode;
+    basis = renderer::camera_basis(camera);
+  }
   if (basis.forward == glm::vec3(0.0f)) {
     throw UsageError("--camera-target: the camera at " + vec3_text(camera.position) +
                      " looking at " + vec3_text(camera.target) + " with up " +

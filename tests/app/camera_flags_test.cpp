@@ -248,6 +248,30 @@ TEST_F(CameraCli, FarCamerasAreRefusedNamingTheFlagAndTheLimitRenders) {
   EXPECT_TRUE(fs::exists(path("out.png")));
 }
 
+// A camera whose frame exists in the main thread's float mode but not in the render threads'
+// (denormals flushed to zero): an up of 1e-38, a target 1e-38 from the position. Refused like
+// the scene file's camera; before, a release build rendered the background alone (exit 0, no
+// shading point) and a checked build aborted on a ray with no direction.
+TEST_F(CameraCli, ACameraDegenerateInTheRenderFloatModeIsRefused) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--camera-up", "1e-38,0,0"},
+      {"--camera-position", "0,0,0", "--camera-target", "1e-38,0,0"},
+  };
+  for (const std::vector<std::string>& flags : cases) {
+    std::vector<std::string> args = flags;
+    args.push_back("--out");
+    args.push_back(path("out.png"));
+    const CommandRun r = render(args);
+    EXPECT_EQ(r.exit_code, 2) << flags[1] << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("--camera-target: the camera at"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("has no view"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
+  }
+  // A tiny up whose frame stays in normal floats is a direction like any other.
+  EXPECT_EQ(render({"--camera-up", "1e-30,0,1e-30", "--out", path("out.png")}).exit_code, 0);
+}
+
 // A camera flag given an empty value is refused naming it, not taken as "not given".
 TEST_F(CameraCli, AnEmptyCameraFlagIsRefusedNamingIt) {
   for (const std::string flag : {"--camera-position", "--camera-target", "--camera-up", "--fov",
