@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/folder_test.h"
+#include "tests/support/gltf_files.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -122,6 +123,18 @@ TEST_F(SceneFileCli, ExportToAnEmptyNameIsRefusedWithOneLine) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--out: needs a file name, got ''"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+// A glTF's meshes cannot be written to a scene file: the one line names the glTF (it named only
+// "/root", a path of no file the user gave).
+TEST_F(SceneFileCli, ExportOfAGltfWithMeshesNamesTheFile) {
+  const std::string file = path("triangle.gltf");
+  { std::ofstream(file) << levrt_test::triangle_scene(); }
+  const CommandRun r = run_levrt({"export", "--scene", file, "--out", path("out.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: " + file + ": /root: triangle meshes", 0), 0u) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(path("out.json")));
 }
 
 TEST_F(SceneFileCli, LevelsAndLightCountsBelongToModels) {
