@@ -1,6 +1,7 @@
 #include "app/output_files.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -108,21 +109,58 @@ int write_all(int fd, const std::string& bytes) {
   return error;
 }
 
+// Whether the user asked levrt to stop while it waits on a pipe, the termination signals being
+// blocked in this thread: the interrupt flag (app/interrupt.h; its handler runs in a thread that
+// does not block them), or a termination signal pending here, taken so that the command ends by
+// the Interrupted thrown, its temporaries removed, rather than by the signal's default action.
+// Waits up to `wait_ms` for such a signal.
+bool termination_requested(long wait_ms) {
+  if (InterruptScope::flag().load()) return true;
+  sigset_t termination;
+  sigemptyset(&termination);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&termination, s);
+  const timespec wait{0, wait_ms * 1000000L};
+  return ::sigtimedwait(&termination, nullptr, &wait) > 0 || InterruptScope::flag().load();
+}
+
 // An existing pipe, character device or socket is written in place: renaming over it would
 // replace the special file (as root, /dev/null itself) and nothing would reach its reader. What
-// was opened is checked again: a name that became a block device since is not written.
+// was opened is checked again: a name that became a block device since is not written. The open
+// and the writes do not block: a FIFO with no reader yet (or one that stopped reading) is waited
+// for in steps, each ending the command with Interrupted when Ctrl-C or SIGTERM came meanwhile;
+// before, the wait was in the kernel with the signals blocked, and only SIGKILL ended it.
 void write_in_place(const std::string& path, const std::string& bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) throw_errno(path, "cannot write", errno);
-  struct stat opened {};
-  if (::fstat(fd, &opened) != 0 || S_ISBLK(opened.st_mode)) {
-    ::close(fd);
-    refuse_block_device(path);
+  constexpr long kWaitStepMs = 20;
+  int fd = -1;
+  while ((fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
+    if (errno == EINTR) continue;
+    if (errno != ENXIO) throw_errno(path, "cannot write", errno);  // ENXIO: a FIFO, no reader
+    if (termination_requested(kWaitStepMs)) throw Interrupted();
   }
-  const int error = write_all(fd, bytes);
-  const int close_error = ::close(fd) != 0 ? errno : 0;
-  if (error != 0) throw_errno(path, "write failed", error);
-  if (close_error != 0) throw_errno(path, "write failed", close_error);
+  struct Closer {
+    int fd;
+    ~Closer() {
+      if (fd >= 0) ::close(fd);
+    }
+  } closer{fd};
+  struct stat opened {};
+  if (::fstat(fd, &opened) != 0 || S_ISBLK(opened.st_mode)) refuse_block_device(path);
+  std::signal(SIGPIPE, SIG_IGN);  // a reader that went away is EPIPE, as in write_all
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+    } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      pollfd ready{fd, POLLOUT, 0};
+      if (::poll(&ready, 1, 0) <= 0 && termination_requested(kWaitStepMs)) throw Interrupted();
+    } else if (!(n < 0 && errno == EINTR)) {
+      throw_errno(path, "write failed", n < 0 ? errno : EIO);
+    }
+  }
+  const int fd_to_close = closer.fd;
+  closer.fd = -1;
+  if (::close(fd_to_close) != 0) throw_errno(path, "write failed", errno);
 }
 
 void write_to_standard_output(const std::string& bytes) {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -454,6 +455,55 @@ TEST_F(Outputs, StandardOutputWithoutAReaderLeavesNoTemporaryFile) {
   EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
       << output;
   EXPECT_EQ(entries(), std::vector<std::string>{"messages.txt"});
+}
+
+// A FIFO output nobody opens for reading: levrt waits for a reader once every other output is
+// staged, and Ctrl-C still ends it (exit 130, one line, the staged stats removed, the FIFO kept).
+// Before, it waited in open() with the termination signals blocked: only SIGKILL ended it, and
+// that left the temporary behind. The signal is sent once the stats' temporary exists, so levrt
+// is in the write by then; 60 s without an exit is the hang.
+TEST_F(Outputs, CtrlCEndsTheWaitForAFifoReaderAndLeavesNoTemporary) {
+  ASSERT_EQ(::mkfifo(path("pipe.png").c_str(), 0600), 0);
+  const std::string out = path("pipe.png"), stats = path("s.json"), messages = path("log.txt");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int log = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(log, STDOUT_FILENO);
+    ::dup2(log, STDERR_FILENO);
+    const char* binary = LEVRT_BINARY;
+    ::execl(binary, binary, "render", "--width", "8", "--height", "8", "--quiet", "--out",
+            out.c_str(), "--stats", stats.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto staged = [this] {
+    for (const std::string& name : entries())
+      if (name.rfind(".levrt-", 0) == 0) return true;
+    return false;
+  };
+  int status = 0;
+  bool exited = false;
+  for (int step = 0; step < 60000 && !staged() && !exited; ++step) {
+    exited = ::waitpid(child, &status, WNOHANG) == child;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_FALSE(exited) << "levrt ended before writing: " << read_file(messages);
+  ::kill(child, SIGINT);
+  for (int step = 0; step < 60000 && !exited; ++step) {
+    exited = ::waitpid(child, &status, WNOHANG) == child;
+    if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (!exited) {
+    ::kill(child, SIGKILL);
+    ::waitpid(child, &status, 0);
+    ADD_FAILURE() << "levrt ignored Ctrl-C while it waited for the FIFO's reader";
+  }
+  const std::string output = read_file(messages);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << status << ": " << output;
+  EXPECT_EQ(line_count(output), 1) << output;
+  EXPECT_NE(output.find("interrupted"), std::string::npos) << output;
+  EXPECT_TRUE(fs::is_fifo(path("pipe.png")));
+  EXPECT_EQ(entries(), (std::vector<std::string>{"log.txt", "pipe.png"}));
 }
 
 // A block device (a disk or partition; here a node of a loop device, made in the test's folder) is
