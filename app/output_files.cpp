@@ -278,6 +278,16 @@ bool file_identity(const std::string& path, std::string& identity) {
   return true;
 }
 
+// The identity of "-" for the same-file check: the file or pipe standard output is, so that
+// `--out /dev/stdout --stats -` (one stream, a PNG and a JSON run together) and `--out - >>
+// scene.json` (the scene appended to) are caught like any other spelling. A terminal or other
+// character device stays "-": two outputs to /dev/null or a terminal harm nothing.
+std::string standard_output_identity() {
+  struct stat st {};
+  if (::fstat(STDOUT_FILENO, &st) != 0 || S_ISCHR(st.st_mode)) return kStandardOutputName;
+  return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+}
+
 // The identity of an output for the same-file check: its file's, or for a new name the absolute
 // path with symlinks and ".." resolved.
 std::string output_identity(const std::string& path) {
@@ -295,7 +305,11 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
   const std::string& flag = output.flag;
   if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
   if (path == kStandardOutputName) {
-    if (!seen.insert(path).second)
+    const std::string identity = standard_output_identity();
+    if (inputs.count(identity) != 0) {
+      throw UsageError(flag + ": standard output is a file this command reads (an input), got '-'");
+    }
+    if (!seen.insert(identity).second)
       throw UsageError(flag + ": standard output is written by another output too, got '-'");
     return;
   }

@@ -140,6 +140,30 @@ TEST_F(Outputs, TwoOutputsOnStandardOutputAreRefused) {
   EXPECT_EQ(line_count(r.output), 1) << r.output;
 }
 
+// Standard output spelled two ways is one stream: `--out /dev/stdout --stats -` ran a PNG and a
+// JSON together into the pipe, and `--out - >> scene.json` appended the PNG to the scene it read.
+// "-" is compared by the file or pipe standard output is: refused, one line, exit 2.
+TEST_F(Outputs, StandardOutputSpelledTwoWaysOrAppendedToTheSceneIsRefused) {
+  const CommandRun twice = run_here(output_render_args({"--out", "/dev/stdout", "--stats", "-"}));
+  EXPECT_EQ(twice.exit_code, 2) << twice.output;
+  EXPECT_EQ(line_count(twice.output), 1) << twice.output;
+  EXPECT_NE(twice.output.find("--stats: standard output is written by another output too"),
+            std::string::npos)
+      << twice.output;
+  ASSERT_EQ(
+      run_here({"export", "--scene", "maze", "--level", "1", "--out", "scene.json"}).exit_code, 0);
+  const std::string before = read_file(path("scene.json"));
+  const CommandRun appended =
+      run_shell("(cd " + shell_quote(dir_.string()) + " && " + shell_quote(LEVRT_BINARY) +
+                " render --scene scene.json --width 8 --height 8 --quiet --out - >> scene.json)");
+  EXPECT_EQ(appended.exit_code, 2) << appended.output;
+  EXPECT_EQ(line_count(appended.output), 1) << appended.output;
+  EXPECT_NE(appended.output.find("--out: standard output is a file this command reads"),
+            std::string::npos)
+      << appended.output;
+  EXPECT_EQ(read_file(path("scene.json")), before);
+}
+
 TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
   fs::create_directories(dir_ / "sub");
   for (const std::string& other :
