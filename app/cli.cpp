@@ -73,6 +73,21 @@ void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& d
   }
 }
 
+// A count typed in decimal digits, at most INT_MAX: checked on the text, before CLI11 converts it
+// (which would take "0x10" and " 3", and say only "Could not convert" for "3.5" or 1e20).
+const CLI::Validator& decimal_count() {
+  static const CLI::Validator check(
+      [](std::string& value) {
+        const bool digits = !value.empty() && value.size() <= 10 &&
+                            value.find_first_not_of("0123456789") == std::string::npos;
+        if (digits && std::stoll(value) <= std::numeric_limits<int>::max()) return std::string();
+        return "must be an integer in [0, " + std::to_string(std::numeric_limits<int>::max()) +
+               "], got '" + value + "'";
+      },
+      "", "decimal count");
+  return check;
+}
+
 // The camera flags (app/camera_flags.h) of a command that renders a scene.
 void add_camera_flags(CLI::App& command, CameraFlagTexts& texts) {
   command.add_option("--camera-position", texts.position, "the camera's position")
@@ -263,7 +278,8 @@ int run_cli(int argc, char** argv) {
       ->required();
   inspect->add_option("--top", inspect_options.top, "table rows per hit (the JSON has all)")
       ->type_name("N")
-      ->default_val(kDefaultInspectTop);
+      ->default_val(kDefaultInspectTop)
+      ->check(decimal_count());
   inspect->add_option("--json", inspect_options.json, "the complete lists (- for standard output)")
       ->type_name("FILE.json")
       ->check(non_empty_value());
