@@ -387,7 +387,23 @@ class Importer {
     const double distance = radius / std::sin(half_fov);
     camera.up = {0.0f, 1.0f, 0.0f};
     camera.target = glm::vec3(centre);
-    camera.position = glm::vec3(centre + distance * glm::normalize(glm::dvec3(0.0, 0.6, 1.0)));
+    const glm::dvec3 position = centre + distance * glm::normalize(glm::dvec3(0.0, 0.6, 1.0));
+    // Meshes or lights too far out for a view of them to stand where a scene's coordinates may
+    // (kMaxCoordinate): refused by what they reach, not by the camera the file does not have.
+    const auto within = [](const glm::dvec3& v) {
+      return std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
+             std::abs(v.z) <= kMaxCoordinate;
+    };
+    if (!within(position) || !within(centre)) {
+      const auto text = [](const glm::dvec3& v) {
+        return "[" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
+      };
+      fail(path_, "camera",
+           "none in the file, and its meshes and lights reach from " + text(lo_) + " to " +
+               text(hi_) + ": a view of them would stand at " + text(position) + ", beyond the " +
+               number_text(kMaxCoordinate) + " a coordinate may have");
+    }
+    camera.position = glm::vec3(position);
     return camera;
   }
 

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -221,6 +222,28 @@ TEST_F(GltfCli, AnOrthographicCameraOfHugeMagnitudeIsRefusedAndTheLimitRenders) 
       {"render", "--scene", file, "--width", "64", "--height", "1", "--out", path("x.png")});
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+// A file without a camera whose triangle reaches 1e30 (or infinity): the view levrt would frame
+// it from cannot stand where coordinates may (1e6). The one line said
+// "scene: /camera/position: coordinate magnitude above 1e+06", a camera the file does not have;
+// it now names the missing camera and how far the meshes reach.
+TEST_F(GltfCli, MeshesTooFarToFrameAreNamedNotTheCameraLevrtWouldMake) {
+  for (const float far : {1e30f, std::numeric_limits<float>::infinity()}) {
+    const std::vector<float> corners = {0, 0, 0, far, 0, 0, 0, 1, 0};
+    std::string bytes(reinterpret_cast<const char*>(corners.data()), 36);
+    { std::ofstream(path("tri.bin"), std::ios::binary) << bytes; }
+    const std::string file = path("far.gltf");
+    {
+      std::ofstream(file) << levrt_test::gltf_document(levrt_test::triangle_buffers("tri.bin") +
+                                                       R"(,
+        "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])");
+    }
+    const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
+                                    "--out", path("x.png"), "--stats", path("s.json")});
+    expect_refused_without_output(r, file, "camera: none in the file, and its meshes and lights");
+    EXPECT_EQ(r.output.find("/camera/position"), std::string::npos) << r.output;
+  }
 }
 
 TEST_F(GltfCli, AFileWithNothingToRenderShowsTheBackgroundWithOneWarning) {
