@@ -134,7 +134,11 @@ void write_in_place(const std::string& path, const std::string& bytes) {
   int fd = -1;
   while ((fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
     if (errno == EINTR) continue;
-    if (errno != ENXIO) throw_errno(path, "cannot write", errno);  // ENXIO: a FIFO, no reader
+    // ENXIO is a FIFO without a reader, to wait for; anything else (a socket's ENXIO too) fails.
+    const int error = errno;
+    struct stat status {};
+    if (error != ENXIO || ::stat(path.c_str(), &status) != 0 || !S_ISFIFO(status.st_mode))
+      throw_errno(path, "cannot write", error);
     if (termination_requested(kWaitStepMs)) throw Interrupted();
   }
   struct Closer {
@@ -319,6 +323,11 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
   if (is_block_device(path)) {
     throw UsageError(flag + ": is a block device (a disk or partition), never written, got '" +
                      path + "'");
+  }
+  struct stat socket_status {};
+  if (::stat(path.c_str(), &socket_status) == 0 && S_ISSOCK(socket_status.st_mode)) {
+    // open() refuses a socket (ENXIO): it could only fail after the work.
+    throw UsageError(flag + ": is a socket, which cannot be opened as a file, got '" + path + "'");
   }
   const std::string identity = output_identity(path);
   if (inputs.count(identity) != 0) {

@@ -3,8 +3,10 @@
 // write errors with their reason, the memory budget, and one-line messages that repeat what the
 // user typed.
 #include <fcntl.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -528,6 +530,28 @@ TEST_F(Outputs, CtrlCEndsTheWaitForAFifoReaderAndLeavesNoTemporary) {
   EXPECT_NE(output.find("interrupted"), std::string::npos) << output;
   EXPECT_TRUE(fs::is_fifo(path("pipe.png")));
   EXPECT_EQ(entries(), (std::vector<std::string>{"log.txt", "pipe.png"}));
+}
+
+// A UNIX socket cannot be opened as a file: refused before rendering, one line, exit 2 (open()
+// fails with ENXIO, which a FIFO without a reader also gives; that one is waited for).
+TEST_F(Outputs, ASocketOutputIsRefusedBeforeRendering) {
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(sock, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string name = path("sock.png");
+  if (name.size() >= sizeof(address.sun_path)) GTEST_SKIP() << "folder name too long for a socket";
+  std::copy(name.begin(), name.end(), address.sun_path);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  // Bounded: a levrt that took the socket's ENXIO for a FIFO without a reader would wait forever.
+  const CommandRun r =
+      run_shell("cd " + shell_quote(dir_.string()) + " && timeout 60 " + shell_quote(LEVRT_BINARY) +
+                " render --width 8 --height 8 --quiet --out sock.png");
+  ::close(sock);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--out: is a socket"), std::string::npos) << r.output;
+  EXPECT_EQ(entries(), std::vector<std::string>{"sock.png"});
 }
 
 // A block device (a disk or partition; here a node of a loop device, made in the test's folder) is
