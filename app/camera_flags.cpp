@@ -11,9 +11,18 @@
 #include <nlohmann/json.hpp>
 
 #include "app/settings.h"
+#include "renderer/denormal_mode.h"
+#include "scenes/scene_validation.h"
 
 namespace app {
 namespace {
+
+std::string float_text(float v) {
+  // %.9g is the shortest notation that always reads back as the same float.
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+  return text;
+}
 
 bool parse_float(const std::string& text, float& value) {
   if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return false;
@@ -26,7 +35,25 @@ bool parse_float(const std::string& text, float& value) {
   return true;
 }
 
-glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
+// The magnitude a camera's position, target and orthographic half height may have: a scene's
+// (scenes::kMaxCoordinate). Rays start there, and Embree refuses (asserts on) ray origins past
+// about 1.8e18; the up direction is only normalized, so it has no such bound.
+constexpr float kMaxCameraCoordinate = scenes::kMaxCoordinate;
+
+bool within_camera_bound(const glm::vec3& v) {
+  return std::abs(v.x) <= kMaxCameraCoordinate && std::abs(v.y) <= kMaxCameraCoordinate &&
+         std::abs(v.z) <= kMaxCameraCoordinate;
+}
+
+std::string bound_text() {
+  return float_text(kMaxCameraCoordinate);
+}
+
+// X,Y,Z; a point (bounded) has each magnitude at most kMaxCameraCoordinate.
+glm::vec3 parse_vec3(const std::string& flag, const std::string& text, bool bounded) {
+  const std::string what =
+      bounded ? "must be X,Y,Z (three finite numbers of magnitude at most " + bound_text() + ")"
+              : "must be X,Y,Z (three finite numbers)";
   glm::vec3 v(0.0f);
   std::size_t start = 0;
   for (int i = 0; i < 3; ++i) {
@@ -34,10 +61,12 @@ glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
     const bool last = i == 2;
     if (last != (comma == std::string::npos) ||
         !parse_float(text.substr(start, last ? std::string::npos : comma - start), v[i])) {
-      throw UsageError(flag + ": must be X,Y,Z (three finite numbers), got '" + text + "'");
+      throw UsageError(flag + ": " + what + ", got '" + text + "'");
     }
     start = comma + 1;
   }
+  if (bounded && !within_camera_bound(v))
+    throw UsageError(flag + ": " + what + ", got '" + text + "'");
   return v;
 }
 
@@ -71,7 +100,7 @@ CameraFlags read_camera_file(const std::string& path) {
     throw UsageError(flag + ": " + path +
                      ": no \"camera\" object (a stats file levrt wrote has one)");
   const nlohmann::json& camera = doc["camera"];
-  const auto vec = [&](const char* name) {
+  const auto vec = [&](const char* name, bool bounded) {
     const nlohmann::json* v = camera.contains(name) ? &camera[name] : nullptr;
     if (!v || !v->is_array() || v->size() != 3 || !(*v)[0].is_number() || !(*v)[1].is_number() ||
         !(*v)[2].is_number())
@@ -79,12 +108,15 @@ CameraFlags read_camera_file(const std::string& path) {
     const glm::vec3 out((*v)[0].get<float>(), (*v)[1].get<float>(), (*v)[2].get<float>());
     if (!std::isfinite(out.x) || !std::isfinite(out.y) || !std::isfinite(out.z))
       throw UsageError(flag + ": " + path + ": camera." + name + ": must be finite");
+    if (bounded && !within_camera_bound(out))
+      throw UsageError(flag + ": " + path + ": camera." + name + ": magnitude above " +
+                       bound_text());
     return out;
   };
   CameraFlags flags;
-  flags.position = vec("position");
-  flags.target = vec("target");
-  flags.up = vec("up");
+  flags.position = vec("position", true);
+  flags.target = vec("target", true);
+  flags.up = vec("up", false);
   if (!camera.contains("vertical_fov_deg") || !camera["vertical_fov_deg"].is_number())
     throw UsageError(flag + ": " + path + ": camera.vertical_fov_deg: must be a number");
   const float fov = camera["vertical_fov_deg"].get<float>();
@@ -95,19 +127,14 @@ CameraFlags read_camera_file(const std::string& path) {
   flags.orthographic_half_height = 0.0f;
   if (camera.contains("orthographic_half_height")) {
     const nlohmann::json& h = camera["orthographic_half_height"];
-    if (!h.is_number() || !std::isfinite(h.get<float>()) || !(h.get<float>() >= 0.0f))
+    if (!h.is_number() || !std::isfinite(h.get<float>()) || !(h.get<float>() >= 0.0f) ||
+        h.get<float>() > kMaxCameraCoordinate)
       throw UsageError(flag + ": " + path +
-                       ": camera.orthographic_half_height: must be a finite number >= 0");
+                       ": camera.orthographic_half_height: must be a number in [0, " +
+                       bound_text() + "]");
     flags.orthographic_half_height = h.get<float>();
   }
   return flags;
-}
-
-std::string float_text(float v) {
-  // %.9g is the shortest notation that always reads back as the same float.
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
-  return text;
 }
 
 std::string vec3_text(const glm::vec3& v) {
@@ -122,9 +149,10 @@ CameraFlags parse_camera_flags(const CameraFlagTexts& texts) {
     flags = read_camera_file(texts.from_file);
     flags.from_file = texts.from_file;
   }
-  if (!texts.position.empty()) flags.position = parse_vec3("--camera-position", texts.position);
-  if (!texts.target.empty()) flags.target = parse_vec3("--camera-target", texts.target);
-  if (!texts.up.empty()) flags.up = parse_vec3("--camera-up", texts.up);
+  if (!texts.position.empty())
+    flags.position = parse_vec3("--camera-position", texts.position, true);
+  if (!texts.target.empty()) flags.target = parse_vec3("--camera-target", texts.target, true);
+  if (!texts.up.empty()) flags.up = parse_vec3("--camera-up", texts.up, false);
   if (!texts.fov_deg.empty() && !texts.ortho_half_height.empty())
     throw UsageError(
         "--ortho-half-height: give --fov (perspective) or --ortho-half-height "
@@ -135,9 +163,9 @@ CameraFlags parse_camera_flags(const CameraFlagTexts& texts) {
   }
   if (!texts.ortho_half_height.empty()) {
     float h = 0.0f;
-    if (!parse_float(texts.ortho_half_height, h) || !(h > 0.0f))
-      throw UsageError("--ortho-half-height: must be a positive number of scene units, got '" +
-                       texts.ortho_half_height + "'");
+    if (!parse_float(texts.ortho_half_height, h) || !(h > 0.0f) || h > kMaxCameraCoordinate)
+      throw UsageError("--ortho-half-height: must be a positive number of scene units, at most " +
+                       bound_text() + ", got '" + texts.ortho_half_height + "'");
     flags.orthographic_half_height = h;
   }
   return flags;
@@ -152,7 +180,15 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
   if (flags.orthographic_half_height)
     camera.orthographic_half_height = *flags.orthographic_half_height;
   if (flags.empty()) return camera;
-  const renderer::CameraBasis basis = renderer::camera_basis(camera);
+  // The frame as the render threads compute it, in their float mode (denormals flushed to zero),
+  // as the scene check does (scenes/scene_validation.cpp): an up of 1e-38, or a target 1e-38
+  // from the position, has a frame here but none there (a background-only image in a release
+  // build, the assertion on castable rays in a checked one).
+  renderer::CameraBasis basis;
+  {
+    const renderer::DenormalModeGuard render_float_mode;
+    basis = renderer::camera_basis(camera);
+  }
   if (basis.forward == glm::vec3(0.0f)) {
     throw UsageError("--camera-target: the camera at " + vec3_text(camera.position) +
                      " looking at " + vec3_text(camera.target) + " with up " +

@@ -73,23 +73,45 @@ void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& d
   }
 }
 
+// A count typed in decimal digits, at most INT_MAX: checked on the text, before CLI11 converts it
+// (which would take "0x10" and " 3", and say only "Could not convert" for "3.5" or 1e20).
+const CLI::Validator& decimal_count() {
+  static const CLI::Validator check(
+      [](std::string& value) {
+        const bool digits = !value.empty() && value.size() <= 10 &&
+                            value.find_first_not_of("0123456789") == std::string::npos;
+        if (digits && std::stoll(value) <= std::numeric_limits<int>::max()) return std::string();
+        return "must be an integer in [0, " + std::to_string(std::numeric_limits<int>::max()) +
+               "], got '" + value + "'";
+      },
+      "", "decimal count");
+  return check;
+}
+
 // The camera flags (app/camera_flags.h) of a command that renders a scene.
 void add_camera_flags(CLI::App& command, CameraFlagTexts& texts) {
   command.add_option("--camera-position", texts.position, "the camera's position")
-      ->type_name("X,Y,Z");
+      ->type_name("X,Y,Z")
+      ->check(non_empty_value());
   command.add_option("--camera-target", texts.target, "the point the camera looks at")
-      ->type_name("X,Y,Z");
-  command.add_option("--camera-up", texts.up, "the camera's up direction")->type_name("X,Y,Z");
+      ->type_name("X,Y,Z")
+      ->check(non_empty_value());
+  command.add_option("--camera-up", texts.up, "the camera's up direction")
+      ->type_name("X,Y,Z")
+      ->check(non_empty_value());
   command.add_option("--fov", texts.fov_deg, "vertical field of view, degrees in (0, 180)")
-      ->type_name("DEG");
+      ->type_name("DEG")
+      ->check(non_empty_value());
   command
       .add_option("--ortho-half-height", texts.ortho_half_height,
                   "an orthographic view this many scene units above and below its axis")
-      ->type_name("UNITS");
+      ->type_name("UNITS")
+      ->check(non_empty_value());
   command
       .add_option("--camera-from", texts.from_file,
                   "the camera of a stats JSON levrt wrote (the flags above override its parts)")
-      ->type_name("STATS.json");
+      ->type_name("STATS.json")
+      ->check(non_empty_value());
 }
 
 // `levrt NAME` where NAME is no command: CLI11 would call it an unexpected argument.
@@ -170,8 +192,15 @@ Settings apply_scene_flags(const SceneFlags& flags, const Settings& defaults) {
 }
 
 int run_snapshot() {
-  // The main job without a window: a snapshot of the default scene into out/.
-  std::filesystem::create_directories("out");
+  // The main job without a window: a snapshot of the default scene into out/. A name "out" that
+  // is not a folder (a file, a dangling symlink) is the user's: refused, left as it is.
+  std::error_code ec;
+  std::filesystem::create_directories("out", ec);
+  if (ec || !std::filesystem::is_directory("out")) {
+    throw UsageError("snapshot: cannot make the folder 'out' for its files (" +
+                     (ec ? ec.message() : std::string("not a folder")) + "), got '" +
+                     (std::filesystem::current_path() / "out").string() + "'");
+  }
   Settings settings;
   RenderOutputs outputs;
   outputs.image = "out/building.png";
@@ -249,9 +278,11 @@ int run_cli(int argc, char** argv) {
       ->required();
   inspect->add_option("--top", inspect_options.top, "table rows per hit (the JSON has all)")
       ->type_name("N")
-      ->default_val(kDefaultInspectTop);
+      ->default_val(kDefaultInspectTop)
+      ->check(decimal_count());
   inspect->add_option("--json", inspect_options.json, "the complete lists (- for standard output)")
-      ->type_name("FILE.json");
+      ->type_name("FILE.json")
+      ->check(non_empty_value());
 
   CLI::App* export_command =
       cli.add_subcommand("export", "write a scene model's level (or a scene file) as a scene file");

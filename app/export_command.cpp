@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 #include "app/output_files.h"
 #include "app/scene_loading.h"
@@ -28,10 +30,18 @@ int run_export(const ExportFlags& flags) {
     apply_light_count_flag(settings.scene, flags.lights);
   }
   if (flags.out_option->count() == 0) throw UsageError("--out: export needs a file name");
+  if (flags.out.empty()) throw UsageError("--out: needs a file name, got ''");
   check_output_paths({{"--out", flags.out, ".json", "a scene file"}},
                      scenes::scene_input_files(settings.scene.name));
   const scenes::SceneDescription description = describe_scene(settings.scene);
-  app::write_text_file(flags.out, scenes::scene_file_json(description));
+  std::string text;
+  try {
+    text = scenes::scene_file_json(description);
+  } catch (const std::invalid_argument& e) {
+    // What a scene file cannot hold (a glTF's meshes or suns), named with the scene it came from.
+    throw std::invalid_argument(settings.scene.name + ": " + e.what());
+  }
+  app::write_text_file(flags.out, text);
   // With --out - the scene file is standard output, so the note goes to stderr.
   std::fprintf(flags.out == app::kStandardOutputName ? stderr : stdout,
                "wrote %s: %s level %d, %zu masters\n",

@@ -1,6 +1,7 @@
 #include "app/output_files.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -68,6 +69,17 @@ bool is_symlink_loop(const std::string& path) {
   return ::stat(path.c_str(), &st) != 0 && errno == ELOOP;
 }
 
+// An existing block device (a disk or a partition), symlinks followed: never an output. Writing
+// an image there in place would overwrite the start of the disk.
+bool is_block_device(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISBLK(st.st_mode);
+}
+
+[[noreturn]] void refuse_block_device(const std::string& path) {
+  throw std::runtime_error(path + ": cannot write (a block device: a disk or partition)");
+}
+
 // An existing file that is neither a regular file nor a folder: a pipe, device or socket.
 bool is_existing_special_file(const std::string& path) {
   std::error_code ec;
@@ -75,12 +87,14 @@ bool is_existing_special_file(const std::string& path) {
   return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
 }
 
-// write() until done; returns 0 or the errno of the failure. SIGXFSZ is ignored from the first
-// write on (setting SIG_IGN again is harmless, so concurrent writers cannot race to restore it),
-// so a file-size limit (ulimit -f) comes back as EFBIG, reported and cleaned up, instead of
-// killing the process with the temporary file left behind.
+// write() until done; returns 0 or the errno of the failure. SIGXFSZ and SIGPIPE are ignored from
+// the first write on (setting SIG_IGN again is harmless, so concurrent writers cannot race to
+// restore it), so a file-size limit (ulimit -f) comes back as EFBIG and a reader that went away
+// (`levrt render --out - | true`, a FIFO closed early) as EPIPE, reported and cleaned up, instead
+// of killing the process with the other outputs' temporary files left behind.
 int write_all(int fd, const std::string& bytes) {
   std::signal(SIGXFSZ, SIG_IGN);
+  std::signal(SIGPIPE, SIG_IGN);
   int error = 0;
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -95,15 +109,62 @@ int write_all(int fd, const std::string& bytes) {
   return error;
 }
 
-// An existing pipe, device or socket is written in place: renaming over it would replace the
-// special file (as root, /dev/null itself) and nothing would reach its reader.
+// Whether the user asked levrt to stop while it waits on a pipe, the termination signals being
+// blocked in this thread: the interrupt flag (app/interrupt.h; its handler runs in a thread that
+// does not block them), or a termination signal pending here, taken so that the command ends by
+// the Interrupted thrown, its temporaries removed, rather than by the signal's default action.
+// Waits up to `wait_ms` for such a signal.
+bool termination_requested(long wait_ms) {
+  if (InterruptScope::flag().load()) return true;
+  sigset_t termination;
+  sigemptyset(&termination);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&termination, s);
+  const timespec wait{0, wait_ms * 1000000L};
+  return ::sigtimedwait(&termination, nullptr, &wait) > 0 || InterruptScope::flag().load();
+}
+
+// An existing pipe, character device or socket is written in place: renaming over it would
+// replace the special file (as root, /dev/null itself) and nothing would reach its reader. What
+// was opened is checked again: a name that became a block device since is not written. The open
+// and the writes do not block: a FIFO with no reader yet (or one that stopped reading) is waited
+// for in steps, each ending the command with Interrupted when Ctrl-C or SIGTERM came meanwhile;
+// before, the wait was in the kernel with the signals blocked, and only SIGKILL ended it.
 void write_in_place(const std::string& path, const std::string& bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) throw_errno(path, "cannot write", errno);
-  const int error = write_all(fd, bytes);
-  const int close_error = ::close(fd) != 0 ? errno : 0;
-  if (error != 0) throw_errno(path, "write failed", error);
-  if (close_error != 0) throw_errno(path, "write failed", close_error);
+  constexpr long kWaitStepMs = 20;
+  int fd = -1;
+  while ((fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC)) < 0) {
+    if (errno == EINTR) continue;
+    // ENXIO is a FIFO without a reader, to wait for; anything else (a socket's ENXIO too) fails.
+    const int error = errno;
+    struct stat status {};
+    if (error != ENXIO || ::stat(path.c_str(), &status) != 0 || !S_ISFIFO(status.st_mode))
+      throw_errno(path, "cannot write", error);
+    if (termination_requested(kWaitStepMs)) throw Interrupted();
+  }
+  struct Closer {
+    int fd;
+    ~Closer() {
+      if (fd >= 0) ::close(fd);
+    }
+  } closer{fd};
+  struct stat opened {};
+  if (::fstat(fd, &opened) != 0 || S_ISBLK(opened.st_mode)) refuse_block_device(path);
+  std::signal(SIGPIPE, SIG_IGN);  // a reader that went away is EPIPE, as in write_all
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+    } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      pollfd ready{fd, POLLOUT, 0};
+      if (::poll(&ready, 1, 0) <= 0 && termination_requested(kWaitStepMs)) throw Interrupted();
+    } else if (!(n < 0 && errno == EINTR)) {
+      throw_errno(path, "write failed", n < 0 ? errno : EIO);
+    }
+  }
+  const int fd_to_close = closer.fd;
+  closer.fd = -1;
+  if (::close(fd_to_close) != 0) throw_errno(path, "write failed", errno);
 }
 
 void write_to_standard_output(const std::string& bytes) {
@@ -221,6 +282,16 @@ bool file_identity(const std::string& path, std::string& identity) {
   return true;
 }
 
+// The identity of "-" for the same-file check: the file or pipe standard output is, so that
+// `--out /dev/stdout --stats -` (one stream, a PNG and a JSON run together) and `--out - >>
+// scene.json` (the scene appended to) are caught like any other spelling. A terminal or other
+// character device stays "-": two outputs to /dev/null or a terminal harm nothing.
+std::string standard_output_identity() {
+  struct stat st {};
+  if (::fstat(STDOUT_FILENO, &st) != 0 || S_ISCHR(st.st_mode)) return kStandardOutputName;
+  return "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+}
+
 // The identity of an output for the same-file check: its file's, or for a new name the absolute
 // path with symlinks and ".." resolved.
 std::string output_identity(const std::string& path) {
@@ -238,13 +309,26 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
   const std::string& flag = output.flag;
   if (path.empty()) throw UsageError(flag + ": needs a file name, got ''");
   if (path == kStandardOutputName) {
-    if (!seen.insert(path).second)
+    const std::string identity = standard_output_identity();
+    if (inputs.count(identity) != 0) {
+      throw UsageError(flag + ": standard output is a file this command reads (an input), got '-'");
+    }
+    if (!seen.insert(identity).second)
       throw UsageError(flag + ": standard output is written by another output too, got '-'");
     return;
   }
   if (is_symlink_loop(path)) throw UsageError(flag + ": is a symlink loop, got '" + path + "'");
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw UsageError(flag + ": is a folder, got '" + path + "'");
+  if (is_block_device(path)) {
+    throw UsageError(flag + ": is a block device (a disk or partition), never written, got '" +
+                     path + "'");
+  }
+  struct stat socket_status {};
+  if (::stat(path.c_str(), &socket_status) == 0 && S_ISSOCK(socket_status.st_mode)) {
+    // open() refuses a socket (ENXIO): it could only fail after the work.
+    throw UsageError(flag + ": is a socket, which cannot be opened as a file, got '" + path + "'");
+  }
   const std::string identity = output_identity(path);
   if (inputs.count(identity) != 0) {
     throw UsageError(flag + ": names a file this command reads (an input), got '" + path + "'");
@@ -268,6 +352,11 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
       throw UsageError(flag + ": folder does not exist, got '" + path + "'");
     if (::access(parent.c_str(), W_OK) != 0)
       throw UsageError(flag + ": folder is not writable, got '" + path + "'");
+    // An existing file the user may not write (read-only, or immutable even for root) is not
+    // replaced by the rename either: refused here, before any work.
+    struct stat existing {};
+    if (::stat(target.c_str(), &existing) == 0 && ::access(target.c_str(), W_OK) != 0)
+      throw UsageError(flag + ": is not writable, got '" + path + "'");
     const std::size_t name_bytes = target.filename().string().size();
     if (name_bytes > name_max_bytes(parent)) {
       throw UsageError(flag + ": file name of " + std::to_string(name_bytes) +
@@ -323,6 +412,8 @@ void write_output_files(const std::vector<OutputFile>& files) {
       if (file.path != kStandardOutputName && is_symlink_loop(file.path)) {
         throw std::runtime_error(file.path + ": cannot write (is a symlink loop)");
       }
+      if (file.path != kStandardOutputName && is_block_device(file.path))
+        refuse_block_device(file.path);
       if (file.path == kStandardOutputName || is_existing_special_file(file.path)) {
         in_place.emplace_back(file.path, std::move(bytes));
       } else {

@@ -1,6 +1,7 @@
 #include "app/view_command.h"
 
 #include <cstdlib>
+#include <limits>
 
 #ifdef LEVRT_HAS_VIEWER
 #include "app/viewer/scripted_changes.h"
@@ -9,25 +10,39 @@
 
 namespace app {
 
+const CLI::Validator& non_empty_value() {
+  static const CLI::Validator check(
+      [](std::string& value) { return value.empty() ? std::string("needs a value, got ''") : ""; },
+      "", "non-empty");
+  return check;
+}
+
 void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags) {
   command.add_option("--frames", flags.frames, "scripted: run this many UI frames, then exit")
-      ->check(CLI::NonNegativeNumber);
-  command.add_option("--screenshot", flags.screenshot,
-                     "scripted: write the window to this PNG after the last frame");
+      ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+  command
+      .add_option("--screenshot", flags.screenshot,
+                  "scripted: write the window to this PNG after the last frame")
+      ->check(non_empty_value());
   command.add_option(
       "--set", flags.changes,
       "scripted: change a control at a frame, key=value@frame (a setting, lights, view, "
       "reference, snapshot, screenshot, await, memory)");
-  command.add_option("--script", flags.script,
-                     "scripted: a file of --set changes, one key=value@frame per line");
+  command
+      .add_option("--script", flags.script,
+                  "scripted: a file of --set changes, one key=value@frame per line")
+      ->check(non_empty_value());
   command.add_flag("--report-fps", flags.report_fps,
                    "print UI frame times and first-tile latencies at exit");
-  command.add_option("--window", flags.window, "window size, WIDTHxHEIGHT");
+  command.add_option("--window", flags.window, "window size, WIDTHxHEIGHT")
+      ->check(non_empty_value());
   command.add_flag("--real-input", flags.real_input,
                    "scripted: let the real mouse drive the picture as well as the panel");
-  command.add_option("--controls", flags.controls,
-                     "write the panel's control rectangles and the settings to this JSON file "
-                     "whenever they change (for tests driving the window with real input)");
+  command
+      .add_option("--controls", flags.controls,
+                  "write the panel's control rectangles and the settings to this JSON file "
+                  "whenever they change (for tests driving the window with real input)")
+      ->check(non_empty_value());
 }
 
 bool viewer_display_available() {

@@ -20,6 +20,11 @@ inline Settings viewer_default_settings() {
   return settings;
 }
 
+// Refuses an empty value for a flag whose empty text would otherwise mean "not given" (the
+// camera flags, inspect's --json, the viewer's files). CLI11 prefixes the flag: "--fov: needs a
+// value, got ''".
+const CLI::Validator& non_empty_value();
+
 void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags);
 
 // True when levrt was built with the viewer and DISPLAY names a display.

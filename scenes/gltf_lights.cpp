@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <utility>
 
 #include "scenes/gltf_refusal.h"
+#include "scenes/scene_validation.h"
 
 namespace scenes {
 namespace {
@@ -19,6 +21,14 @@ void check_gltf_lights(const tinygltf::Model& model, const std::string& path) {
     const std::string where = "lights[" + std::to_string(i) + "]";
     if (!std::isfinite(light.intensity) || light.intensity < 0.0) {
       fail_gltf(path, where + ".intensity", gltf_number_text(light.intensity));
+    }
+    // levrt's bound on any light (kMaxIntensity; colours are at most 1), refused here with the
+    // glTF path rather than by the scene check, which names the node levrt built from it.
+    if (light.intensity > kMaxIntensity) {
+      std::ostringstream limit;  // six digits: "1e+12", not the float's 9.99999996e+11
+      limit << static_cast<double>(kMaxIntensity);
+      fail_gltf(path, "extensions.KHR_lights_punctual." + where + ".intensity",
+                gltf_number_text(light.intensity) + " (levrt renders at most " + limit.str() + ")");
     }
     if (!std::isfinite(light.range) || light.range < 0.0)
       fail_gltf(path, where + ".range", gltf_number_text(light.range));

@@ -30,6 +30,7 @@
 #include "scenes/scene_file.h"
 #include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
+#include "scenes/scene_validation.h"
 
 namespace scenes {
 namespace {
@@ -342,9 +343,13 @@ class Importer {
     // glTF's ymag is the half height seen (a negative one, which the spec advises against, as
     // its magnitude); the width follows the image's aspect ratio, as a perspective camera's does
     // (xmag, like aspectRatio, is not read: scenes/README.md).
+    // Bounded like any length of a scene (kMaxCoordinate): rays start up to ymag times the
+    // aspect ratio from the camera, and Embree refuses (asserts on) origins past about 1.8e18.
     const double ymag = std::abs(camera.orthographic.ymag);
-    if (orthographic && (!std::isfinite(ymag) || !(ymag > 0.0) || !(ymag < 1e30)))
-      fail(path_, camera_where + ".orthographic.ymag", number_text(ymag));
+    if (orthographic && (!std::isfinite(ymag) || !(ymag > 0.0) || !(ymag <= kMaxCoordinate))) {
+      fail(path_, camera_where + ".orthographic.ymag",
+           number_text(ymag) + " (a half height in (0, " + number_text(kMaxCoordinate) + "])");
+    }
     // --camera N: the N-th camera met in the node tree, depth first.
     if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
@@ -382,7 +387,23 @@ class Importer {
     const double distance = radius / std::sin(half_fov);
     camera.up = {0.0f, 1.0f, 0.0f};
     camera.target = glm::vec3(centre);
-    camera.position = glm::vec3(centre + distance * glm::normalize(glm::dvec3(0.0, 0.6, 1.0)));
+    const glm::dvec3 position = centre + distance * glm::normalize(glm::dvec3(0.0, 0.6, 1.0));
+    // Meshes or lights too far out for a view of them to stand where a scene's coordinates may
+    // (kMaxCoordinate): refused by what they reach, not by the camera the file does not have.
+    const auto within = [](const glm::dvec3& v) {
+      return std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
+             std::abs(v.z) <= kMaxCoordinate;
+    };
+    if (!within(position) || !within(centre)) {
+      const auto text = [](const glm::dvec3& v) {
+        return "[" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
+      };
+      fail(path_, "camera",
+           "none in the file, and its meshes and lights reach from " + text(lo_) + " to " +
+               text(hi_) + ": a view of them would stand at " + text(position) + ", beyond the " +
+               number_text(kMaxCoordinate) + " a coordinate may have");
+    }
+    camera.position = glm::vec3(position);
     return camera;
   }
 

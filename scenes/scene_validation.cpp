@@ -160,8 +160,12 @@ class Analysis {
         !(c.vertical_fov_deg < 180.0f)) {
       fail("/camera/fov_degrees", "must be in (0, 180) (" + number_text(c.vertical_fov_deg) + ")");
     }
-    if (!std::isfinite(c.orthographic_half_height) || !(c.orthographic_half_height >= 0.0f)) {
-      fail("/camera/orthographic_half_height", "must be >= 0, 0 for a perspective camera (" +
+    // At most kMaxCoordinate, like any length: rays start up to the half height times the aspect
+    // ratio from the camera, and Embree refuses (asserts on) origins past about 1.8e18.
+    if (!std::isfinite(c.orthographic_half_height) || !(c.orthographic_half_height >= 0.0f) ||
+        c.orthographic_half_height > kMaxCoordinate) {
+      fail("/camera/orthographic_half_height", "must be in [0, " + number_text(kMaxCoordinate) +
+                                                   "], 0 for a perspective camera (" +
                                                    number_text(c.orthographic_half_height) + ")");
     }
     check_colour("/ambient", scene_.ambient, 1e6f);

@@ -211,6 +211,79 @@ TEST_F(CameraCli, BadCamerasExitTwoWithOneLineNamingTheFlagAndWriteNothing) {
   }
 }
 
+// A camera position, target or orthographic half height past a scene's coordinates (1e6) is
+// refused naming the flag: rays start there, and Embree aborts on ray origins past about 1.8e18
+// (--camera-position 1e30,1e30,1e30 and --ortho-half-height 1e19 were exit 134). So is a stats
+// file carrying such a camera. The limit itself renders; up is a direction, any size.
+TEST_F(CameraCli, FarCamerasAreRefusedNamingTheFlagAndTheLimitRenders) {
+  std::ofstream(path("far.json"))
+      << R"({"camera": {"position": [1e30, 1e30, 1e30], "target": [0,0,0], "up": [0,0,1], )"
+         R"("vertical_fov_deg": 40}})";
+  std::ofstream(path("wide.json"))
+      << R"({"camera": {"position": [0,-10,5], "target": [0,0,0], "up": [0,0,1], )"
+         R"("vertical_fov_deg": 40, "orthographic_half_height": 1e19}})";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--camera-position", "1e30,1e30,1e30"}, "--camera-position: must be X,Y,Z"},
+      {{"--camera-position", "0,0,1000001"}, "--camera-position: must be X,Y,Z"},
+      {{"--camera-target", "1e30,0,0"}, "--camera-target: must be X,Y,Z"},
+      {{"--ortho-half-height", "1e19"}, "--ortho-half-height: must be a positive number"},
+      {{"--ortho-half-height", "1e30"}, "--ortho-half-height: must be a positive number"},
+      {{"--camera-from", path("far.json")}, "camera.position: magnitude above 1000000"},
+      {{"--camera-from", path("wide.json")}, "camera.orthographic_half_height: must be"},
+  };
+  for (const auto& [flags, expected] : cases) {
+    std::vector<std::string> args = flags;
+    args.push_back("--out");
+    args.push_back(path("out.png"));
+    const CommandRun r = render(args);
+    EXPECT_EQ(r.exit_code, 2) << flags[1] << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
+  }
+  const CommandRun limit =
+      render({"--camera-position", "1e6,-1e6,1e6", "--camera-target", "0,0,0", "--camera-up",
+              "1e30,0,1e30", "--ortho-half-height", "1e6", "--out", path("out.png")});
+  EXPECT_EQ(limit.exit_code, 0) << limit.output;
+  EXPECT_TRUE(fs::exists(path("out.png")));
+}
+
+// A camera whose frame exists in the main thread's float mode but not in the render threads'
+// (denormals flushed to zero): an up of 1e-38, a target 1e-38 from the position. Refused like
+// the scene file's camera; before, a release build rendered the background alone (exit 0, no
+// shading point) and a checked build aborted on a ray with no direction.
+TEST_F(CameraCli, ACameraDegenerateInTheRenderFloatModeIsRefused) {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--camera-up", "1e-38,0,0"},
+      {"--camera-position", "0,0,0", "--camera-target", "1e-38,0,0"},
+  };
+  for (const std::vector<std::string>& flags : cases) {
+    std::vector<std::string> args = flags;
+    args.push_back("--out");
+    args.push_back(path("out.png"));
+    const CommandRun r = render(args);
+    EXPECT_EQ(r.exit_code, 2) << flags[1] << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("--camera-target: the camera at"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("has no view"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
+  }
+  // A tiny up whose frame stays in normal floats is a direction like any other.
+  EXPECT_EQ(render({"--camera-up", "1e-30,0,1e-30", "--out", path("out.png")}).exit_code, 0);
+}
+
+// A camera flag given an empty value is refused naming it, not taken as "not given".
+TEST_F(CameraCli, AnEmptyCameraFlagIsRefusedNamingIt) {
+  for (const std::string flag : {"--camera-position", "--camera-target", "--camera-up", "--fov",
+                                 "--ortho-half-height", "--camera-from"}) {
+    const CommandRun r = render({flag, "", "--out", path("out.png")});
+    EXPECT_EQ(r.exit_code, 2) << flag << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find(flag + ": needs a value, got ''"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
+  }
+}
+
 TEST_F(CameraCli, NoOutputReplacesTheCameraFile) {
   ASSERT_EQ(render({"--stats", path("s.json")}).exit_code, 0);
   const std::string before = read_file(path("s.json"));

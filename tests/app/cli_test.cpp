@@ -147,6 +147,40 @@ TEST_F(Cli, UnknownFlagsAndSubcommandsExitTwo) {
   EXPECT_EQ(run_levrt({"render", "--help"}).exit_code, 0);
 }
 
+// Values the flags took or refused unclearly: inspect's --json '' and view's --screenshot,
+// --script and --controls '' were taken as not given (exit 0); inspect's --top took "0x10" and
+// " 3" and said "Could not convert: --top = 3.5"; view's --frames -1 printed the largest double in
+// full (a 330-character line). Each is now one short line naming the flag and the value, exit 2.
+TEST_F(Cli, AnEmptyJsonOrNegativeFrameCountIsOneShortLine) {
+  const CommandRun json =
+      run_levrt({"inspect", "--width", "8", "--height", "8", "--pixel", "1,1", "--json", ""});
+  EXPECT_EQ(json.exit_code, 2) << json.output;
+  EXPECT_NE(json.output.find("--json: needs a value, got ''"), std::string::npos) << json.output;
+  EXPECT_EQ(std::count(json.output.begin(), json.output.end(), '\n'), 1) << json.output;
+  for (const std::string top : {"3.5", "0x10", " 3", "-1", "99999999999999"}) {
+    const CommandRun r =
+        run_levrt({"inspect", "--width", "8", "--height", "8", "--pixel", "1,1", "--top", top});
+    EXPECT_EQ(r.exit_code, 2) << top << ": " << r.output;
+    EXPECT_NE(r.output.find("--top: must be an integer in [0, 2147483647], got '" + top + "'"),
+              std::string::npos)
+        << r.output;
+  }
+  const CommandRun frames = run_levrt({"view", "--frames", "-1"});
+  EXPECT_EQ(frames.exit_code, 2) << frames.output;
+  EXPECT_NE(frames.output.find("--frames"), std::string::npos) << frames.output;
+  EXPECT_NE(frames.output.find("-1"), std::string::npos) << frames.output;
+  EXPECT_EQ(std::count(frames.output.begin(), frames.output.end(), '\n'), 1) << frames.output;
+  EXPECT_LT(frames.output.size(), 120u) << frames.output;
+  // The viewer's files and window: refused while the flags are read, display or none.
+  for (const std::string flag : {"--screenshot", "--script", "--controls", "--window"}) {
+    const CommandRun r = run_levrt({"view", "--frames", "1", flag, ""});
+    EXPECT_EQ(r.exit_code, 2) << flag << ": " << r.output;
+    EXPECT_NE(r.output.find(flag + ": needs a value, got ''"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+  EXPECT_TRUE(folder_is_empty());
+}
+
 // A setting an older levrt named otherwise ("samples" meant lights per point): one line naming
 // the flag and what it is called now, exit 2, in every command that renders and in `=` form.
 TEST_F(Cli, ARenamedFlagNamesItsNewName) {

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -176,6 +177,11 @@ TEST_F(GltfCli, NonConformingFilesExitTwoWithOneLineNamingTheGltfPath) {
        "extensions.KHR_lights_punctual.lights[0].intensity: '50'"},
       {with(v2, "", R"({"type": "point", "range": 0})", node, "[0]"),
        "extensions.KHR_lights_punctual.lights[0].range: 0"},
+      // Above levrt's bound: named by its glTF path, not the scene node built from it.
+      {with(v2, "", R"({"type": "point", "intensity": 1e30})", node, "[0]"),
+       "extensions.KHR_lights_punctual.lights[0].intensity: 1e+30 (levrt renders at most 1e+12)"},
+      {with(v2, "", R"({"type": "directional", "intensity": 1e13})", node, "[0]"),
+       "extensions.KHR_lights_punctual.lights[0].intensity: 1e+13"},
       {with(v2, "", point, node + R"(, {"children": [0]}, {"children": [0]})", "[1, 2]"),
        "nodes[0]: a child of both nodes[1] and nodes[2]"},
       {glb + "    ", "binary glTF: header length"},
@@ -187,6 +193,56 @@ TEST_F(GltfCli, NonConformingFilesExitTwoWithOneLineNamingTheGltfPath) {
     const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
                                     "--out", path("x.png"), "--stats", path("s.json")});
     expect_refused_without_output(r, file, cases[i].second);
+  }
+}
+
+// An orthographic camera's ymag is a length like any other, at most 1e6: rays start up to ymag
+// (times the aspect ratio) from the camera, and Embree aborts on ray origins past about 1.8e18
+// (ymag 1e25 was exit 134). The limit itself renders.
+TEST_F(GltfCli, AnOrthographicCameraOfHugeMagnitudeIsRefusedAndTheLimitRenders) {
+  const auto with_ymag = [](const std::string& ymag) {
+    return R"({"asset": {"version": "2.0"}, "extensions": {"KHR_lights_punctual": {"lights": [)"
+           R"({"type": "point"}]}}, "cameras": [{"type": "orthographic", "orthographic": )"
+           R"({"xmag": )" +
+           ymag + R"(, "ymag": )" + ymag +
+           R"(, "znear": 0.1, "zfar": 100}}], "scenes": [{"nodes": [0, 1]}], "nodes": [)"
+           R"({"extensions": {"KHR_lights_punctual": {"light": 0}}}, )"
+           R"({"camera": 0, "translation": [0, 0, 5]}]})";
+  };
+  for (const std::string ymag : {"1e25", "1e19", "1000001"}) {
+    const std::string file = path("far.gltf");
+    { std::ofstream(file) << with_ymag(ymag); }
+    const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
+                                    "--out", path("x.png"), "--stats", path("s.json")});
+    expect_refused_without_output(r, file, "cameras[0].orthographic.ymag: ");
+  }
+  const std::string file = path("limit.gltf");
+  { std::ofstream(file) << with_ymag("1e6"); }
+  const CommandRun r = run_levrt(
+      {"render", "--scene", file, "--width", "64", "--height", "1", "--out", path("x.png")});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+// A file without a camera whose triangle reaches 1e30 (or infinity): the view levrt would frame
+// it from cannot stand where coordinates may (1e6). The one line said
+// "scene: /camera/position: coordinate magnitude above 1e+06", a camera the file does not have;
+// it now names the missing camera and how far the meshes reach.
+TEST_F(GltfCli, MeshesTooFarToFrameAreNamedNotTheCameraLevrtWouldMake) {
+  for (const float far : {1e30f, std::numeric_limits<float>::infinity()}) {
+    const std::vector<float> corners = {0, 0, 0, far, 0, 0, 0, 1, 0};
+    std::string bytes(reinterpret_cast<const char*>(corners.data()), 36);
+    { std::ofstream(path("tri.bin"), std::ios::binary) << bytes; }
+    const std::string file = path("far.gltf");
+    {
+      std::ofstream(file) << levrt_test::gltf_document(levrt_test::triangle_buffers("tri.bin") +
+                                                       R"(,
+        "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])");
+    }
+    const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
+                                    "--out", path("x.png"), "--stats", path("s.json")});
+    expect_refused_without_output(r, file, "camera: none in the file, and its meshes and lights");
+    EXPECT_EQ(r.output.find("/camera/position"), std::string::npos) << r.output;
   }
 }
 

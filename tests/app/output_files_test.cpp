@@ -5,6 +5,7 @@
 #include "app/output_files.h"
 
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -151,6 +152,32 @@ TEST(OutputFiles, ADeviceIsWrittenInPlace) {
   EXPECT_TRUE(S_ISCHR(after.st_mode));
   EXPECT_EQ(after.st_rdev, before.st_rdev);
   EXPECT_EQ(after.st_ino, before.st_ino);
+}
+
+// A block device is refused by the check (a UsageError naming the flag) and by the writer itself,
+// which never opens it. Making a device node needs root (CAP_MKNOD).
+TEST(OutputFiles, ABlockDeviceIsRefusedByTheCheckAndTheWriter) {
+  const levrt_test::TempDir temp("levrt_output_files_block_");
+  const fs::path disk = temp.path() / "disk.png";
+  if (::mknod(disk.c_str(), S_IFBLK | 0600, makedev(7, 251)) != 0)
+    GTEST_SKIP() << "cannot make a device node here (needs root)";
+  try {
+    app::check_output_paths({{"--out", disk.string(), ".png", "PNG"}});
+    ADD_FAILURE() << "a block device was accepted as an output";
+  } catch (const app::UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--out: is a block device"), std::string::npos)
+        << e.what();
+  }
+  try {
+    app::write_output_files({{disk.string(), text("bytes")}});
+    ADD_FAILURE() << "a block device was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a block device"), std::string::npos) << e.what();
+  }
+  struct stat st {};
+  ASSERT_EQ(::stat(disk.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISBLK(st.st_mode));
+  EXPECT_EQ(entries(temp.path()), std::vector<std::string>{"disk.png"});
 }
 
 TEST(OutputFiles, PublishingAStagingFolderFollowsTheRule) {

@@ -2,10 +2,17 @@
 // written in place, symlinks followed, standard output, every path checked before the render,
 // write errors with their reason, the memory budget, and one-line messages that repeat what the
 // user typed.
+#include <fcntl.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -133,6 +140,30 @@ TEST_F(Outputs, TwoOutputsOnStandardOutputAreRefused) {
   const CommandRun r = run_levrt(output_render_args({"--out", "-", "--heatmap-lights", "-"}));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
+}
+
+// Standard output spelled two ways is one stream: `--out /dev/stdout --stats -` ran a PNG and a
+// JSON together into the pipe, and `--out - >> scene.json` appended the PNG to the scene it read.
+// "-" is compared by the file or pipe standard output is: refused, one line, exit 2.
+TEST_F(Outputs, StandardOutputSpelledTwoWaysOrAppendedToTheSceneIsRefused) {
+  const CommandRun twice = run_here(output_render_args({"--out", "/dev/stdout", "--stats", "-"}));
+  EXPECT_EQ(twice.exit_code, 2) << twice.output;
+  EXPECT_EQ(line_count(twice.output), 1) << twice.output;
+  EXPECT_NE(twice.output.find("--stats: standard output is written by another output too"),
+            std::string::npos)
+      << twice.output;
+  ASSERT_EQ(
+      run_here({"export", "--scene", "maze", "--level", "1", "--out", "scene.json"}).exit_code, 0);
+  const std::string before = read_file(path("scene.json"));
+  const CommandRun appended =
+      run_shell("(cd " + shell_quote(dir_.string()) + " && " + shell_quote(LEVRT_BINARY) +
+                " render --scene scene.json --width 8 --height 8 --quiet --out - >> scene.json)");
+  EXPECT_EQ(appended.exit_code, 2) << appended.output;
+  EXPECT_EQ(line_count(appended.output), 1) << appended.output;
+  EXPECT_NE(appended.output.find("--out: standard output is a file this command reads"),
+            std::string::npos)
+      << appended.output;
+  EXPECT_EQ(read_file(path("scene.json")), before);
 }
 
 TEST_F(Outputs, SameFileSpelledDifferentlyIsRefusedBeforeRendering) {
@@ -418,6 +449,141 @@ TEST_F(Outputs, ASymlinkLoopIsRefusedWithOneLineAndStaysALink) {
   EXPECT_EQ(entries(), (std::vector<std::string>{"loop", "loop.png"}));
 }
 
+// Standard output is a pipe whose reader is gone (`levrt render --out - --stats s.json | true`):
+// the write fails with one line naming it, exit 1, and the stats, staged beside, are not left as a
+// temporary file. Before, SIGPIPE killed the process (exit 141) with the temporary behind. The read
+// end is closed before levrt starts, so the write always meets a broken pipe.
+TEST_F(Outputs, StandardOutputWithoutAReaderLeavesNoTemporaryFile) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  ::close(ends[0]);
+  const std::string stats = path("s.json");
+  const std::string messages = path("messages.txt");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGPIPE, SIG_DFL);  // as a shell starts it, whatever this test process does
+    ::dup2(ends[1], STDOUT_FILENO);
+    const int err = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(err, STDERR_FILENO);
+    const char* binary = LEVRT_BINARY;
+    ::execl(binary, binary, "render", "--width", "64", "--height", "48", "--quiet", "--out", "-",
+            "--stats", stats.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const std::string output = read_file(messages);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": " << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_EQ(line_count(output), 1) << output;
+  EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
+      << output;
+  EXPECT_EQ(entries(), std::vector<std::string>{"messages.txt"});
+}
+
+// A FIFO output nobody opens for reading: levrt waits for a reader once every other output is
+// staged, and Ctrl-C still ends it (exit 130, one line, the staged stats removed, the FIFO kept).
+// Before, it waited in open() with the termination signals blocked: only SIGKILL ended it, and
+// that left the temporary behind. The signal is sent once the stats' temporary exists, so levrt
+// is in the write by then; 60 s without an exit is the hang.
+TEST_F(Outputs, CtrlCEndsTheWaitForAFifoReaderAndLeavesNoTemporary) {
+  ASSERT_EQ(::mkfifo(path("pipe.png").c_str(), 0600), 0);
+  const std::string out = path("pipe.png"), stats = path("s.json"), messages = path("log.txt");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int log = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(log, STDOUT_FILENO);
+    ::dup2(log, STDERR_FILENO);
+    const char* binary = LEVRT_BINARY;
+    ::execl(binary, binary, "render", "--width", "8", "--height", "8", "--quiet", "--out",
+            out.c_str(), "--stats", stats.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto staged = [this] {
+    for (const std::string& name : entries())
+      if (name.rfind(".levrt-", 0) == 0) return true;
+    return false;
+  };
+  int status = 0;
+  bool exited = false;
+  for (int step = 0; step < 60000 && !staged() && !exited; ++step) {
+    exited = ::waitpid(child, &status, WNOHANG) == child;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_FALSE(exited) << "levrt ended before writing: " << read_file(messages);
+  ::kill(child, SIGINT);
+  for (int step = 0; step < 60000 && !exited; ++step) {
+    exited = ::waitpid(child, &status, WNOHANG) == child;
+    if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (!exited) {
+    ::kill(child, SIGKILL);
+    ::waitpid(child, &status, 0);
+    ADD_FAILURE() << "levrt ignored Ctrl-C while it waited for the FIFO's reader";
+  }
+  const std::string output = read_file(messages);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << status << ": " << output;
+  EXPECT_EQ(line_count(output), 1) << output;
+  EXPECT_NE(output.find("interrupted"), std::string::npos) << output;
+  EXPECT_TRUE(fs::is_fifo(path("pipe.png")));
+  EXPECT_EQ(entries(), (std::vector<std::string>{"log.txt", "pipe.png"}));
+}
+
+// A UNIX socket cannot be opened as a file: refused before rendering, one line, exit 2 (open()
+// fails with ENXIO, which a FIFO without a reader also gives; that one is waited for).
+TEST_F(Outputs, ASocketOutputIsRefusedBeforeRendering) {
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(sock, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string name = path("sock.png");
+  if (name.size() >= sizeof(address.sun_path)) GTEST_SKIP() << "folder name too long for a socket";
+  std::copy(name.begin(), name.end(), address.sun_path);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  // Bounded: a levrt that took the socket's ENXIO for a FIFO without a reader would wait forever.
+  const CommandRun r =
+      run_shell("cd " + shell_quote(dir_.string()) + " && timeout 60 " + shell_quote(LEVRT_BINARY) +
+                " render --width 8 --height 8 --quiet --out sock.png");
+  ::close(sock);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--out: is a socket"), std::string::npos) << r.output;
+  EXPECT_EQ(entries(), std::vector<std::string>{"sock.png"});
+}
+
+// A block device (a disk or partition; here a node of a loop device, made in the test's folder) is
+// never written in place, named directly or through a symlink: writing a PNG there would
+// overwrite the start of the disk. Making a device node needs root (CAP_MKNOD).
+TEST_F(Outputs, ABlockDeviceIsRefusedBeforeRenderingAndStaysADevice) {
+  if (::mknod(path("disk.png").c_str(), S_IFBLK | 0600, makedev(7, 250)) != 0)
+    GTEST_SKIP() << "cannot make a device node here (needs root)";
+  fs::create_symlink("disk.png", path("link.png"));
+  for (const std::string name : {"disk.png", "link.png"}) {
+    for (const std::string flag : {"--out", "--stats", "--heatmap-lights"}) {
+      const std::string file = flag == "--stats" ? name.substr(0, 4) + ".json" : name;
+      if (flag == "--stats" && !fs::exists(path(file))) fs::create_symlink("disk.png", path(file));
+      const CommandRun r = run_here(output_render_args({flag, file}));
+      EXPECT_EQ(r.exit_code, 2) << flag << " " << file << ": " << r.output;
+      EXPECT_EQ(line_count(r.output), 1) << r.output;
+      EXPECT_NE(r.output.find(flag + ": is a block device"), std::string::npos) << r.output;
+      EXPECT_NE(r.output.find("'" + file + "'"), std::string::npos) << r.output;
+    }
+  }
+  struct stat st {};
+  ASSERT_EQ(::stat(path("disk.png").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISBLK(st.st_mode));
+  EXPECT_EQ(st.st_rdev, makedev(7, 250));
+  EXPECT_EQ(entries(),
+            (std::vector<std::string>{"disk.json", "disk.png", "link.json", "link.png"}));
+  const CommandRun exported =
+      run_here({"export", "--scene", "maze", "--level", "1", "--out", "disk.json"});
+  EXPECT_EQ(exported.exit_code, 2) << exported.output;
+  EXPECT_NE(exported.output.find("--out: is a block device"), std::string::npos) << exported.output;
+}
+
 // A 64 KiB tmpfs holds the first outputs but not all: the render fails with one line, every old
 // file stays as it was and no temporary is left. Mounting needs root (or a user namespace).
 TEST_F(Outputs, AFullFileSystemWritesNoOutputAndKeepsTheOldFiles) {
@@ -516,6 +682,47 @@ TEST_F(Outputs, WithoutADisplayLevrtSaysItWritesTheSnapshotAndWhere) {
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find((fs::canonical(dir_) / "out").string()), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "out" / "building.png"));
+}
+
+// The snapshot's folder "out" named by a file or a dangling symlink: one line naming it, exit 2,
+// and the file or link left as it was (it was exit 1, "filesystem error: cannot create
+// directories").
+TEST_F(Outputs, ASnapshotWhoseOutIsNotAFolderIsRefusedAndLeavesIt) {
+  std::ofstream(path("out")) << "the user's notes";
+  const CommandRun file = run_here({"snapshot"});
+  EXPECT_EQ(file.exit_code, 2) << file.output;
+  EXPECT_EQ(line_count(file.output), 1) << file.output;
+  EXPECT_NE(file.output.find("snapshot: cannot make the folder 'out'"), std::string::npos)
+      << file.output;
+  EXPECT_EQ(read_file(path("out")), "the user's notes");
+  fs::remove(path("out"));
+  fs::create_symlink("missing/folder", path("out"));
+  const CommandRun link = run_here({"snapshot"});
+  EXPECT_EQ(link.exit_code, 2) << link.output;
+  EXPECT_EQ(line_count(link.output), 1) << link.output;
+  EXPECT_TRUE(fs::is_symlink(path("out")));
+  EXPECT_EQ(entries(), std::vector<std::string>{"out"});
+}
+
+// An existing output the user may not write is refused before rendering and kept: read-only for
+// a user, immutable (chattr +i) for root, whom permissions do not stop. Before, the render ran
+// and its rename replaced a read-only file, or failed on the immutable one with exit 1.
+TEST_F(Outputs, AnExistingOutputThatIsNotWritableIsRefusedBeforeRenderingAndKept) {
+  std::ofstream(path("kept.png")) << "old image";
+  const bool root = ::geteuid() == 0;
+  if (root) {
+    if (run_shell("chattr +i " + shell_quote(path("kept.png")) + " 2>/dev/null").exit_code != 0)
+      GTEST_SKIP() << "chattr +i is not available here";
+  } else {
+    fs::permissions(path("kept.png"), fs::perms::owner_read);
+  }
+  const CommandRun r = run_here(output_render_args({"--out", "kept.png"}));
+  if (root) run_shell("chattr -i " + shell_quote(path("kept.png")));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--out: is not writable, got 'kept.png'"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(path("kept.png")), "old image");
+  EXPECT_EQ(entries(), std::vector<std::string>{"kept.png"});
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `levrt export` and `--scene FILE.json` through the binary: a file exported from a model
 // renders the same PNG bytes; a bad file is one line and exit code 2, with nothing written.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/folder_test.h"
+#include "tests/support/gltf_files.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -81,6 +83,58 @@ TEST_F(SceneFileCli, BadFilesExitTwoWithOneLineAndNoOutput) {
       run_levrt({"render", "--scene", path("none.json"), "--out", path("x.png")});
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
   EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+// A scene file's orthographic half height is bounded like any length (1e6): rays start up to it
+// (times the aspect ratio) from the camera, and Embree aborts on ray origins past about 1.8e18
+// (1e30 was exit 134). The limit itself renders.
+TEST_F(SceneFileCli, AHugeOrthographicHalfHeightIsRefusedAndTheLimitRenders) {
+  const auto scene = [](const std::string& half_height) {
+    return R"({"levrt_scene": 1, "camera": {"position": [0, -10, 5], "target": [0, 0, 0], )"
+           R"("orthographic_half_height": )" +
+           half_height +
+           R"(}, "materials": [{"name": "m"}], "root": {"type": "union", "children": [)"
+           R"({"type": "sphere", "material": "m", "centre": [0, 0, 0], "radius": 1}, )"
+           R"({"type": "affine", "translate": [0, 0, 4], "child": )"
+           R"({"type": "point_light", "intensity": [1, 1, 1]}}]}})";
+  };
+  const std::string file = path("ortho.json");
+  for (const std::string half_height : {"1e30", "1e19", "1000001"}) {
+    { std::ofstream(file) << scene(half_height); }
+    const CommandRun r = run_levrt(
+        {"render", "--scene", file, "--width", "8", "--height", "8", "--out", path("x.png")});
+    EXPECT_EQ(r.exit_code, 2) << half_height << ": " << r.output;
+    EXPECT_NE(r.output.find(file + ": /camera/orthographic_half_height: "), std::string::npos)
+        << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(path("x.png")));
+  }
+  { std::ofstream(file) << scene("1e6"); }
+  const CommandRun r = run_levrt(
+      {"render", "--scene", file, "--width", "64", "--height", "1", "--out", path("x.png")});
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+// `export --out ''` names no file: one line and exit 2, as render's outputs do (it was exit 1,
+// "cannot rename into place", after the scene was built).
+TEST_F(SceneFileCli, ExportToAnEmptyNameIsRefusedWithOneLine) {
+  const CommandRun r = run_levrt({"export", "--scene", "maze", "--level", "1", "--out", ""});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--out: needs a file name, got ''"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+// A glTF's meshes cannot be written to a scene file: the one line names the glTF (it named only
+// "/root", a path of no file the user gave).
+TEST_F(SceneFileCli, ExportOfAGltfWithMeshesNamesTheFile) {
+  const std::string file = path("triangle.gltf");
+  { std::ofstream(file) << levrt_test::triangle_scene(); }
+  const CommandRun r = run_levrt({"export", "--scene", file, "--out", path("out.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: " + file + ": /root: triangle meshes", 0), 0u) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(path("out.json")));
 }
 
 TEST_F(SceneFileCli, LevelsAndLightCountsBelongToModels) {
