@@ -100,7 +100,7 @@ TEST(Interrupt, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
     EXPECT_EQ(interrupt_after(
                   {LEVRT_BINARY, "render", "--scene", scene.string(), "--width", "32", "--height",
                    "24", "--out", (dir / "i.png").string(), "--stats", (dir / "s.json").string()},
-                  sig, std::chrono::milliseconds(300), std::chrono::seconds(2)),
+                  sig, std::chrono::milliseconds(300), std::chrono::seconds(5)),
               130)
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir)) << "signal " << sig;

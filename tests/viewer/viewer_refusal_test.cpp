@@ -199,7 +199,7 @@ TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
     EXPECT_EQ(levrt_test::interrupt_after(
                   {LEVRT_BINARY, "view", "--scene", scene.string(), "--window", "800x600",
                    "--frames", "5", "--screenshot", path("out/shot.png")},
-                  sig, std::chrono::milliseconds(800), std::chrono::seconds(2)),
+                  sig, std::chrono::milliseconds(800), std::chrono::seconds(5)),
               130)
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "signal " << sig;
