@@ -121,6 +121,20 @@ class CameraCli : public levrt_test::FolderTest {
     args.insert(args.begin(), "render");
     return run_levrt(args);
   }
+  // Each render with these flags is refused: exit 2, one line holding the text, no image.
+  void expect_each_refused(
+      const std::vector<std::pair<std::vector<std::string>, std::string>>& cases) const {
+    for (const auto& [flags, expected] : cases) {
+      std::vector<std::string> args = flags;
+      args.push_back("--out");
+      args.push_back(path("out.png"));
+      const CommandRun r = render(args);
+      EXPECT_EQ(r.exit_code, 2) << flags[0] << " " << flags[1] << ": " << r.output;
+      EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+      EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+      EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
+    }
+  }
 };
 
 TEST_F(CameraCli, AMovedCameraIsRecordedAndRendersAgainFromItsStats) {
@@ -199,16 +213,7 @@ TEST_F(CameraCli, BadCamerasExitTwoWithOneLineNamingTheFlagAndWriteNothing) {
       {{"--camera-from", path("bad_fov.json")}, "camera.vertical_fov_deg"},
       {{"--camera-from", path("text.json")}, "not JSON"},
   };
-  for (const auto& [flags, expected] : cases) {
-    std::vector<std::string> args = flags;
-    args.push_back("--out");
-    args.push_back(path("out.png"));
-    const CommandRun r = render(args);
-    EXPECT_EQ(r.exit_code, 2) << flags[0] << ": " << r.output;
-    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-    EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
-  }
+  expect_each_refused(cases);
 }
 
 // A camera position, target or orthographic half height past a scene's coordinates (1e6) is
@@ -231,16 +236,7 @@ TEST_F(CameraCli, FarCamerasAreRefusedNamingTheFlagAndTheLimitRenders) {
       {{"--camera-from", path("far.json")}, "camera.position: magnitude above 1000000"},
       {{"--camera-from", path("wide.json")}, "camera.orthographic_half_height: must be"},
   };
-  for (const auto& [flags, expected] : cases) {
-    std::vector<std::string> args = flags;
-    args.push_back("--out");
-    args.push_back(path("out.png"));
-    const CommandRun r = render(args);
-    EXPECT_EQ(r.exit_code, 2) << flags[1] << ": " << r.output;
-    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-    EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
-    EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
-  }
+  expect_each_refused(cases);
   const CommandRun limit =
       render({"--camera-position", "1e6,-1e6,1e6", "--camera-target", "0,0,0", "--camera-up",
               "1e30,0,1e30", "--ortho-half-height", "1e6", "--out", path("out.png")});
