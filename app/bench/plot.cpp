@@ -285,6 +285,29 @@ std::string tick_label(double v) {
   return buffer;
 }
 
+// `text` in lines no wider than max_width (stb_easy_font units), broken at spaces; a word wider
+// than that stands on a line of its own.
+std::vector<std::string> wrap_text(const std::string& text, int max_width) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && Canvas::text_width(longer) > max_width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+    start = end + 1;
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(line);
+  return lines;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height) {
@@ -323,9 +346,19 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
   int y_label_width = 0;
   for (double t : ay.ticks)
     y_label_width = std::max(y_label_width, Canvas::text_width(tick_label(t)) * kTextScale);
-  const int left = 56 + y_label_width, top = 56, bottom = 72;
+  const int left = 56 + y_label_width, top = 56;
   const int right = std::min(width / 2, legend_width + 24);
-  const int px0 = left, px1 = width - right, py0 = top, py1 = height - bottom;
+  const int px0 = left, px1 = width - right;
+  // The x label, centred under the plot, in as many lines as fit inside the image there (a
+  // targets chart's scene key runs long); each extra line takes room from the plot.
+  constexpr int kLabelLineStep = kLineHeight + 4;
+  const float label_centre = 0.5f * static_cast<float>(px0 + px1);
+  const int label_room = std::min(px0 + px1, 2 * width - px0 - px1) - 20;  // 2 x the nearer edge
+  const std::vector<std::string> x_label_lines =
+      wrap_text(chart.x_label + (ax.log ? " (log scale)" : ""), label_room / kTextScale);
+  const int extra_label_lines = static_cast<int>(x_label_lines.size()) - 1;
+  const int bottom = 72 + extra_label_lines * kLabelLineStep;
+  const int py0 = top, py1 = height - bottom;
   auto to_px = [&](double x) { return static_cast<float>(px0 + unit(ax, x) * (px1 - px0)); };
   auto to_py = [&](double y) { return static_cast<float>(py1 - unit(ay, y) * (py1 - py0)); };
 
@@ -394,8 +427,11 @@ std::vector<std::uint8_t> render_chart(const Chart& chart, int width, int height
 
   // Title and axis labels.
   canvas.text(0.5f * (px0 + px1), 16, chart.title, kTextScale, kBlack, Align::centre);
-  canvas.text(0.5f * (px0 + px1), height - 34, chart.x_label + (ax.log ? " (log scale)" : ""),
-              kTextScale, kBlack, Align::centre);
+  for (std::size_t i = 0; i < x_label_lines.size(); ++i) {
+    const int below = extra_label_lines - static_cast<int>(i);
+    canvas.text(label_centre, static_cast<float>(height - 34 - below * kLabelLineStep),
+                x_label_lines[i], kTextScale, kBlack, Align::centre);
+  }
   canvas.text(14, 0.5f * (py0 + py1), chart.y_label + (ay.log ? " (log scale)" : ""), kTextScale,
               kBlack, Align::centre, true);
   return canvas.take_pixels();

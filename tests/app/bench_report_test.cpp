@@ -77,4 +77,32 @@ TEST(BenchChart, DrawsLogAndLinearChartsAndTheEmptyCase) {
       << "frame and text";
 }
 
+// A long x label (the targets chart's scene key) is broken into lines that stay inside the
+// image: no text at its left and right edges, and the words all drawn (the label band is dark
+// in several rows of text). One line, centred under the plot, ran off both edges.
+TEST(BenchChart, ALongXLabelIsWrappedInsideTheImage) {
+  Chart chart;
+  chart.title = "speedup";
+  chart.y_label = "speedup";
+  chart.x_label = "scene: ";
+  for (int i = 1; i <= 12; ++i)
+    chart.x_label += std::to_string(i) + " a scene name " + std::to_string(1000 * i) + ", ";
+  chart.series.push_back({"a method with a long name", {1, 2, 3}, {1.0, 4.0, 16.0}});
+  const int width = 960, height = 600;
+  const std::vector<std::uint8_t> rgb = app::bench::render_chart(chart, width, height);
+  const auto dark = [&](int x, int y) {
+    const std::uint8_t* p = &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+    return std::max({p[0], p[1], p[2]}) < 100;
+  };
+  int rows_with_text = 0;
+  for (int y = height - 140; y < height; ++y) {
+    for (int x : {0, 1, 2, 3, width - 4, width - 3, width - 2, width - 1})
+      ASSERT_FALSE(dark(x, y)) << "text at the edge, x " << x << " y " << y;
+    bool any = false;
+    for (int x = 0; x < width && !any; ++x) any = dark(x, y);
+    rows_with_text += any ? 1 : 0;
+  }
+  EXPECT_GT(rows_with_text, 40);  // several lines of 2x text, not one
+}
+
 }  // namespace
