@@ -1,12 +1,15 @@
 // targets: per scene, rt's time and, for two error targets, the fastest method
 // and setting of the method table that meets it: its speedup over rt and its lights tested per
 // point. Every row of the table is swept over its bench tolerances, in turns with rt on the same
-// pixels, as control does; the whole sweep is written beside the summary. The same sweep is
+// pixels, as control does, then searched between them (target_refinement.h); the whole sweep is
+// written beside the summary. The same sweep is
 // checked for monotonicity (monotonicity.h): every deterministic method's violations are printed,
 // and so is every deterministic render slower than rt (time_against_rt.h), with why.
 #include "app/bench/experiment_support.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "app/bench/monotonicity.h"
+#include "app/bench/target_refinement.h"
 #include "app/bench/time_against_rt.h"
 #include "lev/methods.h"
 
@@ -40,8 +44,12 @@ struct SweptRender {
   const lev::MethodInfo* method = nullptr;
   double tolerance = 0.0;
   double seconds = kNaN;
+  double speedup = kNaN;  // over rt in the same round
   PixelErrors errors;
   double lights_tested = kNaN;
+  int round = 0;  // 0: the grid; k: the k-th round of the search between its settings
+  const Measurement* measurement = nullptr;
+  double rt_seconds = kNaN;  // rt's time in the same round
 };
 
 // A check's paragraph for results.md ("Title: none." or "Title: 2 renders:" and a list), each
@@ -79,10 +87,12 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
                      {"pixel_error_avg_pct", "avg error (%)"},
                      {"pixel_error_max_pct", "max error (%)"},
                      {"lights_tested_avg", "lights tested/pt"},
+                     {"search_round", "search round"},
                      {"pixels", "px"}};
   Table sweep;
   sweep.columns = per_method_columns({{"lights_tested_avg", "lights tested/pt"},
                                       {"rt_fallback", "shaded with rt's loop"},
+                                      {"search_round", "search round"},
                                       {"pixels", "px"}});
   Chart chart;
   chart.title = "Speedup over rt of each method's fastest setting with max error < " +
@@ -116,85 +126,128 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
             true;  // what a user gets (issue 23: no deterministic method slower than rt)
       }
     }
-    const std::vector<const Measurement*> done = run.measure_together(requests);
+    std::vector<const Measurement*> done = run.measure_together(requests);
     const Measurement& reference = *done.front();
     const double rt_seconds = reference.full_frame_cpu_seconds();
     std::vector<SweptRender> renders;
-    // Each deterministic method's sweep, loosest setting first (its bench_tolerances' order).
-    std::vector<SweepPoint> sweep_points;
-    const lev::MethodInfo* sweep_method = nullptr;
-    const std::string scene_name = scene + " " + format_count(lights);
-    const auto check_sweep = [&] {
-      if (sweep_method && !sweep_method->stochastic && !run.planning()) {
-        for (const MonotonicityViolation& v :
-             find_monotonicity_violations(scene_name, sweep_method->name, sweep_points)) {
-          violations.push_back(v);
+    const auto add_renders = [&](int round) {
+      const double round_rt_seconds = done.front()->full_frame_cpu_seconds();
+      for (std::size_t i = 1; i < requests.size(); ++i) {
+        const Measurement& m = *done[i];
+        const lev::MethodInfo& info = lev::method_info(requests[i].method);
+        const double seconds = m.full_frame_cpu_seconds();
+        renders.push_back({&info, requests[i].tolerance, seconds, round_rt_seconds / seconds,
+                           pixel_errors(m, reference), m.lights_tested_avg(), round, &m,
+                           round_rt_seconds});
+      }
+    };
+    add_renders(0);
+    // The search between grid settings (target_refinement.h): each round renders, in turns with
+    // rt again, the settings between each method's fastest that meets a target and the next
+    // looser one, where that one was faster than the best so far.
+    for (int round = 1; round <= c.target_search_rounds && !run.planning(); ++round) {
+      requests = {{scene, level, rt, 0.0, stride, c.runs}};
+      requests.front().round = round;
+      for (const ErrorTarget& target : targets) {
+        std::vector<SettingResult> results;
+        for (const SweptRender& r : renders) {
+          results.push_back({r.method, r.tolerance, r.speedup, meets(target, r.errors)});
+        }
+        for (const SettingToTry& t : settings_to_try(results)) {
+          bool asked = false;
+          for (const MeasureRequest& q : requests) {
+            asked = asked || (q.method == t.method->id && q.tolerance == t.setting);
+          }
+          if (asked) continue;
+          MeasureRequest& q = requests.emplace_back(
+              MeasureRequest{scene, level, t.method->id, t.setting, stride, c.runs});
+          q.rt_fallback = true;
+          q.round = round;
         }
       }
-      sweep_points.clear();
-    };
-    for (std::size_t i = 1; i < requests.size(); ++i) {
-      const Measurement& m = *done[i];
-      const lev::MethodInfo& info = lev::method_info(requests[i].method);
-      SweptRender r{&info, requests[i].tolerance, m.full_frame_cpu_seconds(),
-                    pixel_errors(m, reference), m.lights_tested_avg()};
-      renders.push_back(r);
+      if (requests.size() == 1) break;
+      done = run.measure_together(requests);
+      add_renders(round);
+    }
+    // Each method's renders together, loosest setting first (its bench_tolerances' order), the
+    // search's settings in their places: the sweep table, the monotonicity check and the time
+    // check read them so.
+    std::stable_sort(renders.begin(), renders.end(),
+                     [](const SweptRender& a, const SweptRender& b) {
+                       if (a.method != b.method) return a.method->id < b.method->id;
+                       return a.tolerance > b.tolerance;
+                     });
+    const std::string scene_name = scene + " " + format_count(lights);
+    for (std::size_t i = 0; i < renders.size(); ++i) {
+      const SweptRender& r = renders[i];
+      const lev::MethodInfo& info = *r.method;
+      const Measurement& m = *r.measurement;
       if (!info.stochastic && !info.is_reference && !run.planning()) {
         if (const std::optional<SlowerThanRt> slower =
-                check_time_against_rt(scene_name, info.name, r.tolerance, r.seconds, rt_seconds,
+                check_time_against_rt(scene_name, info.name, r.tolerance, r.seconds, r.rt_seconds,
                                       r.lights_tested, reference.lights_tested_avg())) {
           slower_than_rt.push_back(*slower);
           slower_than_rt.back().shaded_with_rt = m.rt_fallback_used;
         }
       }
-      if (sweep_method != &info) check_sweep();
-      sweep_method = &info;
-      sweep_points.push_back({r.tolerance, r.errors});
       sweep.rows.push_back(
           {text_cell(scene), count_cell(lights), text_cell(info.name),
            text_cell(setting_text(info, r.tolerance)), number_cell(r.seconds, 3),
-           number_cell(m.full_frame_seconds(), 3), ratio_cell(rt_seconds / r.seconds),
+           number_cell(m.full_frame_seconds(), 3), ratio_cell(r.speedup),
            number_cell(r.errors.average_pct, 4), number_cell(r.errors.max_pct, 3),
            number_cell(r.lights_tested, 1), text_cell(m.rt_fallback_used ? "yes" : "no"),
-           text_cell(pixels_text(stride))});
-      if (info.id == lev::Method::lev && r.tolerance == c.tolerance) {
+           count_cell(static_cast<std::uint64_t>(r.round)), text_cell(pixels_text(stride))});
+      if (info.id == lev::Method::lev && r.tolerance == c.tolerance && r.round == 0) {
         if (scene == "street") street_lev_seconds = r.seconds;
         if (scene == "street_bare") bare_street_lev_seconds = r.seconds;
       }
+      // The end of a method's sweep: its monotonicity.
+      if (i + 1 == renders.size() || renders[i + 1].method != r.method) {
+        if (!info.stochastic && !run.planning()) {
+          std::vector<SweepPoint> points;
+          for (const SweptRender& p : renders) {
+            if (p.method == r.method) points.push_back({p.tolerance, p.errors});
+          }
+          for (const MonotonicityViolation& v :
+               find_monotonicity_violations(scene_name, info.name, points)) {
+            violations.push_back(v);
+          }
+        }
+      }
     }
-    check_sweep();
     for (const ErrorTarget& target : targets) {
       const SweptRender* best = nullptr;
       for (const SweptRender& r : renders) {
-        if (meets(target, r.errors) && (!best || r.seconds < best->seconds)) best = &r;
+        if (meets(target, r.errors) && (!best || r.speedup > best->speedup)) best = &r;
       }
       if (!best) {
         summary.rows.push_back({text_cell(scene), count_cell(lights), number_cell(rt_seconds, 3),
                                 text_cell(target.name), text_cell("none"), text_cell("-"),
                                 number_cell(kNaN, 3), ratio_cell(kNaN), number_cell(kNaN, 4),
-                                number_cell(kNaN, 3), number_cell(kNaN, 1),
+                                number_cell(kNaN, 3), number_cell(kNaN, 1), count_cell(0),
                                 text_cell(pixels_text(stride))});
         continue;
       }
       summary.rows.push_back(
           {text_cell(scene), count_cell(lights), number_cell(rt_seconds, 3), text_cell(target.name),
            text_cell(best->method->name), text_cell(setting_text(*best->method, best->tolerance)),
-           number_cell(best->seconds, 3), ratio_cell(rt_seconds / best->seconds),
+           number_cell(best->seconds, 3), ratio_cell(best->speedup),
            number_cell(best->errors.average_pct, 4), number_cell(best->errors.max_pct, 3),
-           number_cell(best->lights_tested, 1), text_cell(pixels_text(stride))});
+           number_cell(best->lights_tested, 1), count_cell(static_cast<std::uint64_t>(best->round)),
+           text_cell(pixels_text(stride))});
     }
     // The plot: each method's fastest setting under the first target, at this scene's place.
     for (Series& s : per_method) {
       double fastest = kNaN;
       for (const SweptRender& r : renders) {
         if (s.label == r.method->name && meets(targets.front(), r.errors) &&
-            !(r.seconds >= fastest)) {
-          fastest = r.seconds;
+            !(r.speedup <= fastest)) {
+          fastest = r.speedup;
         }
       }
       if (std::isnan(fastest)) continue;
       s.x.push_back(scene_index);
-      s.y.push_back(rt_seconds / fastest);
+      s.y.push_back(fastest);
     }
   }
   chart.x_label = "scene: " + scene_keys;
@@ -237,9 +290,15 @@ Section run_targets(BenchRun& run, const std::string& out_dir) {
       tolerance_text(c.target_max_pct) + " %; avg < " + tolerance_text(c.target_avg_pct) +
       " % with max < " + tolerance_text(c.target_avg_max_pct) +
       " %), the fastest method and setting of the method table that meets it: every row swept over "
-      "its bench tolerances, CPU seconds per full frame, median of at least " +
+      "its bench tolerances, then searched between them (up to " +
+      std::to_string(c.target_search_rounds) +
+      " rounds: the setting between a method's fastest that meets a target and the next looser one "
+      "that misses it, where that one was faster than the best so far; search round 0 is the "
+      "grid), CPU seconds per full frame, median of at least " +
       std::to_string(c.runs) +
-      " runs made in turns with rt. \"none\": no setting met the target. The whole sweep is in "
+      " runs made in turns with rt (measured again in each round; the speedup is over the rt of "
+      "its round, rt CPU s is the first round's). \"none\": no setting met the target. The whole "
+      "sweep is in "
       "targets_sweep.csv. lights tested/pt counts the shadow-tested lights per shading point (a "
       "cut's size for a method that shades clusters). street and street_bare are the same town, "
       "its "

@@ -287,7 +287,8 @@ BenchRun::Key BenchRun::key_of(const MeasureRequest& r) const {
           used.lights_per_point,
           used.rt_fallback,
           r.stride,
-          r.error_bound};
+          r.error_bound,
+          r.round};
 }
 
 renderer::RenderSettings BenchRun::render_settings_for(const MeasureRequest& r) const {

@@ -85,6 +85,9 @@ struct SuiteConfig {
   double target_max_pct = 2.0;      // first target: max pixel error below this
   double target_avg_pct = 0.5;      // second target: average below this ...
   double target_avg_max_pct = 5.0;  // ... and max below this
+  // Rounds of the search between grid settings (target_refinement.h); each halves the gap in
+  // log scale that it searches (a half decade: 0.01 .. 0.003 -> 0.0055 -> 0.0041 or 0.0074).
+  int target_search_rounds = 2;
   int converge_passes = 256;
   std::vector<double> converge_budgets_of_rt{0.01, 0.1};
   double converge_target_avg_pct = 1.0;
@@ -113,6 +116,9 @@ struct MeasureRequest {
   // (lev::MethodChoice::rt_fallback): what a user gets. Off, the method's own selection, which
   // the thesis' experiments measure.
   bool rt_fallback = false;
+  // A later round of a comparison (the targets experiment's search between settings): rt is
+  // measured again, in turns with that round's renders, so it is a measurement of its own.
+  int round = 0;
 };
 
 struct Measurement {
@@ -255,9 +261,9 @@ class BenchRun {
   double predicted_seconds(const MeasureRequest& request);
 
  private:
-  // The scene, level, method choice (lev::used_settings: what its method reads), stride and
-  // error bound: what a measurement measured.
-  using Key = std::tuple<std::string, int, lev::Method, double, double, int, bool, int, bool>;
+  // The scene, level, method choice (lev::used_settings: what its method reads), stride, error
+  // bound and round: what a measurement measured.
+  using Key = std::tuple<std::string, int, lev::Method, double, double, int, bool, int, bool, int>;
   static constexpr int kProbeStride = 8;
   Key key_of(const MeasureRequest& request) const;
   renderer::RenderSettings render_settings_for(const MeasureRequest& request) const;
