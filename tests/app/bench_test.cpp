@@ -92,10 +92,10 @@ TEST_F(Bench, QuickSuiteWritesEveryFileWithItsColumns) {
        "pixel_error_avg_pct,pixel_error_max_pct,std_error_avg_pct,pixels"},
       {"targets",
        "scene,lights,rt_seconds,target,method,tolerance,seconds,speedup,pixel_error_avg_pct,"
-       "pixel_error_max_pct,lights_tested_avg,pixels"},
+       "pixel_error_max_pct,lights_tested_avg,search_round,pixels"},
       {"targets_sweep",
        "scene,lights,method,tolerance,time_cpu_s,time_wall_s,speedup_over_rt,pixel_error_avg_pct,"
-       "pixel_error_max_pct,lights_tested_avg,rt_fallback,pixels"},
+       "pixel_error_max_pct,lights_tested_avg,rt_fallback,search_round,pixels"},
       {"limit",
        "scene,lights,render_cpu_s,bare_cpu_s,render_over_bare,render_wall_s,bare_wall_s,"
        "closest_hit_rays,shadow_rays,bare_mrays_per_cpu_s"},
