@@ -246,7 +246,7 @@ const Measurement& BenchRun::probe(const std::string& scene, int level, lev::Met
 }
 
 double BenchRun::predicted_seconds(const MeasureRequest& r) {
-  if (r.stride == kProbeStride && r.runs == 1) return 0.0;  // a probe: made while planning
+  if (is_probe(r)) return 0.0;  // made while planning
   const double per_run = probe(r.scene, r.level, r.method, r.tolerance).full_frame_seconds() /
                          static_cast<double>(r.stride * r.stride);
   double runs = r.runs;
@@ -362,6 +362,13 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
       out[i] = &found->second;
       continue;
     }
+    // A render the planning pass could not foresee (the targets' search between settings, which
+    // depends on the errors found): the plan grows by it, so the progress line stays true.
+    if (!planning_ && !is_probe(r) && planned_runs_.count(key_of(r)) == 0) {
+      planned_runs_[key_of(r)] = r.runs;
+      seconds_planned_ += predicted_seconds(r);
+      jobs_planned_[experiment_] += 1;
+    }
     Pending p{};
     p.index = i;
     p.render_settings = render_settings_for(r);
@@ -424,7 +431,9 @@ std::vector<const Measurement*> BenchRun::render(const std::vector<MeasureReques
                   lev::method_info(done.method).name, done.tolerance,
                   pixels_text(done.stride).c_str(), stored.seconds,
                   runs > 1 ? (" (median of " + std::to_string(runs) + ")").c_str() : "");
-    if (!planning_) report(what, predicted_seconds(done));
+    // A probe is no job of the plan: the search between settings (experiment_targets.cpp) makes
+    // new ones while running, which the progress line would count as renders.
+    if (!planning_ && !is_probe(done)) report(what, predicted_seconds(done));
   }
   return out;
 }

@@ -265,6 +265,7 @@ class BenchRun {
   // bound and round: what a measurement measured.
   using Key = std::tuple<std::string, int, lev::Method, double, double, int, bool, int, bool, int>;
   static constexpr int kProbeStride = 8;
+  static bool is_probe(const MeasureRequest& r) { return r.stride == kProbeStride && r.runs == 1; }
   Key key_of(const MeasureRequest& request) const;
   renderer::RenderSettings render_settings_for(const MeasureRequest& request) const;
   // A render of one pixel in every kProbeStride^2, made once (also while planning): what the

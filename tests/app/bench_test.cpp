@@ -278,6 +278,31 @@ TEST_F(Bench, TargetsNamesTheFastestSettingThatMeetsEachTarget) {
     }
     EXPECT_TRUE(looser && tighter) << s.at("scene") << " " << s.at("method") << " " << setting;
   }
+  // The progress counts the search's renders in its plan as they are asked for, and no probe as a
+  // render: "[targets N/M]" never has N > M, the last line has N = M, and the plan grows ahead of
+  // the renders (a line with N < M and M above the first line's M) when the search asks for more.
+  std::istringstream lines(r.output);
+  std::string line;
+  int last_done = 0, last_planned = 0, first_planned = 0, search_renders = 0;
+  bool grew_ahead = false;
+  for (const auto& s : sweep) search_renders += s.at("search_round") != "0";
+  while (std::getline(lines, line)) {
+    int done = 0, planned = 0;
+    const std::size_t at = line.find("[targets ");
+    if (at == std::string::npos ||
+        std::sscanf(line.c_str() + at, "[targets %d/%d]", &done, &planned) != 2)
+      continue;
+    EXPECT_LE(done, planned) << line;
+    if (first_planned == 0) first_planned = planned;
+    grew_ahead = grew_ahead || (done < planned && planned > first_planned);
+    EXPECT_EQ(line.find(" 1/64 px"), std::string::npos) << "a probe counted as a render: " << line;
+    last_done = done;
+    last_planned = planned;
+  }
+  EXPECT_GT(search_renders, 0) << "the quick suite's sweeps leave something to search";
+  EXPECT_GT(last_done, 0);
+  EXPECT_EQ(last_done, last_planned);
+  EXPECT_TRUE(grew_ahead) << "the search's renders were not added to the plan";
   EXPECT_GT(met, 0) << "some setting met some target";
   const std::string png = read_file(out / "targets_speedup.png");
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
