@@ -72,10 +72,11 @@ std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& fb
 renderer::HeatmapRange parse_heatmap_range(const std::string& text) {
   const std::size_t comma = text.find(',');
   const auto number = [&](const std::string& part, double& v) {
+    if (!is_decimal_real(part)) return false;
     char* end = nullptr;
     errno = 0;
     v = std::strtod(part.c_str(), &end);
-    return !part.empty() && *end == '\0' && errno == 0 && std::isfinite(v);
+    return *end == '\0' && errno == 0 && std::isfinite(v);
   };
   renderer::HeatmapRange range;
   if (comma == std::string::npos || !number(text.substr(0, comma), range.min) ||
