@@ -40,12 +40,15 @@ constexpr int kIgnoredSignal = 2000;
 
 // Runs levrt with args, signals it `delay` after its handlers are installed, and returns its
 // exit code (1000 + the signal when the signal killed it, so that is never mistaken for 130;
-// kIgnoredSignal when it was still running `exit_bound` after the signal).
+// kIgnoredSignal when it was still running `exit_bound` after the signal). errors_fd, when not
+// -1, becomes the process' standard error.
 inline int interrupt_after(const std::vector<std::string>& args, int signal_number,
                            std::chrono::milliseconds delay,
-                           std::chrono::milliseconds exit_bound = std::chrono::seconds(60)) {
+                           std::chrono::milliseconds exit_bound = std::chrono::seconds(60),
+                           int errors_fd = -1) {
   const pid_t pid = fork();
   if (pid == 0) {
+    if (errors_fd != -1) dup2(errors_fd, STDERR_FILENO);
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -92,11 +95,8 @@ inline InterruptedRun interrupt_and_read(const std::vector<std::string>& args, i
     run.errors = "the test could not make a temporary file for the standard error";
     return run;
   }
-  const int saved = ::dup(STDERR_FILENO);
-  ::dup2(::fileno(errors), STDERR_FILENO);  // the child inherits it
-  run.exit_code = interrupt_after(args, signal_number, delay, kInterruptHangGuard);
-  ::dup2(saved, STDERR_FILENO);
-  ::close(saved);
+  run.exit_code =
+      interrupt_after(args, signal_number, delay, kInterruptHangGuard, ::fileno(errors));
   std::rewind(errors);
   char buffer[4096];
   for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, errors)) > 0;)
