@@ -14,8 +14,8 @@ namespace {
 }
 
 double parse_limit_pct(const std::string& key, const std::string& value, const std::string& text) {
-  const std::string what = key + " must be a finite number of percent >= 0";
-  if (value.empty()) reject(what, text);
+  const std::string what = key + " must be a finite decimal number of percent >= 0";
+  if (!is_decimal_real(value)) reject(what, text);
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
   if (*end != '\0' || !std::isfinite(v) || v < 0.0) reject(what, text);

@@ -24,8 +24,9 @@ std::string float_text(float v) {
   return text;
 }
 
+// A number in the settings' grammar (is_decimal_real), read as the nearest float.
 bool parse_float(const std::string& text, float& value) {
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return false;
+  if (!is_decimal_real(text)) return false;
   char* end = nullptr;
   errno = 0;
   const float v = std::strtof(text.c_str(), &end);
@@ -52,8 +53,9 @@ std::string bound_text() {
 // X,Y,Z; a point (bounded) has each magnitude at most kMaxCameraCoordinate.
 glm::vec3 parse_vec3(const std::string& flag, const std::string& text, bool bounded) {
   const std::string what =
-      bounded ? "must be X,Y,Z (three finite numbers of magnitude at most " + bound_text() + ")"
-              : "must be X,Y,Z (three finite numbers)";
+      bounded
+          ? "must be X,Y,Z (three finite decimal numbers of magnitude at most " + bound_text() + ")"
+          : "must be X,Y,Z (three finite decimal numbers)";
   glm::vec3 v(0.0f);
   std::size_t start = 0;
   for (int i = 0; i < 3; ++i) {
@@ -73,7 +75,8 @@ glm::vec3 parse_vec3(const std::string& flag, const std::string& text, bool boun
 float parse_fov(const std::string& flag, const std::string& text) {
   float fov = 0.0f;
   if (!parse_float(text, fov) || !(fov > 0.0f && fov < 180.0f))
-    throw UsageError(flag + ": must be a number of degrees in (0, 180), got '" + text + "'");
+    throw UsageError(flag + ": must be a decimal number of degrees in (0, 180), got '" + text +
+                     "'");
   return fov;
 }
 

@@ -19,6 +19,7 @@
 #include "app/render_command.h"
 #include "app/settings.h"
 #include "app/view_command.h"
+#include "scenes/scene_file.h"
 
 namespace app {
 namespace {
@@ -73,16 +74,16 @@ void add_setting_flags(CLI::App& command, SettingFlags& flags, const Settings& d
   }
 }
 
-// A count typed in decimal digits, at most INT_MAX: checked on the text, before CLI11 converts it
-// (which would take "0x10" and " 3", and say only "Could not convert" for "3.5" or 1e20).
+// A count in the settings' integer grammar (is_decimal_integer), in [0, INT_MAX]: checked on the
+// text, before CLI11 converts it (which would take "0x10" and " 3", and say only "Could not
+// convert" for "3.5" or 1e20).
 const CLI::Validator& decimal_count() {
   static const CLI::Validator check(
       [](std::string& value) {
-        const bool digits = !value.empty() && value.size() <= 10 &&
-                            value.find_first_not_of("0123456789") == std::string::npos;
+        const bool digits = is_decimal_integer(value) && value[0] != '-' && value.size() <= 10;
         if (digits && std::stoll(value) <= std::numeric_limits<int>::max()) return std::string();
-        return "must be an integer in [0, " + std::to_string(std::numeric_limits<int>::max()) +
-               "], got '" + value + "'";
+        return "must be a decimal integer in [0, " +
+               std::to_string(std::numeric_limits<int>::max()) + "], got '" + value + "'";
       },
       "", "decimal count");
   return check;
@@ -356,7 +357,8 @@ int run_cli(int argc, char** argv) {
   std::fprintf(
       stderr,
       "levrt: no display to open a window on; writing the headless snapshot into %s instead\n",
-      (std::filesystem::current_path() / "out").string().c_str());
+      scenes::escape_control_characters((std::filesystem::current_path() / "out").string())
+          .c_str());
   return run_snapshot();
 }
 

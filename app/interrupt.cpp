@@ -5,7 +5,9 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <exception>
 #include <string>
+#include <utility>
 
 namespace app {
 namespace {
@@ -31,6 +33,20 @@ bool end_unless_writing() {
   if (g_writes.count > 0) return false;
   g_writes.ending = true;
   return true;
+}
+
+// The stage the command is in (CommandStage), for the interrupted line.
+struct NotedStage {
+  std::mutex mutex;
+  StageNote note;
+};
+NotedStage g_stage;
+std::atomic<int> g_tiles_done{0};
+
+void note_stage(const StageNote& note, int tiles_done) {
+  const std::lock_guard<std::mutex> lock(g_stage.mutex);
+  g_stage.note = note;
+  g_tiles_done.store(tiles_done);
 }
 
 void raise_flag(int) {
@@ -61,6 +77,59 @@ void InterruptScope::throw_if_interrupted() {
   if (g_interrupted.load()) throw Interrupted();
 }
 
+CommandStage::CommandStage(StageNote note)
+    : note_(std::move(note)), exceptions_(std::uncaught_exceptions()) {
+  const std::lock_guard<std::mutex> lock(g_stage.mutex);
+  before_ = g_stage.note;
+  before_tiles_done_ = g_tiles_done.load();
+  g_stage.note = note_;
+  g_tiles_done.store(0);
+}
+
+CommandStage::~CommandStage() {
+  if (std::uncaught_exceptions() > exceptions_ && g_interrupted.load()) return;
+  note_stage(before_, before_tiles_done_);
+}
+
+void CommandStage::step(int step, const std::string& detail) {
+  note_.step = step;
+  note_.detail = detail;
+  note_stage(note_, 0);
+}
+
+void CommandStage::count_tiles(int tiles) {
+  note_.tiles = tiles;
+  note_stage(note_, 0);
+}
+
+void note_tile_done() {
+  g_tiles_done.fetch_add(1);
+}
+
+std::string interrupted_message() {
+  StageNote note;
+  int tiles_done = 0;
+  {
+    const std::lock_guard<std::mutex> lock(g_stage.mutex);
+    note = g_stage.note;
+    tiles_done = g_tiles_done.load();
+  }
+  std::string where;
+  if (!note.doing.empty()) {
+    where = " while " + note.doing;
+    if (note.steps > 0) {
+      where += ", " + note.step_word + " " + std::to_string(note.step) + " of " +
+               std::to_string(note.steps);
+    }
+    if (!note.detail.empty()) where += ": " + note.detail;
+    if (note.tiles > 0) {
+      where +=
+          ", " + std::to_string(tiles_done) + " of " + std::to_string(note.tiles) + " tiles done";
+    }
+  }
+  return "interrupted" + where + "; no output written";
+}
+
 InterruptWatchdog::InterruptWatchdog() {
   thread_ = std::thread([this] {
     using Clock = std::chrono::steady_clock;
@@ -78,7 +147,7 @@ InterruptWatchdog::InterruptWatchdog() {
     // The command is stuck in a step that cannot poll, or slow to tear down. It has written
     // nothing; nothing else may run (no destructor, no other thread's half-done state): one
     // line, then _Exit.
-    const std::string line = std::string("levrt: ") + Interrupted().what() + "\n";
+    const std::string line = "levrt: " + interrupted_message() + "\n";
     const ssize_t ignored = ::write(STDERR_FILENO, line.data(), line.size());
     (void)ignored;
     std::_Exit(130);

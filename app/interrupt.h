@@ -3,19 +3,66 @@
 // scene load between its steps (app/scene_loading.h); the command then stops, writes nothing,
 // and exits with 130. (Output files are written to temporaries and renamed with these signals
 // blocked, so no signal can leave a partial file either.) A load step that cannot poll (parsing
-// a large glTF, a read blocked in the kernel) is bounded by an InterruptWatchdog.
+// a large glTF, a read blocked in the kernel) is bounded by an InterruptWatchdog. The line an
+// interrupt ends with names the stage the command stopped in (CommandStage), so the user, and a
+// test, can tell where it stopped by what it had done, not by how long it took.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace app {
 
+// What a command is doing, for the interrupted line: "loading the scene" (step 2 of 3:
+// instantiating it), "choosing the exposure", "rendering lev" (pass 2 of 4, with the pass's tiles
+// done of its tiles), "finishing after the last pass". One stage is noted per process, by the
+// thread that does the command's work; the watchdog reads it from its own thread.
+struct StageNote {
+  std::string doing;               // "loading the scene", "rendering lev"
+  std::string step_word = "step";  // "pass" for a render
+  int step = 0;                    // the step in progress, from 1; 0: no steps
+  int steps = 0;                   // of how many
+  std::string detail;              // what the step does ("building the ray-tracing structures")
+  int tiles = 0;  // a render pass's tiles (0: no tile count); note_tile_done counts them
+};
+
+// Notes a stage while it lives (nested scopes stack). Left normally it restores the stage before
+// it; left by an exception once the interrupt flag is raised it keeps its own, since that is where
+// the command stopped and the interrupted line is made after the unwinding.
+class CommandStage {
+ public:
+  explicit CommandStage(StageNote note);
+  explicit CommandStage(const char* doing) : CommandStage(StageNote{doing, "step", 0, 0, "", 0}) {}
+  ~CommandStage();
+  CommandStage(const CommandStage&) = delete;
+  CommandStage& operator=(const CommandStage&) = delete;
+
+  // The next step of this stage (its tiles done start again from 0).
+  void step(int step, const std::string& detail = std::string());
+  // From now on each step has this many tiles (note_tile_done counts them).
+  void count_tiles(int tiles);
+
+ private:
+  StageNote note_;
+  StageNote before_;
+  int before_tiles_done_ = 0;
+  int exceptions_ = 0;
+};
+
+// A tile of the current render pass is done (any thread).
+void note_tile_done();
+
+// "interrupted while loading the scene, step 3 of 3: building its ray-tracing structures; no
+// output written", "interrupted while rendering lev, pass 2 of 4, 37 of 300 tiles done; no output
+// written", or "interrupted; no output written" when no stage is noted.
+std::string interrupted_message();
+
 struct Interrupted : std::runtime_error {
-  Interrupted() : std::runtime_error("interrupted; no output written") {}
+  Interrupted() : std::runtime_error(interrupted_message()) {}
 };
 
 class InterruptScope {

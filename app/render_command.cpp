@@ -72,10 +72,11 @@ std::vector<ExrChannel> framebuffer_exr_channels(const renderer::Framebuffer& fb
 renderer::HeatmapRange parse_heatmap_range(const std::string& text) {
   const std::size_t comma = text.find(',');
   const auto number = [&](const std::string& part, double& v) {
+    if (!is_decimal_real(part)) return false;
     char* end = nullptr;
     errno = 0;
     v = std::strtod(part.c_str(), &end);
-    return !part.empty() && *end == '\0' && errno == 0 && std::isfinite(v);
+    return *end == '\0' && errno == 0 && std::isfinite(v);
   };
   renderer::HeatmapRange range;
   if (comma == std::string::npos || !number(text.substr(0, comma), range.min) ||
@@ -126,12 +127,20 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
   };
   renderer::RenderSettings render_settings = render_settings_from(s);
   render_settings.compute_error_bound = true;  // every render reports its certified bound
-  renderer::RenderResult result;
-  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings,
-                                            settings.image.spp, result, cancel, on_pass_done);
+  // The pass and its tiles done are what the interrupted line reports (app/interrupt.h).
+  CommandStage stage({std::string("rendering ") + lev::method_info(method).name, "pass", 1,
+                      settings.image.spp, "setting up the method"});
+  renderer::RenderJob job(loaded.scene, *loaded.rays, render_settings);
+  stage.count_tiles(renderer::render_tile_count(job.state()));
+  bool done = true;
+  for (int pass = 0; pass < settings.image.spp && done; ++pass) {
+    stage.step(pass + 1);
+    done = job.pass(cancel, [](int) { note_tile_done(); });
+    if (done) on_pass_done(pass + 1, renderer::render_seconds(job.state()));
+  }
   if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
   if (!done) throw Interrupted();
-  return result;
+  return job.result();
 }
 
 namespace {
@@ -217,6 +226,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
     throw;
   }
   if (settings.display.exposure_auto) {
+    const CommandStage stage("choosing the exposure");
     settings.display.exposure_ev =
         renderer::auto_exposure_ev(loaded->scene, *loaded->rays, render_settings_from(settings),
                                    settings.display.curve, cancel);
@@ -232,6 +242,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
                     ? result
                     : render_image(*loaded, settings, rt, cancel, show_progress);
   }
+  const CommandStage rendered("finishing after the last pass");
   RenderStats stats =
       render_stats(*loaded, settings, result, outputs.reference_rt ? &reference : nullptr);
 

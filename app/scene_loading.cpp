@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "app/camera_flags.h"
+#include "app/interrupt.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_inputs.h"
 #include "scenes/scene_instantiation.h"
@@ -92,13 +93,18 @@ std::unique_ptr<LoadedScene> load_scene(const scenes::SceneChoice& choice,
     if (cancel && cancel->load()) throw LoadCancelled();
   };
   const auto start = std::chrono::steady_clock::now();
+  // The steps the interrupted line names (app/interrupt.h).
+  CommandStage stage({"loading the scene", "step", 1, 3,
+                      is_scene_file(choice) ? "reading the scene file" : "describing the model"});
   poll();
   const scenes::SceneDescription description = describe_scene(choice);
   poll();
+  stage.step(2, "instantiating its lights and geometry");
   auto loaded = std::make_unique<LoadedScene>();
   loaded->scene = scenes::instantiate_scene(description);
   loaded->scene.camera = apply_camera_flags(loaded->scene.camera, choice.camera_flags);
   poll();
+  stage.step(3, "building its ray-tracing structures");
   loaded->rays = std::make_unique<renderer::RayScene>(loaded->scene);
   poll();
   loaded->build_seconds =

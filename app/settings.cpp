@@ -221,6 +221,38 @@ const char* renamed_setting(const std::string& old_name) {
 
 namespace {
 
+// Advances past the decimal digits at text[i]; returns how many there were.
+std::size_t skip_digits(const std::string& text, std::size_t& i) {
+  const std::size_t start = i;
+  while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+  return i - start;
+}
+
+}  // namespace
+
+bool is_decimal_integer(const std::string& text) {
+  std::size_t i = !text.empty() && text[0] == '-' ? 1 : 0;
+  return skip_digits(text, i) > 0 && i == text.size();
+}
+
+bool is_decimal_real(const std::string& text) {
+  std::size_t i = !text.empty() && text[0] == '-' ? 1 : 0;
+  std::size_t digits = skip_digits(text, i);
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    digits += skip_digits(text, i);
+  }
+  if (digits == 0) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (skip_digits(text, i) == 0) return false;
+  }
+  return i == text.size();
+}
+
+namespace {
+
 [[noreturn]] void reject(const SettingSpec& spec, const std::string& what,
                          const std::string& text) {
   throw UsageError(std::string("--") + spec.name + ": " + what + ", got '" + text + "'");
@@ -230,9 +262,9 @@ namespace {
 
 void set_setting(Settings& settings, const SettingSpec& spec, const std::string& text) {
   if (const auto* r = std::get_if<IntRange>(&spec.kind)) {
-    const std::string what =
-        "must be an integer in [" + std::to_string(r->min) + ", " + std::to_string(r->max) + "]";
-    if (text.empty()) reject(spec, what, text);
+    const std::string what = "must be a decimal integer in [" + std::to_string(r->min) + ", " +
+                             std::to_string(r->max) + "]";
+    if (!is_decimal_integer(text)) reject(spec, what, text);
     char* end = nullptr;
     errno = 0;
     const long long v = std::strtoll(text.c_str(), &end, 10);
@@ -245,8 +277,8 @@ void set_setting(Settings& settings, const SettingSpec& spec, const std::string&
     }
     std::ostringstream range;
     range << "must be " << (d->word ? std::string(d->word) + " or " : std::string())
-          << "a finite number in [" << d->min << ", " << d->max << "]";
-    if (text.empty()) reject(spec, range.str(), text);
+          << "a finite decimal number in [" << d->min << ", " << d->max << "]";
+    if (!is_decimal_real(text)) reject(spec, range.str(), text);
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
     // Overflow comes back infinite and is refused; underflow (ERANGE with a subnormal or zero

@@ -126,6 +126,16 @@ const SettingSpec* find_setting(const std::string& name);
 // "lights-per-point"), or null: the CLI and the viewer's scripts name the new one in their error.
 const char* renamed_setting(const std::string& old_name);
 
+// The one grammar of the numbers typed to levrt: every numeric flag (the settings below, --lights,
+// the camera flags' components, --heatmap-range, --fail-above, inspect's --top) and the viewer's
+// typed values and scripted changes, which go through set_setting. Decimal only: an integer is an
+// optional '-' and digits; a real number an optional '-', digits with an optional '.' and fraction
+// ("0.5", ".5" and "5." too) and an optional exponent ("1e-3", "2E+2"). Refused as typed: a
+// leading '+' or space, a trailing space, hex ("0x10", "0x1p-3"), "inf" and "nan". The range of
+// each value is its flag's to check.
+bool is_decimal_integer(const std::string& text);
+bool is_decimal_real(const std::string& text);
+
 // Parses text for the setting and stores it; throws UsageError "--name: ..., got 'text'".
 void set_setting(Settings& settings, const SettingSpec& spec, const std::string& text);
 std::string setting_text(const Settings& settings, const SettingSpec& spec);

@@ -483,7 +483,7 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
                                           honoured_gltf_extensions_text() + ")");
   }
   for (const std::string& warning : warnings) {
-    std::fprintf(stderr, "%s: warning: %s\n", path.c_str(), warning.c_str());
+    std::fprintf(stderr, "%s\n", escape_control_characters(path + ": warning: " + warning).c_str());
   }
   return scene;
 }

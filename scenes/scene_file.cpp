@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -455,10 +456,58 @@ class Reader {
 
 }  // namespace
 
+namespace {
+
+// The code points a message shows as \uXXXX though they are valid text: the C1 controls (a
+// terminal may take U+009B as CSI) and the invisible format characters that reorder or hide what
+// follows (the bidirectional embeddings, overrides and isolates, the marks, zero-width
+// characters, the line and paragraph separators, the byte order mark).
+bool is_escaped_code_point(std::uint32_t cp) {
+  return (cp >= 0x80 && cp <= 0x9f) || cp == 0x061c || (cp >= 0x200b && cp <= 0x200f) ||
+         (cp >= 0x2028 && cp <= 0x202e) || cp == 0x2060 || (cp >= 0x2066 && cp <= 0x2069) ||
+         cp == 0xfeff;
+}
+
+// The length of the well-formed UTF-8 sequence at text[i] (RFC 3629: no overlong form, no
+// surrogate, nothing past U+10FFFF) and its code point; 0 when none starts there.
+std::size_t utf8_sequence(std::string_view text, std::size_t i, std::uint32_t& cp) {
+  const auto byte = [&text](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  std::size_t length = 0;
+  unsigned char low = 0x80, high = 0xbf;  // the second byte's range
+  if (lead >= 0xc2 && lead <= 0xdf) {
+    length = 2;
+    cp = lead & 0x1fu;
+  } else if (lead >= 0xe0 && lead <= 0xef) {
+    length = 3;
+    cp = lead & 0x0fu;
+    if (lead == 0xe0) low = 0xa0;
+    if (lead == 0xed) high = 0x9f;
+  } else if (lead >= 0xf0 && lead <= 0xf4) {
+    length = 4;
+    cp = lead & 0x07u;
+    if (lead == 0xf0) low = 0x90;
+    if (lead == 0xf4) high = 0x8f;
+  } else {
+    return 0;
+  }
+  if (i + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    const unsigned char c = byte(i + k);
+    if (k == 1 ? (c < low || c > high) : (c < 0x80 || c > 0xbf)) return 0;
+    cp = (cp << 6) | (c & 0x3fu);
+  }
+  return length;
+}
+
+}  // namespace
+
 std::string escape_control_characters(std::string_view text) {
+  static constexpr char kHex[] = "0123456789abcdef";
   std::string out;
   out.reserve(text.size());
-  for (char c : text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
     const unsigned char byte = static_cast<unsigned char>(c);
     if (c == '\n') {
       out += "\\n";
@@ -467,13 +516,30 @@ std::string escape_control_characters(std::string_view text) {
     } else if (c == '\r') {
       out += "\\r";
     } else if (byte < 0x20 || byte == 0x7f) {
-      static constexpr char kHex[] = "0123456789abcdef";
       out += "\\x";
       out += kHex[byte >> 4];
       out += kHex[byte & 0xf];
-    } else {
+    } else if (byte < 0x80) {
       out += c;
+    } else {
+      std::uint32_t cp = 0;
+      const std::size_t length = utf8_sequence(text, i, cp);
+      if (length == 0) {  // a byte of no UTF-8 character: shown as itself, \xNN
+        out += "\\x";
+        out += kHex[byte >> 4];
+        out += kHex[byte & 0xf];
+      } else if (is_escaped_code_point(cp)) {
+        out += "\\u";
+        for (int shift = 12; shift >= 0; shift -= 4) out += kHex[(cp >> shift) & 0xf];
+        i += length;
+        continue;
+      } else {
+        out.append(text.substr(i, length));
+        i += length;
+        continue;
+      }
     }
+    ++i;
   }
   return out;
 }

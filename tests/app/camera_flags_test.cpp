@@ -60,7 +60,8 @@ TEST(CameraFlags, ParseEachFlagAndRefuseBadValuesNamingTheFlag) {
   for (const std::string bad : {"0", "180", "-5", "200", "x", "nan", "45deg"}) {
     CameraFlagTexts t;
     t.fov_deg = bad;
-    EXPECT_EQ(refusal(t).rfind("--fov: must be a number of degrees in (0, 180)", 0), 0u) << bad;
+    EXPECT_EQ(refusal(t).rfind("--fov: must be a decimal number of degrees in (0, 180)", 0), 0u)
+        << bad;
   }
 }
 

@@ -56,6 +56,50 @@ TEST_F(Cli, EveryInvalidValueExitsTwoWithOneLineAndNoOutput) {
   }
 }
 
+// Numbers in the one decimal grammar (app/settings.h) for every numeric flag, those of the
+// settings table and the others: a leading space or '+', a trailing space and hex floats were
+// taken by some (--tolerance 0x1p-3 rendered at 0.125, --width ' 64' and '+64' at 64, --fov and
+// --camera-position took hex, --heatmap-range ' 0,1'). Each is one line naming the flag and the
+// value as typed, exit 2, nothing written.
+TEST_F(Cli, NumericFlagsTakeOnlyPlainDecimalNumbers) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"--width", {" 8", "+8", "8 ", "0x8"}},
+      {"--spp", {" 1", "+1"}},
+      {"--tolerance", {"0x1p-3", " 0.1", "+0.1", "0.1 ", "0X1P-3"}},
+      {"--exposure", {"+1", " 1", "0x1p0"}},
+      {"--lights", {" 64", "+64", "0x40"}},
+      {"--fov", {"0x1p5", "+40", " 40"}},
+      {"--camera-position", {"0x1p0,2,3", "+1,2,3", "1, 2,3"}},
+      {"--ortho-half-height", {"0x1p2", "+4"}},
+      {"--heatmap-range", {" 0,1", "0x1p-3,1", "+0,1", "0,1 "}},
+      {"--fail-above", {"avg=+1", "max=0x1p0", "avg= 1"}},
+  };
+  const std::string out = path("image.png");
+  for (const auto& [flag, values] : cases) {
+    for (const std::string& value : values) {
+      const CommandRun r =
+          run_levrt({"render", flag, value, "--height", "8", "--out", out, "--reference", "rt"});
+      const std::string label = flag + " '" + value + "': " + r.output;
+      EXPECT_EQ(r.exit_code, 2) << label;
+      EXPECT_EQ(r.output.rfind("levrt: " + flag + ": ", 0), 0u) << label;
+      EXPECT_NE(r.output.find("'" + value + "'"), std::string::npos) << label;
+      EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << label;
+      EXPECT_TRUE(folder_is_empty()) << label;
+    }
+  }
+  for (const std::string top : {"+3", " 3"}) {
+    const CommandRun r =
+        run_levrt({"inspect", "--width", "8", "--height", "8", "--pixel", "1,1", "--top", top});
+    EXPECT_EQ(r.exit_code, 2) << top << ": " << r.output;
+    EXPECT_NE(r.output.find("--top: must be a decimal integer"), std::string::npos) << r.output;
+  }
+  // Plain decimal in each form the grammar takes still renders.
+  const CommandRun plain =
+      run_levrt({"render", "--width", "008", "--height", "8", "--tolerance", ".5", "--exposure",
+                 "-1.", "--fov", "4E1", "--camera-position", "-1e1,0.5,3", "--out", out});
+  EXPECT_EQ(plain.exit_code, 0) << plain.output;
+}
+
 // --relative-error out of [0, 1] with the method that reads it, and any value with a method that
 // ignores it: one line naming the flag, exit 2, nothing written.
 TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {
@@ -161,8 +205,9 @@ TEST_F(Cli, AnEmptyJsonOrNegativeFrameCountIsOneShortLine) {
     const CommandRun r =
         run_levrt({"inspect", "--width", "8", "--height", "8", "--pixel", "1,1", "--top", top});
     EXPECT_EQ(r.exit_code, 2) << top << ": " << r.output;
-    EXPECT_NE(r.output.find("--top: must be an integer in [0, 2147483647], got '" + top + "'"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find("--top: must be a decimal integer in [0, 2147483647], got '" + top + "'"),
+        std::string::npos)
         << r.output;
   }
   const CommandRun frames = run_levrt({"view", "--frames", "-1"});

@@ -284,6 +284,28 @@ TEST_F(Outputs, NewlinesAndEscapesInNamesAndValuesStayOnOneLine) {
   EXPECT_NE(escaped.output.find("evil\\n\\x1b[31mred.json"), std::string::npos) << escaped.output;
 }
 
+// A right-to-left override (U+202E) in a name made "evil<RLO>gnp.json" show as "evilnosj.png" on
+// a terminal, and a glTF's warnings printed its path raw: every message quotes user text through
+// the one escaping (scenes::escape_control_characters), which shows the override as \u202e.
+TEST_F(Outputs, RightToLeftOverridesInNamesArePrintedAsEscapes) {
+  const std::string rlo = "\u202E";
+  const CommandRun missing = run_levrt({"render", "--scene", "evil" + rlo + "gnp.json"});
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_EQ(missing.output.find(rlo), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("evil\\u202egnp.json"), std::string::npos) << missing.output;
+
+  const fs::path folder = dir_ / ("lights" + rlo + "fig");
+  fs::create_directories(folder);
+  const std::string gltf = (folder / "sun.gltf").string();
+  std::ofstream(gltf) << R"({"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_levrt_unknown"],
+    "scenes": [{"nodes": [0]}], "scene": 0, "nodes": [{"translation": [0, 0, 5]}]})";
+  const CommandRun warned = run_levrt(
+      {"render", "--scene", gltf, "--width", "8", "--height", "8", "--out", path("sun.png")});
+  EXPECT_NE(warned.output.find("warning"), std::string::npos) << warned.output;
+  EXPECT_EQ(warned.output.find(rlo), std::string::npos) << warned.output;
+  EXPECT_NE(warned.output.find("lights\\u202efig"), std::string::npos) << warned.output;
+}
+
 TEST_F(Outputs, AMasterNameWithNewlinesAndEscapesIsReportedOnOneLine) {
   const std::string scene = path("cycle.json");
   std::ofstream(scene)
@@ -682,6 +704,19 @@ TEST_F(Outputs, WithoutADisplayLevrtSaysItWritesTheSnapshotAndWhere) {
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find((fs::canonical(dir_) / "out").string()), std::string::npos) << r.output;
   EXPECT_TRUE(fs::exists(dir_ / "out" / "building.png"));
+}
+
+// The folder the snapshot would go to is the working folder's: a right-to-left override in its
+// name was printed raw in the "no display" line. (A file named out ends the run before it renders.)
+TEST_F(Outputs, WithoutADisplayTheSnapshotFolderIsPrintedEscaped) {
+  const fs::path here = dir_ / "work\u202Eing";
+  fs::create_directories(here);
+  std::ofstream(here / "out") << "the user's notes";
+  const CommandRun r = run_shell("(cd " + shell_quote(here.string()) + " && env -u DISPLAY " +
+                                 shell_quote(LEVRT_BINARY) + " 2>&1)");
+  EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("\u202E"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("work\\u202eing/out instead"), std::string::npos) << r.output;
 }
 
 // The snapshot's folder "out" named by a file or a dangling symlink: one line naming it, exit 2,

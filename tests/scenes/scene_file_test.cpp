@@ -307,4 +307,34 @@ TEST(SceneFile, FlatListOfLightsGetsTheAutomaticHierarchy) {
   EXPECT_LT(counters.nodes_visited, 400u);
 }
 
+// The one escaping of quoted user text: C0 controls as before, and now what was printed raw: a
+// right-to-left override (a name showing "gnp.exe" as "exe.png"), the other bidirectional and
+// invisible format characters, C1 controls (U+009B is CSI to some terminals) and bytes of no
+// UTF-8 character. Other characters stay, and escaping twice changes nothing.
+TEST(SceneFile, EscapingShowsControlsOverridesAndStrayBytesAsEscapes) {
+  using scenes::escape_control_characters;
+  EXPECT_EQ(escape_control_characters("a\nb\x1b[2J"), "a\\nb\\x1b[2J");
+  EXPECT_EQ(escape_control_characters("evil\u202Egnp.json"), "evil\\u202egnp.json");
+  for (const char* format :
+       {"\u061C", "\u200B", "\u200E", "\u200F", "\u2028", "\u2029", "\u202A", "\u202B", "\u202C",
+        "\u202D", "\u2066", "\u2067", "\u2068", "\u2069", "\u2060", "\uFEFF"}) {
+    const std::string escaped = escape_control_characters(format);
+    EXPECT_EQ(escaped.rfind("\\u", 0), 0u) << escaped;
+    EXPECT_EQ(escaped.size(), 6u) << escaped;
+  }
+  EXPECT_EQ(escape_control_characters("\xc2\x9b"
+                                      "31m"),
+            "\\u009b31m");
+  EXPECT_EQ(escape_control_characters("\xff\xfe"), "\\xff\\xfe");
+  EXPECT_EQ(escape_control_characters("\xe2\x80"), "\\xe2\\x80");           // a character cut short
+  EXPECT_EQ(escape_control_characters("\xc0\xaf"), "\\xc0\\xaf");           // an overlong '/'
+  EXPECT_EQ(escape_control_characters("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a surrogate
+  const std::string kept = "caf\u00e9 \u5149 \U0001F4A1 \u00c5ngstr\u00f6m";
+  EXPECT_EQ(escape_control_characters(kept), kept);
+  for (const std::string& text : {std::string("x\u202Ey\n\xff"), std::string("\xc2\x85\t")}) {
+    const std::string once = escape_control_characters(text);
+    EXPECT_EQ(escape_control_characters(once), once) << once;
+  }
+}
+
 }  // namespace
