@@ -92,7 +92,8 @@ BenchOptions parse_options(const BenchFlags& flags) {
     char* end = nullptr;
     errno = 0;
     const long long v = std::strtoll(flags.threads.c_str(), &end, 10);
-    if (flags.threads.empty() || errno != 0 || *end != '\0' || v < 0 || v > 1024) {
+    // The settings' integer grammar (no sign, space or hex), as render's --threads takes it.
+    if (!is_decimal_integer(flags.threads) || errno != 0 || *end != '\0' || v < 0 || v > 1024) {
       throw UsageError("--threads: must be an integer in [0, 1024], got '" + flags.threads + "'");
     }
     o.threads = static_cast<int>(v);

@@ -437,6 +437,9 @@ TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
       {"--threads", "x", "--out", out},
       {"--threads", "", "--out", out},
       {"--threads", "2000", "--out", out},
+      {"--quick", "--only", "limit", "--threads", " 2", "--out", out},
+      {"--quick", "--only", "limit", "--threads", "+2", "--out", out},
+      {"--quick", "--only", "limit", "--threads", "0x2", "--out", out},
       {"--colour", "red", "--out", out},
   };
   for (const std::vector<std::string>& c : cases) {
