@@ -12,6 +12,7 @@
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "lev/methods.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_inputs.h"
 
 namespace app {
@@ -241,8 +242,12 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   parse_inspect_pixel(flags.pixel, settings.image.width, settings.image.height, x, y);
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
-  check_output_paths({{"--json", flags.json, ".json", "JSON"}},
-                     settings_input_files(settings.scene));
+  // The table is an output too: on standard output (a file it is redirected to may not be an
+  // input, `>> scene.json`), or on stderr when the JSON takes standard output.
+  const bool table_on_stdout = flags.json != kStandardOutputName;
+  std::vector<OutputPath> outputs = {{"--json", flags.json, ".json", "JSON"}};
+  if (table_on_stdout) outputs.push_back({"the table", kStandardOutputName, ".txt", "text"});
+  check_output_paths(outputs, settings_input_files(settings.scene));
   const std::unique_ptr<LoadedScene> loaded = load_scene(settings.scene);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
@@ -254,12 +259,22 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   const nlohmann::ordered_json json = inspection_json(inspection);
   if (!flags.json.empty())
     write_output_files({{flags.json, [&json] { return json.dump(1) + "\n"; }}});
-  std::FILE* table = flags.json == kStandardOutputName ? stderr : stdout;
-  std::fprintf(
-      table, "%s, %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
-      loaded->scene.name.c_str(), static_cast<unsigned long long>(loaded->scene.lights.light_count),
-      lev::method_info(settings.method.method).name, settings.method.tolerance, inspect_ms);
-  std::fputs(inspection_table(inspection, flags.top).c_str(), table);
+  // The scene's name is the file's to choose: escaped, so it cannot split the header line or
+  // drive the terminal.
+  char header[256];
+  std::snprintf(header, sizeof header, ", %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
+                static_cast<unsigned long long>(loaded->scene.lights.light_count),
+                lev::method_info(settings.method.method).name, settings.method.tolerance,
+                inspect_ms);
+  const std::string table = scenes::escape_control_characters(loaded->scene.name) + header +
+                            inspection_table(inspection, flags.top);
+  // On standard output the table is the command's output: a write that fails (a full disk, a
+  // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE.
+  if (table_on_stdout) {
+    write_output_files({{kStandardOutputName, [&table] { return table; }}});
+  } else {
+    std::fputs(table.c_str(), stderr);
+  }
   return 0;
 }
 

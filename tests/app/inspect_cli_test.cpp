@@ -2,7 +2,12 @@
 // --top limit, the complete lists in --json (every light of the scene once per hit, tested,
 // culled or clustered, and the totals agreeing with the lists), and bad input as one line and
 // exit 2 with nothing written.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/json_file.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -105,6 +111,65 @@ TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
       run_levrt({"inspect", "--pixel", "1,1", "--json", (dir.path() / "pixel.txt").string()});
   EXPECT_EQ(wrong_extension.exit_code, 2) << wrong_extension.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "pixel.txt"));
+}
+
+// The scene's name is the file's to choose: escaped in the table's first line, as `render` and
+// `export` escape it, so it cannot split the line or drive the terminal.
+TEST(InspectCli, ASceneNameWithControlCharactersStaysOnOneLineOfTheTable) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-name-");
+  const std::string scene = (dir.path() / "scene.json").string();
+  ASSERT_EQ(run_levrt({"export", "--scene", "building", "--out", scene}).exit_code, 0);
+  nlohmann::json j = read_json(scene);
+  j["name"] = "evil\x1b[31mred\nsecond line";
+  std::ofstream(scene) << j.dump();
+  const auto run = run_levrt({"inspect", "--scene", scene, "--pixel", "160,120", "--top", "0"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find('\x1b'), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.rfind("evil\\x1b[31mred\\nsecond line, 64 lights, lev", 0), 0u)
+      << run.output;
+}
+
+// The table is the command's output: appended to the scene it reads, refused before any work;
+// written to a pipe whose reader is gone, one line and exit 1 (before: exit 0, or killed by
+// SIGPIPE, with nothing said).
+TEST(InspectCli, TheTableIsAnOutputThatMayNotBeAnInputAndReportsAFailedWrite) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-table-");
+  const std::string scene = (dir.path() / "scene.json").string();
+  ASSERT_EQ(run_levrt({"export", "--scene", "building", "--out", scene}).exit_code, 0);
+  const std::string scene_bytes = levrt_test::read_file(scene);
+  const auto appended = levrt_test::run_shell(
+      levrt_test::shell_quote(LEVRT_BINARY) + " inspect --scene " + levrt_test::shell_quote(scene) +
+      " --pixel 1,1 2>&1 >> " + levrt_test::shell_quote(scene) + "; echo exit $?");
+  EXPECT_NE(appended.output.find("standard output is a file this command reads"), std::string::npos)
+      << appended.output;
+  EXPECT_NE(appended.output.find("exit 2"), std::string::npos) << appended.output;
+  EXPECT_EQ(levrt_test::read_file(scene), scene_bytes);
+
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  ::close(ends[0]);
+  const std::string messages = (dir.path() / "messages.txt").string();
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGPIPE, SIG_DFL);  // as a shell starts it, whatever this test process does
+    ::dup2(ends[1], STDOUT_FILENO);
+    const int err = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(err, STDERR_FILENO);
+    const char* binary = LEVRT_BINARY;
+    ::execl(binary, binary, "inspect", "--width", "32", "--height", "24", "--pixel", "16,12",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const std::string output = levrt_test::read_file(messages);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": " << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_EQ(line_count(output), 1) << output;
+  EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
+      << output;
 }
 
 }  // namespace
