@@ -23,7 +23,12 @@ void add_export_flags(CLI::App& command, ExportFlags& flags) {
 int run_export(const ExportFlags& flags) {
   Settings settings;
   if (flags.scene_option->count() > 0) set_setting(settings, *find_setting("scene"), flags.scene);
-  if (flags.level_option->count() > 0) set_setting(settings, *find_setting("level"), flags.level);
+  if (flags.level_option->count() > 0) {
+    set_setting(settings, *find_setting("level"), flags.level);
+    // As `render` says: a file's level is the one it was exported at, not chosen here.
+    if (is_scene_file(settings.scene))
+      throw UsageError("--level: a scene file has no levels, got '" + flags.level + "'");
+  }
   if (flags.lights_option->count() > 0) {
     if (flags.level_option->count() > 0)
       throw UsageError("--lights: give --level or --lights, not both");

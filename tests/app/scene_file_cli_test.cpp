@@ -172,4 +172,17 @@ TEST_F(SceneFileCli, ExportRefusesBadArgumentsAndWritesNothing) {
   }
 }
 
+// A scene file has the level it was exported at: `export --level` with one is refused, as
+// `render --level` is, instead of being ignored.
+TEST_F(SceneFileCli, ExportOfASceneFileRefusesALevel) {
+  ASSERT_EQ(run_levrt({"export", "--scene", "maze", "--out", path("m.json")}).exit_code, 0);
+  const CommandRun r =
+      run_levrt({"export", "--scene", path("m.json"), "--level", "3", "--out", path("n.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("--level: a scene file has no levels, got '3'"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(path("n.json")));
+}
+
 }  // namespace
