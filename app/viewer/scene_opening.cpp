@@ -10,7 +10,10 @@
 
 namespace app::viewer {
 
-void log_message(ViewerState& state, const std::string& text, bool problem) {
+void log_message(ViewerState& state, const std::string& raw_text, bool problem) {
+  // Paths and load errors are the user's bytes: escaped, each message stays one line in the pane
+  // and on stderr, and no escape sequence reaches the terminal.
+  const std::string text = scenes::escape_control_characters(raw_text);
   state.messages.push_back({text, problem});
   if (state.messages.size() > kMaxLogMessages)
     state.messages.erase(state.messages.begin(),

@@ -18,7 +18,7 @@ inline constexpr std::size_t kMaxRecentScenes = 8;
 inline constexpr std::size_t kMaxLogMessages = 64;
 
 // Appends a message to the log pane (the oldest go past kMaxLogMessages); printed to stderr as
-// well when state.print_messages is set.
+// well when state.print_messages is set. Control characters are escaped (`\n`, `\x1b`).
 void log_message(ViewerState& state, const std::string& text, bool problem);
 
 // Asks for the scene file at `path` (a .json, .gltf or .glb, as --scene takes it). A path that

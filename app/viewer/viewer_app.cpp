@@ -304,7 +304,7 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   const WindowSize window_size = parse_window_flag(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
-  check_hover_pixels(script, settings);
+  check_script(script, settings, flags.frames);
   if (!flags.screenshot.empty() && flags.frames == 0)
     throw UsageError("--screenshot: needs --frames N");
   if (settings.resolution == "typed") check_memory_budget(settings, false);
@@ -519,12 +519,13 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   if (!bad_input_error.empty()) throw UsageError(bad_input_error);
   if (!snapshot_error.empty()) throw std::runtime_error("view: " + snapshot_error);
   if (!snapshots.message().empty() && flags.frames > 0)
-    std::printf("levrt view: %s\n", snapshots.message().c_str());
+    std::printf("levrt view: %s\n", scenes::escape_control_characters(snapshots.message()).c_str());
   if (flags.report_fps) std::fputs(frame_report(log).c_str(), stdout);
   if (!flags.screenshot.empty()) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
-    std::printf("levrt view: wrote %s (%dx%d)\n", flags.screenshot.c_str(), width, height);
+    std::printf("levrt view: wrote %s (%dx%d)\n",
+                scenes::escape_control_characters(flags.screenshot).c_str(), width, height);
   }
   return exit_code;
 }

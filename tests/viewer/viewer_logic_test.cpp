@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include "app/viewer/display_image.h"
 #include "app/viewer/frame_log.h"
 #include "app/viewer/scripted_changes.h"
+#include "app/viewer/settings_panel.h"
 #include "app/viewer/trade_plot.h"
 #include "renderer/framebuffer.h"
 #include "tests/support/temp_dir.h"
@@ -116,6 +118,60 @@ TEST(ScriptedChanges, AScriptFileGivesItsLinesAndAMissingOneIsAUsageError) {
   EXPECT_THROW(read_script_file((temp.path() / "missing.txt").string()), app::UsageError);
 }
 
+TEST(ScriptedChanges, ABadScriptLineIsNamedByItsFileAndLineNumber) {
+  const levrt_test::TempDir temp("levrt_script_line_");
+  const std::string path = (temp.path() / "changes.txt").string();
+  std::ofstream(path) << "method=ast@1\r\n\nlights=-4@2\n";
+  try {
+    read_script_file(path);
+    FAIL() << "lights=-4@2 was accepted";
+  } catch (const app::UsageError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("--script: " + path + " line 3: ", 0), 0u) << what;
+    EXPECT_NE(what.find("lights=-4@2"), std::string::npos) << what;
+  }
+  // A line saved with CRLF reads as its text.
+  std::ofstream(path) << "method=ast@1\r\n";
+  EXPECT_EQ(read_script_file(path), std::vector<std::string>{"method=ast@1"});
+}
+
+TEST(ScriptedChanges, WhatTheRunningScriptWouldFailAtIsRefusedBeforeItRuns) {
+  const app::Settings initial;  // building at its default level
+  const auto refusal = [&](const std::vector<std::string>& texts, int frames) {
+    try {
+      check_script(parse_scripted_changes(texts), initial, frames);
+    } catch (const app::UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // A light count the scene at that frame lacks, also after a change of scene.
+  EXPECT_NE(refusal({"screenshot=a.png@1", "lights=65@3"}, 0).find("got 'lights=65@3'"),
+            std::string::npos);
+  EXPECT_EQ(refusal({"lights=65536@1"}, 0), "");
+  EXPECT_NE(refusal({"lights=45@2"}, 0), "");
+  EXPECT_EQ(refusal({"scene=maze@1", "lights=45@2"}, 0), "");
+  EXPECT_NE(refusal({"scene=maze@3", "lights=45@2"}, 0), "");
+  EXPECT_NE(refusal({"scene=maze@1", "scene=hall@1", "lights=45@2"}, 0), "");
+  EXPECT_NE(refusal({"scene=x.json@1", "lights=64@2"}, 0).find("scene file"), std::string::npos);
+  EXPECT_NE(refusal({"drop=x.gltf@1", "lights=64@2"}, 0), "");
+  EXPECT_THROW(parse_scripted_change("lights= -1@3"), app::UsageError);
+  EXPECT_THROW(parse_scripted_change("lights=+64@3"), app::UsageError);
+  // A frame the session never reaches.
+  const std::string late = refusal({"screenshot=late.png@10"}, 3);
+  EXPECT_NE(late.find("past the last frame"), std::string::npos) << late;
+  EXPECT_NE(late.find("screenshot=late.png@10"), std::string::npos) << late;
+  EXPECT_NE(refusal({"tolerance=0.1@3"}, 3), "");
+  EXPECT_EQ(refusal({"tolerance=0.1@2"}, 3), "");
+  EXPECT_EQ(refusal({"screenshot=late.png@10"}, 0), "") << "--frames 0 runs until closed";
+  // Settings a render refuses: one missed-light draw, a typed size over the memory budget.
+  EXPECT_NE(refusal({"missed-draws=1@1"}, 0).find("--missed-draws"), std::string::npos);
+  EXPECT_EQ(refusal({"missed-draws=2@1"}, 0), "");
+  EXPECT_NE(refusal({"width=16384@1", "height=16384@2"}, 0).find("height=16384@2"),
+            std::string::npos);
+  EXPECT_EQ(refusal({"width=4096@1", "height=4096@2"}, 0), "");
+}
+
 TEST(ScriptedChanges, ResidentMemoryGrowsWithTouchedMemory) {
   const std::uint64_t before = current_resident_bytes();
   ASSERT_GT(before, 0u);
@@ -129,7 +185,7 @@ TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
   initial.image.width = 64;
   initial.image.height = 48;
   const auto check = [&](const std::vector<std::string>& texts) {
-    check_hover_pixels(parse_scripted_changes(texts), initial);
+    check_script(parse_scripted_changes(texts), initial, 0);
   };
   EXPECT_NO_THROW(check({"hover=63,47@3"}));
   EXPECT_THROW(check({"hover=64,10@3"}), app::UsageError);
@@ -160,11 +216,32 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
   apply_scripted_change(s, parse_scripted_change("view=error@0"));
   EXPECT_EQ(s.view, ViewMode::error);
   EXPECT_TRUE(s.want_reference);
-  EXPECT_THROW(apply_scripted_change(s, parse_scripted_change("lights=100@0")), app::UsageError);
+  // A count the scene lacks (check_script refuses those it can know) is logged and changes nothing.
+  s.request_dirty = false;
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("lights=100@0")), ScriptAction::none);
+  EXPECT_EQ(s.settings.scene.level, 6);
+  EXPECT_FALSE(s.request_dirty);
+  ASSERT_FALSE(s.messages.empty());
+  EXPECT_TRUE(s.messages.back().problem);
+  EXPECT_NE(s.messages.back().text.find("lights=100"), std::string::npos) << s.messages.back().text;
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("await=idle@0")),
             ScriptAction::await_idle);
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("screenshot=a.png@0")),
             ScriptAction::screenshot);
+}
+
+TEST(SettingsPanel, ANumberFieldStepsOverTheValuesARenderRefuses) {
+  const app::SettingSpec& draws = *app::find_setting("missed-draws");
+  const auto& range = std::get<app::IntRange>(draws.kind);
+  EXPECT_EQ(panel_int_value(draws, range, 0, 1), 2) << "'+' from off";
+  EXPECT_EQ(panel_int_value(draws, range, 2, 1), 0) << "'-' from the fewest draws";
+  EXPECT_EQ(panel_int_value(draws, range, 2, 3), 3);
+  EXPECT_EQ(panel_int_value(draws, range, 0, 100000), range.max);
+  EXPECT_EQ(panel_int_value(draws, range, 0, -5), 0);
+  const app::SettingSpec& depth = *app::find_setting("depth");
+  const auto& depth_range = std::get<app::IntRange>(depth.kind);
+  EXPECT_EQ(panel_int_value(depth, depth_range, 0, 1), 1);
+  EXPECT_EQ(panel_int_value(depth, depth_range, 64, 65), 64);
 }
 
 TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
@@ -191,12 +268,11 @@ TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
 
 TEST(ScriptedChanges, HoversAreCheckedOnlyAgainstTypedSizesAndWindowSizesParse) {
   app::Settings initial;  // fit: the size follows the window
-  EXPECT_NO_THROW(check_hover_pixels(parse_scripted_changes({"hover=900,700@3"}), initial));
-  EXPECT_THROW(
-      check_hover_pixels(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial),
-      app::UsageError);
-  EXPECT_NO_THROW(check_hover_pixels(
-      parse_scripted_changes({"width=100@1", "resolution=fit@2", "hover=900,70@3"}), initial));
+  EXPECT_NO_THROW(check_script(parse_scripted_changes({"hover=900,700@3"}), initial, 0));
+  EXPECT_THROW(check_script(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial, 0),
+               app::UsageError);
+  EXPECT_NO_THROW(check_script(
+      parse_scripted_changes({"width=100@1", "resolution=fit@2", "hover=900,70@3"}), initial, 0));
   ViewerState s;
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("window=900x700@1")),
             ScriptAction::resize_window);

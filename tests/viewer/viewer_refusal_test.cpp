@@ -132,6 +132,62 @@ TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
 // into the path field): the good one loads and renders; the bad one keeps the good scene on
 // screen, the session goes on (exit 0), and its message is logged whole: the same line
 
+// What a script would only fail at while it runs (a light count the scene lacks, one missed-light
+// draw, a typed size over the memory budget) or would drop without a word (a change past the
+// last frame) is refused before the window opens: one line naming the change, exit 2, nothing
+// written. Before: the screenshot of frame 1 was written and the run ended with exit 2, exit 1
+// or exit 0 without the late screenshot. A bad line of a --script file is named by its number.
+TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIsWritten) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  std::ofstream(path("script.txt")) << "await=idle@0\nlights=65@2\n";
+  const auto before = files_in(dir_);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--set", "lights=65@3"}, "got 'lights=65@3'"},
+      {{"--set", "lights= -1@3"}, "got 'lights= -1@3'"},
+      {{"--set", "screenshot=" + path("late.png") + "@10"}, "past the last frame"},
+      {{"--set", "missed-draws=1@2"}, "--missed-draws"},
+      {{"--set", "width=16384@2", "--set", "height=16384@3"}, "got 'height=16384@3'"},
+      {{"--script", path("script.txt")}, "got 'lights=65@2'"},
+  };
+  for (const auto& [change, message] : cases) {
+    std::vector<std::string> args = {"--lights", "64",
+                                     "--width",  "32",
+                                     "--height", "24",
+                                     "--spp",    "1",
+                                     "--window", "640x480",
+                                     "--frames", "5",
+                                     "--set",    "screenshot=" + path("early.png") + "@1"};
+    args.insert(args.end(), change.begin(), change.end());
+    const CommandRun r = run_viewer(args);
+    EXPECT_EQ(r.exit_code, 2) << change[1] << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_EQ(files_in(dir_), before) << change[1] << ": " << r.output;
+  }
+  std::ofstream(path("script.txt")) << "await=idle@0\n\nlights=x@2\n";
+  const CommandRun line = run_viewer({"--frames", "5", "--script", path("script.txt")});
+  EXPECT_EQ(line.exit_code, 2) << line.output;
+  EXPECT_NE(line.output.find("--script: " + path("script.txt") + " line 3: "), std::string::npos)
+      << line.output;
+}
+
+// A path with a newline or an escape in a message of the running viewer (printed by scripted
+// sessions) is escaped: each message one line, no escape sequence reaching the terminal.
+TEST_F(ViewerWindow, MessagesNamingAPathWithControlCharactersStayOneLineEach) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::string scene = path("evil\x1b[31mred\nsecond.json");
+  const CommandRun r = run_viewer({"--lights", "64", "--width", "32", "--height", "24", "--spp",
+                                   "1", "--window", "640x480", "--frames", "4", "--set",
+                                   "scene=" + scene + "@1", "--set", "await=idle@2"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_EQ(line_count(r.output), 2) << r.output;  // opening ..., cannot open ...
+  EXPECT_NE(r.output.find("opening " + path("evil\\x1b[31mred\\nsecond.json")), std::string::npos)
+      << r.output;
+}
+
 TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
