@@ -262,11 +262,12 @@ void check_script(const std::vector<ScriptedChange>& changes, const Settings& in
     } catch (const UsageError& e) {
       reject(change_text(c), e.what());
     }
-    if (c.key != "hover" || fit_divisor(at.resolution) != 0) continue;
+    const bool pixel = c.key == "hover" || (c.key == "inspect" && c.value != "off");
+    if (!pixel || fit_divisor(at.resolution) != 0) continue;
     int x = 0, y = 0;
     parse_pixel(c.value, x, y);
     if (x >= at.image.width || y >= at.image.height) {
-      reject(change_text(c), "hover is in image pixels and must be inside the " +
+      reject(change_text(c), c.key + " is in image pixels and must be inside the " +
                                  std::to_string(at.image.width) + "x" +
                                  std::to_string(at.image.height) + " image");
     }

@@ -54,8 +54,8 @@ std::uint64_t current_resident_bytes();
 // fail at when it runs, after earlier screenshots were written: a change at a frame past the
 // last of `frames` (0: the session runs until the window closes), a light count the scene at its
 // frame does not have, settings a render refuses (an image over the memory budget, one
-// missed-light draw), and a hover pixel outside the image. The settings at a change are the
-// initial ones with the script's changes up to that frame applied.
+// missed-light draw), and a hover or inspected pixel outside a typed-size image. The settings at a
+// change are the initial ones with the script's changes up to that frame applied.
 void check_script(const std::vector<ScriptedChange>& changes, const Settings& initial, int frames);
 
 // Applies a control change to the state, or returns the action the frame loop must perform. A

@@ -166,8 +166,8 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
   fit.resolution = state.settings.resolution;
   state.fit_pending = false;
   if (divisor == 0 || state.image_area_width <= 0 || state.image_area_height <= 0) return;
-  const int width = std::clamp(state.image_area_width / divisor, 1, kMaxImageSide);
-  const int height = std::clamp(state.image_area_height / divisor, 1, kMaxImageSide);
+  const auto [width, height] =
+      fit_render_size(state.image_area_width, state.image_area_height, divisor);
   if (width != fit.width || height != fit.height) {
     fit.width = width;
     fit.height = height;

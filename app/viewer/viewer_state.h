@@ -100,6 +100,12 @@ void mark_changed(ViewerState& state, const std::string& label);
 // the reference unless the view on screen compares with it.
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label);
 
+// The render size of a fit resolution for an image area of area_width x area_height pixels:
+// 1/divisor of it, at least 1x1, and scaled down (the aspect kept) to what the memory budget
+// allows a render with the rt reference (app/render_command.h), so no window size makes the
+// render fail; such a picture is shown enlarged, as fit/2's is.
+std::array<int, 2> fit_render_size(int area_width, int area_height, int divisor);
+
 // The image area asks for a new render size (fit resolution): like a typed size, but the
 // resolution stays fit and a reference asked for is kept asking for (at the new size).
 void set_fit_size(ViewerState& state, int width, int height);

@@ -1,5 +1,6 @@
 // The viewer's pure parts: camera moves, scripted changes, the UI-side image and its pixel
 // errors, the trade plot's points and the frame report.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -10,9 +11,11 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "app/render_command.h"
 #include "app/viewer/camera_control.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/frame_log.h"
+#include "app/viewer/inspector_panel.h"
 #include "app/viewer/scripted_changes.h"
 #include "app/viewer/settings_panel.h"
 #include "app/viewer/trade_plot.h"
@@ -188,6 +191,9 @@ TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
     check_script(parse_scripted_changes(texts), initial, 0);
   };
   EXPECT_NO_THROW(check({"hover=63,47@3"}));
+  // So is a pixel pinned in the inspector, which would wait for an inspection forever.
+  EXPECT_THROW(check({"inspect=64,10@3"}), app::UsageError);
+  EXPECT_NO_THROW(check({"inspect=63,47@3", "inspect=off@4"}));
   EXPECT_THROW(check({"hover=64,10@3"}), app::UsageError);
   EXPECT_THROW(check({"hover=10,48@3"}), app::UsageError);
   // The size in effect at the hover's frame counts: a later change does not, an earlier one
@@ -242,6 +248,33 @@ TEST(SettingsPanel, ANumberFieldStepsOverTheValuesARenderRefuses) {
   const auto& depth_range = std::get<app::IntRange>(depth.kind);
   EXPECT_EQ(panel_int_value(depth, depth_range, 0, 1), 1);
   EXPECT_EQ(panel_int_value(depth, depth_range, 64, 65), 64);
+}
+
+TEST(InspectorPanel, APinnedPixelOutsideTheImageSaysSoInsteadOfInspectingForever) {
+  ViewerState s;
+  EXPECT_EQ(inspector_wait_text(s), "");
+  s.status.width = 32;
+  s.status.height = 24;
+  s.inspect_pixel = std::array<int, 2>{31, 23};
+  EXPECT_EQ(inspector_wait_text(s), "inspecting...");
+  s.inspect_pixel = std::array<int, 2>{100, 10};  // pinned before the window shrank
+  EXPECT_NE(inspector_wait_text(s).find("outside the 32x24 image"), std::string::npos)
+      << inspector_wait_text(s);
+}
+
+// A fit resolution renders what the window's image area holds: within the memory budget at any
+// window size, so a huge window shows the picture enlarged instead of failing the render (before:
+// `view --window 16000x12000` exited 2 naming --width/--height, which were never given).
+TEST(ViewerState, AFitSizeStaysWithinTheMemoryBudgetAtAnyWindowSize) {
+  EXPECT_EQ(fit_render_size(1000, 800, 2), (std::array<int, 2>{500, 400}));
+  EXPECT_EQ(fit_render_size(0, -3, 1), (std::array<int, 2>{1, 1}));
+  const std::array<int, 2> big = fit_render_size(15562, 7992, 1);
+  app::Settings settings;
+  settings.image.width = big[0];
+  settings.image.height = big[1];
+  EXPECT_NO_THROW(app::check_memory_budget(settings, true)) << big[0] << "x" << big[1];
+  EXPECT_GT(big[0], 8000);
+  EXPECT_NEAR(static_cast<double>(big[0]) / big[1], 15562.0 / 7992.0, 1e-3);
 }
 
 TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
