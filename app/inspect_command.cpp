@@ -12,6 +12,7 @@
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "lev/methods.h"
+#include "renderer/auto_exposure.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_inputs.h"
 
@@ -236,8 +237,9 @@ std::string inspection_table(const renderer::PixelInspection& inspection, int to
   return out;
 }
 
-int run_inspect(const Settings& settings, const InspectFlags& flags) {
-  const renderer::RenderSettings render_settings = render_settings_from(settings);
+int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
+  Settings settings = flag_settings;
+  render_settings_from(settings);  // refuses what a render refuses, before the scene is built
   int x = 0, y = 0;
   parse_inspect_pixel(flags.pixel, settings.image.width, settings.image.height, x, y);
   if (flags.top < 0)
@@ -249,6 +251,14 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   if (table_on_stdout) outputs.push_back({"the table", kStandardOutputName, ".txt", "text"});
   check_output_paths(outputs, settings_input_files(settings.scene));
   const std::unique_ptr<LoadedScene> loaded = load_scene(settings.scene);
+  // The tolerance is in displayed units: an auto exposure (a glTF's default) is chosen as
+  // `render` chooses it, so the selector culls what the render's culls.
+  if (settings.display.exposure_auto) {
+    settings.display.exposure_ev =
+        renderer::auto_exposure_ev(loaded->scene, *loaded->rays, render_settings_from(settings),
+                                   settings.display.curve, nullptr);
+  }
+  const renderer::RenderSettings render_settings = render_settings_from(settings);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
   const auto start = std::chrono::steady_clock::now();
@@ -262,10 +272,11 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   // The scene's name is the file's to choose: escaped, so it cannot split the header line or
   // drive the terminal.
   char header[256];
-  std::snprintf(header, sizeof header, ", %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
+  std::snprintf(header, sizeof header,
+                ", %llu lights, %s, tolerance %g at exposure %g EV (inspected in %.1f ms)\n",
                 static_cast<unsigned long long>(loaded->scene.lights.light_count),
                 lev::method_info(settings.method.method).name, settings.method.tolerance,
-                inspect_ms);
+                settings.display.exposure_ev, inspect_ms);
   const std::string table = scenes::escape_control_characters(loaded->scene.name) + header +
                             inspection_table(inspection, flags.top);
   // On standard output the table is the command's output: a write that fails (a full disk, a

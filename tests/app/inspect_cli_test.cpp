@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/gltf_files.h"
 #include "tests/support/json_file.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
@@ -111,6 +113,45 @@ TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
       run_levrt({"inspect", "--pixel", "1,1", "--json", (dir.path() / "pixel.txt").string()});
   EXPECT_EQ(wrong_extension.exit_code, 2) << wrong_extension.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "pixel.txt"));
+}
+
+// A glTF opens at an auto exposure, and the tolerance is in displayed units: inspect chooses the
+// EV as render does, so it lists what the render culled (before: it inspected at EV 0, where the
+// dim light of this file is tested, while the render at about -10.7 EV culls it).
+TEST(InspectCli, AGltfIsInspectedAtTheExposureTheRenderChooses) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-exposure-");
+  const std::string scene = (dir.path() / "two.gltf").string();
+  levrt_test::write_file(scene, levrt_test::gltf_document(levrt_test::triangle_buffers() + R"(,
+        "nodes": [{"mesh": 0, "children": [1, 2]},
+                  {"translation": [0.2, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                  {"translation": [0.6, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 1}}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "point", "intensity": 1000}, {"type": "point", "intensity": 1}]}})"));
+  const std::string stats = (dir.path() / "stats.json").string();
+  const std::vector<std::string> view = {"--scene", scene, "--width", "32", "--height", "24"};
+  std::vector<std::string> render = {"render", "--quiet", "--stats", stats};
+  render.insert(render.end(), view.begin(), view.end());
+  ASSERT_EQ(run_levrt(render).exit_code, 0);
+  const double ev = read_json(stats)["exposure_ev"].get<double>();
+  ASSERT_LT(ev, -5.0);
+  const auto table = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> command = {"inspect", "--pixel", "16,12"};
+    command.insert(command.end(), view.begin(), view.end());
+    command.insert(command.end(), extra.begin(), extra.end());
+    const auto run = run_levrt(command);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return run.output.substr(run.output.find("\npixel "));  // after the timed header
+  };
+  char typed[64];
+  std::snprintf(typed, sizeof typed, "%.17g", ev);
+  const std::string at_auto = table({});
+  EXPECT_EQ(at_auto, table({"--exposure", typed}));
+  EXPECT_NE(at_auto, table({"--exposure", "0"}));
+  EXPECT_NE(at_auto.find("1 culled"), std::string::npos) << at_auto;
 }
 
 // The scene's name is the file's to choose: escaped in the table's first line, as `render` and
