@@ -334,13 +334,15 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "trade") {
     // For tests: the trade plot's points and the reference they belong to.
-    std::printf("levrt view: trade plot at frame %d: %zu points, reference %llu, rt passes %d\n",
-                c.frame, state.trade.points.size(),
-                static_cast<unsigned long long>(state.trade.reference_generation),
-                state.status.reference_passes_done);
+    std::fprintf(state.notes,
+                 "levrt view: trade plot at frame %d: %zu points, reference %llu, rt passes %d\n",
+                 c.frame, state.trade.points.size(),
+                 static_cast<unsigned long long>(state.trade.reference_generation),
+                 state.status.reference_passes_done);
     for (const TradePoint& p : state.trade.points) {
-      std::printf("levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
-                  lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
+      std::fprintf(state.notes,
+                   "levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
+                   lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
     }
     return ScriptAction::none;
   }
@@ -368,8 +370,8 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     return ScriptAction::none;
   }
   if (c.key == "memory") {
-    std::printf("levrt view: resident memory at frame %d: %llu bytes\n", c.frame,
-                static_cast<unsigned long long>(current_resident_bytes()));
+    std::fprintf(state.notes, "levrt view: resident memory at frame %d: %llu bytes\n", c.frame,
+                 static_cast<unsigned long long>(current_resident_bytes()));
     return ScriptAction::none;
   }
   if (c.key == "window") return ScriptAction::resize_window;

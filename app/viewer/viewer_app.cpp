@@ -345,6 +345,10 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   state.print_messages = flags.frames > 0;
   state.other_inputs = inputs;
   state.other_outputs = outputs;
+  const bool output_on_stdout =
+      std::any_of(outputs.begin(), outputs.end(),
+                  [](const OutputPath& o) { return o.path == kStandardOutputName; });
+  state.notes = output_on_stdout ? stderr : stdout;
   std::string controls_written;
   FrameLog log;
   log.enabled = flags.report_fps;
@@ -519,13 +523,14 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   if (!bad_input_error.empty()) throw UsageError(bad_input_error);
   if (!snapshot_error.empty()) throw std::runtime_error("view: " + snapshot_error);
   if (!snapshots.message().empty() && flags.frames > 0)
-    std::printf("levrt view: %s\n", scenes::escape_control_characters(snapshots.message()).c_str());
-  if (flags.report_fps) std::fputs(frame_report(log).c_str(), stdout);
+    std::fprintf(state.notes, "levrt view: %s\n",
+                 scenes::escape_control_characters(snapshots.message()).c_str());
+  if (flags.report_fps) std::fputs(frame_report(log).c_str(), state.notes);
   if (!flags.screenshot.empty()) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
-    std::printf("levrt view: wrote %s (%dx%d)\n",
-                scenes::escape_control_characters(flags.screenshot).c_str(), width, height);
+    std::fprintf(state.notes, "levrt view: wrote %s (%dx%d)\n",
+                 scenes::escape_control_characters(flags.screenshot).c_str(), width, height);
   }
   return exit_code;
 }

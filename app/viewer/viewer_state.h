@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
@@ -85,6 +86,10 @@ struct ViewerState {
   std::vector<std::string> recent_scenes;
   std::vector<LogMessage> messages;
   bool print_messages = false;
+  // Where the scripted reports (memory, trade plot) and the closing notes go: standard output,
+  // or stderr when an output (a screenshot, the controls) is standard output, so that stream
+  // holds that output alone.
+  std::FILE* notes = stdout;
   std::uint64_t load_errors_seen = 0;
   std::uint64_t scene_loads_seen = 0;
   // The camera the user had before asking for another scene: a scene that cannot be loaded

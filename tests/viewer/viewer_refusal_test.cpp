@@ -174,6 +174,32 @@ TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIs
       << line.output;
 }
 
+// A screenshot on standard output is all that stream holds: the scripted reports and the closing
+// "wrote" note go to stderr, as `render --out -` sends its summary there. Before, the note was
+// appended to the PNG, and a memory report written before it.
+TEST_F(ViewerWindow, AScreenshotOnStandardOutputIsAloneOnIt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const XvfbServer xvfb;
+  ASSERT_FALSE(xvfb.display().empty());
+  const CommandRun r =
+      run_shell("{ DISPLAY=" + xvfb.display() +
+                " ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " + shell_quote(LEVRT_BINARY) +
+                " view --lights 64 --width 32 --height 24 --spp 1 --window 640x480 --frames 3"
+                " --set memory=report@1 --set trade=report@2 --screenshot - > " +
+                shell_quote(path("shot.png")) + "; }");  // stderr alone to the output read
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("resident memory at frame 1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("trade plot at frame 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("wrote -"), std::string::npos) << r.output;
+  const std::string png = read_file_bytes(path("shot.png"));
+  EXPECT_EQ(png.rfind("\x89PNG", 0), 0u);
+  const std::string iend("IEND\xae\x42\x60\x82", 8);
+  ASSERT_GE(png.size(), iend.size());
+  EXPECT_EQ(png.substr(png.size() - iend.size()), iend) << "trailing bytes after the PNG";
+  EXPECT_TRUE(read_png(path("shot.png")).ok());
+}
+
 // A path with a newline or an escape in a message of the running viewer (printed by scripted
 // sessions) is escaped: each message one line, no escape sequence reaching the terminal.
 TEST_F(ViewerWindow, MessagesNamingAPathWithControlCharactersStayOneLineEach) {
