@@ -229,6 +229,13 @@ TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("snapshot failed"), std::string::npos) << r.output;
   EXPECT_EQ(files_in(dir_), before);
+  // A path whose last name is too long: the folders made before it go too (they stayed).
+  const CommandRun long_name = run_viewer(
+      {"--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--frames", "3", "--set",
+       "snapshot=" + path("new") + "/sub/" + std::string(300, 'a') + "@1"});
+  EXPECT_EQ(long_name.exit_code, 1) << long_name.output;
+  EXPECT_EQ(line_count(long_name.output), 1) << long_name.output;
+  EXPECT_EQ(files_in(dir_), before) << long_name.output;
 }
 
 // Without await=idle the snapshot waits for the render: all passes of it, not the preview.
