@@ -200,6 +200,37 @@ TEST_F(ViewerWindow, AScreenshotOnStandardOutputIsAloneOnIt) {
   EXPECT_TRUE(read_png(path("shot.png")).ok());
 }
 
+// A scene whose file name is not UTF-8 (Latin-1 'é'): the controls file and a snapshot's stats
+// are written, the invalid byte as U+FFFD. Before: exit 1 with nlohmann's "invalid UTF-8 byte".
+TEST_F(ViewerWindow, ASceneFileNameThatIsNotUtf8IsWrittenToTheControlsAndTheSnapshot) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::string scene = path("caf\xe9.gltf");
+  levrt_test::write_file(scene, levrt_test::gltf_document(levrt_test::triangle_buffers() + R"(,
+        "nodes": [{"mesh": 0, "children": [1]},
+                  {"translation": [0.2, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+  const CommandRun r =
+      run_viewer({"--scene", scene, "--width", "32", "--height", "24", "--spp", "1", "--window",
+                  "640x480", "--frames", "3", "--controls", path("controls.json"), "--set",
+                  "snapshot=" + path("snap") + "@1"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json controls = read_json(path("controls.json"));
+  ASSERT_TRUE(controls.is_object()) << read_file_bytes(path("controls.json"));
+  EXPECT_EQ(controls["settings"]["scene"], path("caf\xef\xbf\xbd.gltf"));
+  nlohmann::json stats;
+  for (const auto& entry : fs::directory_iterator(dir_ / "snap")) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 11 && name.substr(name.size() - 11) == "_stats.json")
+      stats = read_json(entry.path());
+  }
+  ASSERT_TRUE(stats.is_object()) << r.output;
+  EXPECT_EQ(stats["scene"], "caf\xef\xbf\xbd");
+}
+
 // A path with a newline or an escape in a message of the running viewer (printed by scripted
 // sessions) is escaped: each message one line, no escape sequence reaching the terminal.
 TEST_F(ViewerWindow, MessagesNamingAPathWithControlCharactersStayOneLineEach) {
