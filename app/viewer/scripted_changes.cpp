@@ -75,6 +75,9 @@ std::optional<double> parse_number(const std::string& text, double lo, double hi
   return v;
 }
 
+// The latest frame a change may name (about 19 days of frames at 60 per second).
+constexpr long kMaxScriptFrame = 100000000;
+
 // The error mask's largest threshold, in the error unit.
 constexpr double kMaxMaskThresholdPct = 100.0;
 
@@ -97,8 +100,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const long f = std::strtol(frame.c_str(), &end, 10);
-  if (frame.empty() || *end != '\0' || errno != 0 || f < 0 || f > 100000000) {
-    reject(text, "the frame must be a non-negative integer");
+  if (frame.empty() || *end != '\0' || errno != 0 || f < 0 || f > kMaxScriptFrame) {
+    reject(text, "the frame must be a whole number from 0 to " + std::to_string(kMaxScriptFrame));
   }
   c.frame = static_cast<int>(f);
 

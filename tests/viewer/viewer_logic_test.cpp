@@ -101,6 +101,19 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   }
 }
 
+TEST(ScriptedChanges, AFrameOutOfRangeIsRefusedNamingTheRange) {
+  for (const char* bad : {"tolerance=0.1@99999999999", "tolerance=0.1@100000001"}) {
+    try {
+      parse_scripted_change(bad);
+      FAIL() << bad << " was accepted";
+    } catch (const app::UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("a whole number from 0 to 100000000"), std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_EQ(parse_scripted_change("tolerance=0.1@100000000").frame, 100000000);
+}
+
 TEST(ScriptedChanges, ARenamedKeyNamesItsNewName) {
   try {
     parse_scripted_change("samples=4@2");
