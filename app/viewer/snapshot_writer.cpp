@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,9 @@ void SnapshotWriter::run(const SnapshotJob& job) {
   std::error_code ec;
   const std::vector<fs::path> made = missing_folders(job.folder);
   try {
+    // The panel's folder field, emptied: said so, not as filesystem_error's "Invalid argument []".
+    if (job.folder.empty())
+      throw std::invalid_argument("no folder given (the folder field is empty)");
     const fs::path stem = fs::path(job.folder) / job.base;
     const std::string image = stem.string() + ".png";
     const std::string heatmap = stem.string() + "_" + job.heatmap_name + ".png";
