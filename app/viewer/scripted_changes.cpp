@@ -143,7 +143,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "window") {
     int w = 0, h = 0;
     if (!parse_window_size(c.value, w, h))
-      reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
+      reject(text, "window needs WIDTHxHEIGHT from 320x240 to " + std::to_string(kMaxImageSide) +
+                       "x" + std::to_string(kMaxImageSide));
   } else if (c.key == "snapshot" || c.key == "screenshot" || c.key == "drop") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {

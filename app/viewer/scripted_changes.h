@@ -31,7 +31,8 @@ struct ScriptedChange {
   int frame = 0;
 };
 
-// WIDTHxHEIGHT, at least 320x240 (--window and the scripted `window` key); false when malformed.
+// WIDTHxHEIGHT, from 320x240 to kMaxImageSide a side (--window and the scripted `window` key);
+// false when malformed.
 bool parse_window_size(const std::string& text, int& width, int& height);
 
 // Throws UsageError ("--set: ...") for a malformed change or a value its key rejects.

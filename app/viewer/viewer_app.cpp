@@ -62,7 +62,9 @@ struct WindowSize {
 WindowSize parse_window_flag(const std::string& text) {
   WindowSize size;
   if (!parse_window_size(text, size.width, size.height))
-    throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
+    throw UsageError("--window: must be WIDTHxHEIGHT from 320x240 to " +
+                     std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide) +
+                     ", got '" + text + "'");
   return size;
 }
 

@@ -2,6 +2,8 @@
 // bad scripted changes, scripts and outputs that are devices or inputs, writers that write a
 // device in place, a snapshot that cannot be written, a full device, a signal during the scene
 // load. Each exits with its code and one line, and leaves the folder as it was.
+#include <array>
+
 #include "tests/support/viewer_window.h"
 
 namespace {
@@ -29,6 +31,19 @@ TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
   const CommandRun r =
       run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view --window 10x10");
   EXPECT_EQ(r.exit_code, 2) << r.output;
+  // The message names the range the value left: the largest side, a frame count's digits.
+  for (const auto& [flag, value, range] : std::vector<std::array<std::string, 3>>{
+           {"--window", "99999x240", "from 320x240 to 16384x16384"},
+           {"--frames", "1e3", "must be an integer in [0, 2147483647], got '1e3'"},
+           {"--frames", "-1", "must be an integer in [0, 2147483647], got '-1'"},
+           {"--frames", "99999999999", "must be an integer in [0, 2147483647]"}}) {
+    const CommandRun refused = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view " +
+                                         flag + " " + shell_quote(value));
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_EQ(line_count(refused.output), 1) << refused.output;
+    EXPECT_NE(refused.output.find(flag + ": "), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find(range), std::string::npos) << refused.output;
+  }
 }
 
 TEST_F(ViewerWindow, AScriptThatIsNotASmallRegularFileIsRefusedBeforeItIsRead) {
