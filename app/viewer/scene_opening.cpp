@@ -77,6 +77,12 @@ void follow_scene_loads(ViewerState& state) {
 }
 
 void copy_camera_flags(ViewerState& state) {
+  // Before the scene has loaded its preset camera is not known: no made-up view is given out.
+  if (!scene_ready(state)) {
+    log_message(state, "camera: not known until the scene has loaded; copy it once it is shown",
+                true);
+    return;
+  }
   const std::string flags = camera_flags_text(current_camera(state));
   if (ImGui::GetCurrentContext()) ImGui::SetClipboardText(flags.c_str());
   log_message(state, "camera: " + flags, false);

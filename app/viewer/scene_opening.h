@@ -34,7 +34,8 @@ bool open_dropped_files(ViewerState& state, const std::vector<std::string>& path
 // a scene file that loaded goes to the front of the recent list.
 void follow_scene_loads(ViewerState& state);
 
-// The current view as --camera-* flags (app/camera_flags.h): to the clipboard and the log.
+// The current view as --camera-* flags (app/camera_flags.h): to the clipboard and the log; while
+// the scene the settings name is loading, a message saying so instead.
 void copy_camera_flags(ViewerState& state);
 
 }  // namespace app::viewer

@@ -393,7 +393,13 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
       const bool frame_writes = std::any_of(script.begin(), script.end(), [&](const auto& c) {
         return c.frame == script_frame && (c.key == "screenshot" || c.key == "snapshot");
       });
-      const bool hold_frame = pending_snapshot || (first_load_pending && frame_writes);
+      // Copy camera waits for the scene's camera, as a screenshot waits for its first load.
+      const bool frame_copies = std::any_of(script.begin(), script.end(), [&](const auto& c) {
+        return c.frame == script_frame && c.key == "copy";
+      });
+      const bool hold_frame =
+          pending_snapshot || (first_load_pending && frame_writes) ||
+          (frame_copies && !scene_ready(state) && state.status.phase != WorkerPhase::failed);
       if (awaiting == Await::nothing && !hold_frame) {
         for (const ScriptedChange& c : script) {
           if (c.frame != script_frame) continue;
