@@ -78,6 +78,28 @@ TEST(CameraControl, ZoomScalesTheDistance) {
   EXPECT_GT(glm::length(zoom_camera(c, 0.0f).position - c.target), 0.0f);
 }
 
+// No wheel, drag or pan takes the camera past the camera flags' bound (1e6): some 300 wheel
+// notches out used to put the eye past 1.8e18, where Embree asserts (the viewer died, SIGABRT).
+TEST(CameraControl, NoMoveLeavesTheCameraBound) {
+  renderer::Camera c = test_camera();
+  for (int i = 0; i < 1000; ++i) c = zoom_camera(c, 1.0f / 0.88f);
+  EXPECT_TRUE(camera_within_bounds(c));
+  EXPECT_GT(glm::length(c.position - c.target), 1e5f) << "the zoom goes out to the bound";
+  EXPECT_EQ(c.target, test_camera().target);
+  for (int i = 0; i < 100; ++i) c = orbit_camera(c, 0.3f, 0.05f);
+  EXPECT_TRUE(camera_within_bounds(c));
+  // Back in, the zoom works as before.
+  for (int i = 0; i < 1000; ++i) c = zoom_camera(c, 0.88f);
+  EXPECT_NEAR(glm::length(c.position - c.target), 1e-3f, 1e-4f);
+  for (int i = 0; i < 1000; ++i) c = pan_camera(zoom_camera(c, 1e4f), 0.7f, 0.4f);
+  EXPECT_TRUE(camera_within_bounds(c));
+  renderer::Camera ortho = test_camera();
+  ortho.orthographic_half_height = 10.0f;
+  for (int i = 0; i < 1000; ++i) ortho = zoom_camera(ortho, 2.0f);
+  EXPECT_TRUE(camera_within_bounds(ortho));
+  EXPECT_GT(ortho.orthographic_half_height, 1e5f);
+}
+
 TEST(ScriptedChanges, ParseValidChanges) {
   const ScriptedChange a = parse_scripted_change("tolerance=0.1@12");
   EXPECT_EQ(a.key, "tolerance");
