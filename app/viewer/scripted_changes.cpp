@@ -240,6 +240,17 @@ void check_script(const std::vector<ScriptedChange>& changes, const Settings& in
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return changes[a].frame < changes[b].frame;
   });
+  // What a render refuses (an image over the memory budget, one missed-light draw); a fit
+  // resolution's size follows the window, so only a typed one is checked.
+  const auto check_renders = [](const Settings& s) {
+    Settings probe = s;
+    if (fit_divisor(s.resolution) != 0) probe.image.width = probe.image.height = 1;
+    render_settings_from(probe);
+    if (fit_divisor(s.resolution) == 0) check_memory_budget(s, false);
+  };
+  // What the command line's settings themselves break is named by their flags, not blamed on the
+  // first change.
+  check_renders(initial);
   Settings at = initial;
   for (const std::size_t h : order) {
     const ScriptedChange& c = changes[h];
@@ -254,10 +265,8 @@ void check_script(const std::vector<ScriptedChange>& changes, const Settings& in
           if (const scenes::SceneModel* model = scenes::find_scene_model(at.scene.name))
             at.scene.level = model->default_level;
         }
-        // What the worker refuses only when it renders (an image over the memory budget, one
-        // missed-light draw) is refused before the window opens.
-        render_settings_from(at);
-        if (at.resolution == "typed") check_memory_budget(at, false);
+        // What the worker refuses only when it renders is refused before the window opens.
+        check_renders(at);
       } else if (c.key == "drop" && scenes::is_scene_file_name(c.value)) {
         at.scene.name = c.value;
       } else if (c.key == "lights") {

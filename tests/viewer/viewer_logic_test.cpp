@@ -208,6 +208,16 @@ TEST(ScriptedChanges, WhatTheRunningScriptWouldFailAtIsRefusedBeforeItRuns) {
   EXPECT_NE(refusal({"width=16384@1", "height=16384@2"}, 0).find("height=16384@2"),
             std::string::npos);
   EXPECT_EQ(refusal({"width=4096@1", "height=4096@2"}, 0), "");
+  // A flag's own bad value is named by the flag, not blamed on the first change.
+  app::Settings one_draw;
+  one_draw.image.missed_draws = 1;
+  try {
+    check_script(parse_scripted_changes({"tolerance=0.1@1"}), one_draw, 0);
+    FAIL() << "--missed-draws 1 was accepted";
+  } catch (const app::UsageError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--missed-draws: ", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("tolerance=0.1@1"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ScriptedChanges, ResidentMemoryGrowsWithTouchedMemory) {
