@@ -1,5 +1,6 @@
 #include "app/viewer/viewer_app.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #define GLFW_INCLUDE_NONE
@@ -189,6 +190,16 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
   }
 }
 
+// Whether an output goes to standard output: "-", or a name for the file or pipe it is
+// (/dev/stdout, /proc/self/fd/1).
+bool writes_standard_output(const std::string& path) {
+  if (path == kStandardOutputName) return true;
+  struct stat out {
+  }, named{};
+  return ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(path.c_str(), &named) == 0 &&
+         out.st_dev == named.st_dev && out.st_ino == named.st_ino;
+}
+
 void write_screenshot(GLFWwindow* window, const std::string& path) {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window, &width, &height);
@@ -349,7 +360,7 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   state.other_outputs = outputs;
   const bool output_on_stdout =
       std::any_of(outputs.begin(), outputs.end(),
-                  [](const OutputPath& o) { return o.path == kStandardOutputName; });
+                  [](const OutputPath& o) { return writes_standard_output(o.path); });
   state.notes = output_on_stdout ? stderr : stdout;
   std::string controls_written;
   FrameLog log;

@@ -213,6 +213,18 @@ TEST_F(ViewerWindow, AScreenshotOnStandardOutputIsAloneOnIt) {
   ASSERT_GE(png.size(), iend.size());
   EXPECT_EQ(png.substr(png.size() - iend.size()), iend) << "trailing bytes after the PNG";
   EXPECT_TRUE(read_png(path("shot.png")).ok());
+  // Standard output named by a path, a pipe: the same.
+  const CommandRun named = run_shell(
+      "{ { DISPLAY=" + xvfb.display() + " ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " +
+      shell_quote(LEVRT_BINARY) +
+      " view --lights 64 --width 32 --height 24 --spp 1 --window 640x480 --frames 3"
+      " --set memory=report@1 --screenshot /dev/stdout; echo \"levrt exit $?\" >&2; } | cat > " +
+      shell_quote(path("piped.png")) + "; }");
+  ASSERT_NE(named.output.find("levrt exit 0"), std::string::npos) << named.output;
+  EXPECT_NE(named.output.find("resident memory at frame 1"), std::string::npos) << named.output;
+  const std::string piped = read_file_bytes(path("piped.png"));
+  ASSERT_GE(piped.size(), iend.size());
+  EXPECT_EQ(piped.substr(piped.size() - iend.size()), iend) << "trailing bytes after the PNG";
 }
 
 // A scene whose file name is not UTF-8 (Latin-1 'é'): the controls file and a snapshot's stats
