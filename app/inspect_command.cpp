@@ -12,6 +12,8 @@
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "lev/methods.h"
+#include "renderer/auto_exposure.h"
+#include "scenes/scene_file.h"
 #include "scenes/scene_inputs.h"
 
 namespace app {
@@ -235,15 +237,28 @@ std::string inspection_table(const renderer::PixelInspection& inspection, int to
   return out;
 }
 
-int run_inspect(const Settings& settings, const InspectFlags& flags) {
-  const renderer::RenderSettings render_settings = render_settings_from(settings);
+int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
+  Settings settings = flag_settings;
+  render_settings_from(settings);  // refuses what a render refuses, before the scene is built
   int x = 0, y = 0;
   parse_inspect_pixel(flags.pixel, settings.image.width, settings.image.height, x, y);
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
-  check_output_paths({{"--json", flags.json, ".json", "JSON"}},
-                     settings_input_files(settings.scene));
+  // The table is an output too: on standard output (a file it is redirected to may not be an
+  // input, `>> scene.json`), or on stderr when the JSON takes standard output.
+  const bool table_on_stdout = flags.json != kStandardOutputName;
+  std::vector<OutputPath> outputs = {{"--json", flags.json, ".json", "JSON"}};
+  if (table_on_stdout) outputs.push_back({"the table", kStandardOutputName, ".txt", "text"});
+  check_output_paths(outputs, settings_input_files(settings.scene));
   const std::unique_ptr<LoadedScene> loaded = load_scene(settings.scene);
+  // The tolerance is in displayed units: an auto exposure (a glTF's default) is chosen as
+  // `render` chooses it, so the selector culls what the render's culls.
+  if (settings.display.exposure_auto) {
+    settings.display.exposure_ev =
+        renderer::auto_exposure_ev(loaded->scene, *loaded->rays, render_settings_from(settings),
+                                   settings.display.curve, nullptr);
+  }
+  const renderer::RenderSettings render_settings = render_settings_from(settings);
   const std::unique_ptr<lev::LightSelector> selector =
       lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
   const auto start = std::chrono::steady_clock::now();
@@ -254,12 +269,23 @@ int run_inspect(const Settings& settings, const InspectFlags& flags) {
   const nlohmann::ordered_json json = inspection_json(inspection);
   if (!flags.json.empty())
     write_output_files({{flags.json, [&json] { return json.dump(1) + "\n"; }}});
-  std::FILE* table = flags.json == kStandardOutputName ? stderr : stdout;
-  std::fprintf(
-      table, "%s, %llu lights, %s, tolerance %g (inspected in %.1f ms)\n",
-      loaded->scene.name.c_str(), static_cast<unsigned long long>(loaded->scene.lights.light_count),
-      lev::method_info(settings.method.method).name, settings.method.tolerance, inspect_ms);
-  std::fputs(inspection_table(inspection, flags.top).c_str(), table);
+  // The scene's name is the file's to choose: escaped, so it cannot split the header line or
+  // drive the terminal.
+  char header[256];
+  std::snprintf(header, sizeof header,
+                ", %llu lights, %s, tolerance %g at exposure %g EV (inspected in %.1f ms)\n",
+                static_cast<unsigned long long>(loaded->scene.lights.light_count),
+                lev::method_info(settings.method.method).name, settings.method.tolerance,
+                settings.display.exposure_ev, inspect_ms);
+  const std::string table = scenes::escape_control_characters(loaded->scene.name) + header +
+                            inspection_table(inspection, flags.top);
+  // On standard output the table is the command's output: a write that fails (a full disk, a
+  // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE.
+  if (table_on_stdout) {
+    write_output_files({{kStandardOutputName, [&table] { return table; }}});
+  } else {
+    std::fputs(table.c_str(), stderr);
+  }
   return 0;
 }
 

@@ -18,8 +18,21 @@ const CLI::Validator& non_empty_value() {
 }
 
 void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags) {
+  // Decimal digits only: CLI11's range check called '1e3' "not in range 0 to 2147483647".
+  static const CLI::Validator frame_count(
+      [](std::string& value) {
+        const std::string range =
+            "must be an integer in [0, " + std::to_string(std::numeric_limits<int>::max()) + "]";
+        if (value.empty() || value.size() > 10 ||
+            value.find_first_not_of("0123456789") != std::string::npos ||
+            std::stoll(value) > std::numeric_limits<int>::max()) {
+          return range + ", got '" + value + "'";
+        }
+        return std::string();
+      },
+      "", "frame count");
   command.add_option("--frames", flags.frames, "scripted: run this many UI frames, then exit")
-      ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+      ->check(frame_count);
   command
       .add_option("--screenshot", flags.screenshot,
                   "scripted: write the window to this PNG after the last frame")

@@ -5,10 +5,21 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "scenes/scene_validation.h"
+
 namespace app::viewer {
 namespace {
 
 constexpr float kMinDistance = 1e-3f;
+// A moved camera's position, target and orthographic half height stay within a scene's bound, as
+// the camera flags' do (app/camera_flags.h): Embree asserts on ray origins past about 1.8e18,
+// which some 300 wheel notches out used to reach (SIGABRT).
+constexpr float kMaxCameraCoordinate = scenes::kMaxCoordinate;
+
+bool within_bound(const glm::vec3& v) {
+  return std::abs(v.x) <= kMaxCameraCoordinate && std::abs(v.y) <= kMaxCameraCoordinate &&
+         std::abs(v.z) <= kMaxCameraCoordinate;
+}
 constexpr float kPoleMargin = 0.02f;  // radians kept between the view direction and the up axis
 
 glm::vec3 unit_up(const renderer::Camera& camera) {
@@ -24,6 +35,11 @@ glm::vec3 perpendicular(const glm::vec3& n) {
 }
 
 }  // namespace
+
+bool camera_within_bounds(const renderer::Camera& camera) {
+  return within_bound(camera.position) && within_bound(camera.target) &&
+         camera.orthographic_half_height <= kMaxCameraCoordinate;
+}
 
 renderer::Camera orbit_camera(const renderer::Camera& camera, float yaw, float pitch) {
   const glm::vec3 up = unit_up(camera);
@@ -42,7 +58,7 @@ renderer::Camera orbit_camera(const renderer::Camera& camera, float yaw, float p
   const glm::vec3 new_dir = std::cos(new_polar) * up + std::sin(new_polar) * turned;
   renderer::Camera result = camera;
   result.position = camera.target + distance * new_dir;
-  return result;
+  return camera_within_bounds(result) ? result : camera;
 }
 
 renderer::Camera pan_camera(const renderer::Camera& camera, float right, float up) {
@@ -62,19 +78,31 @@ renderer::Camera pan_camera(const renderer::Camera& camera, float right, float u
   renderer::Camera result = camera;
   result.position += move;
   result.target += move;
-  return result;
+  return camera_within_bounds(result) ? result : camera;
 }
 
 renderer::Camera zoom_camera(const renderer::Camera& camera, float factor) {
   const glm::vec3 offset = camera.position - camera.target;
   const float distance = glm::length(offset);
   if (distance <= 0.0f || !(factor > 0.0f)) return camera;
-  const float new_distance = std::max(distance * factor, kMinDistance);
+  float new_distance = std::max(distance * factor, kMinDistance);
+  // Out to the bound at most: the eye stops where a coordinate (or the orthographic half height)
+  // would pass it.
+  const glm::vec3 dir = offset / distance;
+  for (int i = 0; i < 3; ++i) {
+    if (dir[i] == 0.0f) continue;
+    const float room =
+        kMaxCameraCoordinate - (dir[i] > 0.0f ? camera.target[i] : -camera.target[i]);
+    new_distance = std::min(new_distance, 0.999f * room / std::abs(dir[i]));
+  }
+  if (camera.orthographic())
+    new_distance = std::min(
+        new_distance, 0.999f * distance * kMaxCameraCoordinate / camera.orthographic_half_height);
   renderer::Camera result = camera;
   result.position = camera.target + offset * (new_distance / distance);
   // An orthographic view does not change with distance: zooming narrows what it sees instead.
   if (camera.orthographic()) result.orthographic_half_height *= new_distance / distance;
-  return result;
+  return new_distance > 0.0f && camera_within_bounds(result) ? result : camera;
 }
 
 }  // namespace app::viewer

@@ -36,7 +36,9 @@ std::string controls_json(const ControlRects& rects, const Settings& settings, V
   }
   out["view"] = view_info(view).name;
   out["mouse_busy"] = mouse_busy;
-  return out.dump(1) + "\n";
+  // A scene path need not be UTF-8 (a Latin-1 file name): its invalid bytes are written as
+  // U+FFFD rather than failing the dump.
+  return out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace app::viewer

@@ -40,6 +40,17 @@ const PublishedInspection* current_inspection(const ViewerState& state) {
   return view;
 }
 
+std::string inspector_wait_text(const ViewerState& state) {
+  if (!state.inspect_pixel || current_inspection(state)) return "";
+  const int x = (*state.inspect_pixel)[0], y = (*state.inspect_pixel)[1];
+  const WorkerStatus& st = state.status;
+  if (st.width > 0 && st.height > 0 && (x >= st.width || y >= st.height)) {
+    return "outside the " + std::to_string(st.width) + "x" + std::to_string(st.height) +
+           " image: click a pixel of it";
+  }
+  return "inspecting...";
+}
+
 void draw_inspector_window(ViewerState& state, const ImVec2& picture_pos,
                            const ImVec2& picture_size) {
   if (!state.inspect_pixel) return;
@@ -60,7 +71,7 @@ void draw_inspector_window(ViewerState& state, const ImVec2& picture_pos,
     return;
   }
   if (!view) {
-    ImGui::TextDisabled("inspecting...");
+    ImGui::TextDisabled("%s", inspector_wait_text(state).c_str());
     ImGui::End();
     return;
   }

@@ -6,12 +6,19 @@
 
 #include <imgui.h>
 
+#include <string>
+
 #include "app/viewer/viewer_state.h"
 
 namespace app::viewer {
 
 // The inspection of the pinned pixel in the render shown, or null (none pinned, or not ready).
 const PublishedInspection* current_inspection(const ViewerState& state);
+
+// What the window says while it has no list to show: "inspecting...", or, for a pinned pixel
+// the render in flight does not have (a window or size change left it outside the image), that
+// it is outside the image (no inspection comes for it). Empty when there is a list, or no pin.
+std::string inspector_wait_text(const ViewerState& state);
 
 // The window, when a pixel is pinned; picture_pos and picture_size: the picture area's.
 void draw_inspector_window(ViewerState& state, const ImVec2& picture_pos,

@@ -10,7 +10,10 @@
 
 namespace app::viewer {
 
-void log_message(ViewerState& state, const std::string& text, bool problem) {
+void log_message(ViewerState& state, const std::string& raw_text, bool problem) {
+  // Paths and load errors are the user's bytes: escaped, each message stays one line in the pane
+  // and on stderr, and no escape sequence reaches the terminal.
+  const std::string text = scenes::escape_control_characters(raw_text);
   state.messages.push_back({text, problem});
   if (state.messages.size() > kMaxLogMessages)
     state.messages.erase(state.messages.begin(),
@@ -74,6 +77,12 @@ void follow_scene_loads(ViewerState& state) {
 }
 
 void copy_camera_flags(ViewerState& state) {
+  // Before the scene has loaded its preset camera is not known: no made-up view is given out.
+  if (!scene_ready(state)) {
+    log_message(state, "camera: not known until the scene has loaded; copy it once it is shown",
+                true);
+    return;
+  }
   const std::string flags = camera_flags_text(current_camera(state));
   if (ImGui::GetCurrentContext()) ImGui::SetClipboardText(flags.c_str());
   log_message(state, "camera: " + flags, false);

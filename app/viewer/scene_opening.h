@@ -18,7 +18,7 @@ inline constexpr std::size_t kMaxRecentScenes = 8;
 inline constexpr std::size_t kMaxLogMessages = 64;
 
 // Appends a message to the log pane (the oldest go past kMaxLogMessages); printed to stderr as
-// well when state.print_messages is set.
+// well when state.print_messages is set. Control characters are escaped (`\n`, `\x1b`).
 void log_message(ViewerState& state, const std::string& text, bool problem);
 
 // Asks for the scene file at `path` (a .json, .gltf or .glb, as --scene takes it). A path that
@@ -34,7 +34,8 @@ bool open_dropped_files(ViewerState& state, const std::vector<std::string>& path
 // a scene file that loaded goes to the front of the recent list.
 void follow_scene_loads(ViewerState& state);
 
-// The current view as --camera-* flags (app/camera_flags.h): to the clipboard and the log.
+// The current view as --camera-* flags (app/camera_flags.h): to the clipboard and the log; while
+// the scene the settings name is loading, a message saying so instead.
 void copy_camera_flags(ViewerState& state);
 
 }  // namespace app::viewer

@@ -11,9 +11,11 @@
 #include <fstream>
 #include <optional>
 
+#include "app/render_command.h"
 #include "app/scene_loading.h"
 #include "app/viewer/scene_opening.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_models.h"
 
 namespace app::viewer {
 namespace {
@@ -22,13 +24,18 @@ namespace {
   throw UsageError("--set: " + why + ", got '" + text + "'");
 }
 
+// Decimal digits only, as --lights takes them: strtoull alone would read " -1" as 2^64 - 1.
 std::uint64_t parse_count(const std::string& text, const std::string& change) {
-  char* end = nullptr;
-  errno = 0;
-  const unsigned long long n = std::strtoull(text.c_str(), &end, 10);
-  if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0)
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
     reject(change, "lights needs a light count");
+  errno = 0;
+  const unsigned long long n = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno != 0) reject(change, "lights needs a light count");
   return n;
+}
+
+std::string change_text(const ScriptedChange& c) {
+  return c.key + "=" + c.value + "@" + std::to_string(c.frame);
 }
 
 // The smallest window the viewer opens.
@@ -68,6 +75,9 @@ std::optional<double> parse_number(const std::string& text, double lo, double hi
   return v;
 }
 
+// The latest frame a change may name (about 19 days of frames at 60 per second).
+constexpr long kMaxScriptFrame = 100000000;
+
 // The error mask's largest threshold, in the error unit.
 constexpr double kMaxMaskThresholdPct = 100.0;
 
@@ -90,8 +100,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const long f = std::strtol(frame.c_str(), &end, 10);
-  if (frame.empty() || *end != '\0' || errno != 0 || f < 0 || f > 100000000) {
-    reject(text, "the frame must be a non-negative integer");
+  if (frame.empty() || *end != '\0' || errno != 0 || f < 0 || f > kMaxScriptFrame) {
+    reject(text, "the frame must be a whole number from 0 to " + std::to_string(kMaxScriptFrame));
   }
   c.frame = static_cast<int>(f);
 
@@ -133,7 +143,8 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   } else if (c.key == "window") {
     int w = 0, h = 0;
     if (!parse_window_size(c.value, w, h))
-      reject(text, "window needs WIDTHxHEIGHT, at least 320x240");
+      reject(text, "window needs WIDTHxHEIGHT from 320x240 to " + std::to_string(kMaxImageSide) +
+                       "x" + std::to_string(kMaxImageSide));
   } else if (c.key == "snapshot" || c.key == "screenshot" || c.key == "drop") {
     if (c.value.empty()) reject(text, c.key + " needs a path");
   } else if (c.key == "await") {
@@ -178,12 +189,25 @@ std::vector<std::string> read_script_file(const std::string& path) {
   if (!in) throw UsageError("--script: cannot read '" + path + "'");
   std::vector<std::string> lines;
   std::uintmax_t bytes = 0;
+  std::size_t number = 0;
   for (std::string line; std::getline(in, line);) {
+    ++number;
     // A file that grew since it was measured stops at the limit too.
     bytes += line.size() + 1;
     if (bytes > kMaxScriptFileBytes + 1)
       throw UsageError("--script: the file changed while it was read, got '" + path + "'");
-    if (!line.empty()) lines.push_back(line);
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a script saved with CRLF
+    if (line.empty()) continue;
+    // A bad line is named by the file and its line number, not only by its text.
+    try {
+      parse_scripted_change(line);
+    } catch (const UsageError& e) {
+      std::string why = e.what();
+      const std::string prefix = "--set: ";
+      if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
+      throw UsageError("--script: " + path + " line " + std::to_string(number) + ": " + why);
+    }
+    lines.push_back(line);
   }
   if (in.bad()) throw UsageError("--script: cannot read '" + path + "'");
   return lines;
@@ -196,35 +220,69 @@ std::uint64_t current_resident_bytes() {
   return resident_pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
-void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial) {
+void check_script(const std::vector<ScriptedChange>& changes, const Settings& initial, int frames) {
+  // A change at a frame the session never reaches would be dropped without a word (a screenshot
+  // never taken, and exit 0).
+  for (const ScriptedChange& c : changes) {
+    if (frames > 0 && c.frame >= frames) {
+      reject(change_text(c), "frame " + std::to_string(c.frame) +
+                                 " is past the last frame (--frames " + std::to_string(frames) +
+                                 " runs frames 0 to " + std::to_string(frames - 1) + ")");
+    }
+  }
   // The frame loop applies the changes frame by frame, each frame's in command-line order: the
-  // size at a hover is the initial one with the size changes before it applied in that order. A
-  // fit resolution follows the window, so its size is only known while the viewer runs; hovers
-  // outside a fitted image show nothing.
+  // settings at a change are the initial ones with the changes before it applied in that order.
+  // What only the running viewer knows is not checked here: a fit resolution follows the window
+  // (hovers outside a fitted image show nothing), and a scene file that fails to load keeps the
+  // scene before it.
   std::vector<std::size_t> order(changes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return changes[a].frame < changes[b].frame;
   });
-  Settings at_hover = initial;
+  // What a render refuses (an image over the memory budget, one missed-light draw); a fit
+  // resolution's size follows the window, so only a typed one is checked.
+  const auto check_renders = [](const Settings& s) {
+    Settings probe = s;
+    if (fit_divisor(s.resolution) != 0) probe.image.width = probe.image.height = 1;
+    render_settings_from(probe);
+    if (fit_divisor(s.resolution) == 0) check_memory_budget(s, false);
+  };
+  // What the command line's settings themselves break is named by their flags, not blamed on the
+  // first change.
+  check_renders(initial);
+  Settings at = initial;
   for (const std::size_t h : order) {
     const ScriptedChange& c = changes[h];
-    if (c.key == "width" || c.key == "height" || c.key == "resolution") {
-      const Settings before = at_hover;
-      set_setting(at_hover, *find_setting(c.key), c.value);
-      const bool new_size = at_hover.image.width != before.image.width ||
-                            at_hover.image.height != before.image.height;
-      if (new_size && at_hover.resolution == before.resolution) at_hover.resolution = "typed";
-      continue;
+    try {
+      if (const SettingSpec* spec = find_setting(c.key)) {
+        const Settings before = at;
+        set_setting(at, *spec, c.value);
+        const bool new_size =
+            at.image.width != before.image.width || at.image.height != before.image.height;
+        if (new_size && at.resolution == before.resolution) at.resolution = "typed";
+        if (at.scene.name != before.scene.name) {
+          if (const scenes::SceneModel* model = scenes::find_scene_model(at.scene.name))
+            at.scene.level = model->default_level;
+        }
+        // What the worker refuses only when it renders is refused before the window opens.
+        check_renders(at);
+      } else if (c.key == "drop" && scenes::is_scene_file_name(c.value)) {
+        at.scene.name = c.value;
+      } else if (c.key == "lights") {
+        apply_light_count_flag(at.scene, c.value);
+      }
+    } catch (const UsageError& e) {
+      reject(change_text(c), e.what());
     }
-    if (c.key != "hover" || fit_divisor(at_hover.resolution) != 0) continue;
+    const bool pixel = c.key == "hover" || (c.key == "inspect" && c.value != "off");
+    if (!pixel || fit_divisor(at.resolution) != 0) continue;
     int x = 0, y = 0;
     parse_pixel(c.value, x, y);
-    if (x >= at_hover.image.width || y >= at_hover.image.height) {
-      reject("hover=" + c.value + "@" + std::to_string(c.frame),
-             "hover is in image pixels and must be inside the " +
-                 std::to_string(at_hover.image.width) + "x" +
-                 std::to_string(at_hover.image.height) + " image");
+    if (x >= at.image.width || y >= at.image.height) {
+      reject(change_text(c), c.key + " is in image pixels and must be inside the " +
+                                 std::to_string(at.image.width) + "x" +
+                                 std::to_string(at.image.height) + " image");
     }
   }
 }
@@ -251,8 +309,15 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     return ScriptAction::none;
   }
   if (c.key == "lights") {
+    // check_script refused a count the scene at this frame lacks; one a scene file that failed
+    // to load left unmatched is logged, as the failed load is.
     const Settings before = state.settings;
-    apply_light_count(state.settings.scene, parse_count(c.value, c.key));
+    try {
+      apply_light_count_flag(state.settings.scene, c.value);
+    } catch (const UsageError& e) {
+      log_message(state, label + ": " + e.what(), true);
+      return ScriptAction::none;
+    }
     settings_changed(state, before, label);
     return ScriptAction::none;
   }
@@ -282,13 +347,15 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
   }
   if (c.key == "trade") {
     // For tests: the trade plot's points and the reference they belong to.
-    std::printf("levrt view: trade plot at frame %d: %zu points, reference %llu, rt passes %d\n",
-                c.frame, state.trade.points.size(),
-                static_cast<unsigned long long>(state.trade.reference_generation),
-                state.status.reference_passes_done);
+    std::fprintf(state.notes,
+                 "levrt view: trade plot at frame %d: %zu points, reference %llu, rt passes %d\n",
+                 c.frame, state.trade.points.size(),
+                 static_cast<unsigned long long>(state.trade.reference_generation),
+                 state.status.reference_passes_done);
     for (const TradePoint& p : state.trade.points) {
-      std::printf("levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
-                  lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
+      std::fprintf(state.notes,
+                   "levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
+                   lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
     }
     return ScriptAction::none;
   }
@@ -316,8 +383,8 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
     return ScriptAction::none;
   }
   if (c.key == "memory") {
-    std::printf("levrt view: resident memory at frame %d: %llu bytes\n", c.frame,
-                static_cast<unsigned long long>(current_resident_bytes()));
+    std::fprintf(state.notes, "levrt view: resident memory at frame %d: %llu bytes\n", c.frame,
+                 static_cast<unsigned long long>(current_resident_bytes()));
     return ScriptAction::none;
   }
   if (c.key == "window") return ScriptAction::resize_window;

@@ -31,7 +31,8 @@ struct ScriptedChange {
   int frame = 0;
 };
 
-// WIDTHxHEIGHT, at least 320x240 (--window and the scripted `window` key); false when malformed.
+// WIDTHxHEIGHT, from 320x240 to kMaxImageSide a side (--window and the scripted `window` key);
+// false when malformed.
 bool parse_window_size(const std::string& text, int& width, int& height);
 
 // Throws UsageError ("--set: ...") for a malformed change or a value its key rejects.
@@ -41,20 +42,26 @@ std::vector<ScriptedChange> parse_scripted_changes(const std::vector<std::string
 // A --script file's limit, checked before it is read (a million changes' worth of lines).
 inline constexpr std::uintmax_t kMaxScriptFileBytes = std::uintmax_t{16} << 20;
 
-// The lines of a --script file, empty lines skipped; throws UsageError when it cannot be read,
-// is not a regular file (a pipe or device is refused before it is opened) or is larger than
-// kMaxScriptFileBytes.
+// The lines of a --script file, empty lines skipped (and a CRLF line's '\r'); throws UsageError
+// when it cannot be read, is not a regular file (a pipe or device is refused before it is
+// opened), is larger than kMaxScriptFileBytes, or has a line parse_scripted_change refuses
+// (named by the file and the line number).
 std::vector<std::string> read_script_file(const std::string& path);
 
 // Resident memory now (not the peak: /proc/self/statm), 0 where /proc is not mounted.
 std::uint64_t current_resident_bytes();
 
-// Refuses (UsageError) a hover pixel outside the image: the image size at the hover's frame is
-// the initial settings' with the script's width and height changes up to that frame applied.
-void check_hover_pixels(const std::vector<ScriptedChange>& changes, const Settings& initial);
+// Before the window opens, refuses (UsageError naming the change) what the script would only
+// fail at when it runs, after earlier screenshots were written: a change at a frame past the
+// last of `frames` (0: the session runs until the window closes), a light count the scene at its
+// frame does not have, settings a render refuses (an image over the memory budget, one
+// missed-light draw), and a hover or inspected pixel outside a typed-size image. The settings at a
+// change are the initial ones with the script's changes up to that frame applied.
+void check_script(const std::vector<ScriptedChange>& changes, const Settings& initial, int frames);
 
-// Applies a control change to the state, or returns the action the frame loop must perform.
-// Throws UsageError for a light count the current scene does not have.
+// Applies a control change to the state, or returns the action the frame loop must perform. A
+// light count the current scene does not have is logged (check_script refused the counts it
+// could know).
 ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& change);
 
 }  // namespace app::viewer

@@ -11,6 +11,7 @@
 #include "app/viewer/log_slider.h"
 #include "app/viewer/scene_open_panel.h"
 #include "app/viewer/scene_opening.h"
+#include "renderer/render.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -65,7 +66,7 @@ bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range
   record_rect(rects, std::string(spec.name) + "-", min.x + width - 2.0f * button - gap, min.y,
               min.x + width - button - gap, max.y);
   help_tooltip(spec);
-  value = std::clamp(value, range.min, range.max);
+  value = panel_int_value(spec, range, range.field.get(settings), value);
   if (!edited || value == range.field.get(settings)) return false;
   range.field.ref(settings) = value;
   return true;
@@ -191,6 +192,13 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
 }
 
 }  // namespace
+
+int panel_int_value(const SettingSpec& spec, const IntRange& range, int held, int asked) {
+  const int value = std::clamp(asked, range.min, range.max);
+  if (std::string(spec.name) == "missed-draws" && value > 0 && value < renderer::kMinMissedDraws)
+    return value > held ? renderer::kMinMissedDraws : 0;
+  return value;
+}
 
 void draw_settings_section(ViewerState& state) {
   ControlRects* rects = state.record_controls ? &state.control_rects : nullptr;

@@ -10,4 +10,10 @@ namespace app::viewer {
 
 void draw_settings_section(ViewerState& state);
 
+// The value a number field of the panel sets when the user asks for `asked` (typed, or a "+" or
+// "-" step) where it held `held`: clamped to the table's range, and past a gap in it (the
+// missed-light draws are 0, off, or at least renderer::kMinMissedDraws) to the side the user
+// moved toward, so no step gives a value the render refuses.
+int panel_int_value(const SettingSpec& spec, const IntRange& range, int held, int asked);
+
 }  // namespace app::viewer

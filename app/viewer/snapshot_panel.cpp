@@ -59,7 +59,10 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   job.heatmap_name = view_info(heat).name;
   job.heatmap_rgb = view_rgb8(state.image, state.error, heat, range, display,
                               state.mask_threshold_pct, locked_range(state, heat));
-  job.stats_json = render_stats_json(stats).dump(2) + "\n";
+  // A scene named by a file name that is not UTF-8 (a glTF's stem in Latin-1) gets U+FFFD for
+  // its invalid bytes instead of failing the snapshot.
+  job.stats_json =
+      render_stats_json(stats).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   job.inputs = settings_input_files(state.settings.scene);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;

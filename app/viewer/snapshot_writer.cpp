@@ -2,14 +2,31 @@
 
 #include <exception>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "app/output_files.h"
 
 namespace app::viewer {
 namespace {
 constexpr int kSteps = 3;
+
+// The folders of `folder`'s path that do not exist yet, deepest first: those a snapshot makes,
+// and removes again when it fails.
+std::vector<std::filesystem::path> missing_folders(const std::filesystem::path& folder) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> missing;
+  std::error_code ec;
+  for (fs::path p = folder; !p.empty() && !fs::exists(fs::symlink_status(p, ec));
+       p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  return missing;
 }
+
+}  // namespace
 
 SnapshotWriter::~SnapshotWriter() {
   wait();
@@ -47,8 +64,11 @@ void SnapshotWriter::run(const SnapshotJob& job) {
   std::string message;
   bool failed = false;
   std::error_code ec;
-  const bool folder_existed = fs::exists(job.folder, ec);
+  const std::vector<fs::path> made = missing_folders(job.folder);
   try {
+    // The panel's folder field, emptied: said so, not as filesystem_error's "Invalid argument []".
+    if (job.folder.empty())
+      throw std::invalid_argument("no folder given (the folder field is empty)");
     const fs::path stem = fs::path(job.folder) / job.base;
     const std::string image = stem.string() + ".png";
     const std::string heatmap = stem.string() + "_" + job.heatmap_name + ".png";
@@ -79,7 +99,10 @@ void SnapshotWriter::run(const SnapshotJob& job) {
     steps_done_.store(3);
     message = "wrote " + image + ", " + heatmap + ", " + stats + ", " + exr;
   } catch (const std::exception& e) {
-    if (!folder_existed) fs::remove(job.folder, ec);  // only if empty
+    // Every folder made for it goes (each only if empty), not only the last of the path.
+    for (const fs::path& folder : made) {
+      if (fs::is_directory(fs::symlink_status(folder, ec))) fs::remove(folder, ec);
+    }
     message = std::string("snapshot failed: ") + e.what();
     failed = true;
   }

@@ -1,5 +1,6 @@
 #include "app/viewer/viewer_app.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #define GLFW_INCLUDE_NONE
@@ -62,7 +63,9 @@ struct WindowSize {
 WindowSize parse_window_flag(const std::string& text) {
   WindowSize size;
   if (!parse_window_size(text, size.width, size.height))
-    throw UsageError("--window: must be WIDTHxHEIGHT, at least 320x240, got '" + text + "'");
+    throw UsageError("--window: must be WIDTHxHEIGHT from 320x240 to " +
+                     std::to_string(kMaxImageSide) + "x" + std::to_string(kMaxImageSide) +
+                     ", got '" + text + "'");
   return size;
 }
 
@@ -166,8 +169,8 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
   fit.resolution = state.settings.resolution;
   state.fit_pending = false;
   if (divisor == 0 || state.image_area_width <= 0 || state.image_area_height <= 0) return;
-  const int width = std::clamp(state.image_area_width / divisor, 1, kMaxImageSide);
-  const int height = std::clamp(state.image_area_height / divisor, 1, kMaxImageSide);
+  const auto [width, height] =
+      fit_render_size(state.image_area_width, state.image_area_height, divisor);
   if (width != fit.width || height != fit.height) {
     fit.width = width;
     fit.height = height;
@@ -185,6 +188,16 @@ void follow_image_area(ViewerState& state, FitTracker& fit, Clock::time_point no
   } else {
     state.fit_pending = true;
   }
+}
+
+// Whether an output goes to standard output: "-", or a name for the file or pipe it is
+// (/dev/stdout, /proc/self/fd/1).
+bool writes_standard_output(const std::string& path) {
+  if (path == kStandardOutputName) return true;
+  struct stat out {
+  }, named{};
+  return ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(path.c_str(), &named) == 0 &&
+         out.st_dev == named.st_dev && out.st_ino == named.st_ino;
 }
 
 void write_screenshot(GLFWwindow* window, const std::string& path) {
@@ -304,7 +317,7 @@ void draw_picture_window(ViewerState& state, const Picture& picture, const Layou
 int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   const WindowSize window_size = parse_window_flag(flags.window);
   const std::vector<ScriptedChange> script = parse_scripted_changes(flags.changes);
-  check_hover_pixels(script, settings);
+  check_script(script, settings, flags.frames);
   if (!flags.screenshot.empty() && flags.frames == 0)
     throw UsageError("--screenshot: needs --frames N");
   if (settings.resolution == "typed") check_memory_budget(settings, false);
@@ -345,6 +358,10 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   state.print_messages = flags.frames > 0;
   state.other_inputs = inputs;
   state.other_outputs = outputs;
+  const bool output_on_stdout =
+      std::any_of(outputs.begin(), outputs.end(),
+                  [](const OutputPath& o) { return writes_standard_output(o.path); });
+  state.notes = output_on_stdout ? stderr : stdout;
   std::string controls_written;
   FrameLog log;
   log.enabled = flags.report_fps;
@@ -387,7 +404,13 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
       const bool frame_writes = std::any_of(script.begin(), script.end(), [&](const auto& c) {
         return c.frame == script_frame && (c.key == "screenshot" || c.key == "snapshot");
       });
-      const bool hold_frame = pending_snapshot || (first_load_pending && frame_writes);
+      // Copy camera waits for the scene's camera, as a screenshot waits for its first load.
+      const bool frame_copies = std::any_of(script.begin(), script.end(), [&](const auto& c) {
+        return c.frame == script_frame && c.key == "copy";
+      });
+      const bool hold_frame =
+          pending_snapshot || (first_load_pending && frame_writes) ||
+          (frame_copies && !scene_ready(state) && state.status.phase != WorkerPhase::failed);
       if (awaiting == Await::nothing && !hold_frame) {
         for (const ScriptedChange& c : script) {
           if (c.frame != script_frame) continue;
@@ -519,12 +542,14 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   if (!bad_input_error.empty()) throw UsageError(bad_input_error);
   if (!snapshot_error.empty()) throw std::runtime_error("view: " + snapshot_error);
   if (!snapshots.message().empty() && flags.frames > 0)
-    std::printf("levrt view: %s\n", snapshots.message().c_str());
-  if (flags.report_fps) std::fputs(frame_report(log).c_str(), stdout);
+    std::fprintf(state.notes, "levrt view: %s\n",
+                 scenes::escape_control_characters(snapshots.message()).c_str());
+  if (flags.report_fps) std::fputs(frame_report(log).c_str(), state.notes);
   if (!flags.screenshot.empty()) {
     int width = 0, height = 0;
     glfwGetFramebufferSize(window.get(), &width, &height);
-    std::printf("levrt view: wrote %s (%dx%d)\n", flags.screenshot.c_str(), width, height);
+    std::fprintf(state.notes, "levrt view: wrote %s (%dx%d)\n",
+                 scenes::escape_control_characters(flags.screenshot).c_str(), width, height);
   }
   return exit_code;
 }

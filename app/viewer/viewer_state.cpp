@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/render_command.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -34,6 +35,19 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
   }
   if (new_view && !view_info(state.view).needs_reference) state.want_reference = false;
   mark_changed(state, label);
+}
+
+std::array<int, 2> fit_render_size(int area_width, int area_height, int divisor) {
+  double width = std::clamp(area_width / std::max(divisor, 1), 1, kMaxImageSide);
+  double height = std::clamp(area_height / std::max(divisor, 1), 1, kMaxImageSide);
+  const double most_pixels = static_cast<double>(kRenderMemoryBudgetBytes) /
+                             static_cast<double>(kReferenceRenderBytesPerPixel);
+  if (width * height > most_pixels) {
+    const double scale = std::sqrt(most_pixels / (width * height));
+    width = std::max(1.0, std::floor(width * scale));
+    height = std::max(1.0, std::floor(height * scale));
+  }
+  return {static_cast<int>(width), static_cast<int>(height)};
 }
 
 void set_fit_size(ViewerState& state, int width, int height) {

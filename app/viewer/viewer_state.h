@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
@@ -85,6 +86,10 @@ struct ViewerState {
   std::vector<std::string> recent_scenes;
   std::vector<LogMessage> messages;
   bool print_messages = false;
+  // Where the scripted reports (memory, trade plot) and the closing notes go: standard output,
+  // or stderr when an output (a screenshot, the controls) is standard output, so that stream
+  // holds that output alone.
+  std::FILE* notes = stdout;
   std::uint64_t load_errors_seen = 0;
   std::uint64_t scene_loads_seen = 0;
   // The camera the user had before asking for another scene: a scene that cannot be loaded
@@ -99,6 +104,12 @@ void mark_changed(ViewerState& state, const std::string& label);
 // its preset camera, a typed width or height selects the typed resolution, and a new view drops
 // the reference unless the view on screen compares with it.
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label);
+
+// The render size of a fit resolution for an image area of area_width x area_height pixels:
+// 1/divisor of it, at least 1x1, and scaled down (the aspect kept) to what the memory budget
+// allows a render with the rt reference (app/render_command.h), so no window size makes the
+// render fail; such a picture is shown enlarged, as fit/2's is.
+std::array<int, 2> fit_render_size(int area_width, int area_height, int divisor);
 
 // The image area asks for a new render size (fit resolution): like a typed size, but the
 // resolution stays fit and a reference asked for is kept asking for (at the new size).

@@ -2,7 +2,13 @@
 // --top limit, the complete lists in --json (every light of the scene once per hit, tested,
 // culled or clustered, and the totals agreeing with the lists), and bad input as one line and
 // exit 2 with nothing written.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,7 +17,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/gltf_files.h"
 #include "tests/support/json_file.h"
+#include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -105,6 +113,104 @@ TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
       run_levrt({"inspect", "--pixel", "1,1", "--json", (dir.path() / "pixel.txt").string()});
   EXPECT_EQ(wrong_extension.exit_code, 2) << wrong_extension.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "pixel.txt"));
+}
+
+// A glTF opens at an auto exposure, and the tolerance is in displayed units: inspect chooses the
+// EV as render does, so it lists what the render culled (before: it inspected at EV 0, where the
+// dim light of this file is tested, while the render at about -10.7 EV culls it).
+TEST(InspectCli, AGltfIsInspectedAtTheExposureTheRenderChooses) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-exposure-");
+  const std::string scene = (dir.path() / "two.gltf").string();
+  levrt_test::write_file(scene, levrt_test::gltf_document(levrt_test::triangle_buffers() + R"(,
+        "nodes": [{"mesh": 0, "children": [1, 2]},
+                  {"translation": [0.2, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                  {"translation": [0.6, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 1}}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "point", "intensity": 1000}, {"type": "point", "intensity": 1}]}})"));
+  const std::string stats = (dir.path() / "stats.json").string();
+  const std::vector<std::string> view = {"--scene", scene, "--width", "32", "--height", "24"};
+  std::vector<std::string> render = {"render", "--quiet", "--stats", stats};
+  render.insert(render.end(), view.begin(), view.end());
+  ASSERT_EQ(run_levrt(render).exit_code, 0);
+  const double ev = read_json(stats)["exposure_ev"].get<double>();
+  ASSERT_LT(ev, -5.0);
+  const auto table = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> command = {"inspect", "--pixel", "16,12"};
+    command.insert(command.end(), view.begin(), view.end());
+    command.insert(command.end(), extra.begin(), extra.end());
+    const auto run = run_levrt(command);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return run.output.substr(run.output.find("\npixel "));  // after the timed header
+  };
+  char typed[64];
+  std::snprintf(typed, sizeof typed, "%.17g", ev);
+  const std::string at_auto = table({});
+  EXPECT_EQ(at_auto, table({"--exposure", typed}));
+  EXPECT_NE(at_auto, table({"--exposure", "0"}));
+  EXPECT_NE(at_auto.find("1 culled"), std::string::npos) << at_auto;
+}
+
+// The scene's name is the file's to choose: escaped in the table's first line, as `render` and
+// `export` escape it, so it cannot split the line or drive the terminal.
+TEST(InspectCli, ASceneNameWithControlCharactersStaysOnOneLineOfTheTable) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-name-");
+  const std::string scene = (dir.path() / "scene.json").string();
+  ASSERT_EQ(run_levrt({"export", "--scene", "building", "--out", scene}).exit_code, 0);
+  nlohmann::json j = read_json(scene);
+  j["name"] = "evil\x1b[31mred\nsecond line";
+  std::ofstream(scene) << j.dump();
+  const auto run = run_levrt({"inspect", "--scene", scene, "--pixel", "160,120", "--top", "0"});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find('\x1b'), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.rfind("evil\\x1b[31mred\\nsecond line, 64 lights, lev", 0), 0u)
+      << run.output;
+}
+
+// The table is the command's output: appended to the scene it reads, refused before any work;
+// written to a pipe whose reader is gone, one line and exit 1 (before: exit 0, or killed by
+// SIGPIPE, with nothing said).
+TEST(InspectCli, TheTableIsAnOutputThatMayNotBeAnInputAndReportsAFailedWrite) {
+  const levrt_test::TempDir dir("levrt-inspect-cli-table-");
+  const std::string scene = (dir.path() / "scene.json").string();
+  ASSERT_EQ(run_levrt({"export", "--scene", "building", "--out", scene}).exit_code, 0);
+  const std::string scene_bytes = levrt_test::read_file(scene);
+  const auto appended = levrt_test::run_shell(
+      levrt_test::shell_quote(LEVRT_BINARY) + " inspect --scene " + levrt_test::shell_quote(scene) +
+      " --pixel 1,1 2>&1 >> " + levrt_test::shell_quote(scene) + "; echo exit $?");
+  EXPECT_NE(appended.output.find("standard output is a file this command reads"), std::string::npos)
+      << appended.output;
+  EXPECT_NE(appended.output.find("exit 2"), std::string::npos) << appended.output;
+  EXPECT_EQ(levrt_test::read_file(scene), scene_bytes);
+
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  ::close(ends[0]);
+  const std::string messages = (dir.path() / "messages.txt").string();
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGPIPE, SIG_DFL);  // as a shell starts it, whatever this test process does
+    ::dup2(ends[1], STDOUT_FILENO);
+    const int err = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(err, STDERR_FILENO);
+    const char* binary = LEVRT_BINARY;
+    ::execl(binary, binary, "inspect", "--width", "32", "--height", "24", "--pixel", "16,12",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const std::string output = levrt_test::read_file(messages);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": " << output;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_EQ(line_count(output), 1) << output;
+  EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
+      << output;
 }
 
 }  // namespace

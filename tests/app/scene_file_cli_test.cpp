@@ -172,4 +172,36 @@ TEST_F(SceneFileCli, ExportRefusesBadArgumentsAndWritesNothing) {
   }
 }
 
+// A glTF whose file name is not UTF-8 (Latin-1 'é') is named by that stem: the scene file
+// written holds the name with U+FFFD for the invalid byte, and renders. Before: exit 1 with
+// nlohmann's "incomplete UTF-8 string".
+TEST_F(SceneFileCli, ExportOfAGltfWhoseFileNameIsNotUtf8WritesAValidSceneFile) {
+  const std::string gltf = path("l\xe9.gltf");
+  levrt_test::write_file(gltf, levrt_test::gltf_document(R"("nodes": [{"translation": [0, 0, 1],
+      "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+      "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+  const CommandRun r = run_levrt({"export", "--scene", gltf, "--out", path("lights.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_file(path("lights.json")).find("\"name\": \"l\xef\xbf\xbd\""), std::string::npos)
+      << read_file(path("lights.json"));
+  EXPECT_EQ(run_levrt({"render", "--scene", path("lights.json"), "--width", "8", "--height", "8",
+                       "--out", path("lights.png")})
+                .exit_code,
+            0);
+}
+
+// A scene file has the level it was exported at: `export --level` with one is refused, as
+// `render --level` is, instead of being ignored.
+TEST_F(SceneFileCli, ExportOfASceneFileRefusesALevel) {
+  ASSERT_EQ(run_levrt({"export", "--scene", "maze", "--out", path("m.json")}).exit_code, 0);
+  const CommandRun r =
+      run_levrt({"export", "--scene", path("m.json"), "--level", "3", "--out", path("n.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("--level: a scene file has no levels, got '3'"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(path("n.json")));
+}
+
 }  // namespace

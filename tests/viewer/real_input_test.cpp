@@ -3,7 +3,8 @@
 // recorded for its named controls (no hard-coded pixels). The settings the clicks produced are
 // read back from the same file: tolerance slider clicks give values inside the slider's span,
 // growing with x; a drag lands between the clicks around it; the 0 button gives 0; the method
-// combo, the depth "+" button and a view radio button do what they say. Skipped when Xvfb or
+// combo, the depth "+" button, the missed-light draws' "+" and "-" and a view radio button do
+// what they say. Skipped when Xvfb or
 // xdotool is missing. Labelled "threads" with the other window tests.
 #include <signal.h>
 #include <unistd.h>
@@ -229,6 +230,17 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
 
   c = click_and_wait("depth+", 0.5, "depth", "2");
   EXPECT_EQ(setting(c, "depth"), "3");
+
+  // The missed-light draws step over the 1 a render refuses: 0 (off), then 2, and back to 0.
+  c = click_and_wait("missed-draws+", 0.5, "missed-draws", "0");
+  EXPECT_EQ(setting(c, "missed-draws"), "2");
+  c = click_and_wait("missed-draws-", 0.5, "missed-draws", "2");
+  EXPECT_EQ(setting(c, "missed-draws"), "0");
+
+  // Six hundred wheel notches out over the picture: the zoom stops at the camera's bound (it used
+  // to go past 1.8e18, where Embree asserts and the viewer died); the panel still answers.
+  ASSERT_TRUE(hover("image", 0.5));
+  xdotool("click --repeat 600 --delay 1 5 sleep 1");
 
   c = click_and_wait("view:nodes", 0.5, "view", "image");
   EXPECT_EQ(setting(c, "view"), "nodes");

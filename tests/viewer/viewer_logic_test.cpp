@@ -1,18 +1,23 @@
 // The viewer's pure parts: camera moves, scripted changes, the UI-side image and its pixel
 // errors, the trade plot's points and the frame report.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "app/render_command.h"
 #include "app/viewer/camera_control.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/frame_log.h"
+#include "app/viewer/inspector_panel.h"
 #include "app/viewer/scripted_changes.h"
+#include "app/viewer/settings_panel.h"
 #include "app/viewer/trade_plot.h"
 #include "renderer/framebuffer.h"
 #include "tests/support/temp_dir.h"
@@ -73,6 +78,28 @@ TEST(CameraControl, ZoomScalesTheDistance) {
   EXPECT_GT(glm::length(zoom_camera(c, 0.0f).position - c.target), 0.0f);
 }
 
+// No wheel, drag or pan takes the camera past the camera flags' bound (1e6): some 300 wheel
+// notches out used to put the eye past 1.8e18, where Embree asserts (the viewer died, SIGABRT).
+TEST(CameraControl, NoMoveLeavesTheCameraBound) {
+  renderer::Camera c = test_camera();
+  for (int i = 0; i < 1000; ++i) c = zoom_camera(c, 1.0f / 0.88f);
+  EXPECT_TRUE(camera_within_bounds(c));
+  EXPECT_GT(glm::length(c.position - c.target), 1e5f) << "the zoom goes out to the bound";
+  EXPECT_EQ(c.target, test_camera().target);
+  for (int i = 0; i < 100; ++i) c = orbit_camera(c, 0.3f, 0.05f);
+  EXPECT_TRUE(camera_within_bounds(c));
+  // Back in, the zoom works as before.
+  for (int i = 0; i < 1000; ++i) c = zoom_camera(c, 0.88f);
+  EXPECT_NEAR(glm::length(c.position - c.target), 1e-3f, 1e-4f);
+  for (int i = 0; i < 1000; ++i) c = pan_camera(zoom_camera(c, 1e4f), 0.7f, 0.4f);
+  EXPECT_TRUE(camera_within_bounds(c));
+  renderer::Camera ortho = test_camera();
+  ortho.orthographic_half_height = 10.0f;
+  for (int i = 0; i < 1000; ++i) ortho = zoom_camera(ortho, 2.0f);
+  EXPECT_TRUE(camera_within_bounds(ortho));
+  EXPECT_GT(ortho.orthographic_half_height, 1e5f);
+}
+
 TEST(ScriptedChanges, ParseValidChanges) {
   const ScriptedChange a = parse_scripted_change("tolerance=0.1@12");
   EXPECT_EQ(a.key, "tolerance");
@@ -96,6 +123,19 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   }
 }
 
+TEST(ScriptedChanges, AFrameOutOfRangeIsRefusedNamingTheRange) {
+  for (const char* bad : {"tolerance=0.1@99999999999", "tolerance=0.1@100000001"}) {
+    try {
+      parse_scripted_change(bad);
+      FAIL() << bad << " was accepted";
+    } catch (const app::UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("a whole number from 0 to 100000000"), std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_EQ(parse_scripted_change("tolerance=0.1@100000000").frame, 100000000);
+}
+
 TEST(ScriptedChanges, ARenamedKeyNamesItsNewName) {
   try {
     parse_scripted_change("samples=4@2");
@@ -116,6 +156,70 @@ TEST(ScriptedChanges, AScriptFileGivesItsLinesAndAMissingOneIsAUsageError) {
   EXPECT_THROW(read_script_file((temp.path() / "missing.txt").string()), app::UsageError);
 }
 
+TEST(ScriptedChanges, ABadScriptLineIsNamedByItsFileAndLineNumber) {
+  const levrt_test::TempDir temp("levrt_script_line_");
+  const std::string path = (temp.path() / "changes.txt").string();
+  std::ofstream(path) << "method=ast@1\r\n\nlights=-4@2\n";
+  try {
+    read_script_file(path);
+    FAIL() << "lights=-4@2 was accepted";
+  } catch (const app::UsageError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("--script: " + path + " line 3: ", 0), 0u) << what;
+    EXPECT_NE(what.find("lights=-4@2"), std::string::npos) << what;
+  }
+  // A line saved with CRLF reads as its text.
+  std::ofstream(path) << "method=ast@1\r\n";
+  EXPECT_EQ(read_script_file(path), std::vector<std::string>{"method=ast@1"});
+}
+
+TEST(ScriptedChanges, WhatTheRunningScriptWouldFailAtIsRefusedBeforeItRuns) {
+  const app::Settings initial;  // building at its default level
+  const auto refusal = [&](const std::vector<std::string>& texts, int frames) {
+    try {
+      check_script(parse_scripted_changes(texts), initial, frames);
+    } catch (const app::UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // A light count the scene at that frame lacks, also after a change of scene.
+  EXPECT_NE(refusal({"screenshot=a.png@1", "lights=65@3"}, 0).find("got 'lights=65@3'"),
+            std::string::npos);
+  EXPECT_EQ(refusal({"lights=65536@1"}, 0), "");
+  EXPECT_NE(refusal({"lights=45@2"}, 0), "");
+  EXPECT_EQ(refusal({"scene=maze@1", "lights=45@2"}, 0), "");
+  EXPECT_NE(refusal({"scene=maze@3", "lights=45@2"}, 0), "");
+  EXPECT_NE(refusal({"scene=maze@1", "scene=hall@1", "lights=45@2"}, 0), "");
+  EXPECT_NE(refusal({"scene=x.json@1", "lights=64@2"}, 0).find("scene file"), std::string::npos);
+  EXPECT_NE(refusal({"drop=x.gltf@1", "lights=64@2"}, 0), "");
+  EXPECT_THROW(parse_scripted_change("lights= -1@3"), app::UsageError);
+  EXPECT_THROW(parse_scripted_change("lights=+64@3"), app::UsageError);
+  // A frame the session never reaches.
+  const std::string late = refusal({"screenshot=late.png@10"}, 3);
+  EXPECT_NE(late.find("past the last frame"), std::string::npos) << late;
+  EXPECT_NE(late.find("screenshot=late.png@10"), std::string::npos) << late;
+  EXPECT_NE(refusal({"tolerance=0.1@3"}, 3), "");
+  EXPECT_EQ(refusal({"tolerance=0.1@2"}, 3), "");
+  EXPECT_EQ(refusal({"screenshot=late.png@10"}, 0), "") << "--frames 0 runs until closed";
+  // Settings a render refuses: one missed-light draw, a typed size over the memory budget.
+  EXPECT_NE(refusal({"missed-draws=1@1"}, 0).find("--missed-draws"), std::string::npos);
+  EXPECT_EQ(refusal({"missed-draws=2@1"}, 0), "");
+  EXPECT_NE(refusal({"width=16384@1", "height=16384@2"}, 0).find("height=16384@2"),
+            std::string::npos);
+  EXPECT_EQ(refusal({"width=4096@1", "height=4096@2"}, 0), "");
+  // A flag's own bad value is named by the flag, not blamed on the first change.
+  app::Settings one_draw;
+  one_draw.image.missed_draws = 1;
+  try {
+    check_script(parse_scripted_changes({"tolerance=0.1@1"}), one_draw, 0);
+    FAIL() << "--missed-draws 1 was accepted";
+  } catch (const app::UsageError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--missed-draws: ", 0), 0u) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("tolerance=0.1@1"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScriptedChanges, ResidentMemoryGrowsWithTouchedMemory) {
   const std::uint64_t before = current_resident_bytes();
   ASSERT_GT(before, 0u);
@@ -129,9 +233,12 @@ TEST(ScriptedChanges, AHoverOutsideTheImageAtItsFrameIsRefused) {
   initial.image.width = 64;
   initial.image.height = 48;
   const auto check = [&](const std::vector<std::string>& texts) {
-    check_hover_pixels(parse_scripted_changes(texts), initial);
+    check_script(parse_scripted_changes(texts), initial, 0);
   };
   EXPECT_NO_THROW(check({"hover=63,47@3"}));
+  // So is a pixel pinned in the inspector, which would wait for an inspection forever.
+  EXPECT_THROW(check({"inspect=64,10@3"}), app::UsageError);
+  EXPECT_NO_THROW(check({"inspect=63,47@3", "inspect=off@4"}));
   EXPECT_THROW(check({"hover=64,10@3"}), app::UsageError);
   EXPECT_THROW(check({"hover=10,48@3"}), app::UsageError);
   // The size in effect at the hover's frame counts: a later change does not, an earlier one
@@ -160,11 +267,59 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
   apply_scripted_change(s, parse_scripted_change("view=error@0"));
   EXPECT_EQ(s.view, ViewMode::error);
   EXPECT_TRUE(s.want_reference);
-  EXPECT_THROW(apply_scripted_change(s, parse_scripted_change("lights=100@0")), app::UsageError);
+  // A count the scene lacks (check_script refuses those it can know) is logged and changes nothing.
+  s.request_dirty = false;
+  EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("lights=100@0")), ScriptAction::none);
+  EXPECT_EQ(s.settings.scene.level, 6);
+  EXPECT_FALSE(s.request_dirty);
+  ASSERT_FALSE(s.messages.empty());
+  EXPECT_TRUE(s.messages.back().problem);
+  EXPECT_NE(s.messages.back().text.find("lights=100"), std::string::npos) << s.messages.back().text;
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("await=idle@0")),
             ScriptAction::await_idle);
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("screenshot=a.png@0")),
             ScriptAction::screenshot);
+}
+
+TEST(SettingsPanel, ANumberFieldStepsOverTheValuesARenderRefuses) {
+  const app::SettingSpec& draws = *app::find_setting("missed-draws");
+  const auto& range = std::get<app::IntRange>(draws.kind);
+  EXPECT_EQ(panel_int_value(draws, range, 0, 1), 2) << "'+' from off";
+  EXPECT_EQ(panel_int_value(draws, range, 2, 1), 0) << "'-' from the fewest draws";
+  EXPECT_EQ(panel_int_value(draws, range, 2, 3), 3);
+  EXPECT_EQ(panel_int_value(draws, range, 0, 100000), range.max);
+  EXPECT_EQ(panel_int_value(draws, range, 0, -5), 0);
+  const app::SettingSpec& depth = *app::find_setting("depth");
+  const auto& depth_range = std::get<app::IntRange>(depth.kind);
+  EXPECT_EQ(panel_int_value(depth, depth_range, 0, 1), 1);
+  EXPECT_EQ(panel_int_value(depth, depth_range, 64, 65), 64);
+}
+
+TEST(InspectorPanel, APinnedPixelOutsideTheImageSaysSoInsteadOfInspectingForever) {
+  ViewerState s;
+  EXPECT_EQ(inspector_wait_text(s), "");
+  s.status.width = 32;
+  s.status.height = 24;
+  s.inspect_pixel = std::array<int, 2>{31, 23};
+  EXPECT_EQ(inspector_wait_text(s), "inspecting...");
+  s.inspect_pixel = std::array<int, 2>{100, 10};  // pinned before the window shrank
+  EXPECT_NE(inspector_wait_text(s).find("outside the 32x24 image"), std::string::npos)
+      << inspector_wait_text(s);
+}
+
+// A fit resolution renders what the window's image area holds: within the memory budget at any
+// window size, so a huge window shows the picture enlarged instead of failing the render (before:
+// `view --window 16000x12000` exited 2 naming --width/--height, which were never given).
+TEST(ViewerState, AFitSizeStaysWithinTheMemoryBudgetAtAnyWindowSize) {
+  EXPECT_EQ(fit_render_size(1000, 800, 2), (std::array<int, 2>{500, 400}));
+  EXPECT_EQ(fit_render_size(0, -3, 1), (std::array<int, 2>{1, 1}));
+  const std::array<int, 2> big = fit_render_size(15562, 7992, 1);
+  app::Settings settings;
+  settings.image.width = big[0];
+  settings.image.height = big[1];
+  EXPECT_NO_THROW(app::check_memory_budget(settings, true)) << big[0] << "x" << big[1];
+  EXPECT_GT(big[0], 8000);
+  EXPECT_NEAR(static_cast<double>(big[0]) / big[1], 15562.0 / 7992.0, 1e-3);
 }
 
 TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
@@ -191,12 +346,11 @@ TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
 
 TEST(ScriptedChanges, HoversAreCheckedOnlyAgainstTypedSizesAndWindowSizesParse) {
   app::Settings initial;  // fit: the size follows the window
-  EXPECT_NO_THROW(check_hover_pixels(parse_scripted_changes({"hover=900,700@3"}), initial));
-  EXPECT_THROW(
-      check_hover_pixels(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial),
-      app::UsageError);
-  EXPECT_NO_THROW(check_hover_pixels(
-      parse_scripted_changes({"width=100@1", "resolution=fit@2", "hover=900,70@3"}), initial));
+  EXPECT_NO_THROW(check_script(parse_scripted_changes({"hover=900,700@3"}), initial, 0));
+  EXPECT_THROW(check_script(parse_scripted_changes({"width=100@1", "hover=900,70@3"}), initial, 0),
+               app::UsageError);
+  EXPECT_NO_THROW(check_script(
+      parse_scripted_changes({"width=100@1", "resolution=fit@2", "hover=900,70@3"}), initial, 0));
   ViewerState s;
   EXPECT_EQ(apply_scripted_change(s, parse_scripted_change("window=900x700@1")),
             ScriptAction::resize_window);

@@ -2,6 +2,8 @@
 // bad scripted changes, scripts and outputs that are devices or inputs, writers that write a
 // device in place, a snapshot that cannot be written, a full device, a signal during the scene
 // load. Each exits with its code and one line, and leaves the folder as it was.
+#include <array>
+
 #include "tests/support/viewer_window.h"
 
 namespace {
@@ -29,6 +31,19 @@ TEST_F(ViewerWindow, BadScriptedChangesExitTwoBeforeOpeningAWindow) {
   const CommandRun r =
       run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view --window 10x10");
   EXPECT_EQ(r.exit_code, 2) << r.output;
+  // The message names the range the value left: the largest side, a frame count's digits.
+  for (const auto& [flag, value, range] : std::vector<std::array<std::string, 3>>{
+           {"--window", "99999x240", "from 320x240 to 16384x16384"},
+           {"--frames", "1e3", "must be an integer in [0, 2147483647], got '1e3'"},
+           {"--frames", "-1", "must be an integer in [0, 2147483647], got '-1'"},
+           {"--frames", "99999999999", "must be an integer in [0, 2147483647]"}}) {
+    const CommandRun refused = run_shell("env -u DISPLAY " + shell_quote(LEVRT_BINARY) + " view " +
+                                         flag + " " + shell_quote(value));
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_EQ(line_count(refused.output), 1) << refused.output;
+    EXPECT_NE(refused.output.find(flag + ": "), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find(range), std::string::npos) << refused.output;
+  }
 }
 
 TEST_F(ViewerWindow, AScriptThatIsNotASmallRegularFileIsRefusedBeforeItIsRead) {
@@ -132,6 +147,133 @@ TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
 // into the path field): the good one loads and renders; the bad one keeps the good scene on
 // screen, the session goes on (exit 0), and its message is logged whole: the same line
 
+// What a script would only fail at while it runs (a light count the scene lacks, one missed-light
+// draw, a typed size over the memory budget), would wait for forever (an inspected pixel outside
+// the image) or would drop without a word (a change past the last frame) is refused before the
+// window opens: one line naming the change, exit 2, nothing written. Before: the screenshot of
+// frame 1 was written and the run ended with exit 2, exit 1 or exit 0 without the late screenshot.
+// A bad line of a --script file is named by its number.
+TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIsWritten) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  std::ofstream(path("script.txt")) << "await=idle@0\nlights=65@2\n";
+  const auto before = files_in(dir_);
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--set", "lights=65@3"}, "got 'lights=65@3'"},
+      {{"--set", "lights= -1@3"}, "got 'lights= -1@3'"},
+      {{"--set", "screenshot=" + path("late.png") + "@10"}, "past the last frame"},
+      {{"--set", "missed-draws=1@2"}, "--missed-draws"},
+      {{"--set", "width=16384@2", "--set", "height=16384@3"}, "got 'height=16384@3'"},
+      {{"--script", path("script.txt")}, "got 'lights=65@2'"},
+      {{"--set", "inspect=100,10@2"}, "inside the 32x24 image"},
+  };
+  for (const auto& [change, message] : cases) {
+    std::vector<std::string> args = {"--lights", "64",
+                                     "--width",  "32",
+                                     "--height", "24",
+                                     "--spp",    "1",
+                                     "--window", "640x480",
+                                     "--frames", "5",
+                                     "--set",    "screenshot=" + path("early.png") + "@1"};
+    args.insert(args.end(), change.begin(), change.end());
+    const CommandRun r = run_viewer(args);
+    EXPECT_EQ(r.exit_code, 2) << change[1] << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_EQ(files_in(dir_), before) << change[1] << ": " << r.output;
+  }
+  std::ofstream(path("script.txt")) << "await=idle@0\n\nlights=x@2\n";
+  const CommandRun line = run_viewer({"--frames", "5", "--script", path("script.txt")});
+  EXPECT_EQ(line.exit_code, 2) << line.output;
+  EXPECT_NE(line.output.find("--script: " + path("script.txt") + " line 3: "), std::string::npos)
+      << line.output;
+}
+
+// A screenshot on standard output is all that stream holds: the scripted reports and the closing
+// "wrote" note go to stderr, as `render --out -` sends its summary there. Before, the note was
+// appended to the PNG, and a memory report written before it.
+TEST_F(ViewerWindow, AScreenshotOnStandardOutputIsAloneOnIt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const XvfbServer xvfb;
+  ASSERT_FALSE(xvfb.display().empty());
+  const CommandRun r =
+      run_shell("{ DISPLAY=" + xvfb.display() +
+                " ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " + shell_quote(LEVRT_BINARY) +
+                " view --lights 64 --width 32 --height 24 --spp 1 --window 640x480 --frames 3"
+                " --set memory=report@1 --set trade=report@2 --screenshot - > " +
+                shell_quote(path("shot.png")) + "; }");  // stderr alone to the output read
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("resident memory at frame 1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("trade plot at frame 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("wrote -"), std::string::npos) << r.output;
+  const std::string png = read_file_bytes(path("shot.png"));
+  EXPECT_EQ(png.rfind("\x89PNG", 0), 0u);
+  const std::string iend("IEND\xae\x42\x60\x82", 8);
+  ASSERT_GE(png.size(), iend.size());
+  EXPECT_EQ(png.substr(png.size() - iend.size()), iend) << "trailing bytes after the PNG";
+  EXPECT_TRUE(read_png(path("shot.png")).ok());
+  // Standard output named by a path, a pipe: the same.
+  const CommandRun named = run_shell(
+      "{ { DISPLAY=" + xvfb.display() + " ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " +
+      shell_quote(LEVRT_BINARY) +
+      " view --lights 64 --width 32 --height 24 --spp 1 --window 640x480 --frames 3"
+      " --set memory=report@1 --screenshot /dev/stdout; echo \"levrt exit $?\" >&2; } | cat > " +
+      shell_quote(path("piped.png")) + "; }");
+  ASSERT_NE(named.output.find("levrt exit 0"), std::string::npos) << named.output;
+  EXPECT_NE(named.output.find("resident memory at frame 1"), std::string::npos) << named.output;
+  const std::string piped = read_file_bytes(path("piped.png"));
+  ASSERT_GE(piped.size(), iend.size());
+  EXPECT_EQ(piped.substr(piped.size() - iend.size()), iend) << "trailing bytes after the PNG";
+}
+
+// A scene whose file name is not UTF-8 (Latin-1 'é'): the controls file and a snapshot's stats
+// are written, the invalid byte as U+FFFD. Before: exit 1 with nlohmann's "invalid UTF-8 byte".
+TEST_F(ViewerWindow, ASceneFileNameThatIsNotUtf8IsWrittenToTheControlsAndTheSnapshot) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::string scene = path("caf\xe9.gltf");
+  levrt_test::write_file(scene, levrt_test::gltf_document(levrt_test::triangle_buffers() + R"(,
+        "nodes": [{"mesh": 0, "children": [1]},
+                  {"translation": [0.2, 0.2, 1],
+                   "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+  const CommandRun r =
+      run_viewer({"--scene", scene, "--width", "32", "--height", "24", "--spp", "1", "--window",
+                  "640x480", "--frames", "3", "--controls", path("controls.json"), "--set",
+                  "snapshot=" + path("snap") + "@1"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json controls = read_json(path("controls.json"));
+  ASSERT_TRUE(controls.is_object()) << read_file_bytes(path("controls.json"));
+  EXPECT_EQ(controls["settings"]["scene"], path("caf\xef\xbf\xbd.gltf"));
+  nlohmann::json stats;
+  for (const auto& entry : fs::directory_iterator(dir_ / "snap")) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 11 && name.substr(name.size() - 11) == "_stats.json")
+      stats = read_json(entry.path());
+  }
+  ASSERT_TRUE(stats.is_object()) << r.output;
+  EXPECT_EQ(stats["scene"], "caf\xef\xbf\xbd");
+}
+
+// A path with a newline or an escape in a message of the running viewer (printed by scripted
+// sessions) is escaped: each message one line, no escape sequence reaching the terminal.
+TEST_F(ViewerWindow, MessagesNamingAPathWithControlCharactersStayOneLineEach) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::string scene = path("evil\x1b[31mred\nsecond.json");
+  const CommandRun r = run_viewer({"--lights", "64", "--width", "32", "--height", "24", "--spp",
+                                   "1", "--window", "640x480", "--frames", "4", "--set",
+                                   "scene=" + scene + "@1", "--set", "await=idle@2"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_EQ(line_count(r.output), 2) << r.output;  // opening ..., cannot open ...
+  EXPECT_NE(r.output.find("opening " + path("evil\\x1b[31mred\\nsecond.json")), std::string::npos)
+      << r.output;
+}
+
 TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   if (!have_xvfb())
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
@@ -145,6 +287,13 @@ TEST_F(ViewerWindow, ASnapshotThatCannotBeWrittenExitsOne) {
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("snapshot failed"), std::string::npos) << r.output;
   EXPECT_EQ(files_in(dir_), before);
+  // A path whose last name is too long: the folders made before it go too (they stayed).
+  const CommandRun long_name = run_viewer(
+      {"--lights", "64", "--width", "64", "--height", "48", "--spp", "1", "--frames", "3", "--set",
+       "snapshot=" + path("new") + "/sub/" + std::string(300, 'a') + "@1"});
+  EXPECT_EQ(long_name.exit_code, 1) << long_name.output;
+  EXPECT_EQ(line_count(long_name.output), 1) << long_name.output;
+  EXPECT_EQ(files_in(dir_), before) << long_name.output;
 }
 
 // Without await=idle the snapshot waits for the render: all passes of it, not the preview.

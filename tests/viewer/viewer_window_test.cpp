@@ -102,6 +102,38 @@ TEST_F(ViewerWindow, TheCameraFlagsSetTheViewAndCopyCameraGivesThemBack) {
       << r.output;
 }
 
+// Copy camera before the scene has loaded gave the renderer's default camera (0,-10,5 looking at
+// the origin), not the scene's: a scripted copy now waits for the scene, and the panel's button
+// says the camera is not known yet.
+TEST_F(ViewerWindow, CopyCameraBeforeTheSceneHasLoadedGivesTheScenesCamera) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const CommandRun r =
+      run_viewer({"--lights", "64", "--width", "48", "--height", "36", "--spp", "1", "--window",
+                  "800x600", "--frames", "2", "--set", "copy=camera@0"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const CommandRun rendered =
+      levrt_test::run_levrt({"render", "--lights", "64", "--width", "8", "--height", "8", "--quiet",
+                             "--stats", path("stats.json"), "--out", path("x.png")});
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.output;
+  const nlohmann::json camera = read_json(path("stats.json"))["camera"];
+  const std::size_t at = r.output.find("camera: --camera-position ");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  // The copied flags render the same view as the preset.
+  std::istringstream words(r.output.substr(at + 8, r.output.find('\n', at) - at - 8));
+  std::vector<std::string> args = {"render",  "--lights",          "64",    "--width",
+                                   "8",       "--height",          "8",     "--quiet",
+                                   "--stats", path("copied.json"), "--out", path("y.png")};
+  for (std::string word; words >> word;) args.push_back(word);
+  ASSERT_EQ(levrt_test::run_levrt(args).exit_code, 0);
+  const nlohmann::json copied = read_json(path("copied.json"))["camera"];
+  for (const char* key : {"position", "target", "up"}) {
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(copied[key][i].get<double>(), camera[key][i].get<double>(), 1e-3)
+          << key << ": " << r.output;
+  }
+}
+
 // The panel greys out what the chosen method ignores (the settings table's unused_because), and
 // the controls file says which: lev_cut has no tolerance and draws no samples but uses the
 // relative error; lev the other way round.
