@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/json_text.h"
 #include "app/output_files.h"
 #include "app/scene_loading.h"
 #include "lev/methods.h"
@@ -268,7 +269,7 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::ordered_json json = inspection_json(inspection);
   if (!flags.json.empty())
-    write_output_files({{flags.json, [&json] { return json.dump(1) + "\n"; }}});
+    write_output_files({{flags.json, [&json] { return json_text(json, 1); }}});
   // The scene's name is the file's to choose: escaped, so it cannot split the header line or
   // drive the terminal.
   char header[256];

@@ -13,6 +13,7 @@
 
 #include "app/exr_encoding.h"
 #include "app/interrupt.h"
+#include "app/json_text.h"
 #include "app/output_files.h"
 #include "app/render_stats.h"
 #include "lev/light_hierarchy.h"
@@ -309,7 +310,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
     }
     return png_rgb8_bytes(fb.width, fb.height, reference_rgb);
   });
-  add(outputs.stats, [&json] { return json.dump(2) + "\n"; });
+  add(outputs.stats, [&json] { return json_text(json, 2); });
   write_output_files(files);
 
   const std::optional<std::string> gate_failure =

@@ -3,6 +3,8 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/json_text.h"
+
 namespace app::viewer {
 
 void record_item(ControlRects* rects, const std::string& name) {
@@ -38,7 +40,7 @@ std::string controls_json(const ControlRects& rects, const Settings& settings, V
   out["mouse_busy"] = mouse_busy;
   // A scene path need not be UTF-8 (a Latin-1 file name): its invalid bytes are written as
   // U+FFFD rather than failing the dump.
-  return out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return json_text(out, 1);
 }
 
 }  // namespace app::viewer

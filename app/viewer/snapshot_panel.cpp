@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "app/json_text.h"
 #include "app/scene_loading.h"
 #include "app/viewer/live_stats.h"
 
@@ -61,8 +62,7 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
                               state.mask_threshold_pct, locked_range(state, heat));
   // A scene named by a file name that is not UTF-8 (a glTF's stem in Latin-1) gets U+FFFD for
   // its invalid bytes instead of failing the snapshot.
-  job.stats_json =
-      render_stats_json(stats).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  job.stats_json = json_text(render_stats_json(stats), 2);
   job.inputs = settings_input_files(state.settings.scene);
   job.inputs.insert(job.inputs.end(), state.other_inputs.begin(), state.other_inputs.end());
   job.other_outputs = state.other_outputs;

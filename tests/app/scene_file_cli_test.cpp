@@ -191,6 +191,22 @@ TEST_F(SceneFileCli, ExportOfAGltfWhoseFileNameIsNotUtf8WritesAValidSceneFile) {
             0);
 }
 
+// The stats of a render name the scene; a glTF whose file name is not UTF-8 (Latin-1) is named
+// with U+FFFD for its invalid byte, as export writes it, instead of failing after the render.
+TEST_F(SceneFileCli, RenderStatsOfAGltfWhoseFileNameIsNotUtf8AreWritten) {
+  const std::string gltf = path("l\xe9.gltf");
+  levrt_test::write_file(gltf, levrt_test::gltf_document(R"("nodes": [{"translation": [0, 0, 1],
+      "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+      "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+  const CommandRun r = run_levrt({"render", "--scene", gltf, "--width", "8", "--height", "8",
+                                  "--out", path("l.png"), "--stats", path("l.json")});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_file(path("l.json")).find("l\xef\xbf\xbd"), std::string::npos)
+      << read_file(path("l.json"));
+  EXPECT_TRUE(fs::exists(path("l.png")));
+}
+
 // A scene file has the level it was exported at: `export --level` with one is refused, as
 // `render --level` is, instead of being ignored.
 TEST_F(SceneFileCli, ExportOfASceneFileRefusesALevel) {
