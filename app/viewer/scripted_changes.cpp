@@ -13,6 +13,7 @@
 
 #include "app/render_command.h"
 #include "app/scene_loading.h"
+#include "app/settings.h"
 #include "app/viewer/scene_opening.h"
 #include "scenes/scene_file.h"
 #include "scenes/scene_models.h"
@@ -48,6 +49,8 @@ bool parse_int_pair(const std::string& text, char separator, long min_a, long mi
   const std::size_t at = text.find(separator);
   if (at == std::string::npos) return false;
   const std::string as = text.substr(0, at), bs = text.substr(at + 1);
+  // The settings' integer grammar (no sign but '-', no space, no hex), as every flag takes it.
+  if (!is_decimal_integer(as) || !is_decimal_integer(bs)) return false;
   char* end_a = nullptr;
   char* end_b = nullptr;
   const long la = std::strtol(as.c_str(), &end_a, 10);
@@ -67,6 +70,7 @@ bool parse_pixel(const std::string& text, int& x, int& y) {
 
 // A finite number in [lo, hi], the whole text.
 std::optional<double> parse_number(const std::string& text, double lo, double hi) {
+  if (!is_decimal_real(text)) return std::nullopt;  // the settings' grammar, as parse_int_pair
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
@@ -100,7 +104,7 @@ ScriptedChange parse_scripted_change(const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const long f = std::strtol(frame.c_str(), &end, 10);
-  if (frame.empty() || *end != '\0' || errno != 0 || f < 0 || f > kMaxScriptFrame) {
+  if (!is_decimal_integer(frame) || *end != '\0' || errno != 0 || f < 0 || f > kMaxScriptFrame) {
     reject(text, "the frame must be a whole number from 0 to " + std::to_string(kMaxScriptFrame));
   }
   c.frame = static_cast<int>(f);

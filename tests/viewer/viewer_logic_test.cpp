@@ -123,6 +123,26 @@ TEST(ScriptedChanges, RejectMalformedChanges) {
   }
 }
 
+// A script's numbers take the settings' decimal grammar, as every flag does: no '+', no space,
+// no hex, in the frame, a pixel, a window size, the swipe and the mask threshold.
+TEST(ScriptedChanges, NumbersTakeOnlyPlainDecimals) {
+  for (const char* bad :
+       {"tolerance=0.1@+3", "tolerance=0.1@ 3", "tolerance=0.1@0x3", "hover=+1,2@1", "hover=1, 2@1",
+        "hover= 1,2@1", "hover=0x1,2@1", "swipe=+0.5@1", "swipe= 0.5@1", "swipe=0x1p-1@1",
+        "mask_threshold=+2@1", "mask_threshold=0x2@1", "inspect=+1,2@1"}) {
+    EXPECT_THROW(parse_scripted_change(bad), app::UsageError) << bad;
+  }
+  for (const char* ok : {"tolerance=0.1@3", "hover=1,2@1", "swipe=0.5@1", "swipe=.5@1",
+                         "mask_threshold=2e0@1", "inspect=1,2@1"}) {
+    EXPECT_NO_THROW(parse_scripted_change(ok)) << ok;
+  }
+  int w = 0, h = 0;
+  EXPECT_TRUE(app::viewer::parse_window_size("800x600", w, h));
+  EXPECT_FALSE(app::viewer::parse_window_size("800x+600", w, h));
+  EXPECT_FALSE(app::viewer::parse_window_size(" 800x600", w, h));
+  EXPECT_FALSE(app::viewer::parse_window_size("0x320x600", w, h));
+}
+
 TEST(ScriptedChanges, AFrameOutOfRangeIsRefusedNamingTheRange) {
   for (const char* bad : {"tolerance=0.1@99999999999", "tolerance=0.1@100000001"}) {
     try {
