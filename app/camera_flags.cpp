@@ -174,10 +174,11 @@ CameraFlags parse_camera_flags(const CameraFlagTexts& texts) {
   return flags;
 }
 
-renderer::Camera apply_camera_flags(const renderer::Camera& preset, const CameraFlags& flags) {
+renderer::Camera apply_camera_flags(const renderer::Camera& preset, const CameraFlags& flags,
+                                    const glm::vec3& world_origin) {
   renderer::Camera camera = preset;
-  if (flags.position) camera.position = *flags.position;
-  if (flags.target) camera.target = *flags.target;
+  if (flags.position) camera.position = *flags.position - world_origin;
+  if (flags.target) camera.target = *flags.target - world_origin;
   if (flags.up) camera.up = *flags.up;
   if (flags.vertical_fov_deg) camera.vertical_fov_deg = *flags.vertical_fov_deg;
   if (flags.orthographic_half_height)
@@ -193,11 +194,18 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
     basis = renderer::camera_basis(camera);
   }
   if (basis.forward == glm::vec3(0.0f)) {
-    throw UsageError("--camera-target: the camera at " + vec3_text(camera.position) +
-                     " looking at " + vec3_text(camera.target) + " with up " +
+    throw UsageError("--camera-target: the camera at " + vec3_text(camera.position + world_origin) +
+                     " looking at " + vec3_text(camera.target + world_origin) + " with up " +
                      vec3_text(camera.up) +
                      " has no view (target at the position, or up along the view)");
   }
+  return camera;
+}
+
+renderer::Camera world_camera(const renderer::Camera& render_space, const glm::vec3& world_origin) {
+  renderer::Camera camera = render_space;
+  camera.position += world_origin;
+  camera.target += world_origin;
   return camera;
 }
 

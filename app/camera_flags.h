@@ -34,7 +34,16 @@ CameraFlags parse_camera_flags(const CameraFlagTexts& texts);
 
 // The preset with the flags' parts replaced; throws UsageError when the result cannot look
 // anywhere (target at the position, up along the view) or the field of view is outside (0, 180).
-renderer::Camera apply_camera_flags(const renderer::Camera& preset, const CameraFlags& flags);
+// The preset is in render space (scenes/render_space.h: world = render space + world_origin); the
+// flags' position and target are in the scene's own (world) coordinates, as a user reads them
+// from the scene file and from stats, so they are moved by -world_origin.
+renderer::Camera apply_camera_flags(const renderer::Camera& preset, const CameraFlags& flags,
+                                    const glm::vec3& world_origin);
+
+// A render-space camera in the scene's own coordinates (position and target + world_origin):
+// what the stats report and Copy camera gives, so that the flags made from them, applied by
+// apply_camera_flags, give the same view.
+renderer::Camera world_camera(const renderer::Camera& render_space, const glm::vec3& world_origin);
 
 // The camera as the four flags, in shortest round-trip notation (parsing them gives the same
 // floats): "--camera-position X,Y,Z --camera-target X,Y,Z --camera-up X,Y,Z --fov DEG", with

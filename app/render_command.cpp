@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 
+#include "app/camera_flags.h"
 #include "app/exr_encoding.h"
 #include "app/interrupt.h"
 #include "app/json_text.h"
@@ -170,7 +171,7 @@ RenderStats render_stats(const LoadedScene& loaded, const Settings& settings,
   s.hierarchy_bytes = lev::hierarchy_bytes(loaded.scene.lights);
   s.method_bytes = result.method_bytes;
   s.rt_fallback = result.rt_fallback;
-  s.camera = loaded.scene.camera;
+  s.camera = world_camera(loaded.scene.camera, loaded.scene.world_origin);
   s.directional_lights = loaded.scene.directional_lights.size();
   s.error_bound = renderer::error_bound_stats(result.totals);
   if (result.passes >= 2) s.std_error_avg_pct = renderer::std_error_avg_pct(result.framebuffer);

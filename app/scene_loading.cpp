@@ -102,7 +102,8 @@ std::unique_ptr<LoadedScene> load_scene(const scenes::SceneChoice& choice,
   stage.step(2, "instantiating its lights and geometry");
   auto loaded = std::make_unique<LoadedScene>();
   loaded->scene = scenes::instantiate_scene(description);
-  loaded->scene.camera = apply_camera_flags(loaded->scene.camera, choice.camera_flags);
+  loaded->scene.camera =
+      apply_camera_flags(loaded->scene.camera, choice.camera_flags, loaded->scene.world_origin);
   poll();
   stage.step(3, "building its ray-tracing structures");
   loaded->rays = std::make_unique<renderer::RayScene>(loaded->scene);

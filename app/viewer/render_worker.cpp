@@ -258,6 +258,7 @@ struct Worker {
       st.light_count = loaded->scene.lights.light_count;
       st.directional_lights = loaded->scene.directional_lights.size();
       st.preset_camera = preset;
+      st.world_origin = loaded->scene.world_origin;
       st.build_seconds = loaded->build_seconds;
       st.hierarchy_bytes = lev::hierarchy_bytes(loaded->scene.lights);
       st.auto_exposure_ev = auto_exposure_ev;

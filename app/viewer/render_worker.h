@@ -64,8 +64,9 @@ struct WorkerStatus {
   scenes::CameraFlags camera_flags;
   std::uint64_t light_count = 0;
   std::size_t directional_lights = 0;  // suns, outside the hierarchy
-  renderer::Camera preset_camera;
-  double build_seconds = 0.0;  // model, hierarchy and Embree build
+  renderer::Camera preset_camera;      // in render space
+  glm::vec3 world_origin{0.0f};        // world = render space + this (scenes/render_space.h)
+  double build_seconds = 0.0;          // model, hierarchy and Embree build
   std::size_t hierarchy_bytes = 0;
   // --exposure auto's choice for this scene (renderer/auto_exposure.h), made at its load when the
   // settings asked for auto; the renders cull at it while auto is on.

@@ -83,7 +83,8 @@ void copy_camera_flags(ViewerState& state) {
                 true);
     return;
   }
-  const std::string flags = camera_flags_text(current_camera(state));
+  const std::string flags =
+      camera_flags_text(world_camera(current_camera(state), state.status.world_origin));
   if (ImGui::GetCurrentContext()) ImGui::SetClipboardText(flags.c_str());
   log_message(state, "camera: " + flags, false);
 }

@@ -233,8 +233,10 @@ void draw_settings_section(ViewerState& state) {
   if (ImGui::Button("Copy camera")) copy_camera_flags(state);
   record_item(rects, "copy_camera");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%s\n(to the clipboard, as flags for levrt render or view)",
-                      app::camera_flags_text(current_camera(state)).c_str());
+    ImGui::SetTooltip(
+        "%s\n(to the clipboard, as flags for levrt render or view)",
+        app::camera_flags_text(app::world_camera(current_camera(state), state.status.world_origin))
+            .c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   ImGui::TextWrapped("drag: orbit, right drag: pan, wheel: zoom");
   ImGui::PopStyleColor();

@@ -71,17 +71,17 @@ TEST(CameraFlags, ReplacePartsOfThePresetAndRefuseAViewOfNothing) {
   preset.target = {0.0f, 0.0f, 0.0f};
   CameraFlags flags;
   flags.vertical_fov_deg = 20.0f;
-  const renderer::Camera narrow = app::apply_camera_flags(preset, flags);
+  const renderer::Camera narrow = app::apply_camera_flags(preset, flags, glm::vec3(0.0f));
   EXPECT_EQ(narrow.position, preset.position);
   EXPECT_EQ(narrow.target, preset.target);
   EXPECT_EQ(narrow.vertical_fov_deg, 20.0f);
 
   CameraFlags at_target;
   at_target.position = preset.target;
-  EXPECT_THROW(app::apply_camera_flags(preset, at_target), app::UsageError);
+  EXPECT_THROW(app::apply_camera_flags(preset, at_target, glm::vec3(0.0f)), app::UsageError);
   CameraFlags up_along_view;
   up_along_view.up = glm::vec3(0.0f, 10.0f, -5.0f);
-  EXPECT_THROW(app::apply_camera_flags(preset, up_along_view), app::UsageError);
+  EXPECT_THROW(app::apply_camera_flags(preset, up_along_view, glm::vec3(0.0f)), app::UsageError);
 }
 
 TEST(CameraFlags, TheCopiedTextReadsBackAsTheSameCamera) {
@@ -107,7 +107,7 @@ TEST(CameraFlags, TheCopiedTextReadsBackAsTheSameCamera) {
   texts.up = words[5];
   texts.fov_deg = words[7];
   const renderer::Camera back =
-      app::apply_camera_flags(renderer::Camera{}, app::parse_camera_flags(texts));
+      app::apply_camera_flags(renderer::Camera{}, app::parse_camera_flags(texts), glm::vec3(0.0f));
   EXPECT_EQ(back.position, c.position);
   EXPECT_EQ(back.target, c.target);
   EXPECT_EQ(back.up, c.up);
@@ -288,6 +288,49 @@ TEST_F(CameraCli, NoOutputReplacesTheCameraFile) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--stats"), std::string::npos) << r.output;
   EXPECT_EQ(read_file(path("s.json")), before);
+}
+
+// A scene far from the origin is traced moved near it (scenes/render_space.h), but its cameras
+// are the file's: the stats report the camera in the file's coordinates, and the flags given
+// in them (the file's own camera, or --camera-from those stats) render the same image as the
+// preset. Before, the flags were applied in render space and the stats reported it
+// ([0, 0.4, -0.4] for a camera at [200040, -25.6, 65.6]).
+TEST_F(CameraCli, AFarScenesCameraIsReadAndGivenInTheFilesCoordinates) {
+  const std::string far_scene =
+      R"({"levrt_scene": 1, "camera": {"position": [200000, -10, 5], "target": [200000, 0, 0], )"
+      R"("up": [0, 0, 1], "fov_degrees": 40}, "materials": [{"name": "m"}], )"
+      R"("root": {"type": "affine", "translate": [200000, 0, 0], "child": {"type": "union", )"
+      R"("children": [{"type": "sphere", "material": "m", "centre": [0, 0, 0], "radius": 1}, )"
+      R"({"type": "quad", "material": "m", "corner": [-5, -5, -1], "edge_u": [10, 0, 0], )"
+      R"("edge_v": [0, 10, 0]}, {"type": "affine", "translate": [2, -2, 4], "child": )"
+      R"({"type": "point_light", "intensity": [20, 20, 20]}}]}}})";
+  std::ofstream(path("far.json")) << far_scene;
+  const auto render = [&](const std::string& name, std::vector<std::string> flags) {
+    std::vector<std::string> args = {"render",
+                                     "--scene",
+                                     path("far.json"),
+                                     "--width",
+                                     "32",
+                                     "--height",
+                                     "24",
+                                     "--out",
+                                     path(name + ".png"),
+                                     "--stats",
+                                     path(name + ".json")};
+    args.insert(args.end(), flags.begin(), flags.end());
+    const CommandRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.output;
+    return read_file(path(name + ".png"));
+  };
+  const std::string preset = render("preset", {});
+  const nlohmann::json stats = nlohmann::json::parse(read_file(path("preset.json")));
+  EXPECT_EQ(stats["camera"]["position"], nlohmann::json::parse("[200000, -10, 5]"))
+      << stats["camera"];
+  EXPECT_EQ(stats["camera"]["target"], nlohmann::json::parse("[200000, 0, 0]")) << stats["camera"];
+  EXPECT_EQ(render("flags", {"--camera-position", "200000,-10,5", "--camera-target", "200000,0,0"}),
+            preset);
+  EXPECT_EQ(render("from", {"--camera-from", path("preset.json")}), preset);
+  EXPECT_NE(render("moved", {"--camera-position", "200000,-12,5"}), preset);
 }
 
 }  // namespace
