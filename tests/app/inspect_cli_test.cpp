@@ -186,25 +186,10 @@ TEST(InspectCli, TheTableIsAnOutputThatMayNotBeAnInputAndReportsAFailedWrite) {
   EXPECT_NE(appended.output.find("exit 2"), std::string::npos) << appended.output;
   EXPECT_EQ(levrt_test::read_file(scene), scene_bytes);
 
-  int ends[2];
-  ASSERT_EQ(::pipe(ends), 0);
-  ::close(ends[0]);
   const std::string messages = (dir.path() / "messages.txt").string();
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    std::signal(SIGPIPE, SIG_DFL);  // as a shell starts it, whatever this test process does
-    ::dup2(ends[1], STDOUT_FILENO);
-    const int err = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(err, STDERR_FILENO);
-    const char* binary = LEVRT_BINARY;
-    ::execl(binary, binary, "inspect", "--width", "32", "--height", "24", "--pixel", "16,12",
-            static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  ::close(ends[1]);
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const int status = levrt_test::run_levrt_into_closed_pipe(
+      {"inspect", "--width", "32", "--height", "24", "--pixel", "16,12"}, messages);
+  ASSERT_NE(status, -1);
   const std::string output = levrt_test::read_file(messages);
   ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": " << output;
   EXPECT_EQ(WEXITSTATUS(status), 1) << output;

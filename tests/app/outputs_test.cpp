@@ -476,26 +476,12 @@ TEST_F(Outputs, ASymlinkLoopIsRefusedWithOneLineAndStaysALink) {
 // temporary file. Before, SIGPIPE killed the process (exit 141) with the temporary behind. The read
 // end is closed before levrt starts, so the write always meets a broken pipe.
 TEST_F(Outputs, StandardOutputWithoutAReaderLeavesNoTemporaryFile) {
-  int ends[2];
-  ASSERT_EQ(::pipe(ends), 0);
-  ::close(ends[0]);
   const std::string stats = path("s.json");
   const std::string messages = path("messages.txt");
-  const pid_t child = ::fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    std::signal(SIGPIPE, SIG_DFL);  // as a shell starts it, whatever this test process does
-    ::dup2(ends[1], STDOUT_FILENO);
-    const int err = ::open(messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(err, STDERR_FILENO);
-    const char* binary = LEVRT_BINARY;
-    ::execl(binary, binary, "render", "--width", "64", "--height", "48", "--quiet", "--out", "-",
-            "--stats", stats.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  ::close(ends[1]);
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const int status = levrt_test::run_levrt_into_closed_pipe(
+      {"render", "--width", "64", "--height", "48", "--quiet", "--out", "-", "--stats", stats},
+      messages);
+  ASSERT_NE(status, -1);
   const std::string output = read_file(messages);
   ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status) << ": " << output;
   EXPECT_EQ(WEXITSTATUS(status), 1) << output;

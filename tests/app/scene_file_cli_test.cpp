@@ -29,7 +29,18 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
-class SceneFileCli : public levrt_test::FolderTest {};
+class SceneFileCli : public levrt_test::FolderTest {
+ protected:
+  // A glTF of one point light whose file name is Latin-1 ("l\xe9.gltf": not UTF-8); its path.
+  std::string write_latin1_named_gltf() {
+    const std::string gltf = path("l\xe9.gltf");
+    levrt_test::write_file(gltf, levrt_test::gltf_document(R"("nodes": [{"translation": [0, 0, 1],
+        "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+    return gltf;
+  }
+};
 
 TEST_F(SceneFileCli, ExportedFileRendersTheSamePngAndHierarchy) {
   for (const std::string scene : {"building", "maze", "hall"}) {
@@ -176,11 +187,7 @@ TEST_F(SceneFileCli, ExportRefusesBadArgumentsAndWritesNothing) {
 // written holds the name with U+FFFD for the invalid byte, and renders. Before: exit 1 with
 // nlohmann's "incomplete UTF-8 string".
 TEST_F(SceneFileCli, ExportOfAGltfWhoseFileNameIsNotUtf8WritesAValidSceneFile) {
-  const std::string gltf = path("l\xe9.gltf");
-  levrt_test::write_file(gltf, levrt_test::gltf_document(R"("nodes": [{"translation": [0, 0, 1],
-      "extensions": {"KHR_lights_punctual": {"light": 0}}}],
-      "extensionsUsed": ["KHR_lights_punctual"],
-      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+  const std::string gltf = write_latin1_named_gltf();
   const CommandRun r = run_levrt({"export", "--scene", gltf, "--out", path("lights.json")});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(read_file(path("lights.json")).find("\"name\": \"l\xef\xbf\xbd\""), std::string::npos)
@@ -194,11 +201,7 @@ TEST_F(SceneFileCli, ExportOfAGltfWhoseFileNameIsNotUtf8WritesAValidSceneFile) {
 // The stats of a render name the scene; a glTF whose file name is not UTF-8 (Latin-1) is named
 // with U+FFFD for its invalid byte, as export writes it, instead of failing after the render.
 TEST_F(SceneFileCli, RenderStatsOfAGltfWhoseFileNameIsNotUtf8AreWritten) {
-  const std::string gltf = path("l\xe9.gltf");
-  levrt_test::write_file(gltf, levrt_test::gltf_document(R"("nodes": [{"translation": [0, 0, 1],
-      "extensions": {"KHR_lights_punctual": {"light": 0}}}],
-      "extensionsUsed": ["KHR_lights_punctual"],
-      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 5}]}})"));
+  const std::string gltf = write_latin1_named_gltf();
   const CommandRun r = run_levrt({"render", "--scene", gltf, "--width", "8", "--height", "8",
                                   "--out", path("l.png"), "--stats", path("l.json")});
   ASSERT_EQ(r.exit_code, 0) << r.output;

@@ -2,10 +2,13 @@
 // together), for the tests that drive the levrt binary or a helper program through a shell.
 #pragma once
 
+#include <fcntl.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -46,6 +49,35 @@ inline CommandRun run_levrt(const std::vector<std::string>& args) {
   std::string command = LEVRT_BINARY;
   for (const std::string& a : args) command += " " + shell_quote(a);
   return run_shell(command);
+}
+
+// Runs the levrt binary with `args` and its standard output a pipe whose reader has gone (as in
+// `levrt ... | true`), its standard error written to `messages_path`, and SIGPIPE at its default
+// as a shell starts it, whatever this test process does. Returns the wait status.
+inline int run_levrt_into_closed_pipe(const std::vector<std::string>& args,
+                                      const std::string& messages_path) {
+  std::vector<std::string> words = {LEVRT_BINARY};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  int ends[2];
+  if (::pipe(ends) != 0) return -1;
+  ::close(ends[0]);
+  const pid_t child = ::fork();
+  if (child < 0) return -1;
+  if (child == 0) {
+    std::signal(SIGPIPE, SIG_DFL);
+    ::dup2(ends[1], STDOUT_FILENO);
+    const int err = ::open(messages_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(err, STDERR_FILENO);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  ::close(ends[1]);
+  int status = 0;
+  if (::waitpid(child, &status, 0) != child) return -1;
+  return status;
 }
 #endif
 
