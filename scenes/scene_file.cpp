@@ -458,10 +458,10 @@ class Reader {
 
 namespace {
 
-// The code points a message shows as \uXXXX though they are valid text: the C1 controls (a
-// terminal may take U+009B as CSI) and the invisible format characters that reorder or hide what
-// follows (the bidirectional embeddings, overrides and isolates, the marks, zero-width
-// characters, the line and paragraph separators, the byte order mark).
+// The code points a message shows as a \u escape (\u202e: four hex digits) though they are valid
+// text: the C1 controls (a terminal may take U+009B as CSI) and the invisible format characters
+// that reorder or hide what follows (the bidirectional embeddings, overrides and isolates, the
+// marks, zero-width characters, the line and paragraph separators, the byte order mark).
 bool is_escaped_code_point(std::uint32_t cp) {
   return (cp >= 0x80 && cp <= 0x9f) || cp == 0x061c || (cp >= 0x200b && cp <= 0x200f) ||
          (cp >= 0x2028 && cp <= 0x202e) || cp == 0x2060 || (cp >= 0x2066 && cp <= 0x2069) ||

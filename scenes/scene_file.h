@@ -33,11 +33,11 @@ inline constexpr int kSceneFileVersion = 1;
 // text (a flag's value, a file name, a scene, node or light name): control characters and DEL
 // become escapes (\n, \t, \r, \x1b, ...), the C1 controls and the invisible format characters
 // that reorder or hide text (right-to-left overrides and isolates, zero-width characters, line
-// separators, U+FEFF) become \uXXXX, and a byte that is no part of a UTF-8 character becomes
-// \xNN. So a name can neither break the line, drive the terminal, nor show other text than it
-// holds; other characters (accented letters, CJK) stay as they are. Escaping twice changes
-// nothing (no such character is left), so the command line may escape a whole message again at
-// its boundary.
+// separators, U+FEFF) become \u and four hex digits (\u202e), and a byte that is no part of a UTF-8
+// character becomes \xNN. So a name can neither break the line, drive the terminal, nor show other
+// text than it holds; other characters (accented letters, CJK) stay as they are. Escaping twice
+// changes nothing (no such character is left), so the command line may escape a whole message again
+// at its boundary.
 std::string escape_control_characters(std::string_view text);
 
 // True for names ending in ".json", ".gltf" or ".glb" (gltf_scene.h): what --scene takes as a
