@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "lev/light_bounds.h"
 #include "lev/light_description.h"
@@ -153,6 +154,40 @@ inline std::uint32_t pass_to_light_or_group(const LightHierarchy& h, std::uint32
         break;
     }
     node = only_child(n, node);
+  }
+}
+
+// A subtree still to be stepped through by for_each_subtree_light: its node and the frame it is
+// entered with.
+struct SubtreePart {
+  std::uint32_t node = 0;
+  Similarity world_from_local;
+};
+
+// Calls on_light(world_light) for every light of the subtree at `node`, entered with
+// world_from_local, in the hierarchy's order (instances expanded; transform_light places each),
+// until on_light returns false. `parts` is scratch, so that a caller in a loop allocates once.
+template <typename OnLight>
+inline void for_each_subtree_light(const LightHierarchy& h, std::uint32_t node,
+                                   const Similarity& world_from_local,
+                                   std::vector<SubtreePart>& parts, OnLight&& on_light) {
+  parts.clear();
+  parts.push_back({node, world_from_local});
+  while (!parts.empty()) {
+    SubtreePart part = parts.back();
+    parts.pop_back();
+    const std::uint32_t below = pass_to_light_or_group(h, part.node, [&](const HierarchyNode& n) {
+      part.world_from_local = compose(part.world_from_local, node_transform(h, n));
+    });
+    const HierarchyNode& n = h.nodes[below];
+    if (node_role(n) == NodeRole::light) {
+      if (!on_light(transform_light(leaf_light(h, n), part.world_from_local))) return;
+      continue;
+    }
+    // Last child first on the stack, so the lights come out in the hierarchy's order.
+    const ChildNodes children = group_children(h, n);
+    for (std::uint32_t k = children.count; k-- > 0;)
+      parts.push_back({children[k], part.world_from_local});
   }
 }
 

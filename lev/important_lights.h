@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/light.h"
 #include "lev/light_bounds.h"
 #include "lev/light_description.h"
@@ -106,6 +107,9 @@ struct CutNodeTable {
   // The first light below the node (a centred representative's parameters), when only
   // translations lie on the way down; ~0u otherwise.
   std::vector<std::uint32_t> first_lights;
+  // The lights below the node, instances expanded (saturating at the largest uint32): a cluster
+  // of at most kExactClusterLights is shaded from its own lights.
+  std::vector<std::uint32_t> light_counts;
 };
 CutNodeTable make_cut_node_table(const LightHierarchy& hierarchy);
 
@@ -165,6 +169,14 @@ struct WalkScratch {
   // order, as its running total counted them (when it cuts: relative error above 0; else empty),
   // so that shading them need not compute it again.
   std::vector<glm::vec3> cut_estimates;
+  // find_light_cut's clusters shaded from their own lights (exact clusters): the index of each
+  // one's light among those it appended, in order. Its estimate (cut_estimates) is the summed
+  // unshadowed radiance of the cluster's lights; the light is the one its shadow ray goes to.
+  std::vector<std::size_t> exact_clusters;
+  // An exact cluster's light drawn for its shadow ray, and the parts of its subtree still to
+  // step through.
+  Light cluster_light;
+  std::vector<SubtreePart> subtree_parts;
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point
@@ -291,8 +303,11 @@ void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolum
 // the walk has nothing else left the largest bound put aside is walked, until every bound left
 // is within the criterion. The running total is the estimate of the cut so far, as in Lightcuts:
 // the unshadowed radiance (ShadingPoint::unshadowed_radiance) of every light appended and of the
-// representative of every cluster, appended or put aside. Lights above the tolerance are
-// appended themselves. At relative error 0 nothing is clustered or
+// representative of every cluster, appended or put aside. A cluster of at most 32 lights that a
+// drawn representative would stand for is an exact cluster (WalkScratch::exact_clusters): its
+// estimate is its lights' summed unshadowed radiance, and the light appended is one of them,
+// drawn in proportion to that radiance by a hash of the point, for its shadow ray. Lights above
+// the tolerance are appended themselves. At relative error 0 nothing is clustered or
 // put aside: the walk is find_important_lights', its lights in the same order.
 // culled_irradiance_bound, as find_important_lights', counts what the volumes dropped and the
 // clusters' irradiance bounds (an estimate is not exact). With scratch.radiance set and

@@ -16,30 +16,12 @@ namespace {
 void inspect_subtree(const LightHierarchy& h, std::uint32_t node,
                      const Similarity& world_from_local, std::uint32_t by, ShadingPoint& point,
                      std::vector<InspectedLight>& out, const std::atomic<bool>* cancel) {
-  struct Part {
-    std::uint32_t node;
-    Similarity world_from_local;
-  };
-  std::vector<Part> parts{{node, world_from_local}};
-  while (!parts.empty()) {
-    Part part = parts.back();
-    parts.pop_back();
-    const std::uint32_t below = pass_to_light_or_group(h, part.node, [&](const HierarchyNode& n) {
-      part.world_from_local = compose(part.world_from_local, node_transform(h, n));
-    });
-    const HierarchyNode& n = h.nodes[below];
-    if (node_role(n) == NodeRole::light) {
-      out.push_back(
-          inspect_light(transform_light(leaf_light(h, n), part.world_from_local), by, point));
-      if (cancel && out.size() % kCancelCheckLights == 0 && cancel->load(std::memory_order_relaxed))
-        return;
-      continue;
-    }
-    // Last child first on the stack, so the lights come out in the hierarchy's order.
-    const ChildNodes children = group_children(h, n);
-    for (std::uint32_t k = children.count; k-- > 0;)
-      parts.push_back({children[k], part.world_from_local});
-  }
+  std::vector<SubtreePart> parts;
+  for_each_subtree_light(h, node, world_from_local, parts, [&](const Light& light) {
+    out.push_back(inspect_light(light, by, point));
+    return !(cancel && out.size() % kCancelCheckLights == 0 &&
+             cancel->load(std::memory_order_relaxed));
+  });
 }
 
 }  // namespace

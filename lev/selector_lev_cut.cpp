@@ -53,7 +53,9 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
 
 std::size_t LevCutSelector::bookkeeping_bytes() const {
   return cut_nodes_.draw_weights.size() * sizeof(double) + cut_nodes_.centred.size() +
-         (cut_nodes_.drawn_lights.size() + cut_nodes_.first_lights.size()) * sizeof(std::uint32_t);
+         (cut_nodes_.drawn_lights.size() + cut_nodes_.first_lights.size() +
+          cut_nodes_.light_counts.size()) *
+             sizeof(std::uint32_t);
 }
 
 }  // namespace lev

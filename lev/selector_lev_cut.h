@@ -3,11 +3,12 @@
 // shading point, as Lightcuts cuts (Walter et al. 2005): a subtree whose cluster bound
 // (light_bounds.h's radiance_bound) is within the relative error of the point's running total
 // costs one shadow ray (to its representative, or, for a centred one, to one of its lights:
-// important_lights.h's CutCluster); a larger one is walked, largest first
-// (find_light_cut). One setting, the relative error: the tolerance the volumes drop at is tied
-// to it (kDropToleranceOfRelativeError), so a tighter setting both drops less and cuts finer,
-// and at 0 it drops nothing and cuts nothing: the image is `rt`'s bit for bit. Deterministic:
-// the cut depends on the point only.
+// important_lights.h's CutCluster; a small cluster of spots aimed apart is shaded from its own
+// lights' summed radiance, its ray to one of them: WalkScratch::exact_clusters); a larger one is
+// walked, largest first (find_light_cut). One setting, the relative error: the tolerance the
+// volumes drop at is tied to it (kDropToleranceOfRelativeError), so a tighter setting both drops
+// less and cuts finer, and at 0 it drops nothing and cuts nothing: the image is `rt`'s bit for bit.
+// Deterministic: the cut depends on the point only.
 #pragma once
 
 #include "lev/important_lights.h"

@@ -4,9 +4,12 @@
 // most its culled bound, and they are fewer than the lights at many points. The selector at
 // relative error 0 gives rt's radiance bit for bit. A cluster lit by a centred representative
 // casts its shadow ray to one of its own lights, a different one in each instance of a master.
+// A small cluster of spots aimed apart is shaded from its own lights: its estimate is their sum,
+// its ray goes to one of them drawn in proportion to its radiance at the point.
 // The table of the nodes the cut reads per cluster names the lights a walk down would find. The
 // unshadowed radiance the walk keeps for the shading is that of each light it returns.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -107,11 +110,17 @@ TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
                               &bound);
           // The estimates the walk keeps for the shading are those of the lights it returns, in
           // their order, bit for bit (the shading uses them instead of computing them again).
+          // An exact cluster's estimate is its lights' sum instead (ExactClustersAreShadedFrom...).
           ASSERT_EQ(scratch.cut_estimates.size(), cut.size()) << context;
-          for (std::size_t i = 0; i < cut.size(); ++i)
+          const std::vector<std::size_t>& exact_clusters = scratch.exact_clusters;
+          glm::dvec3 estimate(0.0);
+          for (std::size_t i = 0; i < cut.size(); ++i) {
+            estimate += glm::dvec3(scratch.cut_estimates[i]);
+            if (std::find(exact_clusters.begin(), exact_clusters.end(), i) != exact_clusters.end())
+              continue;
             ASSERT_EQ(scratch.cut_estimates[i], point.unshadowed_radiance(cut[i])) << context;
+          }
           const glm::dvec3 exact = summed_irradiance(world_lights, x);
-          const glm::dvec3 estimate = summed_irradiance(cut, x);
           for (int c = 0; c < 3; ++c) {
             // The bound is rounded up once; the sums differ in order by float roundings.
             ASSERT_LE(std::abs(estimate[c] - exact[c]),
@@ -312,7 +321,8 @@ lev::LightDescription translated_union_tree(Random& r) {
 // Per node, the table holds the summed intensity a draw weighs the subtree by, and a light it
 // names is the one the walk down would find: for an unshifted draw a light of the subtree with
 // weight and no transform on its way, for the centred representative the subtree's first light
-// with only translations on its way; each is named whenever that condition holds.
+// with only translations on its way; each is named whenever that condition holds. Its light
+// count is the number of lights below it.
 TEST(LevCut, TheNodeTableNamesTheLightsTheWalkDownFinds) {
   std::uint64_t drawn_named = 0, first_named = 0, translated_first_named = 0;
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
@@ -324,6 +334,7 @@ TEST(LevCut, TheNodeTableNamesTheLightsTheWalkDownFinds) {
       ASSERT_EQ(table.draw_weights.size(), h.nodes.size());
       ASSERT_EQ(table.drawn_lights.size(), h.nodes.size());
       ASSERT_EQ(table.first_lights.size(), h.nodes.size());
+      ASSERT_EQ(table.light_counts.size(), h.nodes.size());
       for (std::uint32_t node = 0; node < h.nodes.size(); ++node) {
         const std::string context =
             "seed " + std::to_string(seed) + " node " + std::to_string(node);
@@ -335,6 +346,7 @@ TEST(LevCut, TheNodeTableNamesTheLightsTheWalkDownFinds) {
         // Summed from the aggregates, which round their sums up.
         ASSERT_GE(table.draw_weights[node], weight * (1.0 - 1e-6)) << context;
         ASSERT_LE(table.draw_weights[node], weight * (1.0 + 1e-4) + 1e-30) << context;
+        ASSERT_EQ(table.light_counts[node], below.size()) << context;
         const lev::NodeRole role = lev::node_role(h.nodes[node]);
         if (below.empty() || role == lev::NodeRole::light || role == lev::NodeRole::transform) {
           ASSERT_EQ(table.drawn_lights[node], ~0u) << context;
@@ -368,6 +380,140 @@ TEST(LevCut, TheNodeTableNamesTheLightsTheWalkDownFinds) {
   EXPECT_GT(drawn_named, 100u);
   EXPECT_GT(translated_first_named, 10u);
   EXPECT_GT(first_named, translated_first_named);
+}
+
+// Five fixtures of six coloured spots, each spot tilted 50 degrees from straight down and the six
+// turned apart (a stage rig's fixture aims its spots apart): 30 lights, so every cluster the cut
+// makes holds at most 30 and is one a drawn representative would stand for, an exact cluster.
+lev::LightDescription fixtures_of_spots_aimed_apart() {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> spots;
+  for (int k = 0; k < 6; ++k) {
+    const float azimuth = 1.0471976f * static_cast<float>(k);
+    const glm::vec3 aim(0.766f * std::cos(azimuth), 0.766f * std::sin(azimuth), -0.643f);
+    const glm::vec3 colour(0.2f + 0.8f * static_cast<float>(k % 2),
+                           0.2f + 0.4f * static_cast<float>(k % 3), 1.0f - 0.15f * k);
+    spots.push_back(lev::light_node(
+        lev::make_spot_light(glm::vec3(0.2f * std::cos(azimuth), 0.2f * std::sin(azimuth), 0.0f),
+                             aim, 40.0f * colour, 0.6f, 2.0f)));
+  }
+  tree.masters.push_back(lev::union_node(std::move(spots)));
+  std::vector<lev::LightDescriptionNode> fixtures;
+  for (int k = 0; k < 5; ++k) {
+    const glm::vec3 at(3.0f * static_cast<float>(k) - 6.0f, 0.5f * static_cast<float>(k), 8.0f);
+    fixtures.push_back(lev::affine_node(lev::make_translation(at), lev::instance_node(0)));
+  }
+  tree.root = lev::union_node(std::move(fixtures));
+  return tree;
+}
+
+// Every light is seen; each shadow ray's target is kept.
+class RecordsItsRays final : public lev::ShadingPoint {
+ public:
+  explicit RecordsItsRays(const glm::vec3& x) : x_(x) {}
+  glm::vec3 position() const override { return x_; }
+  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
+    return lev::irradiance(light, x_);
+  }
+  bool visible(const lev::Light& target) override {
+    targets.push_back(target);
+    return true;
+  }
+  lev::SurfaceResponse surface_response() const override {
+    lev::SurfaceResponse unit;
+    unit.diffuse = glm::vec3(1.0f);
+    return unit;
+  }
+  std::vector<lev::Light> targets;
+
+ private:
+  glm::vec3 x_;
+};
+
+TEST(LevCut, ExactClustersAreShadedFromTheirOwnLights) {
+  // Spots aimed apart: a representative's unshadowed radiance is far from its cluster's (one whose
+  // cone misses the point stands for others that light it), so these clusters are shaded from
+  // their own lights. Every cluster here is exact, so with every light seen the cut's estimate is
+  // the sum over every light, and each cluster's ray goes to one of its lights that lights the
+  // point.
+  const lev::LightDescription tree = fixtures_of_spots_aimed_apart();
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);
+  const lev::CutNodeTable table = lev::make_cut_node_table(h);
+  Random r(7);
+  lev::WalkScratch scratch;
+  std::uint64_t exact_clusters = 0;
+  for (const float relative_error : {0.05f, 0.3f, 1.0f}) {
+    for (int k = 0; k < 200; ++k) {
+      const glm::vec3 x(r.uniform(-12, 12), r.uniform(-6, 6), r.uniform(-2, 2));
+      const std::string context =
+          "relative error " + std::to_string(relative_error) + " k " + std::to_string(k);
+      RecordsItsRays point(x);
+      std::vector<lev::Light> cut;
+      lev::WalkCounters counters;
+      lev::find_light_cut(h, volumes, table, 0.0f, relative_error, point, scratch, cut, counters);
+      glm::dvec3 estimate(0.0);
+      for (const glm::vec3& e : scratch.cut_estimates) estimate += glm::dvec3(e);
+      const glm::dvec3 exact = summed_irradiance(world_lights, x);
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(estimate[c], exact[c], 1e-5 * exact[c] + 1e-9) << context << ", channel " << c;
+      EXPECT_TRUE(scratch.centred_clusters.empty()) << context;
+      for (const std::size_t i : scratch.exact_clusters) {
+        ASSERT_LT(i, cut.size()) << context;
+        EXPECT_GT(lev::brightest(point.unshadowed_radiance(cut[i])), 0.0f) << context;
+        const bool a_light_of_the_scene =
+            std::any_of(world_lights.begin(), world_lights.end(), [&](const lev::Light& l) {
+              return glm::length(l.position - cut[i].position) < 1e-5f &&
+                     l.intensity == cut[i].intensity;
+            });
+        EXPECT_TRUE(a_light_of_the_scene) << context << ", cluster light " << i;
+      }
+      exact_clusters += scratch.exact_clusters.size();
+      // The same point gives the same cut: the draw depends on the point alone.
+      std::vector<lev::Light> again;
+      lev::find_light_cut(h, volumes, table, 0.0f, relative_error, point, scratch, again, counters);
+      ASSERT_EQ(again.size(), cut.size()) << context;
+      for (std::size_t i = 0; i < cut.size(); ++i)
+        ASSERT_EQ(again[i].position, cut[i].position) << context;
+    }
+  }
+  EXPECT_GT(exact_clusters, 300u);
+}
+
+TEST(LevCut, AnExactClustersRayGoesToALightDrawnInProportionToItsRadiance) {
+  // Two spots at one place, aimed 45 degrees apart to either side of straight down, both lighting
+  // every point below (cones of 80 degrees, no dropoff): red 1 and green 3, so at each point the
+  // green one gives three times the red one's radiance and should take three rays in four.
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> pair;
+  pair.push_back(lev::light_node(lev::make_spot_light(
+      {0.0f, 0.0f, 10.0f}, {0.7071f, 0.0f, -0.7071f}, {1.0f, 0.0f, 0.0f}, 1.396f, 0.0f)));
+  pair.push_back(lev::light_node(lev::make_spot_light(
+      {0.0f, 0.0f, 10.0f}, {-0.7071f, 0.0f, -0.7071f}, {0.0f, 3.0f, 0.0f}, 1.396f, 0.0f)));
+  std::vector<lev::LightDescriptionNode> root;
+  root.push_back(lev::union_node(std::move(pair)));
+  root.push_back(lev::light_node(lev::make_point_light({50.0f, 50.0f, 50.0f}, glm::vec3(1.0f))));
+  tree.root = lev::union_node(std::move(root));
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);
+  const lev::CutNodeTable table = lev::make_cut_node_table(h);
+  Random r(11);
+  lev::WalkScratch scratch;
+  int draws = 0, green = 0;
+  for (int k = 0; k < 4000; ++k) {
+    RecordsItsRays point({r.uniform(-1, 1), r.uniform(-1, 1), 0.0f});
+    std::vector<lev::Light> cut;
+    lev::WalkCounters counters;
+    lev::find_light_cut(h, volumes, table, 0.0f, 1.0f, point, scratch, cut, counters);
+    for (const std::size_t i : scratch.exact_clusters) {
+      ++draws;
+      if (cut[i].intensity.y > 0.0f) ++green;
+    }
+  }
+  ASSERT_GT(draws, 3000);
+  const double share = static_cast<double>(green) / draws;
+  EXPECT_NEAR(share, 0.75, 0.03) << green << " of " << draws;
 }
 
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
