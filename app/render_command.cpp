@@ -132,17 +132,19 @@ renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& s
   // The pass and its tiles done are what the interrupted line reports (app/interrupt.h).
   CommandStage stage({std::string("rendering ") + lev::method_info(method).name, "pass", 1,
                       settings.image.spp, "setting up the method"});
-  renderer::RenderJob job(loaded.scene, *loaded.rays, render_settings);
-  stage.count_tiles(renderer::render_tile_count(job.state()));
-  bool done = true;
-  for (int pass = 0; pass < settings.image.spp && done; ++pass) {
-    stage.step(pass + 1);
-    done = job.pass(cancel, [](int) { note_tile_done(); });
-    if (done) on_pass_done(pass + 1, renderer::render_seconds(job.state()));
-  }
+  renderer::PassHooks hooks;
+  hooks.on_ready = [&](const renderer::RenderState& state) {
+    stage.count_tiles(renderer::render_tile_count(state));
+  };
+  hooks.on_pass_start = [&](int pass) { stage.step(pass); };
+  hooks.on_tile_done = [](int) { note_tile_done(); };
+  hooks.on_pass_done = on_pass_done;
+  renderer::RenderResult result;
+  const bool done = renderer::render_passes(loaded.scene, *loaded.rays, render_settings,
+                                            settings.image.spp, result, cancel, hooks);
   if (progress_shown) std::fprintf(stderr, done ? "\r\033[K" : "\n");
   if (!done) throw Interrupted();
-  return job.result();
+  return result;
 }
 
 namespace {

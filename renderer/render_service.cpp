@@ -47,14 +47,24 @@ RenderResult RenderJob::result() const {
 
 bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
                    int passes, RenderResult& result, const std::atomic<bool>* cancel,
-                   const PassDoneCallback& on_pass_done) {
+                   const PassHooks& hooks) {
   RenderJob job(scene, rays, settings);
+  if (hooks.on_ready) hooks.on_ready(job.state());
   for (int pass = 0; pass < passes; ++pass) {
-    if (!job.pass(cancel)) return false;
-    if (on_pass_done) on_pass_done(pass + 1, render_seconds(job.state()));
+    if (hooks.on_pass_start) hooks.on_pass_start(pass + 1);
+    if (!job.pass(cancel, hooks.on_tile_done)) return false;
+    if (hooks.on_pass_done) hooks.on_pass_done(pass + 1, render_seconds(job.state()));
   }
   result = job.result();
   return true;
+}
+
+bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
+                   int passes, RenderResult& result, const std::atomic<bool>* cancel,
+                   const PassDoneCallback& on_pass_done) {
+  PassHooks hooks;
+  hooks.on_pass_done = on_pass_done;
+  return render_passes(scene, rays, settings, passes, result, cancel, hooks);
 }
 
 }  // namespace renderer

@@ -62,8 +62,21 @@ std::vector<std::uint8_t> rendered_rgb8(const Framebuffer& framebuffer);
 // Called after each complete pass with the passes done and the render's wall time so far.
 using PassDoneCallback = std::function<void(int passes_done, double render_seconds)>;
 
+// What a caller of render_passes follows of the loop (each may be empty): the job once made
+// (before its first pass), each pass as it starts (from 1), each tile done (any thread), each
+// pass done.
+struct PassHooks {
+  std::function<void(const RenderState& state)> on_ready;
+  std::function<void(int pass)> on_pass_start;
+  TileDoneCallback on_tile_done;
+  PassDoneCallback on_pass_done;
+};
+
 // `passes` passes of a new job. Returns false (and leaves *result untouched) when *cancel stopped
 // a pass.
+bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
+                   int passes, RenderResult& result, const std::atomic<bool>* cancel,
+                   const PassHooks& hooks);
 bool render_passes(const Scene& scene, const RayScene& rays, const RenderSettings& settings,
                    int passes, RenderResult& result, const std::atomic<bool>* cancel = nullptr,
                    const PassDoneCallback& on_pass_done = nullptr);
