@@ -118,6 +118,7 @@ struct CulledSoFar {
   // and the scratch that cluster's lights are gathered in.
   std::uint64_t point_seed = 0;
   WalkScratch* scratch = nullptr;
+  std::uint64_t lights_evaluated = 0;  // the exact clusters' lights (WalkCounters)
   // The pixel inspector's record (WalkScratch::inspect): what is culled and clustered, when set.
   InspectRecord* record = nullptr;
 };
@@ -620,6 +621,7 @@ void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear&
     Light& chosen = culled.scratch->cluster_light;
     for_each_subtree_light(h, node, Similarity{linear.rotation, linear.scale, translation},
                            culled.scratch->subtree_parts, [&](const Light& light) {
+                             ++culled.lights_evaluated;
                              const glm::vec3 r = culled.shading->unshadowed_radiance(light);
                              const double w = draw_weight(r);
                              if (!(w > 0.0)) return true;
@@ -913,6 +915,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     }
   }
   counters.nodes_visited += visited;
+  counters.lights_evaluated += culled.lights_evaluated;
   if constexpr (kCulled == Culled::tight || kCulled == Culled::relative) {
     if (culled.radiance) answer_culled_radiance(h, tolerance, culled);
   }

@@ -23,6 +23,8 @@ struct WalkCounters {
   // Extent volumes tested: every box test (a union's children, extent-volume and master nodes)
   // and every light's exact irradiance test.
   std::uint64_t nodes_visited = 0;
+  // The lights of lev_cut's exact clusters whose unshadowed radiance it summed.
+  std::uint64_t lights_evaluated = 0;
 };
 
 // The rotation and scale of a world_from_local transform. The walk keeps them apart from the

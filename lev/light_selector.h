@@ -47,6 +47,9 @@ struct SelectionCounters {
   std::uint64_t nodes_visited = 0;  // extent volumes tested (LEV walks)
   std::uint64_t shadow_rays =
       0;  // rays actually cast (a selected light behind the surface needs none)
+  // Lights whose unshadowed radiance a method summed beyond those it tested (lev_cut's exact
+  // clusters' lights): work the rt fallback's probe weighs (WorkCost::per_light_evaluated).
+  std::uint64_t lights_evaluated = 0;
 };
 
 // A small random stream seeded per (pixel, sample) by the renderer, so that methods that sample

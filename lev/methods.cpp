@@ -118,7 +118,7 @@ std::vector<MethodInfo> built_in_rows() {
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevCutSelector>(h, p.relative_error, p.display_scale);
        },
-       WorkCost{0.6, 0.03, 0.0}},
+       WorkCost{0.6, 0.03, 0.0, 0.15}},
   };
 }
 

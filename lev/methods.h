@@ -116,6 +116,9 @@ struct WorkCost {
   // per light or cluster it tests (a heap's pop, a cluster's bound).
   double per_light_tested = 0.03;
   double per_scene_light = 0.0;  // a method that scans every light at every point
+  // A light whose unshadowed radiance the method sums without a shadow test of its own
+  // (SelectionCounters::lights_evaluated): placing it and shading it, no ray.
+  double per_light_evaluated = 0.0;
 };
 
 struct MethodInfo {

@@ -27,6 +27,7 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   scratch.walk.radiance = nullptr;
   if (culled_radiance.bounded) *scratch.culled_radiance = culled_radiance;
   counters.nodes_visited += walk_counters.nodes_visited;
+  counters.lights_evaluated += walk_counters.lights_evaluated;
   // The lights and the clusters' representatives alike: one shadow ray each.
   const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
   // A centred cluster's ray goes to one of its lights (CutCluster); the rest to the light itself.

@@ -65,6 +65,7 @@ double cost_in_rays(const PathCounters& counters, const lev::WorkCost& cost,
   const double total = static_cast<double>(work.shadow_rays) +
                        cost.per_node_visited * static_cast<double>(work.nodes_visited) +
                        cost.per_light_tested * static_cast<double>(work.lights_tested) +
+                       cost.per_light_evaluated * static_cast<double>(work.lights_evaluated) +
                        cost.per_scene_light * static_cast<double>(light_count) *
                            static_cast<double>(counters.shading_points);
   return total / points;

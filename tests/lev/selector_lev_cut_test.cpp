@@ -470,6 +470,13 @@ TEST(LevCut, ExactClustersAreShadedFromTheirOwnLights) {
         EXPECT_TRUE(a_light_of_the_scene) << context << ", cluster light " << i;
       }
       exact_clusters += scratch.exact_clusters.size();
+      // Their lights are counted as work (the rt fallback's probe weighs them), at most once each.
+      if (scratch.exact_clusters.empty()) {
+        EXPECT_EQ(counters.lights_evaluated, 0u) << context;
+      } else {
+        EXPECT_GE(counters.lights_evaluated, scratch.exact_clusters.size()) << context;
+        EXPECT_LE(counters.lights_evaluated, world_lights.size()) << context;
+      }
       // The same point gives the same cut: the draw depends on the point alone.
       std::vector<lev::Light> again;
       lev::find_light_cut(h, volumes, table, 0.0f, relative_error, point, scratch, again, counters);
