@@ -33,7 +33,7 @@ using lev_test::Random;
 // A surface that faces every light, reflects irradiance unchanged and is never shadowed, and
 // says so (a response of 1 from every direction), so a cluster's radiance bound is its
 // irradiance bound and the direct radiance is the summed irradiance of what a method returns.
-class UnitResponsePoint final : public lev::ShadingPoint {
+class UnitResponsePoint : public lev::ShadingPoint {
  public:
   explicit UnitResponsePoint(const glm::vec3& x) : x_(x) {}
   glm::vec3 position() const override { return x_; }
@@ -408,26 +408,14 @@ lev::LightDescription fixtures_of_spots_aimed_apart() {
 }
 
 // Every light is seen; each shadow ray's target is kept.
-class RecordsItsRays final : public lev::ShadingPoint {
+class RecordsItsRays final : public UnitResponsePoint {
  public:
-  explicit RecordsItsRays(const glm::vec3& x) : x_(x) {}
-  glm::vec3 position() const override { return x_; }
-  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
-    return lev::irradiance(light, x_);
-  }
+  using UnitResponsePoint::UnitResponsePoint;
   bool visible(const lev::Light& target) override {
     targets.push_back(target);
     return true;
   }
-  lev::SurfaceResponse surface_response() const override {
-    lev::SurfaceResponse unit;
-    unit.diffuse = glm::vec3(1.0f);
-    return unit;
-  }
   std::vector<lev::Light> targets;
-
- private:
-  glm::vec3 x_;
 };
 
 TEST(LevCut, ExactClustersAreShadedFromTheirOwnLights) {
