@@ -1,7 +1,8 @@
 // The methods that read the relative error (`lightcuts`, `lev_cut`) in the renderer: at relative
 // error 0 the image equals rt's bit for bit (the building, with point lights behind walls, and
 // the hall's spots); at the default the image is the same for one and two threads, close to rt's
-// on the hall, where every light adds a little, with far fewer shadow rays than rt.
+// on the hall, where every light adds a little, with far fewer shadow rays than rt; on the stage,
+// whose spots aim apart, the same for one and two threads too.
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "renderer/render.h"
 #include "scenes/building.h"
 #include "scenes/hall.h"
+#include "scenes/stage_rig.h"
 #include "tests/support/framebuffer_compare.h"
 #include "tests/support/test_render.h"
 
@@ -71,6 +73,19 @@ TEST_P(RelativeErrorRender, DeterministicAndCloseToRtWithFewerRaysOnTheHall) {
   EXPECT_LT(error.max_pct, 5.0);
   EXPECT_LT(renderer::sum_framebuffer(one).shadow_rays * 2,
             renderer::sum_framebuffer(rt).shadow_rays);
+}
+
+TEST_P(RelativeErrorRender, DeterministicOnTheStageWhoseSpotsAimApart) {
+  // Spots aimed apart: lev_cut shades its small clusters from their own lights, its ray to one
+  // drawn by a hash of the point (lev/important_lights.cpp, keep_cluster), never by the thread.
+  const renderer::Scene scene = scenes::build_stage_rig(4);
+  const renderer::RayScene rays(scene);
+  for (const float relative_error : {0.05f, 0.3f}) {
+    const renderer::Framebuffer one = render_relative(scene, rays, GetParam(), relative_error, 1);
+    const renderer::Framebuffer two = render_relative(scene, rays, GetParam(), relative_error, 2);
+    EXPECT_TRUE(bitwise_equal(one, two)) << relative_error;
+    EXPECT_EQ(one.shadow_rays, two.shadow_rays) << relative_error;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, RelativeErrorRender, testing::ValuesIn(relative_error_methods()),
