@@ -99,18 +99,22 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& o) {
   return paths;
 }
 
-void check_memory_budget(const Settings& settings, bool reference) {
+std::string memory_budget_refusal(const Settings& settings, bool reference,
+                                  std::uint64_t budget_bytes) {
   const std::uint64_t pixels = static_cast<std::uint64_t>(settings.image.width) *
                                static_cast<std::uint64_t>(settings.image.height);
   const std::uint64_t per_pixel = reference ? kReferenceRenderBytesPerPixel : kRenderBytesPerPixel;
-  if (pixels * per_pixel > kRenderMemoryBudgetBytes) {
-    throw UsageError(
-        "--width/--height: " + std::to_string(settings.image.width) + "x" +
-        std::to_string(settings.image.height) + (reference ? " with --reference" : "") +
-        " needs about " + std::to_string((pixels * per_pixel) >> 20) + " MiB (" +
-        std::to_string(per_pixel) + " bytes per pixel, subsampled or not), more than the " +
-        std::to_string(kRenderMemoryBudgetBytes >> 20) + " MiB budget");
-  }
+  if (pixels * per_pixel <= budget_bytes) return std::string();
+  return "--width/--height: " + std::to_string(settings.image.width) + "x" +
+         std::to_string(settings.image.height) + (reference ? " with --reference" : "") +
+         " needs about " + std::to_string((pixels * per_pixel) >> 20) + " MiB (" +
+         std::to_string(per_pixel) + " bytes per pixel, subsampled or not), more than the " +
+         std::to_string(budget_bytes >> 20) + " MiB budget";
+}
+
+void check_memory_budget(const Settings& settings, bool reference) {
+  const std::string refusal = memory_budget_refusal(settings, reference);
+  if (!refusal.empty()) throw UsageError(refusal);
 }
 
 renderer::RenderResult render_image(const LoadedScene& loaded, const Settings& settings,

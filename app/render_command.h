@@ -55,8 +55,11 @@ inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 232;
 // The memory a render may plan for; larger images are refused before any work.
 inline constexpr std::uint64_t kRenderMemoryBudgetBytes = std::uint64_t{8} << 30;
 
-// Throws UsageError when width x height (with or without the rt reference) would need more
-// than kRenderMemoryBudgetBytes.
+// Why width x height (with or without the rt reference) would need more than budget_bytes, in one
+// line naming the size; empty when it fits.
+std::string memory_budget_refusal(const Settings& settings, bool reference,
+                                  std::uint64_t budget_bytes = kRenderMemoryBudgetBytes);
+// Throws UsageError with memory_budget_refusal's line when it is not empty.
 void check_memory_budget(const Settings& settings, bool reference);
 
 // Renders settings.spp passes of `method` over the loaded scene through the render service.

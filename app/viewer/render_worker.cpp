@@ -295,8 +295,20 @@ struct Worker {
       st.error.clear();
       st.bad_input = false;
     });
-    // A size over the budget is refused before the scene is built or a framebuffer allocated.
-    check_memory_budget(request.settings, request.want_reference);
+    // A size over the budget is refused before the scene is built or a framebuffer allocated. The
+    // rt reference (a second framebuffer) may not fit where the image alone does: the image then
+    // renders without it, and the status says why (it used to fail the render until the
+    // reference was turned off).
+    if (const std::string refusal =
+            memory_budget_refusal(request.settings, false, request.memory_budget_bytes);
+        !refusal.empty()) {
+      throw UsageError(refusal);
+    }
+    const std::string reference_refusal =
+        request.want_reference
+            ? memory_budget_refusal(request.settings, true, request.memory_budget_bytes)
+            : std::string();
+    const bool want_reference = request.want_reference && reference_refusal.empty();
     // What restarts is derived from the groups of the settings that changed (app/settings.h):
     // a setting the scene or the method does not read (a built-in scene's camera index, rt's
     // tolerance) restarts nothing, and a method's setting keeps the reference.
@@ -322,7 +334,7 @@ struct Worker {
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
     // in the scene (each render state fits its own extent volumes), so the reference keeps going.
-    if ((view_changed || !request.want_reference) && reference.has_state()) drop_reference(serial);
+    if ((view_changed || !want_reference) && reference.has_state()) drop_reference(serial);
     if (main_changed) {
       stop_inspection();  // it reads the scene, whose camera may move now
       drop_main(serial);
@@ -372,7 +384,13 @@ struct Worker {
     update_status([&](WorkerStatus& st) { st.passes_target = s.image.spp; });
 
     reference.set_target(s.image.spp);
-    if (request.want_reference && !reference.complete()) {
+    if (!reference_refusal.empty()) {
+      update_status([&](WorkerStatus& st) {
+        st.reference = ReferencePhase::failed;
+        st.error = "rt reference not rendered: " + reference_refusal;
+      });
+    }
+    if (want_reference && !reference.complete()) {
       if (!reference.has_state()) {
         renderer::RenderSettings ref = rs;
         ref.method = lev::Method::rt;

@@ -21,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/render_command.h"
 #include "app/settings.h"
 #include "app/viewer/display_buffer.h"
 #include "app/viewer/inspector_rows.h"
@@ -35,6 +36,9 @@ struct RenderRequest {
   bool want_reference = false;             // render the rt reference of this view
   // The pinned pixel to inspect (the inspector, inspector_rows.h), in the render's image pixels.
   std::optional<std::array<int, 2>> inspect_pixel;
+  // The memory the render may plan for (the image, and the reference when wanted): a size over
+  // it fails the request; a reference over it is not rendered, the image still is.
+  std::uint64_t memory_budget_bytes = kRenderMemoryBudgetBytes;
 };
 
 enum class WorkerPhase { idle, loading, preparing, rendering, waiting_for_reference, failed };

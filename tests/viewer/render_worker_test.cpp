@@ -374,6 +374,32 @@ TEST(RenderWorker, AFailedRequestIsReportedAndTheNextOneRecovers) {
   EXPECT_TRUE(ui.status.error.empty());
 }
 
+// A size whose image fits the memory budget but whose rt reference does not: the image renders,
+// the reference is refused with the reason (it failed the whole render, until the reference was
+// turned off). The budget is the request's, made small here: 48x36 needs 255,744 bytes alone and
+// 400,896 with the reference.
+TEST(RenderWorker, AReferenceOverTheMemoryBudgetIsRefusedAndTheImageStillRenders) {
+  Ui ui;
+  RenderRequest request = request_for(small_settings(), true);
+  request.memory_budget_bytes = 300000;
+  const std::uint64_t serial = ui.worker.post(request);
+  ASSERT_TRUE(
+      ui.run_until([&] { return ui.settled(serial) || ui.status.phase == WorkerPhase::failed; }));
+  ASSERT_NE(ui.status.phase, WorkerPhase::failed) << ui.status.error;
+  EXPECT_EQ(ui.status.reference, ReferencePhase::failed);
+  EXPECT_NE(ui.status.error.find("rt reference not rendered: --width/--height: 48x36 with "
+                                 "--reference needs about"),
+            std::string::npos)
+      << ui.status.error;
+  EXPECT_EQ(ui.status.passes_done, 2);
+  // Over the budget without the reference too: the request fails, naming the size.
+  request.memory_budget_bytes = 200000;
+  ui.worker.post(request);
+  ASSERT_TRUE(ui.run_until([&] { return ui.status.phase == WorkerPhase::failed; }));
+  EXPECT_TRUE(ui.status.bad_input);
+  EXPECT_NE(ui.status.error.find("48x36 needs about"), std::string::npos) << ui.status.error;
+}
+
 // A scene file that cannot be read, asked for while another scene is shown, leaves the shown
 // scene and its finished render as they were; the failure is a load error, not a failed render.
 TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {

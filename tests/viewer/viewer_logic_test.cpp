@@ -342,6 +342,24 @@ TEST(ViewerState, AFitSizeStaysWithinTheMemoryBudgetAtAnyWindowSize) {
   EXPECT_NEAR(static_cast<double>(big[0]) / big[1], 15562.0 / 7992.0, 1e-3);
 }
 
+// A typed size whose image fits the memory budget but whose rt reference (a second framebuffer)
+// does not: the render worker renders the image and says why the reference is not rendered (it
+// checked the size with the reference and failed the whole render). The worker's two checks,
+// image alone and with the reference, are memory_budget_refusal's.
+TEST(ViewerState, ASizeThatFitsOnlyWithoutTheReferenceIsRefusedTheReferenceAlone) {
+  app::Settings settings;
+  settings.image.width = 7000;
+  settings.image.height = 7000;
+  EXPECT_EQ(app::memory_budget_refusal(settings, false), "");
+  const std::string refusal = app::memory_budget_refusal(settings, true);
+  EXPECT_NE(refusal.find("7000x7000 with --reference needs about 10841 MiB"), std::string::npos)
+      << refusal;
+  EXPECT_THROW(app::check_memory_budget(settings, true), app::UsageError);
+  EXPECT_NO_THROW(app::check_memory_budget(settings, false));
+  settings.image.width = 9000;
+  EXPECT_NE(app::memory_budget_refusal(settings, false), "");
+}
+
 TEST(ViewerState, ATypedSizeLeavesTheFitResolutionAndAFitSizeKeepsIt) {
   ViewerState s;
   EXPECT_EQ(s.settings.resolution, "fit");
