@@ -170,6 +170,59 @@ TEST(Extremes, EveryMethodIsDeterministicWithinItsBoundAndExactAtZero) {
   }
 }
 
+// Radiance past the float range from valid inputs: lights of 1e36 (a scene file's 1e12 under
+// scales of 1e12) on a surface of kd, colour and ks 1e3. The irradiance is clamped to the largest
+// float, but times the response it overflowed: AST estimated an untested light of +inf radiance
+// by a hit ratio of 0 (NaN pixels, black where rt is white), and two samples near the largest
+// float summed to +inf in the pixel (rt's too).
+renderer::Scene huge_radiance_scene() {
+  renderer::Scene scene;
+  scene.name = "huge radiance";
+  renderer::Material bright;
+  bright.colour = glm::vec3(1e3f);
+  bright.kd = 1e3f;
+  bright.ks = 1e3f;
+  bright.shininess = 0.0f;
+  scene.materials.push_back(bright);
+  renderer::Prototype room;
+  renderer::TriangleMesh floor;
+  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
+  room.meshes.push_back(floor);
+  renderer::TriangleMesh box;
+  renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
+  room.meshes.push_back(box);
+  scene.geometry.prototypes.push_back(room);
+  scene.geometry.instances.push_back({0, lev::Similarity{}});
+  std::vector<lev::LightDescriptionNode> lights;
+  lights.push_back(lev::light_node(lev::make_point_light({0, 0, 3}, glm::vec3(1e36f))));
+  lights.push_back(lev::light_node(lev::make_point_light({0, 1, 3}, {1e36f, 0, 0})));
+  lights.push_back(lev::light_node(lev::make_point_light({2, 2, 2}, glm::vec3(1.0f))));
+  scene.light_description.root = lev::union_node(std::move(lights));
+  scene.lights = lev::build_hierarchy(scene.light_description);
+  scene.camera.position = {0, -18, 9};
+  scene.camera.target = {0, 0, 0};
+  return scene;
+}
+
+TEST(Extremes, RadianceBeyondTheFloatRangeStaysFiniteInEveryMethod) {
+  renderer::Scene scene = huge_radiance_scene();
+  const renderer::RayScene rays(scene);
+  for (const lev::MethodInfo& info : lev::method_table()) {
+    for (const ExtremeSetting& setting : extreme_settings(info)) {
+      const renderer::Framebuffer fb =
+          render_extreme(scene, rays, info.id, setting.tolerance, setting.relative_error);
+      expect_finite(fb, extreme_label(info, setting));
+      // The image shows the lit floor white, as rt's does.
+      if (info.id == lev::Method::ast && setting.tolerance > 0.0f &&
+          std::isfinite(setting.tolerance)) {
+        const renderer::Framebuffer rt = render_extreme(scene, rays, lev::Method::rt, 0.0f);
+        EXPECT_EQ(renderer::framebuffer_rgb8(fb), renderer::framebuffer_rgb8(rt))
+            << extreme_label(info, setting);
+      }
+    }
+  }
+}
+
 TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene);
