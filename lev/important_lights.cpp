@@ -481,7 +481,7 @@ std::uint32_t draw_light(const LightHierarchy& h, const CutNodeTable& table, std
     for (const std::uint32_t child : children) total += table.draw_weights[child];
     const double u = node_uniform(node) + shift;
     double left = (u - std::floor(u)) * total;
-    std::uint32_t chosen = 0;
+    std::uint32_t chosen = kNoNode;
     for (const std::uint32_t child : children) {
       const double w = table.draw_weights[child];
       if (w <= 0.0) continue;  // an empty union weighs 0 too
@@ -489,7 +489,18 @@ std::uint32_t draw_light(const LightHierarchy& h, const CutNodeTable& table, std
       if (left < w) break;
       left -= w;
     }
-    node = chosen;  // the subtree holds lights (its bound is above 0), so one child does
+    // Every light below is dark (intensity 0; the node table draws from every union): its first
+    // child with a light. It was node 0, the root, and the draw began again there for ever.
+    if (chosen == kNoNode) {
+      for (const std::uint32_t child : children) {
+        if (holds_lights(h, child)) {
+          chosen = child;
+          break;
+        }
+      }
+    }
+    assert(chosen != kNoNode);  // the subtree holds lights, so one child does
+    node = chosen;
   }
 }
 

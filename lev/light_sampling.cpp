@@ -26,6 +26,16 @@ double channel_sum(const glm::vec3& v) {
   return static_cast<double>(v.x) + static_cast<double>(v.y) + static_cast<double>(v.z);
 }
 
+// An aggregate's summed intensity is rounded up in float, so lights summing past the largest
+// float (a few lights of the largest float; 400 lights of 1e12 under a scene file's scales of
+// 1e12) make it +inf. Its importance takes it as three largest floats instead: an infinite weight
+// made a part's or a child's probability weight / total inf / inf, NaN, and the pixels of
+// light_tree and lev_mc NaN. Still the largest weight a part can have.
+double finite_intensity(const glm::vec3& intensity) {
+  constexpr double kLargest = 3.0 * static_cast<double>(std::numeric_limits<float>::max());
+  return std::min(channel_sum(intensity), kLargest);
+}
+
 // The largest cos(theta) between the normal and a direction from x into a ball of squared
 // radius r2 around `to_centre` (x at the origin), at least kMinCosine; 0 when the box with half
 // extent `half` lies behind the surface plane by more than rounding can explain.
@@ -54,7 +64,7 @@ float cosine_factor(const glm::vec3& normal, const glm::vec3& to_centre, const g
 // or the box is behind the surface.
 double aggregate_importance(const LightAggregate& a, const FramePoint& x, const glm::vec3& normal) {
   if (is_empty(a)) return 0.0;
-  const double intensity = channel_sum(a.intensity);
+  const double intensity = finite_intensity(a.intensity);
   if (!(intensity > 0.0)) return 0.0;
   const float cone = shines_everywhere(a) ? 1.0f : spot_cone_factor(a, x);
   if (cone == 0.0f) return 0.0;

@@ -28,7 +28,7 @@ class ShadingPoint {
   // from the other side), for methods that sample by importance; zero when unknown.
   virtual glm::vec3 normal() const { return glm::vec3(0.0f); }
   // Radiance the light would add toward the viewer if unoccluded: eq. 6 without the ambient
-  // term. Zero when the light is behind the surface.
+  // term. Zero when the light is behind the surface; finite (at most the largest float).
   virtual glm::vec3 unshadowed_radiance(const Light& world_light) const = 0;
   // Casts one shadow ray; true when nothing blocks the light.
   virtual bool visible(const Light& world_light) = 0;

@@ -137,7 +137,9 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
       scratch.culled_radiance->bounded = true;
     }
   }
-  return sum;
+  // Clamped to the largest float as sum_visible_lights' sum is: a float sum of huge terms
+  // overflows to +inf.
+  return glm::min(sum, glm::vec3(std::numeric_limits<float>::max()));
 }
 
 void AstSelector::end_pass() {

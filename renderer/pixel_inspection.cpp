@@ -86,7 +86,7 @@ PixelInspection inspect_pixel(const Scene& scene, const RayScene& rays,
   context.inspection = &inspection.hits;
   const Ray ray =
       pixel_sample_ray(settings, scene.camera, x, y, 0, scratch.random, context.missed_random);
-  inspection.radiance = trace_radiance(context, ray, 0, inspection.counters);
+  inspection.radiance = clamp_sample_radiance(trace_radiance(context, ray, 0, inspection.counters));
   for (const InspectedHit& hit : inspection.hits) {
     const InspectedTotals t = hit_totals(hit);
     InspectedTotals& all = inspection.totals;

@@ -97,7 +97,7 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
                                        static_cast<std::size_t>(state.preview.width) +
                                    static_cast<std::size_t>(x / step)
                              : pixel;
-      sample.radiance = trace_radiance(context, ray, 0, sample.counters);
+      sample.radiance = clamp_sample_radiance(trace_radiance(context, ray, 0, sample.counters));
     }
   }
   if (cancel && cancel->load(std::memory_order_relaxed)) {

@@ -38,7 +38,12 @@ class SurfacePoint final : public lev::ShadingPoint {
     const glm::vec3 l = to_light / std::sqrt(d2);
     const float cos_theta = glm::dot(normal_, l);
     if (cos_theta <= 0.0f) return glm::vec3(0.0f);
-    return lev::irradiance(light, position_) * response(l, cos_theta);
+    // Clamped to the largest float as the irradiance is: the irradiance (up to the largest
+    // float) times a response of up to 2e6 (kd, colour and ks up to 1e3) overflowed to +inf,
+    // which AST's estimate multiplied by a hit ratio of 0 (NaN pixels).
+    constexpr float kLargest = std::numeric_limits<float>::max();
+    return glm::min(lev::irradiance(light, position_) * response(l, cos_theta),
+                    glm::vec3(kLargest));
   }
 
   // A sun: its irradiance times the response toward it, when the ray to infinity is free.

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <limits>
 
 #include <glm/glm.hpp>
 
@@ -56,6 +57,15 @@ struct TraceContext {
 // 64 costs no more than it can show (docs/extremes.md).
 inline constexpr float kBrightestPixelValue = 1.0f;
 inline constexpr float kSmallestVisibleWeight = 0.5f / 255.0f / kBrightestPixelValue;
+
+// The most a sample's radiance adds to its pixel: the largest float over 2^17, so that a pixel's
+// sum over the most passes a render takes (100,000) stays finite, where two samples near the
+// largest float (a light of 1e36 on a surface of kd 1e3) summed to +inf. Even at the lowest
+// exposure (2^-64) it shows as white: no displayed value changes.
+inline constexpr float kLargestSampleRadiance = std::numeric_limits<float>::max() / 131072.0f;
+inline glm::vec3 clamp_sample_radiance(const glm::vec3& radiance) {
+  return glm::min(radiance, glm::vec3(kLargestSampleRadiance));
+}
 
 // Radiance arriving along the ray; depth 0 is the primary ray, path_weight the factor the caller
 // scales the result by (1 for a primary ray). Adds the work to counters and, when asked, the error

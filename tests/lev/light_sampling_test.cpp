@@ -5,15 +5,19 @@
 // expectation is the exact sum; and the walk's culled parts plus its lights are every light
 // that can light the point, once each.
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
+#include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
 #include "lev/light_sampling.h"
+#include "tests/lev/open_point.h"
 #include "tests/lev/random_light_scenes.h"
 
 namespace {
@@ -316,6 +320,45 @@ TEST(LightSampling, OpeningWidePartsKeepsEveryLightOnceWithinTheBudget) {
     }
   }
   EXPECT_GT(opened, 20);
+}
+
+// Lights whose summed intensity overflows a float: 64 lights of the largest float (the extremes
+// pinned for lev), so the aggregates above them are +inf. The estimator weighed such a part by an
+// infinite importance and drew it with probability inf / inf: NaN, and light_tree's and lev_mc's
+// pixels were NaN. Every probability stays finite and they sum to 1; the estimate is finite.
+TEST(LightSampling, SubtreesWhoseIntensityOverflowsAreDrawnWithFiniteProbabilities) {
+  std::vector<lev::LightDescriptionNode> lights;
+  for (int i = 0; i < 64; ++i) {
+    const glm::vec3 at(static_cast<float>(i % 8), static_cast<float>(i / 8), 5.0f);
+    lights.push_back(
+        lev::light_node(lev::make_point_light(at, glm::vec3(std::numeric_limits<float>::max()))));
+  }
+  lev::LightDescription tree;
+  tree.root = lev::union_node(std::move(lights));
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const glm::vec3 x(3.0f, 4.0f, 0.0f);
+  const lev::SamplingPoint at{x, glm::vec3(0.0f)};
+  std::vector<lev::SampledLight> enumerated;
+  lev::light_probabilities(h, lev::whole_hierarchy(h, x), at, enumerated);
+  ASSERT_EQ(enumerated.size(), 64u);
+  double total = 0.0;
+  for (const lev::SampledLight& s : enumerated) {
+    ASSERT_TRUE(std::isfinite(s.probability));
+    EXPECT_GT(s.probability, 0.0);
+    total += s.probability;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-9);
+  EXPECT_TRUE(std::isfinite(lev::subtree_importance(h, h.root, lev::world_frame_point(x), {})));
+  lev_test::OpenPoint point(x);
+  lev::RandomStream random{7};
+  lev::SamplingScratch scratch;
+  lev::SelectionCounters counters;
+  for (int draws : {1, 16}) {
+    scratch.parts.clear();
+    scratch.parts.subtrees.push_back(lev::whole_hierarchy(h, x));
+    const glm::vec3 estimate = lev::sampled_radiance(h, draws, point, random, scratch, counters);
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(estimate[c])) << draws << " draws";
+  }
 }
 
 }  // namespace

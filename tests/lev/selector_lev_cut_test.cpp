@@ -151,6 +151,39 @@ TEST(LevCut, SelectorAtRelativeErrorZeroIsRt) {
   }
 }
 
+// Dark lights (intensity 0) grouped in a union of their own, alone and beside a bright light:
+// the node table draws a light from every union in proportion to intensity, and a union whose
+// lights were all dark drew the root again and again (`levrt render --method lev_cut` of a scene
+// of 30 dark lights hung while setting up the method). The selector is made, and it is rt's.
+TEST(LevCut, UnionsOfDarkLightsAreDrawnFromAndTheSelectorIsRt) {
+  for (bool beside_a_bright_light : {false, true}) {
+    std::vector<lev::LightDescriptionNode> dark;
+    for (int k = 0; k < 30; ++k) {
+      const glm::vec3 at(0.1f * static_cast<float>(k % 3), 0.0f, 3.0f);
+      dark.push_back(lev::light_node(lev::make_point_light(at, glm::vec3(0.0f))));
+    }
+    std::vector<lev::LightDescriptionNode> root;
+    root.push_back(lev::union_node(std::move(dark)));
+    if (beside_a_bright_light)
+      root.push_back(lev::light_node(lev::make_point_light({2, 0, 3}, glm::vec3(1.0f))));
+    lev::LightDescription tree;
+    tree.root = lev::union_node(std::move(root));
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const lev::RtSelector rt(h);
+    for (float relative_error : {0.0f, 0.02f, 1.0f}) {
+      const lev::LevCutSelector cut(h, relative_error);
+      for (const glm::vec3& x : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 3), glm::vec3(5, 5, 1)}) {
+        UnitResponsePoint point(x);
+        lev::SelectorScratch scratch;
+        lev::SelectionCounters counters;
+        EXPECT_EQ(cut.direct_radiance(point, scratch, counters),
+                  rt.direct_radiance(point, scratch, counters))
+            << "relative error " << relative_error << (beside_a_bright_light ? ", bright" : "");
+      }
+    }
+  }
+}
+
 // Sees exactly the positions of the scene's lights (within float rounding of the walk's
 // arithmetic) and nothing else, as a point whose view is blocked everywhere but toward the lights
 // themselves; counts its shadow rays. Faces every light with a unit response.

@@ -1,9 +1,13 @@
 // Rendering at the extremes: lights of absurd intensity, lights resting on surfaces, degenerate
-// spotlights and tolerances at both ends. No Inf or NaN may reach a pixel, and `lev` at tolerance
-// 0 must still equal `rt` bit for bit.
+// spotlights and tolerances and relative errors at both ends. No Inf or NaN may reach a pixel of
+// any method, every method's image is the same on one thread and on two, its certified bound
+// holds against `rt`, and every method at its exact setting (`lev` and its kin at tolerance 0,
+// `lightcuts` and `lev_cut` at relative error 0) still equals `rt` bit for bit.
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +15,7 @@
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
 #include "renderer/shapes.h"
+#include "tests/support/framebuffer_compare.h"
 
 namespace {
 
@@ -67,12 +72,16 @@ renderer::Scene extreme_scene() {
 }
 
 renderer::Framebuffer render_extreme(renderer::Scene& scene, const renderer::RayScene& rays,
-                                     lev::Method method, float tau) {
+                                     lev::Method method, float tau, float relative_error = 0.02f,
+                                     int threads = 0) {
   renderer::RenderSettings rs;
   rs.width = 96;
   rs.height = 72;
   rs.method = method;
   rs.tolerance = tau;
+  rs.relative_error = relative_error;
+  rs.threads = threads;
+  rs.compute_error_bound = true;
   auto state = renderer::make_render_state(scene, rays, rs);
   EXPECT_TRUE(renderer::render_pass(*state));
   EXPECT_TRUE(renderer::render_pass(*state));
@@ -85,15 +94,131 @@ void expect_finite(const renderer::Framebuffer& fb, const std::string& label) {
   }
 }
 
+// The settings a method is rendered at here: each tolerance for a method that reads it, each
+// relative error for one that reads that, the defaults for the rest.
+struct ExtremeSetting {
+  float tolerance;
+  float relative_error;
+};
+std::vector<ExtremeSetting> extreme_settings(const lev::MethodInfo& info) {
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  std::vector<ExtremeSetting> settings;
+  if (info.uses_tolerance) {
+    for (float tau :
+         {0.0f, tiny, 1e-30f, 0.01f, 1.0f, 1e30f, std::numeric_limits<float>::infinity()})
+      settings.push_back({tau, 0.02f});
+  }
+  if (info.uses_relative_error) {
+    for (float rel : {0.0f, tiny, 1e-7f, 0.02f, 0.9999999f, 1.0f}) settings.push_back({0.01f, rel});
+  }
+  if (settings.empty()) settings.push_back({0.01f, 0.02f});
+  return settings;
+}
+
+std::string extreme_label(const lev::MethodInfo& info, const ExtremeSetting& setting) {
+  return std::string(info.name) + " tolerance " + std::to_string(setting.tolerance) +
+         " relative error " + std::to_string(setting.relative_error);
+}
+
+// Every method: light_tree's and lev_mc's descents weighed a subtree whose summed intensity
+// overflowed to +inf (the largest-float lights) by inf, and drew with probability inf / inf:
+// NaN pixels.
 TEST(Extremes, NoInfOrNaNReachesAPixel) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene);
-  const float tiny = std::numeric_limits<float>::denorm_min();
-  for (lev::Method method : {lev::Method::rt, lev::Method::ast, lev::Method::lev}) {
-    for (float tau :
-         {0.0f, tiny, 1e-30f, 0.01f, 1.0f, 1e30f, std::numeric_limits<float>::infinity()}) {
-      expect_finite(render_extreme(scene, rays, method, tau),
-                    std::string(lev::method_info(method).name) + " " + std::to_string(tau));
+  for (const lev::MethodInfo& info : lev::method_table()) {
+    for (const ExtremeSetting& setting : extreme_settings(info)) {
+      expect_finite(render_extreme(scene, rays, info.id, setting.tolerance, setting.relative_error),
+                    extreme_label(info, setting));
+    }
+  }
+}
+
+// Determinism (every method, samplers included, on one thread and on two), the certified bound
+// against rt (per sample and channel, error_bound.h), and the exact settings equal to rt.
+TEST(Extremes, EveryMethodIsDeterministicWithinItsBoundAndExactAtZero) {
+  renderer::Scene scene = extreme_scene();
+  const renderer::RayScene rays(scene);
+  const renderer::Framebuffer rt = render_extreme(scene, rays, lev::Method::rt, 0.0f);
+  for (const lev::MethodInfo& info : lev::method_table()) {
+    for (const ExtremeSetting& setting : extreme_settings(info)) {
+      const std::string label = extreme_label(info, setting);
+      const renderer::Framebuffer one =
+          render_extreme(scene, rays, info.id, setting.tolerance, setting.relative_error, 1);
+      const renderer::Framebuffer two =
+          render_extreme(scene, rays, info.id, setting.tolerance, setting.relative_error, 2);
+      EXPECT_TRUE(bitwise_equal(one, two)) << label;
+      // AST at 0 tests every light but sums them in its own order: equal to rt up to rounding.
+      const bool exact = info.id != lev::Method::ast &&
+                         ((info.uses_tolerance && setting.tolerance == 0.0f) ||
+                          (info.uses_relative_error && setting.relative_error == 0.0f));
+      if (exact) {
+        EXPECT_TRUE(bitwise_equal(one, rt)) << label;
+      }
+      if (info.stochastic) continue;
+      int over = 0;
+      for (std::size_t i = 0; i < rt.radiance_sum.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+          const float error = std::abs(one.radiance_sum[i][c] - rt.radiance_sum[i][c]);
+          // Rounding of the two sums (their summation orders differ) on top of the bound.
+          const float rounding = 1e-6f * std::abs(rt.radiance_sum[i][c]);
+          if (error > one.error_bound_sum[i][c] * 1.0001f + rounding) ++over;
+        }
+      }
+      EXPECT_EQ(over, 0) << label;
+    }
+  }
+}
+
+// Radiance past the float range from valid inputs: lights of 1e36 (a scene file's 1e12 under
+// scales of 1e12) on a surface of kd, colour and ks 1e3. The irradiance is clamped to the largest
+// float, but times the response it overflowed: AST estimated an untested light of +inf radiance
+// by a hit ratio of 0 (NaN pixels, black where rt is white), and two samples near the largest
+// float summed to +inf in the pixel (rt's too).
+renderer::Scene huge_radiance_scene() {
+  renderer::Scene scene;
+  scene.name = "huge radiance";
+  renderer::Material bright;
+  bright.colour = glm::vec3(1e3f);
+  bright.kd = 1e3f;
+  bright.ks = 1e3f;
+  bright.shininess = 0.0f;
+  scene.materials.push_back(bright);
+  renderer::Prototype room;
+  renderer::TriangleMesh floor;
+  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
+  room.meshes.push_back(floor);
+  renderer::TriangleMesh box;
+  renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
+  room.meshes.push_back(box);
+  scene.geometry.prototypes.push_back(room);
+  scene.geometry.instances.push_back({0, lev::Similarity{}});
+  std::vector<lev::LightDescriptionNode> lights;
+  lights.push_back(lev::light_node(lev::make_point_light({0, 0, 3}, glm::vec3(1e36f))));
+  lights.push_back(lev::light_node(lev::make_point_light({0, 1, 3}, {1e36f, 0, 0})));
+  lights.push_back(lev::light_node(lev::make_point_light({2, 2, 2}, glm::vec3(1.0f))));
+  scene.light_description.root = lev::union_node(std::move(lights));
+  scene.lights = lev::build_hierarchy(scene.light_description);
+  scene.camera.position = {0, -18, 9};
+  scene.camera.target = {0, 0, 0};
+  return scene;
+}
+
+TEST(Extremes, RadianceBeyondTheFloatRangeStaysFiniteInEveryMethod) {
+  renderer::Scene scene = huge_radiance_scene();
+  const renderer::RayScene rays(scene);
+  for (const lev::MethodInfo& info : lev::method_table()) {
+    for (const ExtremeSetting& setting : extreme_settings(info)) {
+      const renderer::Framebuffer fb =
+          render_extreme(scene, rays, info.id, setting.tolerance, setting.relative_error);
+      expect_finite(fb, extreme_label(info, setting));
+      // The image shows the lit floor white, as rt's does.
+      if (info.id == lev::Method::ast && setting.tolerance > 0.0f &&
+          std::isfinite(setting.tolerance)) {
+        const renderer::Framebuffer rt = render_extreme(scene, rays, lev::Method::rt, 0.0f);
+        EXPECT_EQ(renderer::framebuffer_rgb8(fb), renderer::framebuffer_rgb8(rt))
+            << extreme_label(info, setting);
+      }
     }
   }
 }
