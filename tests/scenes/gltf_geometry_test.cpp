@@ -350,4 +350,21 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
   }
 }
 
+TEST(GltfGeometry, ASparseCountAboveTheAccessorsIsRefusedSayingWhy) {
+  GltfBuilder builder;
+  const int positions = builder.add_vec3s(kQuad);
+  tinygltf::Accessor& accessor = builder.model.accessors[0];
+  accessor.sparse.isSparse = true;
+  accessor.sparse.count = 2147483647;
+  accessor.sparse.indices.bufferView = builder.add_view(std::vector<std::uint32_t>{0});
+  accessor.sparse.indices.byteOffset = 0;
+  accessor.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  accessor.sparse.values.bufferView = builder.add_view(std::vector<float>{1, 2, 3});
+  accessor.sparse.values.byteOffset = 0;
+  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
+  expect_refused(builder,
+                 "accessors[0].sparse.count: 2147483647 (from 1 to the accessor's count, 4, is "
+                 "expected)");
+}
+
 }  // namespace

@@ -132,6 +132,17 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
     levrt_test::expect_gltf_refused(text, kScenePath, problem);
 }
 
+TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
+  // Blender exports a spot of blend 0 so (inner = outer); the extension asks inner < outer.
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.5}})",
+                      node),
+      kScenePath,
+      ": extensions.KHR_lights_punctual.lights[0].spot.innerConeAngle: 0.5 (a number from 0 to "
+      "below the outerConeAngle, 0.5, is expected)");
+}
+
 // A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
 std::string glb_with_length(std::string json, std::uint32_t length_delta_bytes) {
   while (json.size() % 4 != 0) json += ' ';
