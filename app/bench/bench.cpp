@@ -203,6 +203,31 @@ void check_planned_outputs(const bench::BenchRun& run, const std::string& destin
   check_output_paths(outputs);
 }
 
+// Refuses, once planned, --scenes that leave an experiment of --only (or, without --only, the
+// whole suite) with nothing to render: it ran to exit 0 with empty tables.
+void check_scenes_are_rendered(const BenchOptions& options, const bench::BenchRun& run) {
+  if (options.scenes.empty()) return;
+  std::string scenes;
+  for (const std::string& s : options.scenes) scenes += (scenes.empty() ? "" : ",") + s;
+  std::string idle;
+  bool any = false;
+  for (const bench::ExperimentInfo& e : bench::experiments()) {
+    if (!selected(options, e.name)) continue;
+    if (run.planned_jobs(e.name) > 0) {
+      any = true;
+    } else {
+      idle += (idle.empty() ? "" : ", ") + std::string(e.name);
+    }
+  }
+  if (!options.only.empty() && !idle.empty()) {
+    throw UsageError("--scenes: none of these scenes is rendered by " + idle + ", got '" + scenes +
+                     "'");
+  }
+  if (!any)
+    throw UsageError("--scenes: none of these scenes is rendered by any experiment, got '" +
+                     scenes + "'");
+}
+
 // The whole suite, its files written into out_dir (the staging folder) and then published into
 // destination. Returns how many experiments ran.
 std::size_t run_suite(const BenchOptions& options, const std::string& out_dir,
@@ -222,6 +247,7 @@ std::size_t run_suite(const BenchOptions& options, const std::string& out_dir,
     run.begin_experiment(e.name);
     e.run(run, out_dir);
   }
+  check_scenes_are_rendered(options, run);
   check_planned_outputs(run, destination);
   run.start_running();
 

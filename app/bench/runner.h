@@ -220,6 +220,11 @@ class BenchRun {
   // one the output folder cannot take is refused before any render.
   void plan_output(const std::string& file) { planned_outputs_.push_back(file); }
   const std::vector<std::string>& planned_outputs() const { return planned_outputs_; }
+  // The renders and jobs the planning pass counted for an experiment (0: it renders nothing).
+  int planned_jobs(const std::string& experiment) const {
+    const auto found = jobs_planned_.find(experiment);
+    return found == jobs_planned_.end() ? 0 : found->second;
+  }
 
   // The suite's scenes present in this build (the table may not have them all yet).
   std::vector<std::string> available_scenes() const;

@@ -509,4 +509,20 @@ TEST_F(Bench, TheWroteLineEscapesAFolderNameWithANewline) {
   EXPECT_NE(line.find("two\\nlines/results.md"), std::string::npos) << line;
 }
 
+TEST_F(Bench, ScenesThatAnExperimentOfOnlyDoesNotRenderAreRefused) {
+  const fs::path out = dir_ / "idle";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"memory", "--scenes: none of these scenes is rendered by memory, got 'stage'"},
+      {"memory,error", "--scenes: none of these scenes is rendered by memory, error, got 'stage'"},
+  };
+  for (const auto& [only, says] : cases) {
+    const CommandRun r = run_levrt({"bench", "--quick", "--only", only, "--scenes", "stage",
+                                    "--threads", "1", "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << only << ": " << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << only << ": " << r.output;
+    EXPECT_EQ(r.output.find("planned"), std::string::npos) << "refused before rendering";
+    EXPECT_FALSE(fs::exists(out)) << only;
+  }
+}
+
 }  // namespace
