@@ -205,11 +205,20 @@ struct StagedFile {
 };
 
 // Writes the bytes to a temporary in the target's folder. A symlink is followed, never replaced:
-// the rename lands on the file it points to.
+// the rename lands on the file it points to. The temporary takes an existing target's permission
+// bits (and, where allowed, its owner and group), so replacing a private 0600 file does not leave
+// a world-readable 0644 one in its place.
 StagedFile stage(const std::string& path, const std::string& bytes) {
   StagedFile staged{path, output_target(path), "", "", false};
   const int fd = create_temporary(folder_of(staged.target), staged.temporary);
   if (fd < 0) throw_errno(path, "cannot write", errno);
+  struct stat old {};
+  if (::stat(staged.target.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
+    // Owner first (fchown may clear the set-ID bits fchmod sets). Only root may give a file
+    // away: for anyone else it fails and the file stays theirs, as a new file would be.
+    [[maybe_unused]] const int owner_kept = ::fchown(fd, old.st_uid, old.st_gid);
+    [[maybe_unused]] const int mode_kept = ::fchmod(fd, old.st_mode & 07777);
+  }
   const int error = write_all(fd, bytes);
   const int close_error = ::close(fd) != 0 ? errno : 0;
   if (error != 0 || close_error != 0) {

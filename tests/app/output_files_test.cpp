@@ -48,6 +48,30 @@ TEST(OutputFiles, WritesCompleteFileAndLeavesNoTemporary) {
   EXPECT_THROW(app::write_png_rgb8(path, 3, 1, {0, 0, 0}), std::invalid_argument);
 }
 
+TEST(OutputFiles, AReplacedFileKeepsItsPermissionBits) {
+  const levrt_test::TempDir temp("levrt_output_files_mode_");
+  const fs::path dir = temp.path();
+  const fs::path private_file = dir / "private.json";
+  const fs::path shared_file = dir / "shared.png";
+  { std::ofstream(private_file) << "old"; }
+  { std::ofstream(shared_file) << "old"; }
+  fs::permissions(private_file, fs::perms::owner_read | fs::perms::owner_write);
+  fs::permissions(shared_file, fs::perms::owner_read | fs::perms::owner_write |
+                                   fs::perms::group_read | fs::perms::group_write |
+                                   fs::perms::others_read | fs::perms::others_write);
+  app::write_output_files(
+      {{private_file.string(), text("new")}, {shared_file.string(), text("new too")}});
+  EXPECT_EQ(read_file(private_file), "new");
+  EXPECT_EQ(read_file(shared_file), "new too");
+  const auto bits = [](const fs::path& p) { return fs::status(p).permissions() & fs::perms::mask; };
+  EXPECT_EQ(bits(private_file), fs::perms::owner_read | fs::perms::owner_write)
+      << "a private file stays private";
+  EXPECT_EQ(bits(shared_file), fs::perms::owner_read | fs::perms::owner_write |
+                                   fs::perms::group_read | fs::perms::group_write |
+                                   fs::perms::others_read | fs::perms::others_write);
+  EXPECT_EQ(entries(dir), (std::vector<std::string>{"private.json", "shared.png"}));
+}
+
 TEST(OutputFiles, AnEncoderThatFailsLeavesEveryOldFile) {
   const levrt_test::TempDir temp("levrt_output_files_encoder_");
   const fs::path& dir = temp.path();
