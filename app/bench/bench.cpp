@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <system_error>
 #include <thread>
 
 #include <CLI/CLI.hpp>
@@ -333,10 +334,14 @@ int run_bench(const BenchFlags& flags) {
     std::error_code ignored;
     for (auto it = made.rbegin(); it != made.rend(); ++it) fs::remove(*it, ignored);
   };
-  const std::string staging =
-      options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid()));
-  for (const fs::path& folder : made) fs::create_directory(folder, ec);
-  if (!ec) fs::create_directory(staging, ec);
+  for (const fs::path& folder : made) {
+    if (!ec) fs::create_directory(folder, ec);
+  }
+  // A fresh staging folder (mkdtemp): one left by a killed run of the same process id (ids repeat,
+  // in a container from run to run) must not lend its files to this run's results.
+  std::string staging =
+      options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid())) + "-XXXXXX";
+  if (!ec && ::mkdtemp(staging.data()) == nullptr) ec.assign(errno, std::generic_category());
   if (ec) {
     remove_made();
     throw UsageError("--out: cannot make a folder in it (" + ec.message() + "), got '" +

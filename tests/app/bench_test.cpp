@@ -525,4 +525,20 @@ TEST_F(Bench, ScenesThatAnExperimentOfOnlyDoesNotRenderAreRefused) {
   }
 }
 
+TEST_F(Bench, AStagingFolderLeftByAKilledRunOfTheSamePidLendsNothing) {
+  // The shell makes the staging folder a killed run with its process id would have left, then
+  // execs levrt with that id.
+  const fs::path out = dir_ / "results";
+  fs::create_directories(out);
+  const std::string command =
+      "cd " + levrt_test::shell_quote(out.string()) +
+      " && mkdir .levrt-bench-$$ && echo stale > .levrt-bench-$$/speed.csv && exec " +
+      levrt_test::shell_quote(LEVRT_BINARY) +
+      " bench --quick --only memory --scenes building --threads 1 --out . 2>&1";
+  const CommandRun r = levrt_test::run_shell(command);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "memory.csv"));
+  EXPECT_FALSE(fs::exists(out / "speed.csv")) << "a stale file was published as a result";
+}
+
 }  // namespace
