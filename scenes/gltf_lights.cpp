@@ -1,5 +1,6 @@
 #include "scenes/gltf_lights.h"
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -27,7 +28,10 @@ void check_gltf_lights(const tinygltf::Model& model, const std::string& path) {
     }
     // levrt's bound on any light (kMaxIntensity; colours are at most 1), refused here with the
     // glTF path rather than by the scene check, which names the node levrt built from it.
-    if (light.intensity > kMaxIntensity) {
+    // Compared as levrt holds it, a float: the double 1e12 is above the float 1e12f (999999995904)
+    // that the limit is, and the bound it names must itself be accepted, as a scene file's is.
+    const bool beyond_float = light.intensity > static_cast<double>(FLT_MAX);
+    if (beyond_float || static_cast<float>(light.intensity) > kMaxIntensity) {
       std::ostringstream limit;  // six digits: "1e+12", not the float's 9.99999996e+11
       limit << static_cast<double>(kMaxIntensity);
       fail_gltf(path, where + ".intensity",

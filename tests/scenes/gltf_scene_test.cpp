@@ -189,6 +189,19 @@ TEST(GltfScene, ABadDataUriIsRefusedSayingWhereAndWhyInAShortLine) {
                                            kScenePath));
 }
 
+TEST(GltfScene, TheIntensityBoundItselfIsAcceptedAndOnlyWhatIsAboveItRefused) {
+  // The message names 1e+12 as the most levrt renders: 1e12 is read (as a scene file's is),
+  // 1.000001e12 is refused.
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene = scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "point", "intensity": 1e12})", node), kScenePath);
+  const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
+  EXPECT_EQ(light.intensity, glm::vec3(1e12f));
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "point", "intensity": 1.000001e12})", node), kScenePath,
+      "intensity: 1.000001e+12 (levrt renders at most 1e+12)");
+}
+
 // A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
 std::string glb_with_length(std::string json, std::uint32_t length_delta_bytes) {
   while (json.size() % 4 != 0) json += ' ';
