@@ -219,4 +219,17 @@ TEST(OutputFiles, PublishingAStagingFolderFollowsTheRule) {
   EXPECT_EQ(entries(dir / "out"), (std::vector<std::string>{"a.csv", "results.md"}));
 }
 
+TEST(OutputFiles, TheWriterRefusesACharacterDeviceOtherThanNullZeroFullOrATerminal) {
+  const levrt_test::TempDir temp("levrt_output_files_chr_");
+  const std::string misc = (temp.path() / "misc.json").string();
+  if (::mknod(misc.c_str(), S_IFCHR | 0600, makedev(10, 235)) != 0)
+    GTEST_SKIP() << "cannot make a device node here (needs root)";
+  const std::string kept = (temp.path() / "kept.json").string();
+  EXPECT_THROW(app::write_output_files({{kept, text("new")}, {misc, text("{}")}}),
+               std::runtime_error);
+  EXPECT_FALSE(fs::exists(kept)) << "all or none";
+  EXPECT_THROW(app::check_output_paths({{"--stats", misc, ".json", "JSON"}}), app::UsageError);
+  EXPECT_NO_THROW(app::check_output_paths({{"--stats", "/dev/full", ".json", "JSON"}}));
+}
+
 }  // namespace
