@@ -22,10 +22,14 @@ double parse_limit_pct(const std::string& key, const std::string& value, const s
   return v;
 }
 
-std::string percent_text(double pct) {
+// The error, at four decimal places unless they round it to the limit or below it: then with as
+// many significant digits as it takes to show it above (at most 17, which round-trip a double).
+std::string error_above_text(double pct, double limit) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.4f%%", pct);
-  return buffer;
+  std::snprintf(buffer, sizeof buffer, "%.4f", pct);
+  for (int digits = 6; std::strtod(buffer, nullptr) <= limit && digits <= 17; ++digits)
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, pct);
+  return std::string(buffer) + "%";
 }
 
 }  // namespace
@@ -48,6 +52,7 @@ AccuracyGate parse_accuracy_gate(const std::string& text) {
     if (!limit) reject(form, text);
     if (limit->has_value()) reject(key + " is given twice", text);
     *limit = parse_limit_pct(key, value, text);
+    (key == "avg" ? gate.avg_text : gate.max_text) = value;
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -58,12 +63,13 @@ std::optional<std::string> accuracy_gate_failure(const AccuracyGate& gate,
                                                  const renderer::PixelErrorStats& error) {
   std::string exceeded;
   if (gate.avg_pct && error.average_pct > *gate.avg_pct) {
-    exceeded = "pixel error avg " + percent_text(error.average_pct) +
-               " above avg=" + percent_text(*gate.avg_pct);
+    exceeded = "pixel error avg " + error_above_text(error.average_pct, *gate.avg_pct) +
+               " above avg=" + gate.avg_text + "%";
   }
   if (gate.max_pct && error.max_pct > *gate.max_pct) {
     exceeded += (exceeded.empty() ? "" : ", ") + std::string("pixel error max ") +
-                percent_text(error.max_pct) + " above max=" + percent_text(*gate.max_pct);
+                error_above_text(error.max_pct, *gate.max_pct) + " above max=" + gate.max_text +
+                "%";
   }
   if (exceeded.empty()) return std::nullopt;
   return "--fail-above: " + exceeded;

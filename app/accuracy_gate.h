@@ -17,6 +17,8 @@ inline constexpr int kAccuracyGateExitCode = 3;
 struct AccuracyGate {
   std::optional<double> avg_pct;  // the largest pixel_error_avg_pct that passes
   std::optional<double> max_pct;  // the largest pixel_error_max_pct that passes
+  // Each limit as typed, for the message (a double prints 0.00001 as 0.0000 at four places).
+  std::string avg_text, max_text;
 };
 
 // Parses "avg=A,max=M", "avg=A" or "max=M" (percent, finite, >= 0; each key once). Throws

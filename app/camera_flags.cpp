@@ -194,7 +194,10 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
     basis = renderer::camera_basis(camera);
   }
   if (basis.forward == glm::vec3(0.0f)) {
-    throw UsageError("--camera-target: the camera at " + vec3_text(camera.position + world_origin) +
+    // Named by what gave the camera: a stats file's camera may have no view of its own.
+    const std::string source =
+        flags.from_file.empty() ? "--camera-target" : "--camera-from: " + flags.from_file;
+    throw UsageError(source + ": the camera at " + vec3_text(camera.position + world_origin) +
                      " looking at " + vec3_text(camera.target + world_origin) + " with up " +
                      vec3_text(camera.up) +
                      " has no view (target at the position, or up along the view)");

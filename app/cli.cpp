@@ -19,6 +19,7 @@
 #include "app/render_command.h"
 #include "app/settings.h"
 #include "app/view_command.h"
+#include "scenes/scene_choice.h"
 #include "scenes/scene_file.h"
 
 namespace app {
@@ -150,6 +151,10 @@ Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults
   if (size_typed && flags.options.at("resolution")->count() == 0) settings.resolution = "typed";
   if (flags.options.at("level")->count() > 0 && is_scene_file(settings.scene)) {
     throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
+  }
+  if (flags.options.at("camera")->count() > 0 && !scenes::reads_camera_index(settings.scene)) {
+    throw UsageError("--camera: only glTF files have cameras of their own, got '" +
+                     flags.text.at("camera") + "'");
   }
   if (flags.options.at("relative-error")->count() > 0 &&
       !lev::method_info(settings.method.method).uses_relative_error) {

@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <pthread.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -80,6 +81,31 @@ bool is_block_device(const std::string& path) {
   throw std::runtime_error(path + ": cannot write (a block device: a disk or partition)");
 }
 
+// The character devices written in place: /dev/null, /dev/zero, /dev/full, /dev/random and
+// /dev/urandom (major 1, whose other minors are /dev/mem, /dev/kmem, /dev/port and /dev/kmsg) and
+// terminals (major 4: tty0-63 and serial lines; 5: /dev/tty, the console, ptmx; 136-143:
+// pseudo-terminals). Any other (a CPU's msr, a watchdog, a flash chip, a hardware RNG) could be
+// changed by the bytes of an image, or fail only after the work: never an output.
+bool is_character_device_levrt_writes(dev_t device) {
+  const unsigned int kind = major(device);
+  const unsigned int unit = minor(device);
+  if (kind == 1) return unit == 3 || unit == 5 || unit == 7 || unit == 8 || unit == 9;
+  return kind == 4 || kind == 5 || (kind >= 136 && kind <= 143);
+}
+
+// An existing character device (symlinks followed) that levrt does not write.
+bool is_unwritten_character_device(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISCHR(st.st_mode) &&
+         !is_character_device_levrt_writes(st.st_rdev);
+}
+
+[[noreturn]] void refuse_character_device(const std::string& path) {
+  throw std::runtime_error(path +
+                           ": cannot write (a device other than /dev/null, /dev/zero, /dev/full "
+                           "and terminals)");
+}
+
 // An existing file that is neither a regular file nor a folder: a pipe, device or socket.
 bool is_existing_special_file(const std::string& path) {
   std::error_code ec;
@@ -149,6 +175,8 @@ void write_in_place(const std::string& path, const std::string& bytes) {
   } closer{fd};
   struct stat opened {};
   if (::fstat(fd, &opened) != 0 || S_ISBLK(opened.st_mode)) refuse_block_device(path);
+  if (S_ISCHR(opened.st_mode) && !is_character_device_levrt_writes(opened.st_rdev))
+    refuse_character_device(path);
   std::signal(SIGPIPE, SIG_IGN);  // a reader that went away is EPIPE, as in write_all
   std::size_t done = 0;
   while (done < bytes.size()) {
@@ -205,11 +233,20 @@ struct StagedFile {
 };
 
 // Writes the bytes to a temporary in the target's folder. A symlink is followed, never replaced:
-// the rename lands on the file it points to.
+// the rename lands on the file it points to. The temporary takes an existing target's permission
+// bits (and, where allowed, its owner and group), so replacing a private 0600 file does not leave
+// a world-readable 0644 one in its place.
 StagedFile stage(const std::string& path, const std::string& bytes) {
   StagedFile staged{path, output_target(path), "", "", false};
   const int fd = create_temporary(folder_of(staged.target), staged.temporary);
   if (fd < 0) throw_errno(path, "cannot write", errno);
+  struct stat old {};
+  if (::stat(staged.target.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
+    // Owner first (fchown may clear the set-ID bits fchmod sets). Only root may give a file
+    // away: for anyone else it fails and the file stays theirs, as a new file would be.
+    [[maybe_unused]] const int owner_kept = ::fchown(fd, old.st_uid, old.st_gid);
+    [[maybe_unused]] const int mode_kept = ::fchmod(fd, old.st_mode & 07777);
+  }
   const int error = write_all(fd, bytes);
   const int close_error = ::close(fd) != 0 ? errno : 0;
   if (error != 0 || close_error != 0) {
@@ -324,6 +361,12 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
     throw UsageError(flag + ": is a block device (a disk or partition), never written, got '" +
                      path + "'");
   }
+  if (is_unwritten_character_device(path)) {
+    throw UsageError(flag +
+                     ": is a device levrt does not write (it writes /dev/null, /dev/zero, "
+                     "/dev/full and terminals in place), got '" +
+                     path + "'");
+  }
   struct stat socket_status {};
   if (::stat(path.c_str(), &socket_status) == 0 && S_ISSOCK(socket_status.st_mode)) {
     // open() refuses a socket (ENXIO): it could only fail after the work.
@@ -414,6 +457,8 @@ void write_output_files(const std::vector<OutputFile>& files) {
       }
       if (file.path != kStandardOutputName && is_block_device(file.path))
         refuse_block_device(file.path);
+      if (file.path != kStandardOutputName && is_unwritten_character_device(file.path))
+        refuse_character_device(file.path);
       if (file.path == kStandardOutputName || is_existing_special_file(file.path)) {
         in_place.emplace_back(file.path, std::move(bytes));
       } else {

@@ -7,8 +7,9 @@
 // temporary in its target's folder, and only when every output is complete are the temporaries
 // renamed onto their targets, together, with the termination signals blocked; on any failure
 // the temporaries go and the old files stay. A symlink is followed and stays a symlink; an
-// existing pipe or character device (/dev/null) is written in place, never replaced; a block
-// device (a disk or partition) is refused, never written; "-" is standard output. Write
+// existing pipe, terminal, /dev/null, /dev/zero or /dev/full is written in place, never replaced;
+// a block device (a disk or partition) or any other character device (/dev/port, /dev/kmsg, a
+// CPU's msr) is refused, never written; "-" is standard output. Write
 // errors name their reason (strerror). A new file format only adds an encoder: an OutputFile is
 // a name and a function producing its bytes.
 #pragma once
@@ -37,11 +38,12 @@ struct OutputPath {
 };
 
 // Throws UsageError, before any work, for an output that could not or must not be written:
-// empty, a folder, a block device, a symlink loop, a missing or unwritable folder, an existing
-// file that is not writable (read-only, immutable), a name longer than the folder allows, the
-// wrong extension (not checked for an existing pipe or device, which is written in place, nor
-// for "-", standard output), one of `inputs` (the files the command reads; missing ones are
-// skipped), or the file another output names.
+// empty, a folder, a block device, a character device other than those written in place, a symlink
+// loop, a missing or unwritable folder, an existing file that is not writable (read-only,
+// immutable), a name longer than the folder allows, the wrong extension (not checked for an
+// existing pipe or device, which is written in place, nor for "-", standard output), one of
+// `inputs` (the files the command reads; missing ones are skipped), or the file another output
+// names.
 void check_output_paths(const std::vector<OutputPath>& outputs,
                         const std::vector<std::string>& inputs = {});
 

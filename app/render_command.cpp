@@ -76,9 +76,10 @@ renderer::HeatmapRange parse_heatmap_range(const std::string& text) {
   const auto number = [&](const std::string& part, double& v) {
     if (!is_decimal_real(part)) return false;
     char* end = nullptr;
-    errno = 0;
     v = std::strtod(part.c_str(), &end);
-    return *end == '\0' && errno == 0 && std::isfinite(v);
+    // Overflow is infinite and refused; underflow (ERANGE, a subnormal or zero) is the typed value
+    // rounded, as the settings take it.
+    return *end == '\0' && std::isfinite(v);
   };
   renderer::HeatmapRange range;
   if (comma == std::string::npos || !number(text.substr(0, comma), range.min) ||

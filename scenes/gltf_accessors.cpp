@@ -128,14 +128,17 @@ void GltfAccessors::check_sparse(const tinygltf::Accessor& accessor, const std::
                                  std::size_t element_bytes) const {
   const int count = accessor.sparse.count;
   if (count <= 0 || static_cast<std::size_t>(count) > accessor.count)
-    fail_gltf(path_, where + ".sparse.count", std::to_string(count));
+    fail_gltf(path_, where + ".sparse.count",
+              std::to_string(count) + " (from 1 to the accessor's count, " +
+                  std::to_string(accessor.count) + ", is expected)");
   const int index_bytes = tinygltf::GetComponentSizeInBytes(
       static_cast<std::uint32_t>(accessor.sparse.indices.componentType));
   const int index_type = accessor.sparse.indices.componentType;
   if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
       index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
       index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-    fail_gltf(path_, where + ".sparse.indices.componentType", std::to_string(index_type));
+    fail_gltf(path_, where + ".sparse.indices.componentType",
+              std::to_string(index_type) + " (one of 5121 5123 5125 is expected)");
   const auto sparse_count = static_cast<std::size_t>(count);
   const tinygltf::BufferView& indices =
       view_at(accessor.sparse.indices.bufferView, where + ".sparse.indices");

@@ -1,10 +1,13 @@
 #include "scenes/gltf_document.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -119,6 +122,15 @@ class DocumentCheck {
   // Every index the document holds points into its array (counted as the arrays closed), and
   // every extension required is used too (the spec: extensionsRequired is a subset).
   void check_references() const {
+    // A buffer's data URI decodes to its byteLength exactly (tinygltf refuses anything else, with
+    // a message that quotes the whole URI and no reason).
+    for (const auto& [index, buffer] : buffers_) {
+      if (buffer.data_bytes && buffer.byte_length && *buffer.data_bytes != *buffer.byte_length) {
+        fail_at("buffers[" + std::to_string(index) + "].uri",
+                "data of " + std::to_string(*buffer.data_bytes) + " bytes",
+                "its byteLength is " + std::to_string(*buffer.byte_length));
+      }
+    }
     for (const auto& [where, name] : required_extensions_) {
       if (std::find(used_extensions_.begin(), used_extensions_.end(), name) ==
           used_extensions_.end())
@@ -373,6 +385,10 @@ class DocumentCheck {
     } else if (is_byte_count_field(name)) {
       if (n.negative || !n.whole || n.magnitude > kMaxByteCount)
         fail(n.text, "a whole number from 0 to 2^53");
+      if (name == "byteLength" && stack_.size() == 3 && stack_[0].key == "buffers" &&
+          stack_[1].array && !stack_[2].array) {
+        buffers_[stack_[1].index].byte_length = n.magnitude;
+      }
     } else if (name == "mode") {
       if (n.negative || !n.whole || n.magnitude > 6)
         fail(n.text, "a primitive's mode is 0 (points) to 6 (triangle fan)");
@@ -389,11 +405,36 @@ class DocumentCheck {
            (stack_[0].key == "buffers" || stack_[0].key == "images");
   }
 
+  // The bytes a data URI's base64 decodes to. Refuses a character outside the alphabet (tinygltf's
+  // decoder stops there without a word, and its message then quotes the whole URI), data that
+  // ends in a lone character (no byte count gives it), and no data at all.
+  std::uint64_t data_uri_bytes(const std::string& uri) const {
+    const std::string_view data = std::string_view(uri).substr(uri.find(',') + 1);
+    std::size_t end = data.size();
+    while (end > 0 && data[end - 1] == '=' && data.size() - end < 2) --end;  // the padding
+    const auto is_base64 = [](unsigned char c) { return std::isalnum(c) || c == '+' || c == '/'; };
+    for (std::size_t i = 0; i < end; ++i) {
+      if (!is_base64(static_cast<unsigned char>(data[i]))) {
+        fail(shortened(uri, 60), "not base64: character " + std::to_string(i + 1) +
+                                     " of its data is '" + shortened(std::string(1, data[i]), 8) +
+                                     "'");
+      }
+    }
+    if (end == 0) fail(shortened(uri, 60), "a data URI without data");
+    if (end % 4 == 1) {
+      fail(shortened(uri, 60), "not base64: " + std::to_string(end) +
+                                   " characters of data, one too many for whole bytes");
+    }
+    return end / 4 * 3 + (end % 4 == 0 ? 0 : end % 4 - 1);
+  }
+
   void check_uri(const std::string& uri) {
     const std::string quoted = "'" + shortened(uri, 100) + "'";
     if (uri.rfind("data:", 0) == 0) {
       if (!tinygltf::IsDataURI(uri))
         fail(shortened(uri, 60), "a data URI that is not base64 of a type glTF allows");
+      const std::uint64_t bytes = data_uri_bytes(uri);
+      if (stack_[0].key == "buffers") buffers_[stack_[1].index].data_bytes = bytes;
       return;
     }
     try {
@@ -420,6 +461,11 @@ class DocumentCheck {
   std::vector<std::string> used_extensions_;
   std::vector<std::pair<std::string, std::string>> required_extensions_;  // where, name
   std::vector<std::pair<std::string, std::uintmax_t>> reads_;  // every URI read, with its bytes
+  // Each buffer's byteLength and what its data URI decodes to, as they are read.
+  struct BufferSizes {
+    std::optional<std::uint64_t> byte_length, data_bytes;
+  };
+  std::map<std::size_t, BufferSizes> buffers_;
 };
 
 std::uint32_t little_endian_u32(const std::string& bytes, std::size_t at) {

@@ -1,5 +1,6 @@
 #include "scenes/gltf_lights.h"
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -18,38 +19,53 @@ constexpr double kPi = 3.14159265358979323846;
 void check_gltf_lights(const tinygltf::Model& model, const std::string& path) {
   for (std::size_t i = 0; i < model.lights.size(); ++i) {
     const tinygltf::Light& light = model.lights[i];
-    const std::string where = "lights[" + std::to_string(i) + "]";
+    // The light's glTF path, in every refusal below (most are the schema's backstops; the spot's
+    // inner angle against its outer one is checked here alone).
+    const std::string where = "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
     if (!std::isfinite(light.intensity) || light.intensity < 0.0) {
-      fail_gltf(path, where + ".intensity", gltf_number_text(light.intensity));
+      fail_gltf(path, where + ".intensity",
+                gltf_number_text(light.intensity) + " (a number from 0 is expected)");
     }
     // levrt's bound on any light (kMaxIntensity; colours are at most 1), refused here with the
     // glTF path rather than by the scene check, which names the node levrt built from it.
-    if (light.intensity > kMaxIntensity) {
+    // Compared as levrt holds it, a float: the double 1e12 is above the float 1e12f (999999995904)
+    // that the limit is, and the bound it names must itself be accepted, as a scene file's is.
+    const bool beyond_float = light.intensity > static_cast<double>(FLT_MAX);
+    if (beyond_float || static_cast<float>(light.intensity) > kMaxIntensity) {
       std::ostringstream limit;  // six digits: "1e+12", not the float's 9.99999996e+11
       limit << static_cast<double>(kMaxIntensity);
-      fail_gltf(path, "extensions.KHR_lights_punctual." + where + ".intensity",
+      fail_gltf(path, where + ".intensity",
                 gltf_number_text(light.intensity) + " (levrt renders at most " + limit.str() + ")");
     }
     if (!std::isfinite(light.range) || light.range < 0.0)
-      fail_gltf(path, where + ".range", gltf_number_text(light.range));
+      fail_gltf(path, where + ".range",
+                gltf_number_text(light.range) + " (a number above 0 is expected)");
     if (!light.color.empty() && light.color.size() != 3) {
-      fail_gltf(path, where + ".color", std::to_string(light.color.size()) + " components");
+      fail_gltf(path, where + ".color",
+                std::to_string(light.color.size()) + " values (3 are expected)");
     }
     for (const double c : light.color) {
-      if (!std::isfinite(c) || c < 0.0) fail_gltf(path, where + ".color", gltf_number_text(c));
+      if (!std::isfinite(c) || c < 0.0) {
+        fail_gltf(path, where + ".color",
+                  gltf_number_text(c) + " (numbers from 0 to 1 are expected)");
+      }
     }
     if (light.type == "spot") {
       const double inner = light.spot.innerConeAngle;
       const double outer = light.spot.outerConeAngle;
       // The extension: 0 <= inner < outer <= PI/2.
       if (!std::isfinite(outer) || !(outer > 0.0) || outer > kPi / 2.0) {
-        fail_gltf(path, where + ".spot.outerConeAngle", gltf_number_text(outer));
+        fail_gltf(path, where + ".spot.outerConeAngle",
+                  gltf_number_text(outer) + " (a number above 0 to pi/2 is expected)");
       }
       if (!std::isfinite(inner) || inner < 0.0 || inner >= outer) {
-        fail_gltf(path, where + ".spot.innerConeAngle", gltf_number_text(inner));
+        fail_gltf(path, where + ".spot.innerConeAngle",
+                  gltf_number_text(inner) + " (a number from 0 to below the outerConeAngle, " +
+                      gltf_number_text(outer) + ", is expected)");
       }
     } else if (light.type != "point" && light.type != "directional") {
-      fail_gltf(path, where + ".type", "'" + light.type + "'");
+      fail_gltf(path, where + ".type",
+                "'" + light.type + "' (one of point spot directional is expected)");
     }
   }
 }

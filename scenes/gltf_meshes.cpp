@@ -1,5 +1,6 @@
 #include "scenes/gltf_meshes.h"
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -33,6 +34,51 @@ std::vector<glm::uvec3> triangles_of_mode(const std::vector<std::uint32_t>& v, i
     for (std::size_t i = 1; i + 1 < v.size(); ++i) triangles.push_back({v[0], v[i], v[i + 1]});
   }
   return triangles;
+}
+
+// The component types glTF allows for a vertex attribute levrt reads (the spec's table of
+// attributes, and KHR_mesh_quantization's wider one when extensionsUsed lists it); anything else
+// is refused: an UNSIGNED_INT position decoded as it stands, or bytes read as a float-only
+// attribute, would draw a scene the file does not describe.
+void check_attribute_format(const tinygltf::Model& model, int index, const std::string& attribute,
+                            const std::string& where, const std::string& path) {
+  if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) return;
+  const tinygltf::Accessor& accessor = model.accessors[static_cast<std::size_t>(index)];
+  const int type = accessor.componentType;
+  const bool normalized = accessor.normalized;
+  const bool quantized = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                   "KHR_mesh_quantization") != model.extensionsUsed.end();
+  const bool is_float = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
+  const bool is_byte_or_short =
+      type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+      type == TINYGLTF_COMPONENT_TYPE_SHORT || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  const bool is_unsigned_normalized =
+      normalized && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                     type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+  const bool is_signed_normalized =
+      normalized && (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT);
+  bool allowed = is_float;
+  std::string expected = "5126 (float)";
+  if (attribute == "POSITION") {
+    allowed = is_float || (quantized && is_byte_or_short);
+    if (!quantized) expected += "; with KHR_mesh_quantization in extensionsUsed, bytes and shorts";
+  } else if (attribute == "NORMAL") {
+    allowed = is_float || (quantized && is_signed_normalized);
+    if (!quantized) {
+      expected +=
+          "; with KHR_mesh_quantization in extensionsUsed, normalized signed bytes and "
+          "shorts";
+    }
+  } else if (attribute == "TEXCOORD_0") {
+    allowed = is_float || is_unsigned_normalized || (quantized && is_byte_or_short);
+    expected += ", normalized 5121 or 5123";
+    if (!quantized) expected += "; with KHR_mesh_quantization in extensionsUsed, any byte or short";
+  }
+  if (!allowed) {
+    fail_gltf(path, where,
+              "accessors[" + std::to_string(index) + "] of component type " + std::to_string(type) +
+                  (normalized ? " (normalized)" : "") + " (" + expected + " is expected)");
+  }
 }
 
 }  // namespace
@@ -110,6 +156,10 @@ renderer::TriangleMesh GltfMeshes::read_primitive(const tinygltf::Primitive& pri
   const auto position = primitive.attributes.find("POSITION");
   if (position == primitive.attributes.end())
     fail_gltf(path_, where + ".attributes.POSITION", "missing");
+  for (const auto& [attribute, index] : primitive.attributes) {
+    if (attribute == "POSITION" || attribute == "NORMAL" || attribute == "TEXCOORD_0")
+      check_attribute_format(model_, index, attribute, where + ".attributes." + attribute, path_);
+  }
   renderer::TriangleMesh part;
   part.positions = as_vec3(
       accessors_.read(position->second, {TINYGLTF_TYPE_VEC3}, where + ".attributes.POSITION"));

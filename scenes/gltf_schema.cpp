@@ -15,7 +15,8 @@ using Kind = GltfJsonKind;
 constexpr double kHalfPi = 1.57079632679489661923;
 
 // The extensions levrt honours (gltf_scene.cpp and gltf_materials.cpp read the first five;
-// accessors of every component type are decoded, which is what KHR_mesh_quantization asks).
+// gltf_meshes.cpp takes the byte and short vertex attributes of KHR_mesh_quantization when it is
+// listed, and refuses them otherwise).
 constexpr std::string_view kHonouredExtensions[] = {
     "KHR_lights_punctual", "KHR_materials_transmission",
     "KHR_materials_ior",   "KHR_materials_emissive_strength",

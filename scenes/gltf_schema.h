@@ -60,8 +60,8 @@ const std::vector<std::string_view>& required_gltf_members(const std::string& ob
 // Whether some index points into the array of pattern `array` (its length is then counted).
 bool is_gltf_index_target(const std::string& array);
 
-// The extensions levrt honours: it reads them and renders what they mean (or, for
-// KHR_mesh_quantization, decodes every component type anyway). Any other one in
+// The extensions levrt honours: it reads them and renders what they mean (for
+// KHR_mesh_quantization, the byte and short vertex attributes it allows). Any other one in
 // extensionsRequired refuses the file; in extensionsUsed, it is ignored with one warning.
 bool is_honoured_gltf_extension(std::string_view name);
 std::string honoured_gltf_extensions_text();

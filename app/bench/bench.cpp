@@ -10,6 +10,8 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <system_error>
 #include <thread>
 
 #include <CLI/CLI.hpp>
@@ -19,6 +21,7 @@
 #include "app/interrupt.h"
 #include "app/output_files.h"
 #include "app/settings.h"
+#include "scenes/scene_file.h"
 
 namespace app {
 namespace fs = std::filesystem;
@@ -68,18 +71,30 @@ BenchOptions parse_options(const BenchFlags& flags) {
   if (flags.suite != "thesis")
     throw UsageError("--suite: must be thesis, got '" + flags.suite + "'");
   if (flags.out.empty()) throw UsageError("--out: needs a folder for the results, got ''");
+  // The nearest part of the path that exists (a dangling symlink counts: it is a name) must be a
+  // folder, or every folder below it would fail to be made after the checks.
   std::error_code ec;
-  const fs::path out(flags.out);
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
-    throw UsageError("--out: is not a folder, got '" + flags.out + "'");
+  fs::path existing = fs::absolute(fs::path(flags.out), ec);
+  while (!existing.empty() && existing != existing.parent_path() &&
+         !fs::exists(fs::symlink_status(existing, ec))) {
+    existing = existing.parent_path();
   }
-  // A symlink loop, or a component that is not a folder.
-  if (ec && ec != std::errc::no_such_file_or_directory)
-    throw UsageError("--out: cannot be a folder (" + ec.message() + "), got '" + flags.out + "'");
-  fs::path existing = fs::absolute(out, ec);
-  while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
-  if (existing.empty() || ::access(existing.c_str(), W_OK) != 0) {
-    throw UsageError("--out: folder is not writable, got '" + flags.out + "'");
+  const std::string got = ", got '" + flags.out + "'";
+  const fs::file_status status = fs::status(existing, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) {
+    // A symlink loop, or a component that is not a folder.
+    throw UsageError("--out: cannot be a folder (" + ec.message() + ")" + got);
+  }
+  if (!fs::exists(status)) {
+    throw UsageError("--out: '" + existing.string() + "' is a symlink to nothing" + got);
+  }
+  if (!fs::is_directory(status)) {
+    throw UsageError(existing == fs::absolute(fs::path(flags.out), ec)
+                         ? "--out: is not a folder" + got
+                         : "--out: '" + existing.string() + "' is not a folder" + got);
+  }
+  if (::access(existing.c_str(), W_OK) != 0) {
+    throw UsageError("--out: folder is not writable" + got);
   }
   o.out = flags.out;
   o.quick = flags.quick;
@@ -175,9 +190,49 @@ void add_bench_flags(CLI::App& command, BenchFlags& flags) {
 
 namespace {
 
-// The whole suite, its files written into out_dir (the staging folder). Returns how many
-// experiments ran.
-std::size_t run_suite(const BenchOptions& options, const std::string& out_dir) {
+// Refuses, before any render, a file of the suite that the output folder cannot take (a folder,
+// a socket or a block device of that name, a symlink loop): found when the suite was done, it
+// lost every result.
+void check_planned_outputs(const bench::BenchRun& run, const std::string& destination) {
+  std::set<std::string> names(run.planned_outputs().begin(), run.planned_outputs().end());
+  names.insert("results.md");
+  std::vector<OutputPath> outputs;
+  for (const std::string& name : names) {
+    outputs.push_back({"--out", (fs::path(destination) / name).string(),
+                       fs::path(name).extension().string(), "the suite's file"});
+  }
+  check_output_paths(outputs);
+}
+
+// Refuses, once planned, --scenes that leave an experiment of --only (or, without --only, the
+// whole suite) with nothing to render: it ran to exit 0 with empty tables.
+void check_scenes_are_rendered(const BenchOptions& options, const bench::BenchRun& run) {
+  if (options.scenes.empty()) return;
+  std::string scenes;
+  for (const std::string& s : options.scenes) scenes += (scenes.empty() ? "" : ",") + s;
+  std::string idle;
+  bool any = false;
+  for (const bench::ExperimentInfo& e : bench::experiments()) {
+    if (!selected(options, e.name)) continue;
+    if (run.planned_jobs(e.name) > 0) {
+      any = true;
+    } else {
+      idle += (idle.empty() ? "" : ", ") + std::string(e.name);
+    }
+  }
+  if (!options.only.empty() && !idle.empty()) {
+    throw UsageError("--scenes: none of these scenes is rendered by " + idle + ", got '" + scenes +
+                     "'");
+  }
+  if (!any)
+    throw UsageError("--scenes: none of these scenes is rendered by any experiment, got '" +
+                     scenes + "'");
+}
+
+// The whole suite, its files written into out_dir (the staging folder) and then published into
+// destination. Returns how many experiments ran.
+std::size_t run_suite(const BenchOptions& options, const std::string& out_dir,
+                      const std::string& destination) {
 #ifndef NDEBUG
   std::fprintf(stderr,
                "levrt bench: warning: not a Release build, the timings are not representative\n");
@@ -193,6 +248,8 @@ std::size_t run_suite(const BenchOptions& options, const std::string& out_dir) {
     run.begin_experiment(e.name);
     e.run(run, out_dir);
   }
+  check_scenes_are_rendered(options, run);
+  check_planned_outputs(run, destination);
   run.start_running();
 
   std::vector<bench::Section> sections;
@@ -264,27 +321,47 @@ int run_bench(const BenchFlags& flags) {
   // Ctrl-C stops the suite between renders; nothing reaches the output folder unless the whole
   // suite finished (its files are staged, then moved in together).
   const InterruptScope interrupt_scope;
+  // The folders this run makes (the output folder and any missing above it), outermost first:
+  // a run that does not finish removes them again, when empty (never anything else's).
+  std::vector<fs::path> made;
   std::error_code ec;
-  const bool out_existed = fs::exists(options.out, ec);
-  fs::create_directories(options.out);
-  const std::string staging =
-      options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid()));
+  for (fs::path p = fs::absolute(fs::path(options.out));
+       !p.empty() && p != p.parent_path() && !fs::exists(fs::symlink_status(p, ec));
+       p = p.parent_path()) {
+    made.insert(made.begin(), p);
+  }
+  const auto remove_made = [&made] {
+    std::error_code ignored;
+    for (auto it = made.rbegin(); it != made.rend(); ++it) fs::remove(*it, ignored);
+  };
+  for (const fs::path& folder : made) {
+    if (!ec) fs::create_directory(folder, ec);
+  }
+  // A fresh staging folder (mkdtemp): one left by a killed run of the same process id (ids repeat,
+  // in a container from run to run) must not lend its files to this run's results.
+  std::string staging =
+      options.out + "/.levrt-bench-" + std::to_string(static_cast<long>(::getpid())) + "-XXXXXX";
+  if (!ec && ::mkdtemp(staging.data()) == nullptr) ec.assign(errno, std::generic_category());
+  if (ec) {
+    remove_made();
+    throw UsageError("--out: cannot make a folder in it (" + ec.message() + "), got '" +
+                     options.out + "'");
+  }
   std::size_t experiments = 0;
   try {
-    fs::create_directories(staging);
-    experiments = run_suite(options, staging);
+    experiments = run_suite(options, staging, options.out);
     InterruptScope::throw_if_interrupted();
     app::publish_staging_folder(staging, options.out);
   } catch (...) {
     app::discard_staging_folder(staging);
-    if (!out_existed) fs::remove(options.out, ec);  // only if empty: never anything else's
+    remove_made();
     throw;
   }
 
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::printf("levrt bench: wrote %s/results.md and %zu experiments' CSVs and plots in %.0f s\n",
-              options.out.c_str(), experiments, seconds);
+              scenes::escape_control_characters(options.out).c_str(), experiments, seconds);
   return 0;
 }
 

@@ -70,16 +70,24 @@ std::vector<Column> per_tolerance_columns(std::vector<Column> rest) {
   return columns;
 }
 
-void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
+void write_table(BenchRun& run, const std::string& out_dir, const std::string& name,
                  const Table& table) {
-  if (!run.planning()) app::write_text_file(out_dir + "/" + name + ".csv", table_csv(table));
+  if (run.planning()) {
+    run.plan_output(name + ".csv");
+  } else {
+    app::write_text_file(out_dir + "/" + name + ".csv", table_csv(table));
+  }
 }
 
 namespace {
 
-std::string write_chart(const BenchRun& run, const std::string& out_dir, const std::string& file,
+std::string write_chart(BenchRun& run, const std::string& out_dir, const std::string& file,
                         const Chart& chart) {
-  if (!run.planning()) write_chart_png(out_dir + "/" + file, chart);
+  if (run.planning()) {
+    run.plan_output(file);
+  } else {
+    write_chart_png(out_dir + "/" + file, chart);
+  }
   return "![" + chart.title + "](" + file + ")\n\n";
 }
 
@@ -116,7 +124,7 @@ int nearest_level(const BenchRun& run, const std::string& scene, const std::vect
   return best;
 }
 
-Section write_section(const BenchRun& run, const std::string& out_dir, const std::string& name,
+Section write_section(BenchRun& run, const std::string& out_dir, const std::string& name,
                       const SectionText& text, const Table& table,
                       const std::vector<NamedChart>& charts, std::vector<HeadlineRow> headline) {
   write_table(run, out_dir, name, table);

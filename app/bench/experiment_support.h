@@ -65,12 +65,13 @@ struct SectionText {
   std::string before_table;
 };
 
-// Writes NAME.csv (not while planning): a table of its own besides the section's.
-void write_table(const BenchRun& run, const std::string& out_dir, const std::string& name,
+// Writes NAME.csv (while planning, only notes its name: BenchRun::plan_output): a table of its own
+// besides the section's.
+void write_table(BenchRun& run, const std::string& out_dir, const std::string& name,
                  const Table& table);
 
-// Writes NAME.csv and the charts (not while planning) and returns the section.
-Section write_section(const BenchRun& run, const std::string& out_dir, const std::string& name,
+// Writes NAME.csv and the charts (while planning, only notes their names) and returns the section.
+Section write_section(BenchRun& run, const std::string& out_dir, const std::string& name,
                       const SectionText& text, const Table& table,
                       const std::vector<NamedChart>& charts,
                       std::vector<HeadlineRow> headline = {});

@@ -216,6 +216,15 @@ class BenchRun {
   // Ends the planning pass: from now on measurements render.
   void start_running();
   void begin_experiment(const std::string& name);
+  // The files the suite will write (names in the output folder), noted while planning, so that
+  // one the output folder cannot take is refused before any render.
+  void plan_output(const std::string& file) { planned_outputs_.push_back(file); }
+  const std::vector<std::string>& planned_outputs() const { return planned_outputs_; }
+  // The renders and jobs the planning pass counted for an experiment (0: it renders nothing).
+  int planned_jobs(const std::string& experiment) const {
+    const auto found = jobs_planned_.find(experiment);
+    return found == jobs_planned_.end() ? 0 : found->second;
+  }
 
   // The suite's scenes present in this build (the table may not have them all yet).
   std::vector<std::string> available_scenes() const;
@@ -290,6 +299,7 @@ class BenchRun {
   std::map<std::string, int> jobs_planned_, jobs_done_;
   double seconds_planned_ = 0.0, seconds_done_ = 0.0;
   int probes_ = 0;
+  std::vector<std::string> planned_outputs_;
   std::chrono::steady_clock::time_point started_;
 };
 

@@ -75,6 +75,22 @@ TEST(AccuracyGate, FailsOnlyAboveALimit) {
   EXPECT_FALSE(app::accuracy_gate_failure(app::parse_accuracy_gate("max=10"), {50.0, 1.0}));
 }
 
+TEST(AccuracyGate, TheMessageShowsTheLimitAsTypedAndTheErrorAboveIt) {
+  const auto tiny =
+      app::accuracy_gate_failure(app::parse_accuracy_gate("avg=0.00001"), {0.00002, 0.0});
+  ASSERT_TRUE(tiny);
+  EXPECT_EQ(*tiny, "--fail-above: pixel error avg 2e-05% above avg=0.00001%");
+  const auto close = app::accuracy_gate_failure(app::parse_accuracy_gate("max=1"), {0.0, 1.00004});
+  ASSERT_TRUE(close);
+  EXPECT_EQ(*close, "--fail-above: pixel error max 1.00004% above max=1%");
+  const auto usual =
+      app::accuracy_gate_failure(app::parse_accuracy_gate("avg=0.5,max=2"), {7.13102, 23.0});
+  ASSERT_TRUE(usual);
+  EXPECT_EQ(*usual,
+            "--fail-above: pixel error avg 7.1310% above avg=0.5%, pixel error max 23.0000% above "
+            "max=2%");
+}
+
 TEST(AccuracyGateCli, ExitsThreeWithOneLineAboveAndZeroAtOrBelow) {
   const levrt_test::TempDir dir("levrt_gate_");
   const std::string stats = (dir.path() / "s.json").string();

@@ -6,11 +6,13 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -455,6 +457,88 @@ TEST_F(Bench, BadFlagsExitTwoWithOneLineAndWriteNothing) {
   }
   EXPECT_EQ(read_file(file), "x");
   EXPECT_EQ(run_levrt({"bench", "--help"}).exit_code, 0);
+}
+
+TEST_F(Bench, AnOutFolderThatCannotBeMadeIsRefusedWithOneLineNamingWhy) {
+  const fs::path file = dir_ / "plain_file";
+  { std::ofstream(file) << "x"; }
+  fs::create_symlink(dir_ / "missing_target", dir_ / "dangling");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {file.string() + "/sub", "' is not a folder"},
+      {file.string() + "/../sub", "' is not a folder"},
+      {(dir_ / "dangling").string(), "' is a symlink to nothing"},
+      {(dir_ / "dangling" / "sub").string(), "' is a symlink to nothing"},
+  };
+  for (const auto& [out, says] : cases) {
+    const CommandRun r =
+        run_levrt({"bench", "--quick", "--only", "memory", "--scenes", "building", "--out", out});
+    EXPECT_EQ(r.exit_code, 2) << out << ": " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << out << ": " << r.output;
+    EXPECT_NE(r.output.find("--out: '"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+  }
+  EXPECT_EQ(read_file(file), "x");
+  EXPECT_FALSE(fs::exists(dir_ / "missing_target"));
+  EXPECT_TRUE(fs::is_symlink(dir_ / "dangling"));
+}
+
+TEST_F(Bench, AFileOfTheSuiteTheOutFolderCannotTakeIsRefusedBeforeAnyRender) {
+  const fs::path out = dir_ / "results";
+  fs::create_directories(out / "results.md");
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "memory", "--scenes", "building",
+                                  "--threads", "1", "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--out: is a folder, got '" + (out / "results.md").string() + "'"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("planned"), std::string::npos) << "refused before rendering";
+  std::vector<fs::path> left;
+  for (const fs::directory_entry& e : fs::directory_iterator(out)) left.push_back(e.path());
+  EXPECT_EQ(left, std::vector<fs::path>{out / "results.md"}) << "no staging folder left";
+}
+
+TEST_F(Bench, TheWroteLineEscapesAFolderNameWithANewline) {
+  const fs::path out = dir_ / "two\nlines";
+  const CommandRun r = run_levrt({"bench", "--quick", "--only", "memory", "--scenes", "building",
+                                  "--threads", "1", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "results.md"));
+  const std::size_t wrote = r.output.find("levrt bench: wrote ");
+  ASSERT_NE(wrote, std::string::npos) << r.output;
+  const std::string line = r.output.substr(wrote, r.output.find('\n', wrote) - wrote);
+  EXPECT_NE(line.find("two\\nlines/results.md"), std::string::npos) << line;
+}
+
+TEST_F(Bench, ScenesThatAnExperimentOfOnlyDoesNotRenderAreRefused) {
+  const fs::path out = dir_ / "idle";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"memory", "--scenes: none of these scenes is rendered by memory, got 'stage'"},
+      {"memory,error", "--scenes: none of these scenes is rendered by memory, error, got 'stage'"},
+  };
+  for (const auto& [only, says] : cases) {
+    const CommandRun r = run_levrt({"bench", "--quick", "--only", only, "--scenes", "stage",
+                                    "--threads", "1", "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << only << ": " << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << only << ": " << r.output;
+    EXPECT_EQ(r.output.find("planned"), std::string::npos) << "refused before rendering";
+    EXPECT_FALSE(fs::exists(out)) << only;
+  }
+}
+
+TEST_F(Bench, AStagingFolderLeftByAKilledRunOfTheSamePidLendsNothing) {
+  // The shell makes the staging folder a killed run with its process id would have left, then
+  // execs levrt with that id.
+  const fs::path out = dir_ / "results";
+  fs::create_directories(out);
+  const std::string command =
+      "cd " + levrt_test::shell_quote(out.string()) +
+      " && mkdir .levrt-bench-$$ && echo stale > .levrt-bench-$$/speed.csv && exec " +
+      levrt_test::shell_quote(LEVRT_BINARY) +
+      " bench --quick --only memory --scenes building --threads 1 --out . 2>&1";
+  const CommandRun r = levrt_test::run_shell(command);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(out / "memory.csv"));
+  EXPECT_FALSE(fs::exists(out / "speed.csv")) << "a stale file was published as a result";
 }
 
 }  // namespace

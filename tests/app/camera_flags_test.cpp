@@ -269,6 +269,24 @@ TEST_F(CameraCli, ACameraDegenerateInTheRenderFloatModeIsRefused) {
   EXPECT_EQ(render({"--camera-up", "1e-30,0,1e-30", "--out", path("out.png")}).exit_code, 0);
 }
 
+// A stats file whose camera has no view (its target at its position) is named as the source; the
+// refusal blamed --camera-target, a flag not given.
+TEST_F(CameraCli, ACameraFileWithoutAViewIsNamedAsTheSource) {
+  {
+    std::ofstream file(path("flat.json"));
+    file << R"({"camera": {"position": [1, 2, 3], "target": [1, 2, 3], "up": [0, 0, 1],)"
+         << R"( "vertical_fov_deg": 45}})";
+  }
+  const CommandRun r = render({"--camera-from", path("flat.json"), "--out", path("out.png")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("--camera-from: " + path("flat.json") + ": the camera at 1,2,3"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("--camera-target"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
 // A camera flag given an empty value is refused naming it, not taken as "not given".
 TEST_F(CameraCli, AnEmptyCameraFlagIsRefusedNamingIt) {
   for (const std::string flag : {"--camera-position", "--camera-target", "--camera-up", "--fov",

@@ -100,6 +100,24 @@ TEST_F(Cli, NumericFlagsTakeOnlyPlainDecimalNumbers) {
   EXPECT_EQ(plain.exit_code, 0) << plain.output;
 }
 
+// --camera picks one of a glTF file's cameras: with a scene model or a scene file it chose
+// nothing and was ignored (exit 0); it is refused as --level is for a scene file.
+TEST_F(Cli, ACameraIndexForASceneWithoutCamerasIsRefused) {
+  const std::string out = path("image.png");
+  for (const char* value : {"0", "1", "7"}) {
+    const CommandRun r = run_levrt({"render", "--scene", "maze", "--camera", value, "--width", "8",
+                                    "--height", "8", "--out", out});
+    EXPECT_EQ(r.exit_code, 2) << value << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string("--camera: only glTF files have cameras of their own, "
+                                        "got '") +
+                            value + "'"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_TRUE(folder_is_empty()) << value;
+  }
+}
+
 // --relative-error out of [0, 1] with the method that reads it, and any value with a method that
 // ignores it: one line naming the flag, exit 2, nothing written.
 TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {

@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/render_command.h"
+#include "app/settings.h"
 #include "renderer/heatmap.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
@@ -65,6 +67,15 @@ TEST(HeatmapRangeCli, ABadRangeExitsTwoWithOneLineAndWritesNothing) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << bad << ": " << r.output;
     EXPECT_FALSE(fs::exists(png)) << bad;
   }
+}
+
+TEST(HeatmapRangeCli, ASubnormalEndIsTakenAsTypedLikeEverySetting) {
+  const renderer::HeatmapRange tiny = app::parse_heatmap_range("1e-320,1");
+  EXPECT_GT(tiny.min, 0.0);
+  EXPECT_LT(tiny.min, 1e-300);
+  EXPECT_DOUBLE_EQ(tiny.max, 1.0);
+  EXPECT_DOUBLE_EQ(app::parse_heatmap_range("5e-324,1e-300").min, 5e-324);
+  EXPECT_THROW(app::parse_heatmap_range("0,1e400"), app::UsageError);
 }
 
 }  // namespace

@@ -158,4 +158,18 @@ TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
   }
 }
 
+TEST(Interrupt, SignalDuringBenchRemovesEveryFolderItMade) {
+  const levrt_test::TempDir temp("levrt_interrupt_bench_folders_");
+  const fs::path& dir = temp.path();
+  for (int delay_ms : {0, 1500}) {
+    EXPECT_EQ(interrupt_after({LEVRT_BINARY, "bench", "--suite", "thesis", "--quick", "--out",
+                               (dir / "made" / "below" / "results").string()},
+                              SIGINT, std::chrono::milliseconds(delay_ms)),
+              130)
+        << "after " << delay_ms << " ms";
+    EXPECT_TRUE(fs::is_empty(dir))
+        << "after " << delay_ms << " ms: " << (fs::exists(dir / "made") ? "made/ left" : "");
+  }
+}
+
 }  // namespace

@@ -48,6 +48,30 @@ TEST(OutputFiles, WritesCompleteFileAndLeavesNoTemporary) {
   EXPECT_THROW(app::write_png_rgb8(path, 3, 1, {0, 0, 0}), std::invalid_argument);
 }
 
+TEST(OutputFiles, AReplacedFileKeepsItsPermissionBits) {
+  const levrt_test::TempDir temp("levrt_output_files_mode_");
+  const fs::path dir = temp.path();
+  const fs::path private_file = dir / "private.json";
+  const fs::path shared_file = dir / "shared.png";
+  { std::ofstream(private_file) << "old"; }
+  { std::ofstream(shared_file) << "old"; }
+  fs::permissions(private_file, fs::perms::owner_read | fs::perms::owner_write);
+  fs::permissions(shared_file, fs::perms::owner_read | fs::perms::owner_write |
+                                   fs::perms::group_read | fs::perms::group_write |
+                                   fs::perms::others_read | fs::perms::others_write);
+  app::write_output_files(
+      {{private_file.string(), text("new")}, {shared_file.string(), text("new too")}});
+  EXPECT_EQ(read_file(private_file), "new");
+  EXPECT_EQ(read_file(shared_file), "new too");
+  const auto bits = [](const fs::path& p) { return fs::status(p).permissions() & fs::perms::mask; };
+  EXPECT_EQ(bits(private_file), fs::perms::owner_read | fs::perms::owner_write)
+      << "a private file stays private";
+  EXPECT_EQ(bits(shared_file), fs::perms::owner_read | fs::perms::owner_write |
+                                   fs::perms::group_read | fs::perms::group_write |
+                                   fs::perms::others_read | fs::perms::others_write);
+  EXPECT_EQ(entries(dir), (std::vector<std::string>{"private.json", "shared.png"}));
+}
+
 TEST(OutputFiles, AnEncoderThatFailsLeavesEveryOldFile) {
   const levrt_test::TempDir temp("levrt_output_files_encoder_");
   const fs::path& dir = temp.path();
@@ -193,6 +217,19 @@ TEST(OutputFiles, PublishingAStagingFolderFollowsTheRule) {
   EXPECT_TRUE(fs::is_symlink(dir / "out" / "a.csv"));
   EXPECT_EQ(read_file(dir / "elsewhere" / "a.csv"), "new csv");
   EXPECT_EQ(entries(dir / "out"), (std::vector<std::string>{"a.csv", "results.md"}));
+}
+
+TEST(OutputFiles, TheWriterRefusesACharacterDeviceOtherThanNullZeroFullOrATerminal) {
+  const levrt_test::TempDir temp("levrt_output_files_chr_");
+  const std::string misc = (temp.path() / "misc.json").string();
+  if (::mknod(misc.c_str(), S_IFCHR | 0600, makedev(10, 235)) != 0)
+    GTEST_SKIP() << "cannot make a device node here (needs root)";
+  const std::string kept = (temp.path() / "kept.json").string();
+  EXPECT_THROW(app::write_output_files({{kept, text("new")}, {misc, text("{}")}}),
+               std::runtime_error);
+  EXPECT_FALSE(fs::exists(kept)) << "all or none";
+  EXPECT_THROW(app::check_output_paths({{"--stats", misc, ".json", "JSON"}}), app::UsageError);
+  EXPECT_NO_THROW(app::check_output_paths({{"--stats", "/dev/full", ".json", "JSON"}}));
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -590,6 +591,28 @@ TEST_F(Outputs, ABlockDeviceIsRefusedBeforeRenderingAndStaysADevice) {
       run_here({"export", "--scene", "maze", "--level", "1", "--out", "disk.json"});
   EXPECT_EQ(exported.exit_code, 2) << exported.output;
   EXPECT_NE(exported.output.find("--out: is a block device"), std::string::npos) << exported.output;
+}
+
+// A character device other than /dev/null, /dev/zero, /dev/full and terminals (/dev/port,
+// /dev/kmsg, a CPU's msr, a watchdog) is never written in place. The node made here is autofs's
+// control device (10:235), which refuses writes anyway: before, the render ran and then failed.
+TEST_F(Outputs, ACharacterDeviceOtherThanNullZeroFullOrATerminalIsRefusedBeforeRendering) {
+  if (::mknod(path("misc.png").c_str(), S_IFCHR | 0600, makedev(10, 235)) != 0)
+    GTEST_SKIP() << "cannot make a device node here (needs root)";
+  fs::create_symlink("misc.png", path("misc.json"));
+  for (const auto& [flag, file] : std::vector<std::pair<std::string, std::string>>{
+           {"--out", "misc.png"}, {"--stats", "misc.json"}, {"--heatmap-nodes", "misc.png"}}) {
+    const CommandRun r = run_here(output_render_args({flag, file}));
+    EXPECT_EQ(r.exit_code, 2) << flag << " " << file << ": " << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find(flag + ": is a device levrt does not write"), std::string::npos)
+        << r.output;
+  }
+  struct stat st {};
+  ASSERT_EQ(::stat(path("misc.png").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  EXPECT_EQ(st.st_rdev, makedev(10, 235));
+  EXPECT_EQ(run_here(output_render_args({"--stats", "/dev/null"})).exit_code, 0);
 }
 
 // A 64 KiB tmpfs holds the first outputs but not all: the render fails with one line, every old

@@ -5,6 +5,7 @@
 // with one line.
 
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -173,6 +174,7 @@ TEST(GltfGeometry, SparseAccessorsSubstituteTheirElements) {
 
 TEST(GltfGeometry, NormalizedIntegersDecodeAsTheSpecSays) {
   GltfBuilder builder;
+  builder.model.extensionsUsed.push_back("KHR_mesh_quantization");  // for the short positions
   // Signed shorts: -32768 clamps to -1, 32767 is 1; unsigned bytes: 255 is 1, 51 is 0.2.
   const int positions = builder.add_accessor(
       builder.add_view(std::vector<std::int16_t>{-32768, 0, 0, 32767, 0, 0, 0, 32767, 0, 0}),
@@ -347,6 +349,56 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
     const int positions = builder.add_vec3s({{0, 0, 0}, {1, 0, 0}, {0, std::nanf(""), 0}});
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
     expect_refused(builder, "positions: must be finite");
+  }
+}
+
+TEST(GltfGeometry, ASparseCountAboveTheAccessorsIsRefusedSayingWhy) {
+  GltfBuilder builder;
+  const int positions = builder.add_vec3s(kQuad);
+  tinygltf::Accessor& accessor = builder.model.accessors[0];
+  accessor.sparse.isSparse = true;
+  accessor.sparse.count = 2147483647;
+  accessor.sparse.indices.bufferView = builder.add_view(std::vector<std::uint32_t>{0});
+  accessor.sparse.indices.byteOffset = 0;
+  accessor.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  accessor.sparse.values.bufferView = builder.add_view(std::vector<float>{1, 2, 3});
+  accessor.sparse.values.byteOffset = 0;
+  builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
+  expect_refused(builder,
+                 "accessors[0].sparse.count: 2147483647 (from 1 to the accessor's count, 4, is "
+                 "expected)");
+}
+
+TEST(GltfGeometry, AnAttributeOfAComponentTypeGltfDoesNotAllowIsRefused) {
+  // Unsigned int positions (allowed by no extension), byte positions without
+  // KHR_mesh_quantization in extensionsUsed, byte normals that are not normalized.
+  {
+    GltfBuilder builder;
+    const int positions = builder.add_accessor(
+        builder.add_view(std::vector<std::uint32_t>{0, 0, 0, 1, 0, 0, 0, 1, 0}),
+        TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_VEC3, 3);
+    builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
+    expect_refused(builder,
+                   "meshes[0].primitives[0].attributes.POSITION: accessors[0] of component type "
+                   "5125 (5126 (float); with KHR_mesh_quantization in extensionsUsed, bytes and "
+                   "shorts is expected)");
+  }
+  for (const bool quantized : {false, true}) {
+    GltfBuilder builder;
+    if (quantized) builder.model.extensionsUsed.push_back("KHR_mesh_quantization");
+    const int positions =
+        builder.add_accessor(builder.add_view(std::vector<std::int8_t>{0, 0, 0, 1, 0, 0, 0, 1, 0}),
+                             TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, 3);
+    std::map<std::string, int> attributes = {{"POSITION", positions}};
+    if (quantized) {
+      attributes["NORMAL"] = builder.add_accessor(
+          builder.add_view(std::vector<std::int8_t>{0, 0, 1, 0, 0, 1, 0, 0, 1}),
+          TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_VEC3, 3);
+    }
+    builder.add_node(mesh_node(builder.add_mesh(attributes)));
+    expect_refused(builder, quantized ? "attributes.NORMAL: accessors[1] of component type 5120 ("
+                                      : "attributes.POSITION: accessors[0] of component type "
+                                        "5120 (");
   }
 }
 

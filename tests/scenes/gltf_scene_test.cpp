@@ -132,6 +132,76 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
     levrt_test::expect_gltf_refused(text, kScenePath, problem);
 }
 
+TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
+  // Blender exports a spot of blend 0 so (inner = outer); the extension asks inner < outer.
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.5}})",
+                      node),
+      kScenePath,
+      ": extensions.KHR_lights_punctual.lights[0].spot.innerConeAngle: 0.5 (a number from 0 to "
+      "below the outerConeAngle, 0.5, is expected)");
+}
+
+// A glTF whose one buffer is the data URI `uri` of `byte_length` bytes, read by an accessor.
+std::string gltf_with_data_buffer(const std::string& uri, int byte_length) {
+  return gltf_scene_with(R"({"type": "point"})",
+                         R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})",
+                         R"(, "buffers": [{"byteLength": )" + std::to_string(byte_length) +
+                             R"(, "uri": ")" + uri + R"("}],
+                    "bufferViews": [{"buffer": 0, "byteLength": 12}],
+                    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3",
+                                   "count": 1}])");
+}
+
+TEST(GltfScene, ABadDataUriIsRefusedSayingWhereAndWhyInAShortLine) {
+  const std::string head = "data:application/octet-stream;base64,";
+  const std::string twelve_bytes = "AAAAAAAAAAAAAAAA";
+  // A megabyte of data and one bad character at its end: the line stays short.
+  const std::string long_bad = head + std::string(1000000, 'A') + "@";
+  const std::pair<std::string, std::string> cases[] = {
+      {gltf_with_data_buffer(head + "@@@@", 12),
+       ": buffers[0].uri: data:application/octet-stream;base64,@@@@ (not base64: character 1 of "
+       "its data is '@')"},
+      {gltf_with_data_buffer(long_bad, 750000),
+       "(not base64: character 1000001 of its data is '@')"},
+      {gltf_with_data_buffer(head + twelve_bytes + "@@@@", 12),
+       "(not base64: character 17 of its data is '@')"},
+      {gltf_with_data_buffer(head + "AAAAA", 12),
+       "(not base64: 5 characters of data, one too many for whole bytes)"},
+      {gltf_with_data_buffer(head, 12), "(a data URI without data)"},
+      {gltf_with_data_buffer(head + "AAAA", 12),
+       ": buffers[0].uri: data of 3 bytes (its byteLength is 12)"},
+      {gltf_with_data_buffer(head + twelve_bytes + "AAAA", 12),
+       ": buffers[0].uri: data of 15 bytes (its byteLength is 12)"},
+  };
+  for (const auto& [text, problem] : cases) {
+    levrt_test::expect_gltf_refused(text, kScenePath, problem);
+    try {
+      scenes::parse_gltf_scene(text, kScenePath);
+    } catch (const std::invalid_argument& e) {
+      EXPECT_LT(std::string(e.what()).size(), 300u) << problem;
+    }
+  }
+  EXPECT_NO_THROW(
+      scenes::parse_gltf_scene(gltf_with_data_buffer(head + twelve_bytes, 12), kScenePath));
+  EXPECT_NO_THROW(scenes::parse_gltf_scene(gltf_with_data_buffer(head + "AAAAAAAAAAAAAAAAAAA=", 14),
+                                           kScenePath));
+}
+
+TEST(GltfScene, TheIntensityBoundItselfIsAcceptedAndOnlyWhatIsAboveItRefused) {
+  // The message names 1e+12 as the most levrt renders: 1e12 is read (as a scene file's is),
+  // 1.000001e12 is refused.
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const scenes::SceneDescription scene = scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "point", "intensity": 1e12})", node), kScenePath);
+  const auto& light = std::get<scenes::PointLightSource>(only_light(scene).children.at(0).data);
+  EXPECT_EQ(light.intensity, glm::vec3(1e12f));
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "point", "intensity": 1.000001e12})", node), kScenePath,
+      "intensity: 1.000001e+12 (levrt renders at most 1e+12)");
+}
+
 // A binary glTF: the 12-byte header, then one JSON chunk padded with spaces to 4 bytes.
 std::string glb_with_length(std::string json, std::uint32_t length_delta_bytes) {
   while (json.size() % 4 != 0) json += ' ';
