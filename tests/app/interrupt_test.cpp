@@ -113,7 +113,8 @@ TEST(Interrupt, SignalDuringAMillionLightRenderStopsInsideItsFirstPass) {
   }
 }
 
-// A scene that takes seconds to load (tests/support/slow_gltf.h): a signal during the load ends
+// A scene that takes seconds to load (tests/support/slow_gltf.h), signalled once its buffer is
+// read (the load's long steps have begun): a signal during the load ends
 // it there (between its steps, or by the load watchdog in a step that cannot stop) with 130 and
 // nothing written. A command that finished the load first would name a later stage.
 TEST(Interrupt, SignalDuringTheSceneLoadStopsTheLoadWithNothingWritten) {
@@ -125,7 +126,10 @@ TEST(Interrupt, SignalDuringTheSceneLoadStopsTheLoadWithNothingWritten) {
     EXPECT_EQ(levrt_test::interrupted_while(
                   {LEVRT_BINARY, "render", "--scene", scene.string(), "--width", "32", "--height",
                    "24", "--out", (dir / "i.png").string(), "--stats", (dir / "s.json").string()},
-                  sig, std::chrono::milliseconds(300)),
+                  sig, std::chrono::milliseconds(100),
+                  [](pid_t pid) {
+                    return levrt_test::has_read_at_least(pid, levrt_test::kSlowGltfBufferBytes);
+                  }),
               "loading the scene")
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir)) << "signal " << sig;

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <string>
 #include <thread>
@@ -35,17 +36,34 @@ inline bool catches_termination_signals(pid_t pid) {
   return false;
 }
 
+// True once the process has read at least `bytes` through read calls (/proc/PID/io's rchar): a
+// test that signals a load waits until the scene's buffer is in, so the signal finds the process
+// in the load's steps after it (building the geometry), not still starting up.
+inline bool has_read_at_least(pid_t pid, unsigned long long bytes) {
+  std::ifstream io("/proc/" + std::to_string(pid) + "/io");
+  std::string line;
+  while (std::getline(io, line)) {
+    if (line.rfind("rchar:", 0) == 0) return std::stoull(line.substr(6)) >= bytes;
+  }
+  return false;
+}
+
+// What a test waits for, beyond the handlers, before it signals the process (null: nothing).
+using ReadyToSignal = std::function<bool(pid_t)>;
+
 // Exit code of a process that did not exit within the bound after the signal (it is then killed).
 constexpr int kIgnoredSignal = 2000;
 
-// Runs levrt with args, signals it `delay` after its handlers are installed, and returns its
+// Runs levrt with args, signals it `delay` after its handlers are installed (and `ready` holds,
+// when given; the signal goes anyway after 30 s, and the test's check of the stage fails), and
+// returns its
 // exit code (1000 + the signal when the signal killed it, so that is never mistaken for 130;
 // kIgnoredSignal when it was still running `exit_bound` after the signal). errors_fd, when not
 // -1, becomes the process' standard error.
 inline int interrupt_after(const std::vector<std::string>& args, int signal_number,
                            std::chrono::milliseconds delay,
                            std::chrono::milliseconds exit_bound = std::chrono::seconds(60),
-                           int errors_fd = -1) {
+                           int errors_fd = -1, const ReadyToSignal& ready = nullptr) {
   const pid_t pid = fork();
   if (pid == 0) {
     if (errors_fd != -1) dup2(errors_fd, STDERR_FILENO);
@@ -56,7 +74,8 @@ inline int interrupt_after(const std::vector<std::string>& args, int signal_numb
     _exit(127);
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!catches_termination_signals(pid) && std::chrono::steady_clock::now() < deadline) {
+  while (!(catches_termination_signals(pid) && (!ready || ready(pid))) &&
+         std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   std::this_thread::sleep_for(delay);
@@ -87,7 +106,8 @@ struct InterruptedRun {
 // As interrupt_after, with the process' standard error kept (in an unnamed temporary file, so a
 // chatty process never blocks on a pipe) and kInterruptHangGuard as the bound.
 inline InterruptedRun interrupt_and_read(const std::vector<std::string>& args, int signal_number,
-                                         std::chrono::milliseconds delay) {
+                                         std::chrono::milliseconds delay,
+                                         const ReadyToSignal& ready = nullptr) {
   InterruptedRun run;
   std::FILE* errors = std::tmpfile();
   if (!errors) {
@@ -96,7 +116,7 @@ inline InterruptedRun interrupt_and_read(const std::vector<std::string>& args, i
     return run;
   }
   run.exit_code =
-      interrupt_after(args, signal_number, delay, kInterruptHangGuard, ::fileno(errors));
+      interrupt_after(args, signal_number, delay, kInterruptHangGuard, ::fileno(errors), ready);
   std::rewind(errors);
   char buffer[4096];
   for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, errors)) > 0;)
@@ -134,8 +154,9 @@ inline InterruptedStage interrupted_stage(const std::string& errors) {
 // For a test's one-line check: what an interrupted levrt was doing when it stopped ("loading the
 // scene", "rendering rt") when it exited 130 with an interrupted line, else how it ended instead.
 inline std::string interrupted_while(const std::vector<std::string>& args, int signal_number,
-                                     std::chrono::milliseconds delay) {
-  const InterruptedRun run = interrupt_and_read(args, signal_number, delay);
+                                     std::chrono::milliseconds delay,
+                                     const ReadyToSignal& ready = nullptr) {
+  const InterruptedRun run = interrupt_and_read(args, signal_number, delay, ready);
   const InterruptedStage stage = interrupted_stage(run.errors);
   if (run.exit_code == 130 && stage.found) return stage.doing;
   return "exit " + std::to_string(run.exit_code) + ", standard error: " + run.errors;

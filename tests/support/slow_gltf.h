@@ -19,6 +19,10 @@
 
 namespace levrt_test {
 
+// The size of slow.bin: a process has begun the load's long steps once it has read this much
+// (signal_process.h's has_read_at_least; it reads the buffer whole, then builds for seconds).
+inline constexpr unsigned long long kSlowGltfBufferBytes = 200000ull * 9 * sizeof(float);
+
 // Writes slow.gltf and slow.bin into `dir` and returns the path of slow.gltf.
 inline std::filesystem::path write_slow_loading_gltf(const std::filesystem::path& dir) {
   constexpr int kTriangles = 200000;
@@ -35,6 +39,7 @@ inline std::filesystem::path write_slow_loading_gltf(const std::filesystem::path
     }
   }
   const std::uint64_t bytes = positions.size() * sizeof(float);
+  static_assert(kSlowGltfBufferBytes == kTriangles * 9 * sizeof(float), "slow.bin's size");
   std::ofstream(dir / "slow.bin", std::ios::binary)
       .write(reinterpret_cast<const char*>(positions.data()), static_cast<std::streamsize>(bytes));
   std::string primitives;

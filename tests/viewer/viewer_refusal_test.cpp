@@ -348,7 +348,12 @@ TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
     EXPECT_EQ(levrt_test::interrupted_while(
                   {LEVRT_BINARY, "view", "--scene", scene.string(), "--window", "800x600",
                    "--frames", "5", "--screenshot", path("out/shot.png")},
-                  sig, std::chrono::milliseconds(800)),
+                  sig, std::chrono::milliseconds(100),
+                  [](pid_t pid) {
+                    // Its window is open and its buffer read: the load's long steps have begun
+                    // (a fixed 800 ms after the handlers came too early once at a load of 14).
+                    return levrt_test::has_read_at_least(pid, levrt_test::kSlowGltfBufferBytes);
+                  }),
               "loading the scene")
         << "signal " << sig;
     EXPECT_TRUE(fs::is_empty(dir_ / "out")) << "signal " << sig;
