@@ -1,6 +1,7 @@
 // What the two sampling methods (lev_mc, light_tree) share as selectors: the hierarchy they draw
 // from, k (the lights drawn per shading point), their per-thread buffers (SamplingScratch), and
-// the answer to culled_irradiance_bound: +inf, as a sampled estimate has no certified bound.
+// the answer to culled_irradiance_bound: +inf, as a sampled estimate has no certified bound
+// (lev_mc answers 0 where its walk culled nothing: its radiance is then rt's).
 #pragma once
 
 #include <limits>

@@ -22,7 +22,12 @@ glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& s
   const glm::vec3 tested = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
       scratch.inspect);
-  if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) return tested;
+  if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) {
+    // Nothing culled here (tolerance 0, or a point every light reaches): the radiance is rt's,
+    // exact, so the certified bound is 0, not the sampled estimate's +inf.
+    if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(0.0f);
+    return tested;
+  }
   return tested + sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random, sampling,
                                    counters, nullptr, scratch.inspect);
 }

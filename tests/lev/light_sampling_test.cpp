@@ -17,6 +17,8 @@
 #include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
 #include "lev/light_sampling.h"
+#include "lev/selector_lev_mc.h"
+#include "lev/selector_rt.h"
 #include "tests/lev/open_point.h"
 #include "tests/lev/random_light_scenes.h"
 
@@ -358,6 +360,30 @@ TEST(LightSampling, SubtreesWhoseIntensityOverflowsAreDrawnWithFiniteProbabiliti
     scratch.parts.subtrees.push_back(lev::whole_hierarchy(h, x));
     const glm::vec3 estimate = lev::sampled_radiance(h, draws, point, random, scratch, counters);
     for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(estimate[c])) << draws << " draws";
+  }
+}
+
+// lev_mc at tolerance 0 culls nothing: its radiance is rt's, and its certified bound is 0 there
+// (it reported +inf, 100 % of every pixel, for a render equal to rt's); above 0, where it culls
+// and samples, the bound stays +inf.
+TEST(LightSampling, LevMcCertifiesZeroWhereItCullsNothing) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    lev_test::Random r(seed);
+    const lev::LightHierarchy h = lev::build_hierarchy(lev_test::random_instanced_tree(r));
+    const lev::RtSelector rt(h);
+    const lev::LevMcSelector exact(h, 0.0f, 1);
+    const lev::LevMcSelector culling(h, 1e3f, 1);
+    lev::SelectorScratch scratch;
+    for (int k = 0; k < 20; ++k) {
+      lev_test::OpenPoint point({r.uniform(-30, 30), r.uniform(-30, 30), r.uniform(-10, 10)});
+      lev::SelectionCounters counters;
+      glm::vec3 bound(-1.0f);
+      const glm::vec3 radiance = exact.direct_radiance(point, scratch, counters, &bound);
+      ASSERT_EQ(bound, glm::vec3(0.0f)) << "seed " << seed;
+      ASSERT_EQ(radiance, rt.direct_radiance(point, scratch, counters)) << "seed " << seed;
+      culling.direct_radiance(point, scratch, counters, &bound);
+      ASSERT_TRUE(bound == glm::vec3(0.0f) || std::isinf(bound.x)) << "seed " << seed;
+    }
   }
 }
 
