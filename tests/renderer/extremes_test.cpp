@@ -19,6 +19,19 @@
 
 namespace {
 
+// A 20x20 floor with a 2x2x2 box on it, the box of material `box_material`.
+renderer::Prototype floor_and_box(std::uint32_t box_material) {
+  renderer::Prototype room;
+  renderer::TriangleMesh floor;
+  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
+  room.meshes.push_back(floor);
+  renderer::TriangleMesh box;
+  box.material = box_material;
+  renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
+  room.meshes.push_back(box);
+  return room;
+}
+
 renderer::Scene extreme_scene() {
   renderer::Scene scene;
   scene.name = "extremes";
@@ -31,14 +44,7 @@ renderer::Scene extreme_scene() {
   glass.kd = 0.1f;
   glass.kt = 0.8f;
   scene.materials.push_back(glass);
-  renderer::Prototype room;
-  renderer::TriangleMesh floor;
-  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
-  room.meshes.push_back(floor);
-  renderer::TriangleMesh box;
-  box.material = 1;
-  renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
-  room.meshes.push_back(box);
+  renderer::Prototype room = floor_and_box(1);
   room.spheres.push_back({{3, 1, 1}, 1.0f, 2});
   scene.geometry.prototypes.push_back(room);
   scene.geometry.instances.push_back({0, lev::Similarity{}});
@@ -184,14 +190,7 @@ renderer::Scene huge_radiance_scene() {
   bright.ks = 1e3f;
   bright.shininess = 0.0f;
   scene.materials.push_back(bright);
-  renderer::Prototype room;
-  renderer::TriangleMesh floor;
-  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
-  room.meshes.push_back(floor);
-  renderer::TriangleMesh box;
-  renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
-  room.meshes.push_back(box);
-  scene.geometry.prototypes.push_back(room);
+  scene.geometry.prototypes.push_back(floor_and_box(0));
   scene.geometry.instances.push_back({0, lev::Similarity{}});
   std::vector<lev::LightDescriptionNode> lights;
   lights.push_back(lev::light_node(lev::make_point_light({0, 0, 3}, glm::vec3(1e36f))));

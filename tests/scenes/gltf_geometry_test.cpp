@@ -72,6 +72,19 @@ void expect_vec3_near(const glm::vec3& a, const glm::vec3& b, float tolerance = 
   EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
+// Makes the builder's first accessor sparse: `count` replaced elements, the first at `index`,
+// its value (1, 2, 3).
+void make_sparse(GltfBuilder& builder, int count, std::uint32_t index) {
+  tinygltf::Accessor& accessor = builder.model.accessors[0];
+  accessor.sparse.isSparse = true;
+  accessor.sparse.count = count;
+  accessor.sparse.indices.bufferView = builder.add_view(std::vector<std::uint32_t>{index});
+  accessor.sparse.indices.byteOffset = 0;
+  accessor.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  accessor.sparse.values.bufferView = builder.add_view(std::vector<float>{1, 2, 3});
+  accessor.sparse.values.byteOffset = 0;
+}
+
 template <typename Index>
 void check_index_type(int component_type) {
   GltfBuilder builder;
@@ -326,14 +339,7 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
   {
     GltfBuilder builder;
     const int positions = builder.add_vec3s(kQuad);
-    tinygltf::Accessor& accessor = builder.model.accessors[0];
-    accessor.sparse.isSparse = true;
-    accessor.sparse.count = 1;
-    accessor.sparse.indices.bufferView = builder.add_view(std::vector<std::uint32_t>{7});
-    accessor.sparse.indices.byteOffset = 0;
-    accessor.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    accessor.sparse.values.bufferView = builder.add_view(std::vector<float>{1, 2, 3});
-    accessor.sparse.values.byteOffset = 0;
+    make_sparse(builder, 1, 7);
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
     expect_refused(builder, "accessors[0].sparse.indices: 7 beyond the count 4");
   }
@@ -355,14 +361,7 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
 TEST(GltfGeometry, ASparseCountAboveTheAccessorsIsRefusedSayingWhy) {
   GltfBuilder builder;
   const int positions = builder.add_vec3s(kQuad);
-  tinygltf::Accessor& accessor = builder.model.accessors[0];
-  accessor.sparse.isSparse = true;
-  accessor.sparse.count = 2147483647;
-  accessor.sparse.indices.bufferView = builder.add_view(std::vector<std::uint32_t>{0});
-  accessor.sparse.indices.byteOffset = 0;
-  accessor.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-  accessor.sparse.values.bufferView = builder.add_view(std::vector<float>{1, 2, 3});
-  accessor.sparse.values.byteOffset = 0;
+  make_sparse(builder, 2147483647, 0);
   builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
   expect_refused(builder,
                  "accessors[0].sparse.count: 2147483647 (from 1 to the accessor's count, 4, is "
