@@ -585,15 +585,6 @@ std::uint64_t exact_cluster_seed(std::uint64_t point_seed, std::uint32_t node,
          static_cast<std::uint64_t>(bits[2]) * 0xFF51AFD7ED558CCDull;
 }
 
-// The k-th uniform number in [0, 1) of a seed's stream (splitmix64's finalizer).
-double seeded_uniform(std::uint64_t seed, std::uint32_t k) {
-  std::uint64_t z = seed + (static_cast<std::uint64_t>(k) + 1) * 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
-}
-
 std::uint64_t point_hash(const glm::vec3& point) {
   std::uint32_t bits[3];
   std::memcpy(bits, &point, sizeof bits);
@@ -624,8 +615,9 @@ void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear&
                   bool centred, std::vector<Light>& out, CulledSoFar& culled) {
   if (!centred && culled.cut_nodes->light_counts[node] <= kExactClusterLights) {
     // One pass: the summed radiance, and the ray's light by weighted reservoir sampling (each
-    // light kept with its weight over the weight so far), one hash per lit light.
-    const std::uint64_t seed = exact_cluster_seed(culled.point_seed, node, translation);
+    // light kept with its weight over the weight so far), one draw of the cluster's stream (the
+    // renderer's splitmix64, RandomStream) per lit light.
+    RandomStream stream{exact_cluster_seed(culled.point_seed, node, translation)};
     glm::dvec3 sum(0.0);
     double weight = 0.0;
     std::uint32_t lit = 0;
@@ -638,7 +630,8 @@ void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear&
                              if (!(w > 0.0)) return true;
                              sum += glm::dvec3(r);
                              weight += w;
-                             if (seeded_uniform(seed, lit++) * weight < w) chosen = light;
+                             ++lit;
+                             if (stream.next_double() * weight < w) chosen = light;
                              return true;
                            });
     culled.total += sum - glm::dvec3(estimate);

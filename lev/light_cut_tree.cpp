@@ -3,16 +3,15 @@
 #include <algorithm>
 
 #include "lev/important_lights.h"
+#include "lev/light_selector.h"
 #include "lev/light_split.h"
 
 namespace lev {
 
 double node_uniform(std::uint32_t node) {
-  std::uint64_t z = (static_cast<std::uint64_t>(node) + 1) * 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
+  // The first number of the stream seeded node * the stream's step: (node + 1) * step hashed.
+  RandomStream stream{static_cast<std::uint64_t>(node) * 0x9E3779B97F4A7C15ull};
+  return stream.next_double();
 }
 
 double draw_weight(const glm::vec3& intensity) {

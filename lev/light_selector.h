@@ -63,6 +63,7 @@ struct RandomStream {
     return z ^ (z >> 31);
   }
   float next_float() { return static_cast<float>(next_u64() >> 40) * 0x1.0p-24f; }
+  double next_double() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53; }
 };
 
 // A request for the missed light at one shading point (lev/missed_light.h), set in

@@ -619,14 +619,17 @@ TEST_F(Outputs, ACharacterDeviceOtherThanNullZeroFullOrATerminalIsRefusedBeforeR
 // as root): refused before any work, one line naming the flag. It failed with exit 1 after the
 // render.
 TEST_F(Outputs, AFolderThatTakesNoNewFileIsRefusedBeforeRendering) {
+  int tried = 0;
   for (const std::string folder : {"/sys/kernel", "/proc"}) {
     if (!fs::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0) continue;
+    ++tried;
     const CommandRun r = run_here(output_render_args({"--stats", folder + "/levrt.json"}));
     EXPECT_EQ(r.exit_code, 2) << folder << ": " << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
     EXPECT_NE(r.output.find("--stats: its folder takes no new file"), std::string::npos)
         << r.output;
   }
+  if (tried == 0) GTEST_SKIP() << "no folder here that access() calls writable and takes no file";
 }
 
 // A 64 KiB tmpfs holds the first outputs but not all: the render fails with one line, every old
