@@ -395,19 +395,6 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
       throw UsageError(flag + ": folder does not exist, got '" + path + "'");
     if (::access(parent.c_str(), W_OK) != 0)
       throw UsageError(flag + ": folder is not writable, got '" + path + "'");
-    // Where access() says yes and the filesystem still refuses a new file (sysfs, procfs, a
-    // folder a security module guards), the write would fail only after the work: a temporary
-    // is made and removed here, as the write will make one.
-    {
-      std::string probe;
-      const int fd = create_temporary(parent, probe);
-      if (fd < 0) {
-        throw UsageError(flag + ": its folder takes no new file (" + std::strerror(errno) +
-                         "), got '" + path + "'");
-      }
-      ::close(fd);
-      ::unlink(probe.c_str());
-    }
     // An existing file the user may not write (read-only, or immutable even for root) is not
     // replaced by the rename either: refused here, before any work.
     struct stat existing {};

@@ -615,23 +615,6 @@ TEST_F(Outputs, ACharacterDeviceOtherThanNullZeroFullOrATerminalIsRefusedBeforeR
   EXPECT_EQ(run_here(output_render_args({"--stats", "/dev/null"})).exit_code, 0);
 }
 
-// A folder access() calls writable that takes no new file (sysfs's /sys/kernel, procfs' /proc,
-// as root): refused before any work, one line naming the flag. It failed with exit 1 after the
-// render.
-TEST_F(Outputs, AFolderThatTakesNoNewFileIsRefusedBeforeRendering) {
-  int tried = 0;
-  for (const std::string folder : {"/sys/kernel", "/proc"}) {
-    if (!fs::is_directory(folder) || ::access(folder.c_str(), W_OK) != 0) continue;
-    ++tried;
-    const CommandRun r = run_here(output_render_args({"--stats", folder + "/levrt.json"}));
-    EXPECT_EQ(r.exit_code, 2) << folder << ": " << r.output;
-    EXPECT_EQ(line_count(r.output), 1) << r.output;
-    EXPECT_NE(r.output.find("--stats: its folder takes no new file"), std::string::npos)
-        << r.output;
-  }
-  if (tried == 0) GTEST_SKIP() << "no folder here that access() calls writable and takes no file";
-}
-
 // A 64 KiB tmpfs holds the first outputs but not all: the render fails with one line, every old
 // file stays as it was and no temporary is left. Mounting needs root (or a user namespace).
 TEST_F(Outputs, AFullFileSystemWritesNoOutputAndKeepsTheOldFiles) {
