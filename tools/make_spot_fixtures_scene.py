@@ -9,6 +9,7 @@ z at random, over the stage's floor, boxes and objects (taken from a `levrt expo
 """
 import json
 import math
+import os
 import random
 import sys
 
@@ -48,4 +49,6 @@ def main(stage_path, out_path):
 if __name__ == "__main__":
     if len(sys.argv) != 3:
         sys.exit("usage: make_spot_fixtures_scene.py STAGE_EXPORT.json OUT.json")
+    if os.path.exists(sys.argv[2]) and os.path.samefile(sys.argv[1], sys.argv[2]):
+        sys.exit("make_spot_fixtures_scene.py: the output is the stage export it reads")
     main(sys.argv[1], sys.argv[2])
