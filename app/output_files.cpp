@@ -1,10 +1,12 @@
 #include "app/output_files.h"
 
 #include <fcntl.h>
+#include <linux/magic.h>
 #include <poll.h>
 #include <pthread.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -118,6 +120,42 @@ bool is_existing_special_file(const std::string& path) {
 // restore it), so a file-size limit (ulimit -f) comes back as EFBIG and a reader that went away
 // (`levrt render --out - | true`, a FIFO closed early) as EPIPE, reported and cleaned up, instead
 // of killing the process with the other outputs' temporary files left behind.
+// The kernel's own file systems (sysfs, procfs and their kin) take no new file, whatever access()
+// says of their folders (root may "write" /sys/kernel): an output there could only fail after the
+// work. Named here so that it is refused before. Null for any other file system.
+const char* kernel_file_system(const std::string& folder) {
+  struct statfs info {};
+  if (::statfs(folder.c_str(), &info) != 0) return nullptr;
+  switch (static_cast<unsigned long>(info.f_type)) {
+    case SYSFS_MAGIC:
+      return "sysfs";
+    case PROC_SUPER_MAGIC:
+      return "procfs";
+    case DEBUGFS_MAGIC:
+      return "debugfs";
+    case TRACEFS_MAGIC:
+      return "tracefs";
+    case SECURITYFS_MAGIC:
+      return "securityfs";
+    case CGROUP_SUPER_MAGIC:
+      return "cgroupfs";
+    case CGROUP2_SUPER_MAGIC:
+      return "cgroup2fs";
+    case BPF_FS_MAGIC:
+      return "bpffs";
+    case PSTOREFS_MAGIC:
+      return "pstorefs";
+    case EFIVARFS_MAGIC:
+      return "efivarfs";
+    case SELINUX_MAGIC:
+      return "selinuxfs";
+    case DEVPTS_SUPER_MAGIC:
+      return "devpts";
+    default:
+      return nullptr;
+  }
+}
+
 int write_all(int fd, const std::string& bytes) {
   std::signal(SIGXFSZ, SIG_IGN);
   std::signal(SIGPIPE, SIG_IGN);
@@ -393,6 +431,10 @@ void check_output_path(const OutputPath& output, const std::set<std::string>& in
     const fs::path parent = folder_of(target);
     if (!fs::is_directory(parent, ec))
       throw UsageError(flag + ": folder does not exist, got '" + path + "'");
+    if (const char* kernel = kernel_file_system(parent.string())) {
+      throw UsageError(flag + ": folder is on " + kernel +
+                       ", a kernel file system that takes no new file, got '" + path + "'");
+    }
     if (::access(parent.c_str(), W_OK) != 0)
       throw UsageError(flag + ": folder is not writable, got '" + path + "'");
     // An existing file the user may not write (read-only, or immutable even for root) is not

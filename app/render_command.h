@@ -49,9 +49,9 @@ std::vector<OutputPath> render_output_paths(const RenderOutputs& outputs);
 // 2048x2048 and 4096x4096 renders with --subsample 64 and every output: subsampling does not
 // reduce it, the framebuffer is full size. (Measured: 123 and 183 bytes with the error bound's
 // per-pixel sum and heatmap; then 24 and 48 bytes counted, not measured, for the variance sums
-// and the noise heatmap.)
-inline constexpr std::uint64_t kRenderBytesPerPixel = 148;
-inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 232;
+// and the noise heatmap, and 12 and 24 for the square sums held in double.)
+inline constexpr std::uint64_t kRenderBytesPerPixel = 160;
+inline constexpr std::uint64_t kReferenceRenderBytesPerPixel = 256;
 // The memory a render may plan for; larger images are refused before any work.
 inline constexpr std::uint64_t kRenderMemoryBudgetBytes = std::uint64_t{8} << 30;
 

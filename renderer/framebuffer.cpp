@@ -24,7 +24,7 @@ void clear_framebuffer(Framebuffer& f) {
   f.nodes_visited.assign(n, 0);
   f.shadow_rays.assign(n, 0);
   f.error_bound_sum.assign(n, glm::vec3(0.0f));
-  f.radiance_square_sum.assign(n, glm::vec3(0.0f));
+  f.radiance_square_sum.assign(n, glm::dvec3(0.0));
   if (!f.missed_sum.empty()) allocate_missed_light(f);
 }
 

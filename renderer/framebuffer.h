@@ -23,8 +23,10 @@ struct Framebuffer {
   // error_bound.h); zero unless RenderSettings::compute_error_bound.
   std::vector<glm::vec3> error_bound_sum;
   // Per pixel and channel, the sum of each sample's radiance squared: with radiance_sum and
-  // samples, the variance across passes behind the noise estimate (pixel_noise.h).
-  std::vector<glm::vec3> radiance_square_sum;
+  // samples, the variance across passes behind the noise estimate (pixel_noise.h). In double: a
+  // sample may be as bright as the largest float / 2^17 (clamp_sample_radiance), whose square is
+  // past the float range.
+  std::vector<glm::dvec3> radiance_square_sum;
   // Per pixel, summed over samples, when the render estimates the missed light (empty when not):
   // the estimate (RGB radiance, renderer/missed_light.h) and its variance.
   std::vector<glm::vec3> missed_sum;

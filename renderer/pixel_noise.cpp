@@ -11,8 +11,8 @@ double pixel_std_error(const Framebuffer& f, std::size_t i) {
   for (int c = 0; c < 3; ++c) {
     const double mean = static_cast<double>(f.radiance_sum[i][c]) / n;
     // Rounding may leave a constant pixel a tiny negative variance.
-    const double variance = std::max(
-        0.0, (static_cast<double>(f.radiance_square_sum[i][c]) - n * mean * mean) / (n - 1.0));
+    const double variance =
+        std::max(0.0, (f.radiance_square_sum[i][c] - n * mean * mean) / (n - 1.0));
     sum += std::sqrt(variance / n);
   }
   return sum;

@@ -113,7 +113,8 @@ bool render_tile(RenderState& state, int tile, lev::SelectorScratch& scratch,
     fb.nodes_visited[sample.pixel] += sample.counters.selection.nodes_visited;
     fb.shadow_rays[sample.pixel] += sample.counters.selection.shadow_rays;
     fb.error_bound_sum[sample.pixel] += sample.counters.error_bound;
-    fb.radiance_square_sum[sample.pixel] += sample.radiance * sample.radiance;
+    const glm::dvec3 radiance(sample.radiance);
+    fb.radiance_square_sum[sample.pixel] += radiance * radiance;
     if (!fb.missed_sum.empty()) {
       fb.missed_sum[sample.pixel] += sample.counters.missed;
       fb.missed_variance_sum[sample.pixel] += sample.counters.missed_variance;

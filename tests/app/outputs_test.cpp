@@ -225,6 +225,26 @@ TEST_F(Outputs, DevFullStaysADeviceAndTheErrorNamesTheReason) {
   EXPECT_EQ(after.st_rdev, before.st_rdev);
 }
 
+// A folder of the kernel's file systems that access() calls writable (root may "write" /sys/kernel
+// and /proc/self) takes no new file: refused before the render (it failed after it, exit 1).
+TEST_F(Outputs, AFolderOnAKernelFileSystemIsRefusedBeforeRendering) {
+  int tried = 0;
+  for (const std::string folder : {"/sys/kernel", "/proc/self"}) {
+    if (::access(folder.c_str(), W_OK) != 0) continue;
+    ++tried;
+    const std::string stats = folder + "/levrt_outputs_test.json";
+    const CommandRun r = run_levrt(output_render_args({"--out", path("a.png"), "--stats", stats}));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--stats: folder is on "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("a kernel file system that takes no new file"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_TRUE(entries().empty()) << folder;
+    EXPECT_FALSE(fs::exists(stats)) << stats;
+  }
+  if (tried == 0) GTEST_SKIP() << "neither /sys/kernel nor /proc/self is writable to access()";
+}
+
 TEST_F(Outputs, AFileSizeLimitLeavesNoTemporaryFile) {
   const CommandRun limited = run_shell("cd " + shell_quote(dir_.string()) + " && ulimit -f 1 && " +
                                        shell_quote(LEVRT_BINARY) +

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "lev/light_description.h"
+#include "renderer/pixel_noise.h"
 #include "renderer/ray_scene.h"
 #include "renderer/render.h"
 #include "renderer/shapes.h"
@@ -94,9 +95,14 @@ renderer::Framebuffer render_extreme(renderer::Scene& scene, const renderer::Ray
   return renderer::render_framebuffer(*state);
 }
 
+// The pixels and their noise estimate (two passes): a sample near the largest float / 2^17 squared
+// past the float range in the variance sum, so the stats printed a noise of inf.
 void expect_finite(const renderer::Framebuffer& fb, const std::string& label) {
   for (const glm::vec3& c : fb.radiance_sum) {
     for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(c[k]) && c[k] >= 0.0f) << label;
+  }
+  for (std::size_t i = 0; i < fb.samples.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(renderer::pixel_std_error(fb, i))) << label << ", pixel " << i;
   }
 }
 

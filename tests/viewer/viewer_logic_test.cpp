@@ -352,7 +352,7 @@ TEST(ViewerState, ASizeThatFitsOnlyWithoutTheReferenceIsRefusedTheReferenceAlone
   settings.image.height = 7000;
   EXPECT_EQ(app::memory_budget_refusal(settings, false), "");
   const std::string refusal = app::memory_budget_refusal(settings, true);
-  EXPECT_NE(refusal.find("7000x7000 with --reference needs about 10841 MiB"), std::string::npos)
+  EXPECT_NE(refusal.find("7000x7000 with --reference needs about 11962 MiB"), std::string::npos)
       << refusal;
   EXPECT_THROW(app::check_memory_budget(settings, true), app::UsageError);
   EXPECT_NO_THROW(app::check_memory_budget(settings, false));
