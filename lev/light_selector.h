@@ -157,6 +157,9 @@ class LightSelector {
 // surface, names the light its shadow ray goes to instead (a cluster's member: lev_cut), or
 // returns null for the light itself. unshadowed (may be null) holds, per light of `lights`, its
 // point.unshadowed_radiance already computed (lev_cut's walk computes it for its running total).
+// ray_visible (may be null; one entry per light of `lights`) is set to 1 where a light's shadow ray
+// found it and to 0 where the ray was blocked; a light without a ray keeps its entry (lev_cut's
+// visibility_noise).
 inline constexpr std::size_t kCancelCheckLights = 4096;
 struct ShadowRayToTheLight {
   const Light* operator()(std::size_t, const Light&) const { return nullptr; }
@@ -166,7 +169,8 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
                              SelectionCounters& counters, const std::atomic<bool>* cancel = nullptr,
                              float* visible_irradiance = nullptr, InspectRecord* record = nullptr,
                              ShadowTarget&& shadow_target = ShadowTarget{},
-                             const glm::vec3* unshadowed = nullptr) {
+                             const glm::vec3* unshadowed = nullptr,
+                             std::uint8_t* ray_visible = nullptr) {
   glm::dvec3 sum(0.0);
   std::size_t index = 0;
   for (const Light& light : lights) {
@@ -188,6 +192,7 @@ glm::vec3 sum_visible_lights(const LightRange& lights, Filter&& selected, Shadin
     ++counters.shadow_rays;
     const Light* target = shadow_target(i, light);
     const bool visible = point.visible(target ? *target : light);
+    if (ray_visible) ray_visible[i] = visible ? 1 : 0;
     if (shaded) {
       shaded->shadow_ray = true;
       shaded->visible = visible;

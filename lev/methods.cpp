@@ -112,7 +112,8 @@ std::vector<MethodInfo> built_in_rows() {
        "LEV's walk, its volumes dropping what cannot reach the display (below the relative error "
        "times one 8-bit step), what they keep cut into clusters whose error bound is below the "
        "relative error (--relative-error) times the point's running total; one shadow ray per "
-       "cluster",
+       "cluster, and a finer cut where those rays find clusters partly hidden (their noise on the "
+       "display above the relative error)",
        kUsesRelativeError | kReadsDisplayScale,
        {0.1, 0.05, 0.02, 0.01, 0.005},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {

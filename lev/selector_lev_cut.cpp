@@ -1,20 +1,105 @@
 #include "lev/selector_lev_cut.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cassert>
+#include <cstring>
+
+#include "lev/visibility_noise.h"
 
 namespace lev {
 
 LevCutSelector::LevCutSelector(const LightHierarchy& hierarchy, float relative_error,
-                               float display_scale)
+                               float display_scale, double noise_sigmas)
     : hierarchy_(hierarchy),
       relative_error_(relative_error),
+      display_scale_(display_scale),
+      noise_sigmas_(noise_sigmas),
       tolerance_(relative_error * kDropToleranceOfRelativeError / display_scale),
       volumes_(fit_extent_volumes(hierarchy, tolerance_)),
       cut_nodes_(make_cut_node_table(hierarchy)) {}
 
+namespace {
+
+bool earlier_position(const CastRay& a, const CastRay& b) {
+  return std::lexicographical_compare(a.position_bits, a.position_bits + 3, b.position_bits,
+                                      b.position_bits + 3);
+}
+
+// The point as the shading loop sees it, its shadow rays remembered: a ray to a position already
+// answered at this point (`answered`, sorted) is not cast again; every ray cast is appended to
+// `cast`. The answer is the same either way (the same ray), so the image does not change.
+class RememberedRays final : public ShadingPoint {
+ public:
+  RememberedRays(ShadingPoint& point, const std::vector<CastRay>& answered,
+                 std::vector<CastRay>& cast)
+      : point_(point), answered_(answered), cast_(cast) {}
+  glm::vec3 position() const override { return point_.position(); }
+  glm::vec3 normal() const override { return point_.normal(); }
+  glm::vec3 unshadowed_radiance(const Light& world_light) const override {
+    return point_.unshadowed_radiance(world_light);
+  }
+  SurfaceResponse surface_response() const override { return point_.surface_response(); }
+  bool visible(const Light& world_light) override {
+    CastRay ray{};
+    std::memcpy(ray.position_bits, &world_light.position, sizeof ray.position_bits);
+    const auto found = std::lower_bound(answered_.begin(), answered_.end(), ray, earlier_position);
+    if (found != answered_.end() && !earlier_position(ray, *found)) {
+      ++recalled_;
+      return found->visible;
+    }
+    ray.visible = point_.visible(world_light);
+    cast_.push_back(ray);
+    return ray.visible;
+  }
+  // Rays answered from `answered`, which the shading loop counted as cast.
+  std::uint64_t recalled() const { return recalled_; }
+
+ private:
+  ShadingPoint& point_;
+  const std::vector<CastRay>& answered_;
+  std::vector<CastRay>& cast_;
+  std::uint64_t recalled_ = 0;
+};
+
+}  // namespace
+
 glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                                           SelectionCounters& counters,
                                           glm::vec3* culled_irradiance_bound) const {
+  LevCutScratch& own = method_scratch<LevCutScratch>(scratch);
+  std::vector<std::uint8_t>& ray_visible = own.ray_visible;
+  own.rays_cast.clear();
+  own.rays_sorted.clear();
+  const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
+  float relative_error = relative_error_;
+  for (int refinement = 0;; ++refinement) {
+    RememberedRays shading(point, own.rays_sorted, own.rays_cast);
+    const glm::vec3 radiance = shade_cut(relative_error, point, shading, scratch, counters,
+                                         culled_irradiance_bound, ray_visible);
+    counters.shadow_rays -= shading.recalled();
+    if (refinement == kNoiseRefinements) return radiance;
+    const double noise =
+        visibility_noise(scratch.walk.cut_estimates, ray_visible, scratch.walk.centred_clusters,
+                         scratch.walk.exact_clusters);
+    // NaN-safe: refines only on a noise known to be above the setting.
+    if (!(noise_sigmas_ * noise * display_scale_ > relative_error_)) return radiance;
+    if (scratch.cancel && scratch.cancel->load(std::memory_order_relaxed)) return radiance;
+    // The inspector lists what the last cut did: the refined one.
+    if (scratch.inspect) {
+      scratch.inspect->shaded.resize(shaded_from);
+      scratch.inspect->clear_walk();
+    }
+    relative_error *= 0.5f;
+    own.rays_sorted = own.rays_cast;
+    std::sort(own.rays_sorted.begin(), own.rays_sorted.end(), earlier_position);
+  }
+}
+
+glm::vec3 LevCutSelector::shade_cut(float relative_error, ShadingPoint& point,
+                                    ShadingPoint& shading, SelectorScratch& scratch,
+                                    SelectionCounters& counters, glm::vec3* culled_irradiance_bound,
+                                    std::vector<std::uint8_t>& ray_visible) const {
   scratch.lights.clear();
   WalkCounters walk_counters;
   CulledRadianceBound culled_radiance;
@@ -22,7 +107,7 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
     culled_radiance.surface = point.surface_response();
     scratch.walk.radiance = &culled_radiance;
   }
-  find_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error_, point, scratch.walk,
+  find_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error, point, scratch.walk,
                  scratch.lights, walk_counters, culled_irradiance_bound);
   scratch.walk.radiance = nullptr;
   if (culled_radiance.bounded) *scratch.culled_radiance = culled_radiance;
@@ -45,9 +130,10 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   assert(estimates.empty() || estimates.size() == scratch.lights.size());
   const glm::vec3* unshadowed =
       estimates.size() == scratch.lights.size() ? estimates.data() : nullptr;
+  ray_visible.assign(scratch.lights.size(), 0);
   const glm::vec3 radiance = sum_visible_lights(
-      scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
-      scratch.inspect, shadow_target, unshadowed);
+      scratch.lights, [](const Light&) { return true; }, shading, counters, scratch.cancel, nullptr,
+      scratch.inspect, shadow_target, unshadowed, ray_visible.data());
   if (scratch.inspect) scratch.inspect->attach_walk_clusters(shaded_from);
   return radiance;
 }

@@ -8,8 +8,15 @@
 // walked, largest first (find_light_cut). One setting, the relative error: the tolerance the
 // volumes drop at is tied to it (kDropToleranceOfRelativeError), so a tighter setting both drops
 // less and cuts finer, and at 0 it drops nothing and cuts nothing: the image is `rt`'s bit for bit.
-// Deterministic: the cut depends on the point only.
+// Where the cut's rays find its clusters partly hidden, their 0/1 rays are noisy
+// (visibility_noise.h): at such a point the cut is made again at half the relative error, up to
+// kNoiseRefinements times, until kNoiseSigmas times that noise, on the display, is within the
+// relative error. Deterministic: the cut depends on the point only.
 #pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "lev/important_lights.h"
 #include "lev/light_hierarchy.h"
@@ -23,20 +30,58 @@ namespace lev {
 // of a step at any exposure.
 inline constexpr float kDropToleranceOfRelativeError = 1.0f / 255.0f;
 
+// The noise check (LevCutSelector::direct_radiance): a point's cut is refined while this many
+// standard deviations of its rays' visibility noise, times the exposure, exceed the relative
+// error (a share of the display's white, as the pixel error is measured), at most this many
+// times, halving the relative error each time. Three deviations: among thousands of pixels a few
+// sit that far out, and the maximum error is set by those.
+inline constexpr double kNoiseSigmas = 3.0;
+inline constexpr int kNoiseRefinements = 3;
+
+// A shadow ray cast at the current point: the light's position (its float bits) and whether the
+// ray found it. A refined cut keeps many of the cut's clusters and lights, whose rays go to the
+// same positions: they are answered from these, not cast again.
+struct CastRay {
+  std::uint32_t position_bits[3];
+  bool visible;
+};
+
+// lev_cut's buffers for one thread: the shading loop's ray outcomes (visibility_noise) and the
+// rays cast at the point so far, in the order cast and sorted for lookup.
+struct LevCutScratch : MethodScratch {
+  std::vector<std::uint8_t> ray_visible;
+  std::vector<CastRay> rays_cast;
+  std::vector<CastRay> rays_sorted;
+};
+
 class LevCutSelector final : public LightSelector {
  public:
   // relative_error in [0, 1]; fits the extent volumes for the tolerance it implies at the
-  // exposure display_scale (2^EV, > 0).
-  LevCutSelector(const LightHierarchy& hierarchy, float relative_error, float display_scale = 1.0f);
+  // exposure display_scale (2^EV, > 0). noise_sigmas is the noise check's (0 checks nothing: one
+  // cut per point, for tests that compare).
+  LevCutSelector(const LightHierarchy& hierarchy, float relative_error, float display_scale = 1.0f,
+                 double noise_sigmas = kNoiseSigmas);
   glm::vec3 direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
                             SelectionCounters& counters,
                             glm::vec3* culled_irradiance_bound = nullptr) const override;
   // The cut's table of the nodes (CutNodeTable).
   std::size_t bookkeeping_bytes() const override;
+  std::unique_ptr<MethodScratch> make_scratch() const override {
+    return std::make_unique<LevCutScratch>();
+  }
 
  private:
+  // One cut at `relative_error` shaded (its shadow rays cast), the outcomes in `ray_visible`.
+  // `shading` is `point` with its rays remembered (RememberedRays in the .cpp).
+  glm::vec3 shade_cut(float relative_error, ShadingPoint& point, ShadingPoint& shading,
+                      SelectorScratch& scratch, SelectionCounters& counters,
+                      glm::vec3* culled_irradiance_bound,
+                      std::vector<std::uint8_t>& ray_visible) const;
+
   const LightHierarchy& hierarchy_;
   const float relative_error_;
+  const float display_scale_;
+  const double noise_sigmas_;
   const float tolerance_;
   const ExtentVolumes volumes_;
   const CutNodeTable cut_nodes_;

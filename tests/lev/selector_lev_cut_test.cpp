@@ -544,6 +544,82 @@ TEST(LevCut, AnExactClustersRayGoesToALightDrawnInProportionToItsRadiance) {
   EXPECT_NEAR(share, 0.75, 0.03) << green << " of " << draws;
 }
 
+// Faces every light with a unit response, and a wall hides every light on the near side of the
+// plane x = wall_x; counts the shadow rays it is asked for.
+class BehindAWall final : public lev::ShadingPoint {
+ public:
+  BehindAWall(const glm::vec3& x, float wall_x) : x_(x), wall_x_(wall_x) {}
+  glm::vec3 position() const override { return x_; }
+  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
+    return lev::irradiance(light, x_);
+  }
+  bool visible(const lev::Light& target) override {
+    ++rays;
+    return target.position.x > wall_x_;
+  }
+  lev::SurfaceResponse surface_response() const override {
+    lev::SurfaceResponse unit;
+    unit.diffuse = glm::vec3(1.0f);
+    return unit;
+  }
+  int rays = 0;
+
+ private:
+  glm::vec3 x_;
+  float wall_x_;
+};
+
+// The rig of fixtures half behind a wall that runs through its fixtures: clusters with some
+// lights seen and some hidden, each shaded through one 0/1 ray. The noise check cuts finer at
+// such points (more lights tested), and the radiance comes nearer the truth (the seen lights'
+// sum) over the points; a ray to a position asked already at the point is answered again, not
+// cast: the shadow rays counted are the rays the point was asked for, fewer than the lights
+// tested where the cut was refined. Where every light is seen the check changes nothing.
+TEST(LevCut, TheNoiseCheckCutsFinerWhereTheRaysFindClustersPartlyHidden) {
+  const lev::LightDescription tree = rig_of_fixtures();
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+  const lev::LevCutSelector checked(h, 0.05f);
+  const lev::LevCutSelector unchecked(h, 0.05f, 1.0f, 0.0);
+  double checked_error = 0.0, unchecked_error = 0.0;
+  std::uint64_t checked_tested = 0, unchecked_tested = 0, recalled = 0;
+  for (int k = 0; k < 40; ++k) {
+    const glm::vec3 x(0.37f * static_cast<float>(k), 7.1f, 2.0f);
+    const float wall_x = 3.05f + 0.2f * static_cast<float>(k % 7);
+    double truth = 0.0;
+    for (const lev::Light& l : world_lights) {
+      if (l.position.x > wall_x) truth += lev::irradiance(l, x).x;
+    }
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters counters;
+    BehindAWall point(x, wall_x);
+    checked_error += std::abs(checked.direct_radiance(point, scratch, counters).x - truth);
+    ASSERT_EQ(static_cast<std::uint64_t>(point.rays), counters.shadow_rays) << k;
+    checked_tested += counters.lights_tested;
+    recalled += counters.lights_tested - counters.shadow_rays;
+    lev::SelectionCounters unchecked_counters;
+    BehindAWall same(x, wall_x);
+    unchecked_error +=
+        std::abs(unchecked.direct_radiance(same, scratch, unchecked_counters).x - truth);
+    unchecked_tested += unchecked_counters.lights_tested;
+  }
+  EXPECT_GT(checked_tested, unchecked_tested + unchecked_tested / 2);
+  EXPECT_LT(checked_error, 0.5 * unchecked_error);
+  EXPECT_GT(recalled, 40u);
+  // Every light seen: no refinement, the same radiance and work.
+  for (int k = 0; k < 20; ++k) {
+    const glm::vec3 x(0.8f * static_cast<float>(k), 5.0f, -3.0f);
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters a, b;
+    UnitResponsePoint point(x);
+    const glm::vec3 with_check = checked.direct_radiance(point, scratch, a);
+    const glm::vec3 without = unchecked.direct_radiance(point, scratch, b);
+    EXPECT_EQ(with_check, without) << k;
+    EXPECT_EQ(a.lights_tested, b.lights_tested) << k;
+    EXPECT_EQ(a.shadow_rays, b.shadow_rays) << k;
+  }
+}
+
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
   const std::optional<lev::Method> method = lev::parse_method("lev_cut");
   ASSERT_TRUE(method.has_value());

@@ -1,0 +1,33 @@
+// The noise of a relative cut's shadow rays at one point, as its rays found it: each cluster of
+// several lights is shaded through one 0/1 shadow ray, so where some of its lights are hidden and
+// some are not the ray gives all of the cluster's light or none of it. Summed over the clusters
+// that noise is what bounds lev_cut's maximum pixel error where hundreds of partly hidden clusters
+// light a point (the halls' rig: docs/results/lev_cut.md), and a finer cut shrinks it only where
+// it is spent. visibility_noise estimates it from the rays just cast, so that lev_cut refines the
+// cut at those points alone (selector_lev_cut.h).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lev/important_lights.h"
+
+namespace lev {
+
+// The standard deviation (brightest channel, radiance units) of the summed visible radiance of a
+// cut's clusters of several lights: sqrt(p (1 - p) sum_c u_c^2) over those clusters, where u_c is
+// a cluster's unshadowed estimate and p the share of their summed estimates the rays found
+// visible (pooled over the clusters: one ray says nothing of its own cluster's share). Binomial
+// noise of independent 0/1 rays with that share. `estimates` and `visible` are per entry of the
+// cut (WalkScratch::cut_estimates; the shading loop's outcome, 1 where a ray found its light);
+// the clusters are the centred ones and the exact ones (WalkScratch), whose indices ascend.
+// Single lights carry no such noise (their ray is exact), so a cut of lights alone gives 0.
+double visibility_noise(const std::vector<glm::vec3>& estimates,
+                        const std::vector<std::uint8_t>& visible,
+                        const std::vector<CutCluster>& centred_clusters,
+                        const std::vector<std::size_t>& exact_clusters);
+
+}  // namespace lev
