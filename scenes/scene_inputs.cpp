@@ -110,11 +110,15 @@ int hex_value(char c) {
   return -1;
 }
 
+// As tinygltf decodes a URI before it opens the file (scene_folder.h's uri_file_path): percent
+// escapes, and '+' read as a space.
 std::string percent_decoded(const std::string& uri) {
   std::string out;
   for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && hex_value(uri[i + 1]) >= 0 &&
-        hex_value(uri[i + 2]) >= 0) {
+    if (uri[i] == '+') {
+      out += ' ';
+    } else if (uri[i] == '%' && i + 2 < uri.size() && hex_value(uri[i + 1]) >= 0 &&
+               hex_value(uri[i + 2]) >= 0) {
       out += static_cast<char>(hex_value(uri[i + 1]) * 16 + hex_value(uri[i + 2]));
       i += 2;
     } else {
