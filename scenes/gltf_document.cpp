@@ -113,6 +113,10 @@ class DocumentCheck {
     Level& level = stack_.back();
     level.key = k;
     if (is_camera_object(level)) level.camera_members.emplace_back(k, std::string());
+    if (level.pattern == "nodes[]") {
+      if (k == "matrix") level.node_transform |= kNodeMatrix;
+      if (k == "translation" || k == "rotation" || k == "scale") level.node_transform |= kNodeTrs;
+    }
     for (std::size_t i = 0; i < level.missing.size(); ++i) {
       if (level.missing[i] == k) level.missing.erase(level.missing.begin() + static_cast<long>(i));
     }
@@ -175,7 +179,9 @@ class DocumentCheck {
     std::vector<std::string_view> missing;  // required members not met yet
     // A camera's members (and the text of scalar ones), for the checks between members.
     std::vector<std::pair<std::string, std::string>> camera_members;
+    unsigned node_transform = 0;  // a node's kNodeMatrix and kNodeTrs members met
   };
+  static constexpr unsigned kNodeMatrix = 1, kNodeTrs = 2;
 
   // An index field, checked against its array's length once the whole document is read.
   struct Reference {
@@ -291,7 +297,7 @@ class DocumentCheck {
       fail("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
            "the limit a scene file has too");
     const GltfJsonKind kind = array ? GltfJsonKind::array : GltfJsonKind::object;
-    Level level{array, {}, 0, 0, {}, nullptr, {}, {}};
+    Level level{array, {}, 0, 0, {}, nullptr, {}, {}, 0};
     level.rule = check_rule({kind, 0.0, array ? "an array" : "an object"});
     if (unchecked_from_ == kNone && !stack_.empty() && unchecked_member(stack_.size() - 1))
       unchecked_from_ = stack_.size();
@@ -339,6 +345,11 @@ class DocumentCheck {
   bool close() {
     const Level& level = stack_.back();
     if (is_camera_object(level)) check_camera(level);
+    // glTF: a node has a matrix or TRS properties, not both (tinygltf reads the matrix alone).
+    if (level.node_transform == (kNodeMatrix | kNodeTrs)) {
+      fail_at(where_of(stack_.size() - 1) + ".matrix", "given with translation, rotation or scale",
+              "a node has a matrix or those, not both");
+    }
     if (!level.missing.empty()) {
       fail_at(where_of(stack_.size() - 1) + "." + std::string(level.missing.front()), "missing",
               "a member glTF requires");

@@ -112,6 +112,14 @@ class Importer {
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
+  // The glTF node each child of the description's root was placed for, with what it is ("nodes[3]
+  // light"), in the root's order: lights, then meshes.
+  std::vector<std::string> root_child_places() const {
+    std::vector<std::string> places = light_places_;
+    places.insert(places.end(), mesh_places_.begin(), mesh_places_.end());
+    return places;
+  }
+
   SceneDescription run() {
     meshes_.check_buffers();
     check_gltf_lights(model_, path_);
@@ -163,6 +171,17 @@ class Importer {
           m[c][r] = v;
         }
       }
+      // An affine transform, as glTF's matrices are (decomposable into TRS): a last row other
+      // than 0, 0, 0, 1 is a projection, which the placement below would drop without a word.
+      const glm::dvec4 last_row(m[0][3], m[1][3], m[2][3], m[3][3]);
+      if (glm::length(last_row - glm::dvec4(0.0, 0.0, 0.0, 1.0)) > 1e-6) {
+        fail(path_, where + ".matrix",
+             "last row " + number_text(last_row.x) + ", " + number_text(last_row.y) + ", " +
+                 number_text(last_row.z) + ", " + number_text(last_row.w) +
+                 " (an affine matrix's is 0, 0, 0, 1)");
+      }
+      for (int c = 0; c < 3; ++c) m[c][3] = 0.0;
+      m[3][3] = 1.0;
       return m;
     }
     glm::dvec3 t(0.0), s(1.0);
@@ -224,6 +243,7 @@ class Importer {
     }
     const std::uint32_t master = mesh_master(mesh, baked);
     mesh_nodes_.push_back(affine_node(place, instance_node(master)));
+    mesh_places_.push_back(where + " mesh");
     const auto& [lo, hi] = meshes_.bounds(mesh);
     for (int corner = 0; corner < 8; ++corner) {
       const glm::dvec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
@@ -325,6 +345,7 @@ class Importer {
       return;
     }
     lights_.push_back(gltf_light_node(light, intensity, position, direction));
+    light_places_.push_back(where + " light");
     lo_ = glm::min(lo_, position);
     hi_ = glm::max(hi_, position);
   }
@@ -415,6 +436,7 @@ class Importer {
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::vector<SceneNode> lights_;
+  std::vector<std::string> light_places_, mesh_places_;  // root_child_places()
   std::vector<std::string> warnings_;
   bool has_camera_ = false;
   SceneDescription scene_;
@@ -426,6 +448,22 @@ class Importer {
   glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
 };
+
+// validate_description's message names the node levrt built ("/root/children/3/child/range: must
+// be > 0 (0)"), a path not in the file; a child of the root is a light or mesh placed for a glTF
+// node, which is named instead ("nodes[7] light, as placed in the world: range: ...").
+std::string gltf_scene_problem(const std::string& message, const std::vector<std::string>& places) {
+  const std::string prefix = "/root/children/";
+  const std::size_t digits = message.find_first_not_of("0123456789", prefix.size());
+  if (message.rfind(prefix, 0) != 0 || digits == prefix.size() || digits == std::string::npos)
+    return "scene: " + message;
+  const std::size_t child = std::stoul(message.substr(prefix.size(), digits - prefix.size()));
+  if (child >= places.size()) return "scene: " + message;
+  std::string field = message.substr(digits);  // "/child/range: must be > 0 (0)"
+  if (field.rfind("/child", 0) == 0) field.erase(0, 6);
+  if (field.rfind('/', 0) == 0) field.erase(0, 1);
+  return places[child] + ", as placed in the world: " + field;
+}
 
 bool ends_with(std::string_view name, std::string_view suffix) {
   return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
@@ -472,7 +510,8 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
-    fail(path, "scene", e.what());
+    throw std::invalid_argument(path + ": " +
+                                gltf_scene_problem(e.what(), importer.root_child_places()));
   }
   std::vector<std::string> warnings = importer.warnings();
   if (!document.ignored_extensions.empty()) {

@@ -143,6 +143,74 @@ TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
       "below the outerConeAngle, 0.5, is expected)");
 }
 
+// glTF's numbers are doubles, levrt's floats: a valid light stays valid once rounded. Each was
+// refused naming a path not in the file (`scene: /root/children/0/child/range: must be > 0 (0)`).
+TEST(GltfScene, ALightValidAsDoublesIsReadThoughFloatsRoundItsAnglesOrRange) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const auto spot_of = [](const scenes::SceneDescription& scene) {
+    return std::get<scenes::SpotLightSource>(only_light(scene).children.at(0).data);
+  };
+  // Inner and outer one float apart: both round to the same float degrees.
+  const scenes::SpotLightSource close = spot_of(scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.49999999999, )"
+                      R"("outerConeAngle": 0.5}})",
+                      node),
+      kScenePath));
+  EXPECT_LT(close.inner_cone_degrees, close.cone_degrees);
+  EXPECT_GT(close.inner_cone_degrees, 28.6f);
+  // An outer cone and a range above 0 that underflow a float.
+  const scenes::SpotLightSource narrow = spot_of(scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "spot", "range": 1e-300, "spot": {"outerConeAngle": 5e-324}})",
+                      node),
+      kScenePath));
+  EXPECT_GT(narrow.cone_degrees, 0.0f);
+  EXPECT_GT(narrow.range, 0.0f);
+  EXPECT_LE(narrow.range, 1e-30f);
+  EXPECT_EQ(narrow.inner_cone_degrees, 0.0f);
+  const scenes::SceneDescription point = scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "point", "range": 1e-300})", node), kScenePath);
+  EXPECT_GT(std::get<scenes::PointLightSource>(only_light(point).children.at(0).data).range, 0.0f);
+}
+
+// A light placed beyond levrt's coordinates (the file has a camera, so no framing refuses it
+// first) is named by its glTF node; the refusal named levrt's own `scene: /root/children/0/...`.
+TEST(GltfScene, ALightPlacedBeyondTheCoordinateLimitIsNamedByItsNode) {
+  const std::string nodes =
+      R"({"translation": [2e7, 0, 0], "children": [1],
+          "extensions": {"KHR_lights_punctual": {"light": 0}}},
+         {"translation": [-2e7, 0, 5], "camera": 0})";
+  const std::string camera =
+      R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}])";
+  try {
+    scenes::parse_gltf_scene(gltf_scene_with(R"({"type": "point", "intensity": 5})", nodes, camera),
+                             kScenePath);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("test.gltf: nodes[0] light, as placed in the world: translate: "
+                            "coordinate magnitude above 1e+06",
+                            0),
+              0u)
+        << message;
+    EXPECT_EQ(message.find("/root"), std::string::npos) << message;
+  }
+}
+
+// glTF's node matrices are affine and exclude TRS properties (the validator's NODE_MATRIX_NON_TRS
+// and NODE_MATRIX_TRS); both were read, the projection or the TRS dropped without a word.
+TEST(GltfScene, AProjectiveMatrixOrAMatrixWithTrsIsRefused) {
+  const std::string light = R"({"type": "point", "intensity": 5})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(light, R"({"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0.5, 2,5,0,1],
+                                 "extensions": {"KHR_lights_punctual": {"light": 0}}})"),
+      kScenePath, ": nodes[0].matrix: last row 0, 0, 0.5, 1 (an affine matrix's is 0, 0, 0, 1)");
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(light, R"({"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 2,5,0,1],
+                                 "translation": [1, 0, 0],
+                                 "extensions": {"KHR_lights_punctual": {"light": 0}}})"),
+      kScenePath, ": nodes[0].matrix: given with translation, rotation or scale");
+}
+
 // A glTF whose one buffer is the data URI `uri` of `byte_length` bytes, read by an accessor.
 std::string gltf_with_data_buffer(const std::string& uri, int byte_length) {
   return gltf_scene_with(R"({"type": "point"})",
