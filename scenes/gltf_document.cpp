@@ -524,6 +524,8 @@ GltfDocumentFacts check_gltf_document(const std::string& bytes, bool binary,
                                       GltfBudget& budget) {
   budget.charge(bytes.size(), "the file itself");
   const std::string text = binary ? glb_json_chunk(bytes, path) : bytes;
+  // tinygltf copies a binary file's BIN chunk into its buffer while the file is still held.
+  if (binary) budget.charge(bytes.size() - 20 - text.size(), "the binary chunk as its buffer");
   const std::size_t nul = text.find('\0');
   if (nul != std::string::npos) {
     throw std::invalid_argument(path + ": NUL byte at offset " + std::to_string(nul) +

@@ -4,8 +4,8 @@
 // glTF's folder both as written and decoded as tinygltf decodes it (percent escapes, '+' as a
 // space). It never fails: a file it cannot read or parse yields what it found so far, and the
 // scene's reader reports the problem. It reads only a regular file of at most kMaxSceneFileBytes
-// and parses it without building a document (one SAX pass), so a hostile file costs no more than
-// its size.
+// (of a larger binary glTF, its header and a JSON chunk within that) and parses it without
+// building a document (one SAX pass), so a hostile file costs no more than its size.
 #pragma once
 
 #include <string>
