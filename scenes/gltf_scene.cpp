@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -43,6 +44,18 @@ std::string number_text(double value) {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, const std::string& value) {
   fail_gltf(path, what, value);
+}
+
+// `v`, or where its squared length overflows or underflows a double (a node scale of 1e200 or
+// 1e-300, which still leaves the direction a light or camera needs), `v` divided by its largest
+// component, so that its length can be taken. Zero stays zero (a node of scale 0); a vector that
+// is not finite stays so.
+glm::dvec3 measurable(const glm::dvec3& v) {
+  const double length_squared = glm::dot(v, v);
+  if (length_squared >= DBL_MIN && length_squared <= DBL_MAX) return v;
+  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (!std::isfinite(largest) || !(largest > 0.0)) return v;
+  return v / largest;
 }
 
 std::string first_line(const std::string& text) {
@@ -320,9 +333,9 @@ class Importer {
 
   void add_light(const tinygltf::Light& light, const glm::dvec3& position,
                  const glm::dvec3& forward, const std::string& where) {
-    double length = glm::length(forward);
+    glm::dvec3 axis_forward = measurable(forward);
+    double length = glm::length(axis_forward);
     if (!std::isfinite(length)) fail(path_, where, "transform of a light " + number_text(length));
-    glm::dvec3 axis_forward = forward;
     if (!(length > 0.0)) {
       // A zero scale leaves no direction; a point light needs none (glTF never scales a light).
       if (light.type != "point") {
@@ -374,8 +387,8 @@ class Importer {
     // --camera N: the N-th camera met in the node tree, depth first.
     if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
-    const glm::dvec3 forward = -glm::dvec3(world[2]);
-    const glm::dvec3 up(world[1]);
+    const glm::dvec3 forward = measurable(-glm::dvec3(world[2]));
+    const glm::dvec3 up = measurable(glm::dvec3(world[1]));
     if (!std::isfinite(glm::length(forward) + glm::length(up)))
       fail(path_, where, "camera transform not finite");
     if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0)) {

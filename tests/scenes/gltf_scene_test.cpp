@@ -211,6 +211,32 @@ TEST(GltfScene, AProjectiveMatrixOrAMatrixWithTrsIsRefused) {
       kScenePath, ": nodes[0].matrix: given with translation, rotation or scale");
 }
 
+// glTF never scales a light: a spot or a camera under a node scale of 1e-300 or 1e200 keeps the
+// direction its rotation gives. The squared length of its -Z underflowed to 0 (the spot skipped
+// "under a zero scale", the camera not used) or overflowed (`transform of a light inf`).
+TEST(GltfScene, ASpotOrCameraUnderAHugeOrTinyNodeScaleKeepsItsDirection) {
+  const std::string camera =
+      R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}])";
+  for (const std::string scale : {"1e-300", "1e200"}) {
+    const std::string nodes = R"({"scale": [)" + scale + ", " + scale + ", " + scale +
+                              R"(], "children": [1, 2]},
+        {"extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"camera": 0, "rotation": [0, 0.70710678, 0, 0.70710678]})";
+    const scenes::SceneDescription scene =
+        scenes::parse_gltf_scene(gltf_scene_with(kSpot, nodes, camera), kScenePath);
+    const scenes::SceneNode& placed = only_light(scene);
+    const auto& affine = std::get<scenes::Affine>(placed.data);
+    const glm::vec3 direction =
+        glm::angleAxis(glm::radians(affine.rotate_degrees), glm::normalize(affine.rotate_axis)) *
+        glm::vec3(0, 0, -1);
+    EXPECT_NEAR(direction.z, -1.0f, 1e-6f) << scale;
+    // The camera turned 90 degrees about +Y looks along -X.
+    const glm::vec3 view = scene.camera.target - scene.camera.position;
+    EXPECT_NEAR(view.x, -1.0f, 1e-5f) << scale;
+    EXPECT_NEAR(scene.camera.up.y, 1.0f, 1e-5f) << scale;
+  }
+}
+
 // A glTF whose one buffer is the data URI `uri` of `byte_length` bytes, read by an accessor.
 std::string gltf_with_data_buffer(const std::string& uri, int byte_length) {
   return gltf_scene_with(R"({"type": "point"})",
