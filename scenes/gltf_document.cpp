@@ -177,7 +177,8 @@ class DocumentCheck {
     std::string pattern;                    // gltf_schema.h: the path with every index written []
     const GltfFieldRule* rule = nullptr;    // the container's own rule, if levrt reads it
     std::vector<std::string_view> missing;  // required members not met yet
-    // A camera's members (and the text of scalar ones), for the checks between members.
+    // A camera's or light's members (and the text of scalar ones), for the checks between
+    // members.
     std::vector<std::pair<std::string, std::string>> camera_members;
     unsigned node_transform = 0;  // a node's kNodeMatrix and kNodeTrs members met
   };
@@ -314,7 +315,8 @@ class DocumentCheck {
 
   static bool is_camera_object(const Level& level) {
     return !level.array &&
-           (level.pattern == "cameras[]" || level.pattern == "cameras[].orthographic");
+           (level.pattern == "cameras[]" || level.pattern == "cameras[].orthographic" ||
+            level.pattern == "extensions.KHR_lights_punctual.lights[]");
   }
 
   static const std::string* camera_member(const Level& level, std::string_view name) {
@@ -328,6 +330,13 @@ class DocumentCheck {
   // orthographic zfar lies beyond znear.
   void check_camera(const Level& level) const {
     const std::string where = where_of(stack_.size() - 1);
+    // The extension: a spot light has its `spot` object (tinygltf's refusal named no light).
+    if (level.pattern == "extensions.KHR_lights_punctual.lights[]") {
+      const std::string* type = camera_member(level, "type");
+      if (type && *type == "spot" && !camera_member(level, "spot"))
+        fail_at(where + ".spot", "missing", "a member a light of type spot requires");
+      return;
+    }
     if (level.pattern == "cameras[]") {
       const std::string* type = camera_member(level, "type");
       if (type && (*type == "perspective" || *type == "orthographic") &&

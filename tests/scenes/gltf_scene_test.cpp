@@ -132,6 +132,16 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
     levrt_test::expect_gltf_refused(text, kScenePath, problem);
 }
 
+// tinygltf's refusal ("not a readable glTF file: Spot light description not found.") named no
+// light.
+TEST(GltfScene, ASpotWithoutItsSpotObjectIsRefusedNamingTheLight) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "point"}, {"intensity": 2, "type": "spot"})", node), kScenePath,
+      ": extensions.KHR_lights_punctual.lights[1].spot: missing (a member a light of type spot "
+      "requires)");
+}
+
 TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
   // Blender exports a spot of blend 0 so (inner = outer); the extension asks inner < outer.
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
