@@ -228,8 +228,16 @@ class Importer {
     const glm::dvec3 translation(world[3]);
     const double det = glm::determinant(linear);
     if (!std::isfinite(det)) fail(path_, where, "transform of a mesh " + number_text(det));
-    // A scale of 0 (on any axis) is how authors hide a node: the mesh has no area to draw.
-    if (!(std::abs(det) > 1e-18)) return;
+    // A scale of 0 (on any axis) is how authors hide a node: the mesh has no area to draw. Below
+    // the determinant a mesh placement may have (scene_validation.h; a scale of 1e-6), the mesh is
+    // left out too, saying so.
+    if (!(std::abs(det) > 1e-18)) {
+      if (det != 0.0) {
+        warnings_.push_back(where + ": mesh under a transform of determinant " + number_text(det) +
+                            ", below the 1e-18 levrt draws (a scale of 1e-6); skipped");
+      }
+      return;
+    }
     const std::uint32_t mesh = meshes_.scene_mesh(gltf_mesh, where);
     if (mesh == GltfMeshes::kNoMesh) return;
     const double scale = std::cbrt(std::abs(det));

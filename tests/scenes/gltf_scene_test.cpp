@@ -370,6 +370,28 @@ TEST(GltfScene, ZeroScaleHidesMeshesButPlacesPointLights) {
 }
 
 // The spec: a primitive without POSITION is not drawn; one warning line names the first.
+// A mesh under a scale of 1e-7 (a determinant of 1e-21) is below what levrt draws: it was left out
+// without a word, as if hidden by a scale of 0.
+TEST(GltfScene, AMeshUnderAScaleTooSmallToDrawIsSkippedWithAWarning) {
+  const std::string nodes =
+      R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "children": [1]},
+         {"mesh": 0, "scale": [1e-7, 1e-7, 1e-7]})";
+  const std::string mesh = R"(, "buffers": [{"byteLength": 36,
+      "uri":
+      "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";
+  testing::internal::CaptureStderr();
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_scene_with(R"({"type": "point"})", nodes, mesh), kScenePath);
+  const std::string warnings = testing::internal::GetCapturedStderr();
+  EXPECT_TRUE(scene.meshes.empty());
+  EXPECT_EQ(warnings, std::string(kScenePath) +
+                          ": warning: nodes[1]: mesh under a transform of determinant 1e-21, "
+                          "below the 1e-18 levrt draws (a scale of 1e-6); skipped\n");
+}
+
 TEST(GltfScene, PrimitivesWithoutPositionAreSkippedWithOneWarning) {
   const std::string point = R"({"type": "point"})";
   const std::string nodes =
