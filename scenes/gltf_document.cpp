@@ -525,6 +525,12 @@ std::string glb_json_chunk(const std::string& bytes, const std::string& path) {
                                 std::to_string(json_bytes) + " bytes in a file of " +
                                 std::to_string(bytes.size()));
   }
+  // The JSON is held as a .gltf's or a scene file's is (and listed for the inputs whole).
+  if (json_bytes > kMaxSceneFileBytes) {
+    throw std::invalid_argument(path + ": binary glTF: a JSON chunk of " +
+                                std::to_string(json_bytes) + " bytes, more than the " +
+                                byte_limit_text(kMaxSceneFileBytes) + " a glTF's JSON may have");
+  }
   return bytes.substr(20, json_bytes);
 }
 

@@ -196,6 +196,32 @@ TEST_F(GltfLimits, ABinaryGltfLargerThanAJsonSceneFileIsReadWithinTheBudget) {
       std::invalid_argument);
 }
 
+// The JSON of a binary glTF stays within a scene file's 64 MiB, as a .gltf's does: the input
+// list (scene_inputs.h) reads no more, so a larger chunk naming a texture went unlisted.
+TEST_F(GltfLimits, ABinaryGltfsJsonChunkIsHeldToTheSceneFileLimit) {
+  std::string json = gltf_document(R"("nodes": [{"extensions":
+      {"KHR_lights_punctual": {"light": 0}}}], "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}})");
+  json.append(static_cast<std::size_t>(scenes::kMaxSceneFileBytes) + 4 - json.size() % 4, ' ');
+  std::string glb = "glTF";
+  const auto u32 = [&glb](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) glb += static_cast<char>((v >> (8 * i)) & 0xffu);
+  };
+  u32(2);
+  u32(static_cast<std::uint32_t>(20 + json.size()));
+  u32(static_cast<std::uint32_t>(json.size()));
+  u32(0x4E4F534Au);
+  glb += json;
+  try {
+    scenes::parse_gltf_scene(glb, "big.glb");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "big.glb: binary glTF: a JSON chunk of " +
+                                         std::to_string(json.size()) +
+                                         " bytes, more than the 64 MiB a glTF's JSON may have");
+  }
+}
+
 TEST_F(GltfLimits, ConformanceHolesAreRefusedWithTheGltfPathOfTheField) {
   const std::string lights =
       R"("extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}}, )";
