@@ -157,9 +157,13 @@ std::vector<std::string> scene_input_files(const std::string& path) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   for (const std::string& uri : collector.uris) {
     if (uri.empty() || uri.rfind("data:", 0) == 0) continue;
-    files.push_back((folder / uri).string());
-    const std::string decoded = percent_decoded(uri);
-    if (decoded != uri) files.push_back((folder / decoded).string());
+    for (const std::string& name : {uri, percent_decoded(uri)}) {
+      files.push_back((folder / name).string());
+      // The reader resolves a URI's `..` lexically (scene_folder.h), against the name before it
+      // whatever symlink that is: "sub/../t.png" is the folder's t.png, where the kernel would
+      // go up from sub's target.
+      files.push_back((folder / std::filesystem::path(name).lexically_normal()).string());
+    }
   }
   return files;
 }

@@ -422,17 +422,22 @@ TEST_F(Outputs, AnOutputThatIsAGltfBufferOrTextureIsRefused) {
   std::ofstream(dir_ / "model" / "scene.gltf")
       << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "geometry.png", "byteLength": 4}],
              "images": [{"uri": "base%20colour.png"}, {"uri": "data:image/png;base64,AAAA"},
-                        {"uri": "leaf+mask.png"}]})";
+                        {"uri": "leaf+mask.png"}, {"uri": "sub/../bark.png"}]})";
   std::ofstream(dir_ / "model" / "geometry.png") << "buffer bytes";
   std::ofstream(dir_ / "model" / "base colour.png") << "texture bytes";
   // tinygltf reads '+' in a URI as a space: this texture is the file "leaf mask.png".
   std::ofstream(dir_ / "model" / "leaf mask.png") << "texture bytes";
+  // The reader resolves `sub/..` lexically: model/bark.png, though sub leads elsewhere.
+  std::ofstream(dir_ / "model" / "bark.png") << "texture bytes";
+  fs::create_directories(dir_ / "elsewhere" / "deep");
+  fs::create_directory_symlink(fs::path("..") / "elsewhere" / "deep", dir_ / "model" / "sub");
   const auto before = snapshot_of(dir_);
   for (const auto& [flag, name] : std::vector<std::pair<std::string, std::string>>{
            {"--out", "model/base colour.png"},
            {"--heatmap-lights", "model/geometry.png"},
            {"--heatmap-noise", "model/../model/base colour.png"},
-           {"--heatmap-nodes", "model/leaf mask.png"}}) {
+           {"--heatmap-nodes", "model/leaf mask.png"},
+           {"--heatmap-bound", "model/bark.png"}}) {
     const CommandRun r = run_here(output_render_args({"--scene", "model/scene.gltf", flag, name}));
     EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
