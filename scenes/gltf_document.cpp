@@ -539,6 +539,12 @@ GltfDocumentFacts check_gltf_document(const std::string& bytes, bool binary,
                                       GltfBudget& budget) {
   budget.charge(bytes.size(), "the file itself");
   const std::string text = binary ? glb_json_chunk(bytes, path) : bytes;
+  // nlohmann's parser skips a byte order mark (and so would read the file); glTF forbids one.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) {
+    throw std::invalid_argument(path + ": a byte order mark before the JSON" +
+                                (binary ? " chunk" : std::string()) +
+                                " (glTF's JSON is UTF-8 without one)");
+  }
   // tinygltf copies a binary file's BIN chunk into its buffer while the file is still held.
   if (binary) budget.charge(bytes.size() - 20 - text.size(), "the binary chunk as its buffer");
   const std::size_t nul = text.find('\0');

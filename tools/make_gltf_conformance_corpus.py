@@ -347,6 +347,8 @@ def cases():
     files["bad_glb_length_short.glb"] = mesh_glb(length_delta=-4)
     files["bad_glb_length_long.glb"] = mesh_glb(length_delta=8)
     files["bad_glb_version_1.glb"] = mesh_glb(version=1)
+    # glTF's JSON is UTF-8 without a byte order mark.
+    files["bad_byte_order_mark.gltf"] = b"\xef\xbb\xbf" + json.dumps(L).encode()
     return files
 
 

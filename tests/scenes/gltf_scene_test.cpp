@@ -142,6 +142,16 @@ TEST(GltfScene, ASpotWithoutItsSpotObjectIsRefusedNamingTheLight) {
       "requires)");
 }
 
+// glTF's JSON is UTF-8 without a byte order mark (the validator's INVALID_JSON); nlohmann's
+// parser skipped it, so the file was read.
+TEST(GltfScene, AByteOrderMarkBeforeTheJsonIsRefused) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  levrt_test::expect_gltf_refused("\xEF\xBB\xBF" + gltf_scene_with(R"({"type": "point"})", node),
+                                  kScenePath,
+                                  ": a byte order mark before the JSON (glTF's JSON is UTF-8 "
+                                  "without one)");
+}
+
 TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
   // Blender exports a spot of blend 0 so (inner = outer); the extension asks inner < outer.
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
