@@ -380,8 +380,11 @@ class Importer {
     const bool orthographic = camera.type == "orthographic";
     if (camera.type != "perspective" && !orthographic) return;
     const double yfov = camera.perspective.yfov;
-    if (!orthographic && (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi))
-      fail(path_, where + ".camera.yfov", number_text(yfov));
+    // glTF asks only for yfov above 0; a view of pi radians or more has no image plane.
+    if (!orthographic && (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)) {
+      fail(path_, camera_where + ".perspective.yfov",
+           number_text(yfov) + " (a vertical field of view above 0 and below pi is expected)");
+    }
     // glTF's ymag is the half height seen (a negative one, which the spec advises against, as
     // its magnitude); the width follows the image's aspect ratio, as a perspective camera's does
     // (xmag, like aspectRatio, is not read: scenes/README.md).

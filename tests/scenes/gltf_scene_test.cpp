@@ -152,6 +152,19 @@ TEST(GltfScene, AByteOrderMarkBeforeTheJsonIsRefused) {
                                   "without one)");
 }
 
+// A field of view of pi or more (glTF itself asks only for one above 0) is refused at its own
+// glTF path; the refusal named `nodes[0].camera.yfov`, a path not in the file, and no reason.
+TEST(GltfScene, AFieldOfViewOfPiOrMoreIsRefusedAtTheCamerasPath) {
+  const std::string nodes = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "camera": 0})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(
+          R"({"type": "point"})", nodes,
+          R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 3.5, "znear": 0.1}}])"),
+      kScenePath,
+      ": cameras[0].perspective.yfov: 3.5 (a vertical field of view above 0 and below pi is "
+      "expected)");
+}
+
 TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
   // Blender exports a spot of blend 0 so (inner = outer); the extension asks inner < outer.
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
