@@ -132,6 +132,8 @@ class Importer {
     places.insert(places.end(), mesh_places_.begin(), mesh_places_.end());
     return places;
   }
+  // The node of the file's camera the scene uses ("nodes[4] camera"), or "" for a framing one.
+  const std::string& camera_place() const { return camera_place_; }
 
   SceneDescription run() {
     meshes_.check_buffers();
@@ -415,6 +417,7 @@ class Importer {
       camera_.vertical_fov_deg = static_cast<float>(yfov * 180.0 / kPi);
     }
     has_camera_ = true;
+    camera_place_ = where + " camera";
   }
 
   // From the front (+Z) and above (+Y, glTF's up), far enough to see the lights' bounds.
@@ -461,6 +464,7 @@ class Importer {
   std::size_t visits_ = 0;
   std::vector<SceneNode> lights_;
   std::vector<std::string> light_places_, mesh_places_;  // root_child_places()
+  std::string camera_place_;
   std::vector<std::string> warnings_;
   bool has_camera_ = false;
   SceneDescription scene_;
@@ -475,8 +479,12 @@ class Importer {
 
 // validate_description's message names the node levrt built ("/root/children/3/child/range: must
 // be > 0 (0)"), a path not in the file; a child of the root is a light or mesh placed for a glTF
-// node, which is named instead ("nodes[7] light, as placed in the world: range: ...").
-std::string gltf_scene_problem(const std::string& message, const std::vector<std::string>& places) {
+// node, and the camera the file's camera node, which are named instead ("nodes[7] light, as
+// placed in the world: range: ...").
+std::string gltf_scene_problem(const std::string& message, const std::vector<std::string>& places,
+                               const std::string& camera_place) {
+  if (message.rfind("/camera/", 0) == 0 && !camera_place.empty())
+    return camera_place + ", as placed in the world: " + message.substr(8);
   const std::string prefix = "/root/children/";
   const std::size_t digits = message.find_first_not_of("0123456789", prefix.size());
   if (message.rfind(prefix, 0) != 0 || digits == prefix.size() || digits == std::string::npos)
@@ -534,8 +542,9 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(path + ": " +
-                                gltf_scene_problem(e.what(), importer.root_child_places()));
+    throw std::invalid_argument(
+        path + ": " +
+        gltf_scene_problem(e.what(), importer.root_child_places(), importer.camera_place()));
   }
   std::vector<std::string> warnings = importer.warnings();
   if (!document.ignored_extensions.empty()) {

@@ -227,6 +227,13 @@ TEST(GltfScene, ALightPlacedBeyondTheCoordinateLimitIsNamedByItsNode) {
         << message;
     EXPECT_EQ(message.find("/root"), std::string::npos) << message;
   }
+  // The file's own camera there is named by its node, not as levrt's /camera.
+  const std::string far_camera =
+      R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "children": [1]},
+         {"translation": [0, 0, 2e7], "camera": 0})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "point", "intensity": 5})", far_camera, camera), kScenePath,
+      ": nodes[1] camera, as placed in the world: position: coordinate magnitude above 1e+06");
 }
 
 // glTF's node matrices are affine and exclude TRS properties (the validator's NODE_MATRIX_NON_TRS
