@@ -220,6 +220,10 @@ def cases():
         "matrix_projective": (edit(L, remover(["nodes", 0, "translation"])), setter(
             ["nodes", 0, "matrix"], [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
                                      0.0, 0.0, 1.0, 0.5, 0.0, 2.0, 0.0, 1.0])),
+        "matrix_shear": (M, setter(["nodes", 0, "matrix"], [1.0, 0.0, 0.0, 0.0,
+                                                            0.5, 1.0, 0.0, 0.0,
+                                                            0.0, 0.0, 1.0, 0.0,
+                                                            0.0, 0.0, 0.0, 1.0])),
         "matrix_and_translation": (L, setter(["nodes", 0, "matrix"], [1.0, 0.0, 0.0, 0.0,
                                                                       0.0, 1.0, 0.0, 0.0,
                                                                       0.0, 0.0, 1.0, 0.0,
