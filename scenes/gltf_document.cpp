@@ -113,6 +113,10 @@ class DocumentCheck {
     Level& level = stack_.back();
     level.key = k;
     if (is_camera_object(level)) level.camera_members.emplace_back(k, std::string());
+    if (level.pattern == "nodes[]") {
+      if (k == "matrix") level.node_transform |= kNodeMatrix;
+      if (k == "translation" || k == "rotation" || k == "scale") level.node_transform |= kNodeTrs;
+    }
     for (std::size_t i = 0; i < level.missing.size(); ++i) {
       if (level.missing[i] == k) level.missing.erase(level.missing.begin() + static_cast<long>(i));
     }
@@ -173,9 +177,12 @@ class DocumentCheck {
     std::string pattern;                    // gltf_schema.h: the path with every index written []
     const GltfFieldRule* rule = nullptr;    // the container's own rule, if levrt reads it
     std::vector<std::string_view> missing;  // required members not met yet
-    // A camera's members (and the text of scalar ones), for the checks between members.
+    // A camera's or light's members (and the text of scalar ones), for the checks between
+    // members.
     std::vector<std::pair<std::string, std::string>> camera_members;
+    unsigned node_transform = 0;  // a node's kNodeMatrix and kNodeTrs members met
   };
+  static constexpr unsigned kNodeMatrix = 1, kNodeTrs = 2;
 
   // An index field, checked against its array's length once the whole document is read.
   struct Reference {
@@ -291,7 +298,7 @@ class DocumentCheck {
       fail("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
            "the limit a scene file has too");
     const GltfJsonKind kind = array ? GltfJsonKind::array : GltfJsonKind::object;
-    Level level{array, {}, 0, 0, {}, nullptr, {}, {}};
+    Level level{array, {}, 0, 0, {}, nullptr, {}, {}, 0};
     level.rule = check_rule({kind, 0.0, array ? "an array" : "an object"});
     if (unchecked_from_ == kNone && !stack_.empty() && unchecked_member(stack_.size() - 1))
       unchecked_from_ = stack_.size();
@@ -308,7 +315,8 @@ class DocumentCheck {
 
   static bool is_camera_object(const Level& level) {
     return !level.array &&
-           (level.pattern == "cameras[]" || level.pattern == "cameras[].orthographic");
+           (level.pattern == "cameras[]" || level.pattern == "cameras[].orthographic" ||
+            level.pattern == "extensions.KHR_lights_punctual.lights[]");
   }
 
   static const std::string* camera_member(const Level& level, std::string_view name) {
@@ -322,6 +330,13 @@ class DocumentCheck {
   // orthographic zfar lies beyond znear.
   void check_camera(const Level& level) const {
     const std::string where = where_of(stack_.size() - 1);
+    // The extension: a spot light has its `spot` object (tinygltf's refusal named no light).
+    if (level.pattern == "extensions.KHR_lights_punctual.lights[]") {
+      const std::string* type = camera_member(level, "type");
+      if (type && *type == "spot" && !camera_member(level, "spot"))
+        fail_at(where + ".spot", "missing", "a member a light of type spot requires");
+      return;
+    }
     if (level.pattern == "cameras[]") {
       const std::string* type = camera_member(level, "type");
       if (type && (*type == "perspective" || *type == "orthographic") &&
@@ -339,6 +354,11 @@ class DocumentCheck {
   bool close() {
     const Level& level = stack_.back();
     if (is_camera_object(level)) check_camera(level);
+    // glTF: a node has a matrix or TRS properties, not both (tinygltf reads the matrix alone).
+    if (level.node_transform == (kNodeMatrix | kNodeTrs)) {
+      fail_at(where_of(stack_.size() - 1) + ".matrix", "given with translation, rotation or scale",
+              "a node has a matrix or those, not both");
+    }
     if (!level.missing.empty()) {
       fail_at(where_of(stack_.size() - 1) + "." + std::string(level.missing.front()), "missing",
               "a member glTF requires");
@@ -505,6 +525,12 @@ std::string glb_json_chunk(const std::string& bytes, const std::string& path) {
                                 std::to_string(json_bytes) + " bytes in a file of " +
                                 std::to_string(bytes.size()));
   }
+  // The JSON is held as a .gltf's or a scene file's is (and listed for the inputs whole).
+  if (json_bytes > kMaxSceneFileBytes) {
+    throw std::invalid_argument(path + ": binary glTF: a JSON chunk of " +
+                                std::to_string(json_bytes) + " bytes, more than the " +
+                                byte_limit_text(kMaxSceneFileBytes) + " a glTF's JSON may have");
+  }
   return bytes.substr(20, json_bytes);
 }
 
@@ -513,6 +539,14 @@ GltfDocumentFacts check_gltf_document(const std::string& bytes, bool binary,
                                       GltfBudget& budget) {
   budget.charge(bytes.size(), "the file itself");
   const std::string text = binary ? glb_json_chunk(bytes, path) : bytes;
+  // nlohmann's parser skips a byte order mark (and so would read the file); glTF forbids one.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) {
+    throw std::invalid_argument(path + ": a byte order mark before the JSON" +
+                                (binary ? " chunk" : std::string()) +
+                                " (glTF's JSON is UTF-8 without one)");
+  }
+  // tinygltf copies a binary file's BIN chunk into its buffer while the file is still held.
+  if (binary) budget.charge(bytes.size() - 20 - text.size(), "the binary chunk as its buffer");
   const std::size_t nul = text.find('\0');
   if (nul != std::string::npos) {
     throw std::invalid_argument(path + ": NUL byte at offset " + std::to_string(nul) +

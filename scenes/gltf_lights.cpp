@@ -1,5 +1,6 @@
 #include "scenes/gltf_lights.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -99,19 +100,24 @@ SceneNode gltf_light_node(const tinygltf::Light& light, const glm::vec3& intensi
     place.rotate_axis = {1.0f, 0.0f, 0.0f};
     place.rotate_degrees = 180.0f;
   }
-  // The extension: range 0 or absent is infinite.
-  const float range =
-      light.range > 0.0 ? static_cast<float>(light.range) : std::numeric_limits<float>::infinity();
+  // The extension: range 0 or absent is infinite. glTF's numbers are doubles and levrt's floats:
+  // a valid light must stay one once rounded, so a positive range or cone angle is at least the
+  // smallest normal float (1e-300 rounds to 0) and the inner cone stays below the outer one (0.5
+  // and 0.49999999999 round to one float).
+  const float range = light.range > 0.0 ? std::max(static_cast<float>(light.range), FLT_MIN)
+                                        : std::numeric_limits<float>::infinity();
   if (light.type == "point") {
     SceneNode node = point_light_node(intensity);
     std::get<PointLightSource>(node.data).range = range;
     return affine_node(place, std::move(node));
   }
-  SceneNode node =
-      spot_light_node(intensity, static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi), 0.0f);
+  const float outer =
+      std::max(static_cast<float>(light.spot.outerConeAngle * 180.0 / kPi), FLT_MIN);
+  SceneNode node = spot_light_node(intensity, outer, 0.0f);
   auto& spot = std::get<SpotLightSource>(node.data);
   spot.range = range;
-  spot.inner_cone_degrees = static_cast<float>(light.spot.innerConeAngle * 180.0 / kPi);
+  spot.inner_cone_degrees = std::min(static_cast<float>(light.spot.innerConeAngle * 180.0 / kPi),
+                                     std::nextafter(outer, 0.0f));
   return affine_node(place, std::move(node));
 }
 

@@ -1,11 +1,14 @@
 #include "scenes/gltf_meshes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 
 #include "renderer/direction.h"
 #include "scenes/gltf_refusal.h"
+#include "scenes/scene_validation.h"
 
 namespace scenes {
 namespace {
@@ -16,6 +19,26 @@ std::vector<glm::vec3> as_vec3(const std::vector<double>& values) {
     out[i] = glm::vec3(glm::dvec3(values[3 * i], values[3 * i + 1], values[3 * i + 2]));
   }
   return out;
+}
+
+// What a scene checks of every mesh vertex and normal (scene_validation.h: finite, within the
+// coordinates levrt holds), refused at the attribute's glTF path; the scene check named levrt's
+// own mesh (`/meshes/0/parts/0/positions`), a path not in the file.
+void check_vectors(const std::vector<glm::vec3>& values, const std::string& where,
+                   const std::string& path) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const glm::vec3& v = values[i];
+    const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    if (finite && std::abs(v.x) <= kMaxCoordinate && std::abs(v.y) <= kMaxCoordinate &&
+        std::abs(v.z) <= kMaxCoordinate) {
+      continue;
+    }
+    fail_gltf(path, where,
+              "element " + std::to_string(i) + " is [" + gltf_number_text(v.x) + ", " +
+                  gltf_number_text(v.y) + ", " + gltf_number_text(v.z) +
+                  "] (finite values of magnitude at most " + gltf_number_text(kMaxCoordinate) +
+                  " are expected)");
+  }
 }
 
 // The triangles a primitive's mode makes of its vertex list, as the spec numbers them: strip
@@ -163,6 +186,7 @@ renderer::TriangleMesh GltfMeshes::read_primitive(const tinygltf::Primitive& pri
   renderer::TriangleMesh part;
   part.positions = as_vec3(
       accessors_.read(position->second, {TINYGLTF_TYPE_VEC3}, where + ".attributes.POSITION"));
+  check_vectors(part.positions, where + ".attributes.POSITION", path_);
   const auto vertex_count = part.positions.size();
   std::vector<std::uint32_t> vertices;
   if (primitive.indices >= 0) {
@@ -202,6 +226,7 @@ renderer::TriangleMesh GltfMeshes::read_primitive(const tinygltf::Primitive& pri
   if (normal != primitive.attributes.end()) {
     part.normals = as_vec3(
         accessors_.read(normal->second, {TINYGLTF_TYPE_VEC3}, where + ".attributes.NORMAL"));
+    check_vectors(part.normals, where + ".attributes.NORMAL", path_);
     if (part.normals.size() != vertex_count)
       fail_gltf(path_, where + ".attributes.NORMAL",
                 std::to_string(part.normals.size()) + " for " + std::to_string(vertex_count) +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -43,6 +44,18 @@ std::string number_text(double value) {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, const std::string& value) {
   fail_gltf(path, what, value);
+}
+
+// `v`, or where its squared length overflows or underflows a double (a node scale of 1e200 or
+// 1e-300, which still leaves the direction a light or camera needs), `v` divided by its largest
+// component, so that its length can be taken. Zero stays zero (a node of scale 0); a vector that
+// is not finite stays so.
+glm::dvec3 measurable(const glm::dvec3& v) {
+  const double length_squared = glm::dot(v, v);
+  if (length_squared >= DBL_MIN && length_squared <= DBL_MAX) return v;
+  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (!std::isfinite(largest) || !(largest > 0.0)) return v;
+  return v / largest;
 }
 
 std::string first_line(const std::string& text) {
@@ -112,6 +125,16 @@ class Importer {
   // Printed only once the whole file is accepted, so a refused file stays one line.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
+  // The glTF node each child of the description's root was placed for, with what it is ("nodes[3]
+  // light"), in the root's order: lights, then meshes.
+  std::vector<std::string> root_child_places() const {
+    std::vector<std::string> places = light_places_;
+    places.insert(places.end(), mesh_places_.begin(), mesh_places_.end());
+    return places;
+  }
+  // The node of the file's camera the scene uses ("nodes[4] camera"), or "" for a framing one.
+  const std::string& camera_place() const { return camera_place_; }
+
   SceneDescription run() {
     meshes_.check_buffers();
     check_gltf_lights(model_, path_);
@@ -163,6 +186,17 @@ class Importer {
           m[c][r] = v;
         }
       }
+      // An affine transform, as glTF's matrices are (decomposable into TRS): a last row other
+      // than 0, 0, 0, 1 is a projection, which the placement below would drop without a word.
+      const glm::dvec4 last_row(m[0][3], m[1][3], m[2][3], m[3][3]);
+      if (glm::length(last_row - glm::dvec4(0.0, 0.0, 0.0, 1.0)) > 1e-6) {
+        fail(path_, where + ".matrix",
+             "last row " + number_text(last_row.x) + ", " + number_text(last_row.y) + ", " +
+                 number_text(last_row.z) + ", " + number_text(last_row.w) +
+                 " (an affine matrix's is 0, 0, 0, 1)");
+      }
+      for (int c = 0; c < 3; ++c) m[c][3] = 0.0;
+      m[3][3] = 1.0;
       return m;
     }
     glm::dvec3 t(0.0), s(1.0);
@@ -196,8 +230,16 @@ class Importer {
     const glm::dvec3 translation(world[3]);
     const double det = glm::determinant(linear);
     if (!std::isfinite(det)) fail(path_, where, "transform of a mesh " + number_text(det));
-    // A scale of 0 (on any axis) is how authors hide a node: the mesh has no area to draw.
-    if (!(std::abs(det) > 1e-18)) return;
+    // A scale of 0 (on any axis) is how authors hide a node: the mesh has no area to draw. Below
+    // the determinant a mesh placement may have (scene_validation.h; a scale of 1e-6), the mesh is
+    // left out too, saying so.
+    if (!(std::abs(det) > 1e-18)) {
+      if (det != 0.0) {
+        warnings_.push_back(where + ": mesh under a transform of determinant " + number_text(det) +
+                            ", below the 1e-18 levrt draws (a scale of 1e-6); skipped");
+      }
+      return;
+    }
     const std::uint32_t mesh = meshes_.scene_mesh(gltf_mesh, where);
     if (mesh == GltfMeshes::kNoMesh) return;
     const double scale = std::cbrt(std::abs(det));
@@ -224,6 +266,7 @@ class Importer {
     }
     const std::uint32_t master = mesh_master(mesh, baked);
     mesh_nodes_.push_back(affine_node(place, instance_node(master)));
+    mesh_places_.push_back(where + " mesh");
     const auto& [lo, hi] = meshes_.bounds(mesh);
     for (int corner = 0; corner < 8; ++corner) {
       const glm::dvec3 local(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
@@ -300,9 +343,9 @@ class Importer {
 
   void add_light(const tinygltf::Light& light, const glm::dvec3& position,
                  const glm::dvec3& forward, const std::string& where) {
-    double length = glm::length(forward);
+    glm::dvec3 axis_forward = measurable(forward);
+    double length = glm::length(axis_forward);
     if (!std::isfinite(length)) fail(path_, where, "transform of a light " + number_text(length));
-    glm::dvec3 axis_forward = forward;
     if (!(length > 0.0)) {
       // A zero scale leaves no direction; a point light needs none (glTF never scales a light).
       if (light.type != "point") {
@@ -325,6 +368,7 @@ class Importer {
       return;
     }
     lights_.push_back(gltf_light_node(light, intensity, position, direction));
+    light_places_.push_back(where + " light");
     lo_ = glm::min(lo_, position);
     hi_ = glm::max(hi_, position);
   }
@@ -338,8 +382,11 @@ class Importer {
     const bool orthographic = camera.type == "orthographic";
     if (camera.type != "perspective" && !orthographic) return;
     const double yfov = camera.perspective.yfov;
-    if (!orthographic && (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi))
-      fail(path_, where + ".camera.yfov", number_text(yfov));
+    // glTF asks only for yfov above 0; a view of pi radians or more has no image plane.
+    if (!orthographic && (!std::isfinite(yfov) || !(yfov > 0.0) || yfov >= kPi)) {
+      fail(path_, camera_where + ".perspective.yfov",
+           number_text(yfov) + " (a vertical field of view above 0 and below pi is expected)");
+    }
     // glTF's ymag is the half height seen (a negative one, which the spec advises against, as
     // its magnitude); the width follows the image's aspect ratio, as a perspective camera's does
     // (xmag, like aspectRatio, is not read: scenes/README.md).
@@ -353,8 +400,8 @@ class Importer {
     // --camera N: the N-th camera met in the node tree, depth first.
     if (cameras_seen_++ != wanted_camera_) return;
     const glm::dvec3 position(world[3]);
-    const glm::dvec3 forward = -glm::dvec3(world[2]);
-    const glm::dvec3 up(world[1]);
+    const glm::dvec3 forward = measurable(-glm::dvec3(world[2]));
+    const glm::dvec3 up = measurable(glm::dvec3(world[1]));
     if (!std::isfinite(glm::length(forward) + glm::length(up)))
       fail(path_, where, "camera transform not finite");
     if (!(glm::length(forward) > 0.0) || !(glm::length(up) > 0.0)) {
@@ -370,6 +417,7 @@ class Importer {
       camera_.vertical_fov_deg = static_cast<float>(yfov * 180.0 / kPi);
     }
     has_camera_ = true;
+    camera_place_ = where + " camera";
   }
 
   // From the front (+Z) and above (+Y, glTF's up), far enough to see the lights' bounds.
@@ -415,6 +463,8 @@ class Importer {
   std::vector<bool> on_path_;
   std::size_t visits_ = 0;
   std::vector<SceneNode> lights_;
+  std::vector<std::string> light_places_, mesh_places_;  // root_child_places()
+  std::string camera_place_;
   std::vector<std::string> warnings_;
   bool has_camera_ = false;
   SceneDescription scene_;
@@ -426,6 +476,26 @@ class Importer {
   glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
 };
+
+// validate_description's message names the node levrt built ("/root/children/3/child/range: must
+// be > 0 (0)"), a path not in the file; a child of the root is a light or mesh placed for a glTF
+// node, and the camera the file's camera node, which are named instead ("nodes[7] light, as
+// placed in the world: range: ...").
+std::string gltf_scene_problem(const std::string& message, const std::vector<std::string>& places,
+                               const std::string& camera_place) {
+  if (message.rfind("/camera/", 0) == 0 && !camera_place.empty())
+    return camera_place + ", as placed in the world: " + message.substr(8);
+  const std::string prefix = "/root/children/";
+  const std::size_t digits = message.find_first_not_of("0123456789", prefix.size());
+  if (message.rfind(prefix, 0) != 0 || digits == prefix.size() || digits == std::string::npos)
+    return "scene: " + message;
+  const std::size_t child = std::stoul(message.substr(prefix.size(), digits - prefix.size()));
+  if (child >= places.size()) return "scene: " + message;
+  std::string field = message.substr(digits);  // "/child/range: must be > 0 (0)"
+  if (field.rfind("/child", 0) == 0) field.erase(0, 6);
+  if (field.rfind('/', 0) == 0) field.erase(0, 1);
+  return places[child] + ", as placed in the world: " + field;
+}
 
 bool ends_with(std::string_view name, std::string_view suffix) {
   return name.size() > suffix.size() && name.substr(name.size() - suffix.size()) == suffix;
@@ -472,7 +542,9 @@ SceneDescription parse_gltf_scene(const std::string& bytes, const std::string& p
   try {
     validate_description(scene);
   } catch (const std::invalid_argument& e) {
-    fail(path, "scene", e.what());
+    throw std::invalid_argument(
+        path + ": " +
+        gltf_scene_problem(e.what(), importer.root_child_places(), importer.camera_place()));
   }
   std::vector<std::string> warnings = importer.warnings();
   if (!document.ignored_extensions.empty()) {

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenes/gltf_budget.h"
 #include "scenes/scene_folder.h"
 #include "scenes/scene_instantiation.h"
 
@@ -573,8 +574,13 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
 SceneDescription load_scene_file(const std::string& path, const SceneFileOptions& options) {
   namespace fs = std::filesystem;
   std::string text;
-  read_regular_file(path, kMaxSceneFileBytes, "scene file", text);
-  if (is_gltf_file_name(path)) return parse_gltf_scene(text, path, options.camera);
+  // A binary glTF carries its buffers: it may be as large as the glTF budget, which charges it
+  // (gltf_budget.h); JSON text, a scene file's or a glTF's, stays within kMaxSceneFileBytes.
+  const bool gltf = is_gltf_file_name(path);
+  const bool binary_gltf = gltf && regular_file_starts_with(path, "glTF");
+  read_regular_file(path, binary_gltf ? kMaxGltfSceneBytes : kMaxSceneFileBytes, "scene file",
+                    text);
+  if (gltf) return parse_gltf_scene(text, path, options.camera);
   if (options.camera != 0) {
     throw std::invalid_argument(path + ": camera: " + std::to_string(options.camera) +
                                 " (a scene file has one camera, 0)");

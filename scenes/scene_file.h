@@ -53,8 +53,8 @@ struct SceneFileOptions {
   int camera = 0;
 };
 
-// Reads a file of at most kMaxSceneFileBytes, then parse_scene_json (or parse_gltf_scene). A
-// missing name in the file becomes the file's stem.
+// Reads a file of at most kMaxSceneFileBytes (a binary glTF: kMaxGltfSceneBytes), then
+// parse_scene_json (or parse_gltf_scene). A missing name in the file becomes the file's stem.
 SceneDescription load_scene_file(const std::string& path, const SceneFileOptions& options = {});
 
 // The description as scene-file text (validated first; throws like validate_description). Scene

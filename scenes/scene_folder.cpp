@@ -150,6 +150,23 @@ FolderFile resolve_in_folder(const std::string& folder, const std::string& relat
   return {target.string(), static_cast<std::uintmax_t>(status.st_size)};
 }
 
+bool regular_file_starts_with(const std::string& path, const std::string& prefix) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode)) return false;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  std::string head(prefix.size(), '\0');
+  std::size_t got = 0;
+  while (got < head.size()) {
+    const ssize_t n = ::read(fd, head.data() + got, head.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  return got == head.size() && head == prefix;
+}
+
 void read_regular_file(const std::string& path, std::uintmax_t max_bytes, const std::string& role,
                        std::string& out) {
   read_into(path, max_bytes, role, out);

@@ -39,6 +39,10 @@ void read_regular_file(const std::string& path, std::uintmax_t max_bytes, const 
 void read_regular_file(const std::string& path, std::uintmax_t max_bytes, const std::string& role,
                        std::vector<unsigned char>& out);
 
+// Whether `path` is a regular file whose first bytes are `prefix` (stat before a non-blocking
+// open, as read_regular_file); false for anything else, which read_regular_file then reports.
+bool regular_file_starts_with(const std::string& path, const std::string& prefix);
+
 // "64 MiB" for whole mebibytes, else "N bytes".
 std::string byte_limit_text(std::uintmax_t bytes);
 

@@ -1,5 +1,6 @@
 #include "scenes/scene_inputs.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -15,25 +16,40 @@ namespace {
 
 using json = nlohmann::json;
 
-// The whole file when it is a regular file within the scene-file limit, else empty.
+std::uint32_t little_endian_u32(const std::string& bytes, std::size_t at) {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+  return v;
+}
+
+// The whole file when it is a regular file within the scene-file limit; of a larger binary glTF
+// (which may be as large as the glTF budget), its 20-byte header and a JSON chunk within that
+// limit; else empty.
 std::string read_small_regular_file(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return {};
   const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec || size > kMaxSceneFileBytes) return {};
+  if (ec) return {};
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return {};
-  std::string bytes(static_cast<std::size_t>(size), '\0');
+  std::string bytes(static_cast<std::size_t>(std::min<std::uintmax_t>(size, 20)), '\0');
   bytes.resize(std::fread(bytes.data(), 1, bytes.size(), f));
+  std::uintmax_t wanted = size;
+  if (size > kMaxSceneFileBytes) {
+    const bool glb = bytes.size() == 20 && bytes.compare(0, 4, "glTF") == 0;
+    const std::uint32_t json_bytes = glb ? little_endian_u32(bytes, 12) : 0;
+    wanted = glb && json_bytes <= kMaxSceneFileBytes ? 20 + std::uintmax_t{json_bytes} : 0;
+  }
+  if (wanted > bytes.size()) {
+    const std::size_t have = bytes.size();
+    bytes.resize(static_cast<std::size_t>(wanted));
+    bytes.resize(have + std::fread(bytes.data() + have, 1, bytes.size() - have, f));
+  } else if (wanted == 0) {
+    bytes.clear();
+  }
   std::fclose(f);
   return bytes;
-}
-
-std::uint32_t little_endian_u32(const std::string& bytes, std::size_t at) {
-  std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
-  return v;
 }
 
 // The JSON chunk of a GLB file (glTF 2.0, section "Binary glTF Layout"), or empty.
@@ -110,11 +126,15 @@ int hex_value(char c) {
   return -1;
 }
 
+// As tinygltf decodes a URI before it opens the file (scene_folder.h's uri_file_path): percent
+// escapes, and '+' read as a space.
 std::string percent_decoded(const std::string& uri) {
   std::string out;
   for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && hex_value(uri[i + 1]) >= 0 &&
-        hex_value(uri[i + 2]) >= 0) {
+    if (uri[i] == '+') {
+      out += ' ';
+    } else if (uri[i] == '%' && i + 2 < uri.size() && hex_value(uri[i + 1]) >= 0 &&
+               hex_value(uri[i + 2]) >= 0) {
       out += static_cast<char>(hex_value(uri[i + 1]) * 16 + hex_value(uri[i + 2]));
       i += 2;
     } else {
@@ -137,9 +157,13 @@ std::vector<std::string> scene_input_files(const std::string& path) {
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   for (const std::string& uri : collector.uris) {
     if (uri.empty() || uri.rfind("data:", 0) == 0) continue;
-    files.push_back((folder / uri).string());
-    const std::string decoded = percent_decoded(uri);
-    if (decoded != uri) files.push_back((folder / decoded).string());
+    for (const std::string& name : {uri, percent_decoded(uri)}) {
+      files.push_back((folder / name).string());
+      // The reader resolves a URI's `..` lexically (scene_folder.h), against the name before it
+      // whatever symlink that is: "sub/../t.png" is the folder's t.png, where the kernel would
+      // go up from sub's target.
+      files.push_back((folder / std::filesystem::path(name).lexically_normal()).string());
+    }
   }
   return files;
 }

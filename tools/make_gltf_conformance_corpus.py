@@ -177,6 +177,12 @@ def cases():
         "valid_unlit.gltf": unlit,
         "valid_blend.gltf": edit(M, setter(["materials", 0, "alphaMode"], "BLEND")),
         "valid_single_sided.gltf": edit(T, setter(["materials", 0, "doubleSided"], False)),
+        # Doubles that round to floats levrt must still read as a valid light.
+        "valid_spot_angles_one_float_apart.gltf": edit(L, setter(LIGHTS + [1, "spot"], {
+            "innerConeAngle": 0.59999999999, "outerConeAngle": 0.6})),
+        "valid_range_below_floats.gltf": edit(L, setter(LIGHTS + [0, "range"], 1e-300)),
+        "valid_outer_cone_below_floats.gltf": edit(L, setter(LIGHTS + [1, "spot"], {
+            "outerConeAngle": 5e-324})),
         "valid_orthographic_xmag_negative.gltf": edit(T, setter(["cameras", 0, "orthographic",
                                                                   "xmag"], -1.0)),
     }
@@ -211,6 +217,17 @@ def cases():
         "translation_two_values": (L, setter(["nodes", 0, "translation"], [0.0, 2.0])),
         "rotation_three_values": (L, setter(["nodes", 2, "rotation"], [0.0, 0.0, 0.0])),
         "matrix_fifteen_values": (L, setter(["nodes", 0, "matrix"], [1.0] * 15)),
+        "matrix_projective": (edit(L, remover(["nodes", 0, "translation"])), setter(
+            ["nodes", 0, "matrix"], [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                                     0.0, 0.0, 1.0, 0.5, 0.0, 2.0, 0.0, 1.0])),
+        "matrix_shear": (M, setter(["nodes", 0, "matrix"], [1.0, 0.0, 0.0, 0.0,
+                                                            0.5, 1.0, 0.0, 0.0,
+                                                            0.0, 0.0, 1.0, 0.0,
+                                                            0.0, 0.0, 0.0, 1.0])),
+        "matrix_and_translation": (L, setter(["nodes", 0, "matrix"], [1.0, 0.0, 0.0, 0.0,
+                                                                      0.0, 1.0, 0.0, 0.0,
+                                                                      0.0, 0.0, 1.0, 0.0,
+                                                                      0.0, 2.0, 0.0, 1.0])),
         "base_colour_above_one": (M, setter(["materials", 0, "pbrMetallicRoughness",
                                              "baseColorFactor"], [2.0, 0.0, 0.0, 1.0])),
         "roughness_above_one": (M, setter(["materials", 0, "pbrMetallicRoughness",
@@ -334,6 +351,8 @@ def cases():
     files["bad_glb_length_short.glb"] = mesh_glb(length_delta=-4)
     files["bad_glb_length_long.glb"] = mesh_glb(length_delta=8)
     files["bad_glb_version_1.glb"] = mesh_glb(version=1)
+    # glTF's JSON is UTF-8 without a byte order mark.
+    files["bad_byte_order_mark.gltf"] = b"\xef\xbb\xbf" + json.dumps(L).encode()
     return files
 
 

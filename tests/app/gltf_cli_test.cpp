@@ -224,24 +224,34 @@ TEST_F(GltfCli, AnOrthographicCameraOfHugeMagnitudeIsRefusedAndTheLimitRenders) 
   EXPECT_TRUE(fs::exists(path("x.png")));
 }
 
-// A file without a camera whose triangle reaches 1e30 (or infinity): the view levrt would frame
-// it from cannot stand where coordinates may (1e6). The one line said
-// "scene: /camera/position: coordinate magnitude above 1e+06", a camera the file does not have;
-// it now names the missing camera and how far the meshes reach.
+// A file without a camera whose mesh stands at 1e7: the view levrt would frame it from cannot
+// stand where coordinates may (1e6). The one line said "scene: /camera/position: coordinate
+// magnitude above 1e+06", a camera the file does not have; it now names the missing camera and
+// how far the meshes reach. A triangle reaching 1e30 (or infinity) itself is named at its
+// POSITION attribute, whatever the camera.
 TEST_F(GltfCli, MeshesTooFarToFrameAreNamedNotTheCameraLevrtWouldMake) {
-  for (const float far : {1e30f, std::numeric_limits<float>::infinity()}) {
-    const std::vector<float> corners = {0, 0, 0, far, 0, 0, 0, 1, 0};
+  const std::vector<float> unit = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  for (const float far : {0.0f, 1e30f, std::numeric_limits<float>::infinity()}) {
+    std::vector<float> corners = unit;
+    if (far != 0.0f) corners[3] = far;
     std::string bytes(reinterpret_cast<const char*>(corners.data()), 36);
     { std::ofstream(path("tri.bin"), std::ios::binary) << bytes; }
     const std::string file = path("far.gltf");
     {
-      std::ofstream(file) << levrt_test::gltf_document(levrt_test::triangle_buffers("tri.bin") +
-                                                       R"(,
-        "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])");
+      const std::string node =
+          far == 0.0f ? R"({"mesh": 0, "translation": [1e7, 0, 0]})" : R"({"mesh": 0})";
+      std::ofstream(file) << levrt_test::gltf_document(
+          levrt_test::triangle_buffers("tri.bin") +
+          R"(,
+        "nodes": [)" +
+          node + R"(], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])");
     }
     const CommandRun r = run_levrt({"render", "--scene", file, "--width", "8", "--height", "8",
                                     "--out", path("x.png"), "--stats", path("s.json")});
-    expect_refused_without_output(r, file, "camera: none in the file, and its meshes and lights");
+    expect_refused_without_output(
+        r, file,
+        far == 0.0f ? "camera: none in the file, and its meshes and lights"
+                    : "meshes[0].primitives[0].attributes.POSITION: element 1 is");
     EXPECT_EQ(r.output.find("/camera/position"), std::string::npos) << r.output;
   }
 }

@@ -27,6 +27,7 @@
 
 #include "app/settings.h"
 #include "tests/support/folder_test.h"
+#include "tests/support/gltf_files.h"
 #include "tests/support/read_file.h"
 #include "tests/support/run_command.h"
 
@@ -440,14 +441,23 @@ TEST_F(Outputs, AnOutputThatIsAGltfBufferOrTextureIsRefused) {
   fs::create_directories(dir_ / "model");
   std::ofstream(dir_ / "model" / "scene.gltf")
       << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "geometry.png", "byteLength": 4}],
-             "images": [{"uri": "base%20colour.png"}, {"uri": "data:image/png;base64,AAAA"}]})";
+             "images": [{"uri": "base%20colour.png"}, {"uri": "data:image/png;base64,AAAA"},
+                        {"uri": "leaf+mask.png"}, {"uri": "sub/../bark.png"}]})";
   std::ofstream(dir_ / "model" / "geometry.png") << "buffer bytes";
   std::ofstream(dir_ / "model" / "base colour.png") << "texture bytes";
+  // tinygltf reads '+' in a URI as a space: this texture is the file "leaf mask.png".
+  std::ofstream(dir_ / "model" / "leaf mask.png") << "texture bytes";
+  // The reader resolves `sub/..` lexically: model/bark.png, though sub leads elsewhere.
+  std::ofstream(dir_ / "model" / "bark.png") << "texture bytes";
+  fs::create_directories(dir_ / "elsewhere" / "deep");
+  fs::create_directory_symlink(fs::path("..") / "elsewhere" / "deep", dir_ / "model" / "sub");
   const auto before = snapshot_of(dir_);
   for (const auto& [flag, name] : std::vector<std::pair<std::string, std::string>>{
            {"--out", "model/base colour.png"},
            {"--heatmap-lights", "model/geometry.png"},
-           {"--heatmap-noise", "model/../model/base colour.png"}}) {
+           {"--heatmap-noise", "model/../model/base colour.png"},
+           {"--heatmap-nodes", "model/leaf mask.png"},
+           {"--heatmap-bound", "model/bark.png"}}) {
     const CommandRun r = run_here(output_render_args({"--scene", "model/scene.gltf", flag, name}));
     EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
     EXPECT_EQ(line_count(r.output), 1) << r.output;
@@ -455,6 +465,22 @@ TEST_F(Outputs, AnOutputThatIsAGltfBufferOrTextureIsRefused) {
         << r.output;
     EXPECT_EQ(snapshot_of(dir_), before) << name;
   }
+}
+
+// A binary glTF over a JSON scene file's 64 MiB (it may be as large as the glTF budget): its
+// texture is an input too. The input list read files of at most 64 MiB whole, so it named none.
+TEST_F(Outputs, AnOutputThatIsATextureOfABinaryGltfOverTheSceneFileLimitIsRefused) {
+  const std::string json =
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 68157440}],
+          "images": [{"uri": "t.png"}]})";
+  levrt_test::write_sparse_glb(path("big.glb"), json, "", 68157440);
+  std::ofstream(path("t.png")) << "texture bytes";
+  const CommandRun r = run_here(output_render_args({"--scene", "big.glb", "--out", "t.png"}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--out: names a file this command reads"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(path("t.png")), "texture bytes");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2);
 }
 
 TEST_F(Outputs, AnOutputThatIsAGlbTextureIsRefused) {

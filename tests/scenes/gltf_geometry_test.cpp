@@ -5,6 +5,7 @@
 // with one line.
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -354,7 +355,7 @@ TEST(GltfGeometry, BadAccessorsFailWithOneLine) {
     GltfBuilder builder;
     const int positions = builder.add_vec3s({{0, 0, 0}, {1, 0, 0}, {0, std::nanf(""), 0}});
     builder.add_node(mesh_node(builder.add_mesh({{"POSITION", positions}})));
-    expect_refused(builder, "positions: must be finite");
+    expect_refused(builder, "attributes.POSITION: element 2 is [0, nan, 0]");
   }
 }
 
@@ -398,6 +399,42 @@ TEST(GltfGeometry, AnAttributeOfAComponentTypeGltfDoesNotAllowIsRefused) {
     expect_refused(builder, quantized ? "attributes.NORMAL: accessors[1] of component type 5120 ("
                                       : "attributes.POSITION: accessors[0] of component type "
                                         "5120 (");
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// A vertex or normal that is not finite, or beyond the 1e6 levrt's coordinates reach, is refused
+// at its attribute's glTF path; the scene check named levrt's own mesh
+// (`scene: /meshes/0/parts/0/positions: must be finite [nan, 0, 0]`), a path not in the file.
+TEST(GltfGeometry, AVertexOrNormalLevrtCannotHoldIsRefusedAtItsAttribute) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  struct Case {
+    std::vector<glm::vec3> positions, normals;
+    std::string problem;
+  };
+  const std::vector<Case> cases = {
+      {{{0, 0, 0}, {nan, 0, 0}, {0, 1, 0}},
+       {},
+       ": meshes[0].primitives[0].attributes.POSITION: "
+       "element 1 is [nan, 0, 0] (finite values"},
+      {{{0, 0, 0}, {2e6f, 0, 0}, {0, 1, 0}},
+       {},
+       ": meshes[0].primitives[0].attributes.POSITION: element 1 is [2000000, 0, 0] (finite "
+       "values of magnitude at most 1000000 are expected)"},
+      {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+       {{0, 0, 1}, {0, 0, 1}, {0, 0, inf}},
+       ": meshes[0].primitives[0].attributes.NORMAL: element 2 is [0, 0, inf]"},
+  };
+  for (const Case& c : cases) {
+    GltfBuilder builder;
+    std::map<std::string, int> attributes = {{"POSITION", builder.add_vec3s(c.positions)}};
+    if (!c.normals.empty()) attributes["NORMAL"] = builder.add_vec3s(c.normals);
+    builder.add_node(mesh_node(builder.add_mesh(attributes)));
+    levrt_test::expect_gltf_refused(builder.text(), kGeometryPath, c.problem);
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -170,6 +171,57 @@ TEST_F(GltfLimits, AHugeExternalBufferIsRefusedByItsSizeBeforeReading) {
 
 // Holes tinygltf lets through: it keeps indices in an int (2^32 wrapped to light 0), takes -1 for
 // "no mode", ignores a negative scene and stops reading at a NUL byte.
+// A binary glTF carries its buffers, so it may exceed a JSON scene file's 64 MiB: the glTF budget
+// charges it (the file and its BIN chunk's copy). It was refused as "more than the 64 MiB a scene
+// file may have", though its external-buffer twin was read.
+TEST_F(GltfLimits, ABinaryGltfLargerThanAJsonSceneFileIsReadWithinTheBudget) {
+  const std::uint32_t bin_bytes = (std::uint32_t{65} << 20) + 36;
+  const std::string json =
+      gltf_document(R"("buffers": [{"byteLength": )" + std::to_string(bin_bytes) + R"(}],
+          "bufferViews": [{"buffer": 0, "byteLength": 36}],
+          "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
+          "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])");
+  const float triangle[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  levrt_test::write_sparse_glb(file("big.glb"), json,
+                               std::string(reinterpret_cast<const char*>(triangle), 36), bin_bytes);
+  ASSERT_GT(fs::file_size(file("big.glb")), scenes::kMaxSceneFileBytes);
+  const scenes::SceneDescription scene = scenes::load_scene_file(file("big.glb").string());
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  // Twice its size (the file and the buffer copied from it) is charged: a budget below that
+  // refuses it.
+  std::string bytes(fs::file_size(file("big.glb")), '\0');
+  std::ifstream(file("big.glb"), std::ios::binary).read(bytes.data(), bytes.size());
+  EXPECT_THROW(
+      scenes::parse_gltf_scene(bytes, file("big.glb").string(), 0, 2 * bytes.size() - 1000),
+      std::invalid_argument);
+}
+
+// The JSON of a binary glTF stays within a scene file's 64 MiB, as a .gltf's does: the input
+// list (scene_inputs.h) reads no more, so a larger chunk naming a texture went unlisted.
+TEST_F(GltfLimits, ABinaryGltfsJsonChunkIsHeldToTheSceneFileLimit) {
+  std::string json = gltf_document(R"("nodes": [{"extensions":
+      {"KHR_lights_punctual": {"light": 0}}}], "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}})");
+  json.append(static_cast<std::size_t>(scenes::kMaxSceneFileBytes) + 4 - json.size() % 4, ' ');
+  std::string glb = "glTF";
+  const auto u32 = [&glb](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) glb += static_cast<char>((v >> (8 * i)) & 0xffu);
+  };
+  u32(2);
+  u32(static_cast<std::uint32_t>(20 + json.size()));
+  u32(static_cast<std::uint32_t>(json.size()));
+  u32(0x4E4F534Au);
+  glb += json;
+  try {
+    scenes::parse_gltf_scene(glb, "big.glb");
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "big.glb: binary glTF: a JSON chunk of " +
+                                         std::to_string(json.size()) +
+                                         " bytes, more than the 64 MiB a glTF's JSON may have");
+  }
+}
+
 TEST_F(GltfLimits, ConformanceHolesAreRefusedWithTheGltfPathOfTheField) {
   const std::string lights =
       R"("extensions": {"KHR_lights_punctual": {"lights": [{"type": "point"}]}}, )";

@@ -132,6 +132,39 @@ TEST(GltfScene, BadFilesFailWithOneLineNamingTheProblem) {
     levrt_test::expect_gltf_refused(text, kScenePath, problem);
 }
 
+// tinygltf's refusal ("not a readable glTF file: Spot light description not found.") named no
+// light.
+TEST(GltfScene, ASpotWithoutItsSpotObjectIsRefusedNamingTheLight) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "point"}, {"intensity": 2, "type": "spot"})", node), kScenePath,
+      ": extensions.KHR_lights_punctual.lights[1].spot: missing (a member a light of type spot "
+      "requires)");
+}
+
+// glTF's JSON is UTF-8 without a byte order mark (the validator's INVALID_JSON); nlohmann's
+// parser skipped it, so the file was read.
+TEST(GltfScene, AByteOrderMarkBeforeTheJsonIsRefused) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  levrt_test::expect_gltf_refused("\xEF\xBB\xBF" + gltf_scene_with(R"({"type": "point"})", node),
+                                  kScenePath,
+                                  ": a byte order mark before the JSON (glTF's JSON is UTF-8 "
+                                  "without one)");
+}
+
+// A field of view of pi or more (glTF itself asks only for one above 0) is refused at its own
+// glTF path; the refusal named `nodes[0].camera.yfov`, a path not in the file, and no reason.
+TEST(GltfScene, AFieldOfViewOfPiOrMoreIsRefusedAtTheCamerasPath) {
+  const std::string nodes = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "camera": 0})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(
+          R"({"type": "point"})", nodes,
+          R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 3.5, "znear": 0.1}}])"),
+      kScenePath,
+      ": cameras[0].perspective.yfov: 3.5 (a vertical field of view above 0 and below pi is "
+      "expected)");
+}
+
 TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
   // Blender exports a spot of blend 0 so (inner = outer); the extension asks inner < outer.
   const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
@@ -141,6 +174,107 @@ TEST(GltfScene, ASpotWhoseInnerAngleIsNotBelowItsOuterOneIsRefusedSayingWhy) {
       kScenePath,
       ": extensions.KHR_lights_punctual.lights[0].spot.innerConeAngle: 0.5 (a number from 0 to "
       "below the outerConeAngle, 0.5, is expected)");
+}
+
+// glTF's numbers are doubles, levrt's floats: a valid light stays valid once rounded. Each was
+// refused naming a path not in the file (`scene: /root/children/0/child/range: must be > 0 (0)`).
+TEST(GltfScene, ALightValidAsDoublesIsReadThoughFloatsRoundItsAnglesOrRange) {
+  const std::string node = R"({"extensions": {"KHR_lights_punctual": {"light": 0}}})";
+  const auto spot_of = [](const scenes::SceneDescription& scene) {
+    return std::get<scenes::SpotLightSource>(only_light(scene).children.at(0).data);
+  };
+  // Inner and outer one float apart: both round to the same float degrees.
+  const scenes::SpotLightSource close = spot_of(scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "spot", "spot": {"innerConeAngle": 0.49999999999, )"
+                      R"("outerConeAngle": 0.5}})",
+                      node),
+      kScenePath));
+  EXPECT_LT(close.inner_cone_degrees, close.cone_degrees);
+  EXPECT_GT(close.inner_cone_degrees, 28.6f);
+  // An outer cone and a range above 0 that underflow a float.
+  const scenes::SpotLightSource narrow = spot_of(scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "spot", "range": 1e-300, "spot": {"outerConeAngle": 5e-324}})",
+                      node),
+      kScenePath));
+  EXPECT_GT(narrow.cone_degrees, 0.0f);
+  EXPECT_GT(narrow.range, 0.0f);
+  EXPECT_LE(narrow.range, 1e-30f);
+  EXPECT_EQ(narrow.inner_cone_degrees, 0.0f);
+  const scenes::SceneDescription point = scenes::parse_gltf_scene(
+      gltf_scene_with(R"({"type": "point", "range": 1e-300})", node), kScenePath);
+  EXPECT_GT(std::get<scenes::PointLightSource>(only_light(point).children.at(0).data).range, 0.0f);
+}
+
+// A light placed beyond levrt's coordinates (the file has a camera, so no framing refuses it
+// first) is named by its glTF node; the refusal named levrt's own `scene: /root/children/0/...`.
+TEST(GltfScene, ALightPlacedBeyondTheCoordinateLimitIsNamedByItsNode) {
+  const std::string nodes =
+      R"({"translation": [2e7, 0, 0], "children": [1],
+          "extensions": {"KHR_lights_punctual": {"light": 0}}},
+         {"translation": [-2e7, 0, 5], "camera": 0})";
+  const std::string camera =
+      R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}])";
+  try {
+    scenes::parse_gltf_scene(gltf_scene_with(R"({"type": "point", "intensity": 5})", nodes, camera),
+                             kScenePath);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("test.gltf: nodes[0] light, as placed in the world: translate: "
+                            "coordinate magnitude above 1e+06",
+                            0),
+              0u)
+        << message;
+    EXPECT_EQ(message.find("/root"), std::string::npos) << message;
+  }
+  // The file's own camera there is named by its node, not as levrt's /camera.
+  const std::string far_camera =
+      R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "children": [1]},
+         {"translation": [0, 0, 2e7], "camera": 0})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(R"({"type": "point", "intensity": 5})", far_camera, camera), kScenePath,
+      ": nodes[1] camera, as placed in the world: position: coordinate magnitude above 1e+06");
+}
+
+// glTF's node matrices are affine and exclude TRS properties (the validator's NODE_MATRIX_NON_TRS
+// and NODE_MATRIX_TRS); both were read, the projection or the TRS dropped without a word.
+TEST(GltfScene, AProjectiveMatrixOrAMatrixWithTrsIsRefused) {
+  const std::string light = R"({"type": "point", "intensity": 5})";
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(light, R"({"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0.5, 2,5,0,1],
+                                 "extensions": {"KHR_lights_punctual": {"light": 0}}})"),
+      kScenePath, ": nodes[0].matrix: last row 0, 0, 0.5, 1 (an affine matrix's is 0, 0, 0, 1)");
+  levrt_test::expect_gltf_refused(
+      gltf_scene_with(light, R"({"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 2,5,0,1],
+                                 "translation": [1, 0, 0],
+                                 "extensions": {"KHR_lights_punctual": {"light": 0}}})"),
+      kScenePath, ": nodes[0].matrix: given with translation, rotation or scale");
+}
+
+// glTF never scales a light: a spot or a camera under a node scale of 1e-300 or 1e200 keeps the
+// direction its rotation gives. The squared length of its -Z underflowed to 0 (the spot skipped
+// "under a zero scale", the camera not used) or overflowed (`transform of a light inf`).
+TEST(GltfScene, ASpotOrCameraUnderAHugeOrTinyNodeScaleKeepsItsDirection) {
+  const std::string camera =
+      R"(, "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}])";
+  for (const std::string scale : {"1e-300", "1e200"}) {
+    const std::string nodes = R"({"scale": [)" + scale + ", " + scale + ", " + scale +
+                              R"(], "children": [1, 2]},
+        {"extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"camera": 0, "rotation": [0, 0.70710678, 0, 0.70710678]})";
+    const scenes::SceneDescription scene =
+        scenes::parse_gltf_scene(gltf_scene_with(kSpot, nodes, camera), kScenePath);
+    const scenes::SceneNode& placed = only_light(scene);
+    const auto& affine = std::get<scenes::Affine>(placed.data);
+    const glm::vec3 direction =
+        glm::angleAxis(glm::radians(affine.rotate_degrees), glm::normalize(affine.rotate_axis)) *
+        glm::vec3(0, 0, -1);
+    EXPECT_NEAR(direction.z, -1.0f, 1e-6f) << scale;
+    // The camera turned 90 degrees about +Y looks along -X.
+    const glm::vec3 view = scene.camera.target - scene.camera.position;
+    EXPECT_NEAR(view.x, -1.0f, 1e-5f) << scale;
+    EXPECT_NEAR(scene.camera.up.y, 1.0f, 1e-5f) << scale;
+  }
 }
 
 // A glTF whose one buffer is the data URI `uri` of `byte_length` bytes, read by an accessor.
@@ -266,6 +400,28 @@ TEST(GltfScene, ZeroScaleHidesMeshesButPlacesPointLights) {
 }
 
 // The spec: a primitive without POSITION is not drawn; one warning line names the first.
+// A mesh under a scale of 1e-7 (a determinant of 1e-21) is below what levrt draws: it was left out
+// without a word, as if hidden by a scale of 0.
+TEST(GltfScene, AMeshUnderAScaleTooSmallToDrawIsSkippedWithAWarning) {
+  const std::string nodes =
+      R"({"extensions": {"KHR_lights_punctual": {"light": 0}}, "children": [1]},
+         {"mesh": 0, "scale": [1e-7, 1e-7, 1e-7]})";
+  const std::string mesh = R"(, "buffers": [{"byteLength": 36,
+      "uri":
+      "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}])";
+  testing::internal::CaptureStderr();
+  const scenes::SceneDescription scene =
+      scenes::parse_gltf_scene(gltf_scene_with(R"({"type": "point"})", nodes, mesh), kScenePath);
+  const std::string warnings = testing::internal::GetCapturedStderr();
+  EXPECT_TRUE(scene.meshes.empty());
+  EXPECT_EQ(warnings, std::string(kScenePath) +
+                          ": warning: nodes[1]: mesh under a transform of determinant 1e-21, "
+                          "below the 1e-18 levrt draws (a scale of 1e-6); skipped\n");
+}
+
 TEST(GltfScene, PrimitivesWithoutPositionAreSkippedWithOneWarning) {
   const std::string point = R"({"type": "point"})";
   const std::string nodes =

@@ -59,6 +59,32 @@ inline void write_file(const std::filesystem::path& path, const std::string& byt
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
+// A binary glTF of `json` and a BIN chunk of `bin_bytes` (a multiple of 4) that starts with
+// `bin_head`; the rest of the chunk is a hole, so a file of many megabytes costs no disk.
+inline void write_sparse_glb(const std::filesystem::path& path, std::string json,
+                             const std::string& bin_head, std::uint32_t bin_bytes) {
+  json.append((4 - json.size() % 4) % 4, ' ');
+  std::string head;
+  const auto u32 = [&head](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) head += static_cast<char>((v >> (8 * i)) & 0xffu);
+  };
+  const auto json_bytes = static_cast<std::uint32_t>(json.size());
+  head += "glTF";
+  u32(2);
+  u32(12 + 8 + json_bytes + 8 + bin_bytes);
+  u32(json_bytes);
+  u32(0x4E4F534Au);
+  head += json;
+  u32(bin_bytes);
+  u32(0x004E4942u);
+  head += bin_head;
+  std::ofstream out(path, std::ios::binary);
+  out << head;
+  out.seekp(static_cast<std::streamoff>(head.size() - bin_head.size() + bin_bytes - 1));
+  out.put('\0');
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
 // Loading `path` throws one line starting "PATH: " and holding every one of `problems`;
 // returns the line.
 inline std::string expect_load_refused(const std::filesystem::path& path,
