@@ -356,6 +356,8 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   state.mouse_input = flags.frames == 0 || flags.real_input;
   state.record_controls = !flags.controls.empty();
   state.print_messages = flags.frames > 0;
+  state.exposure_chosen = flags.exposure_given;
+  state.display_chosen = flags.display_given;
   state.other_inputs = inputs;
   state.other_outputs = outputs;
   const bool output_on_stdout =

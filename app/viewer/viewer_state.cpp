@@ -15,11 +15,24 @@ void mark_changed(ViewerState& state, const std::string& label) {
 
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label) {
   Settings& s = state.settings;
+  if (s.display.exposure_ev != before.display.exposure_ev ||
+      s.display.exposure_auto != before.display.exposure_auto)
+    state.exposure_chosen = true;
+  if (s.display.curve != before.display.curve) state.display_chosen = true;
   if (s.scene.name != before.scene.name) {
     if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene.name))
       s.scene.level = model->default_level;
     s.scene.camera_flags =
         scenes::CameraFlags{};  // the command line's camera was for the first scene
+    // The new scene's display defaults for what the user did not choose.
+    if (before.scene.name == state.status.scene) state.display_before_scene_change = before.display;
+    const DisplaySettings defaults{};
+    if (!state.exposure_chosen) {
+      s.display.exposure_ev = defaults.exposure_ev;
+      s.display.exposure_auto = defaults.exposure_auto;
+    }
+    if (!state.display_chosen) s.display.curve = defaults.curve;
+    apply_scene_display_defaults(s, state.exposure_chosen, state.display_chosen);
   }
   const Restart restart = restart_needed(before, s);
   const bool new_scene = restart == Restart::scene;

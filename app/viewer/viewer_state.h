@@ -95,6 +95,13 @@ struct ViewerState {
   // The camera the user had before asking for another scene: a scene that cannot be loaded
   // gives it back, with the old scene.
   std::optional<renderer::Camera> camera_before_scene_change;
+  // Whether the user chose the exposure or the display curve (a flag, the panel, a script): a
+  // scene opened later keeps a choice, and gets its own default for the other (glTF files auto
+  // and neutral, the rest EV 0 and linear: apply_scene_display_defaults, as `levrt render`
+  // gives them). A scene that cannot be loaded gives the display before it back.
+  bool exposure_chosen = false;
+  bool display_chosen = false;
+  std::optional<DisplaySettings> display_before_scene_change;
 };
 
 // Marks the request dirty; `label` names the change in the latency report.

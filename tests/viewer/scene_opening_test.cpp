@@ -112,4 +112,50 @@ TEST(SceneOpening, ADropOpensTheFirstSceneFileAndIgnoresTheRest) {
   EXPECT_THROW(parse_scripted_change("drop=@3"), app::UsageError);
 }
 
+// A glTF opened in the running viewer is shown as `levrt render --scene FILE.gltf` shows it: auto
+// exposure and the neutral curve, unless the user chose them; a built-in scene after it goes
+// back to EV 0 and linear; a failed open gives the display back. It opened at linear EV 0.
+TEST(SceneOpening, AnOpenedSceneGetsItsDisplayDefaultsButTheUsersChoice) {
+  ViewerState state;
+  loaded(state, "building", 1);
+  ASSERT_TRUE(open_scene_file(state, "/scenes/lamp.gltf"));
+  EXPECT_TRUE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::neutral);
+  loaded(state, "/scenes/lamp.gltf", 2);
+  state.settings.display.exposure_ev = -4.0;  // auto's choice, as the frame loop copies it
+
+  app::Settings before = state.settings;
+  state.settings.scene.name = "maze";
+  settings_changed(state, before, "scene=maze");
+  EXPECT_FALSE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.exposure_ev, 0.0);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::linear);
+  loaded(state, "maze", 3);
+
+  // A curve chosen in the panel stays; the exposure still follows the scene.
+  before = state.settings;
+  state.settings.display.curve = renderer::DisplayCurve::srgb;
+  settings_changed(state, before, "display=srgb");
+  ASSERT_TRUE(open_scene_file(state, "/scenes/broken.gltf"));
+  EXPECT_TRUE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
+  state.status.load_error = "/scenes/broken.gltf: cannot read the scene file (no such file)";
+  state.status.load_error_scene = "/scenes/broken.gltf";
+  state.status.load_error_serial = 1;
+  follow_scene_loads(state);
+  EXPECT_EQ(state.settings.scene.name, "maze");
+  EXPECT_FALSE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
+
+  // An exposure given on the command line (or typed) is kept for every scene.
+  ViewerState given;
+  given.exposure_chosen = true;
+  given.settings.display.exposure_ev = 2.0;
+  loaded(given, "building", 1);
+  ASSERT_TRUE(open_scene_file(given, "/scenes/lamp.glb"));
+  EXPECT_FALSE(given.settings.display.exposure_auto);
+  EXPECT_EQ(given.settings.display.exposure_ev, 2.0);
+  EXPECT_EQ(given.settings.display.curve, renderer::DisplayCurve::neutral);
+}
+
 }  // namespace
