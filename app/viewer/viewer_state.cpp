@@ -22,8 +22,10 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
   if (s.scene.name != before.scene.name) {
     if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene.name))
       s.scene.level = model->default_level;
-    s.scene.camera_flags =
-        scenes::CameraFlags{};  // the command line's camera was for the first scene
+    // The command line's camera (flags and glTF camera index) was for the first scene; another
+    // file's cameras are its own (an index past them would refuse the file).
+    s.scene.camera_flags = scenes::CameraFlags{};
+    if (s.scene.camera == before.scene.camera) s.scene.camera = 0;
     // The new scene's display defaults for what the user did not choose.
     if (before.scene.name == state.status.scene) state.display_before_scene_change = before.display;
     const DisplaySettings defaults{};

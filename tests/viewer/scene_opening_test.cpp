@@ -158,4 +158,25 @@ TEST(SceneOpening, AnOpenedSceneGetsItsDisplayDefaultsButTheUsersChoice) {
   EXPECT_EQ(given.settings.display.curve, renderer::DisplayCurve::neutral);
 }
 
+// The camera index picked on one glTF (its fourth camera) is not carried to the next file, which
+// may have fewer: the open failed with "camera: 3 (the file has 0 cameras in its scene)". A
+// failed open gives the index back.
+TEST(SceneOpening, AnotherFileOpensAtItsFirstCamera) {
+  ViewerState state;
+  state.settings.scene.name = "/scenes/four_cameras.gltf";
+  loaded(state, "/scenes/four_cameras.gltf", 1);
+  app::Settings before = state.settings;
+  state.settings.scene.camera = 3;
+  settings_changed(state, before, "camera=3");
+  state.status.camera_index = 3;
+  loaded(state, "/scenes/four_cameras.gltf", 2);
+  ASSERT_TRUE(open_scene_file(state, "/scenes/no_camera.glb"));
+  EXPECT_EQ(state.settings.scene.camera, 0);
+  state.status.load_error = "/scenes/no_camera.glb: cannot read the scene file (no such file)";
+  state.status.load_error_scene = "/scenes/no_camera.glb";
+  state.status.load_error_serial = 1;
+  follow_scene_loads(state);
+  EXPECT_EQ(state.settings.scene.camera, 3);
+}
+
 }  // namespace
