@@ -250,6 +250,7 @@ struct Worker {
       st.loading_scene.clear();
       st.scene = s.scene.name;
       st.level = s.scene.level;
+      st.scene_level = loaded->scene.level;
       st.camera_index = s.scene.camera;
       st.camera_flags = s.scene.camera_flags;
       st.generation = 0;

@@ -63,7 +63,8 @@ struct WorkerStatus {
   std::uint64_t scene_serial = 0;  // bumps with every (re)load
   std::string scene;               // as the request named it (model name or file)
   std::string scene_name;          // as the scene calls itself
-  int level = 0;
+  int level = 0;                   // as the request named it (the settings' level)
+  int scene_level = 0;             // as the scene states it (a scene file's own; 0 for glTF)
   int camera_index = 0;
   scenes::CameraFlags camera_flags;
   std::uint64_t light_count = 0;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <set>
@@ -15,11 +16,14 @@
 
 #include "app/scene_loading.h"
 #include "app/viewer/display_image.h"
+#include "app/viewer/live_stats.h"
 #include "lev/methods.h"
 #include "renderer/display_transform.h"
 #include "renderer/pixel_error.h"
 #include "renderer/render.h"
+#include "scenes/scene_file.h"
 #include "tests/support/setting_values.h"
+#include "tests/support/temp_dir.h"
 
 namespace {
 using namespace app::viewer;
@@ -441,6 +445,30 @@ TEST(RenderWorker, ASceneThatCannotBeLoadedKeepsTheSceneOnScreen) {
   ASSERT_TRUE(ui.run_until([&] { return ui.settled(next); }));
   EXPECT_EQ(ui.status.passes_done, 3);
   EXPECT_EQ(ui.status.load_error_serial, 1u);
+}
+
+// A snapshot's stats name the level the scene file states, as `levrt render --stats` does (an
+// export of maze level 2 says 2; a glTF 0), not the level setting, which a file does not read: it
+// said 3 (the default) for every file.
+TEST(RenderWorker, ASnapshotStatesTheSceneFilesOwnLevel) {
+  app::Settings model = small_settings();
+  model.scene.name = "maze";
+  model.scene.level = 1;
+  const levrt_test::TempDir dir("levrt_worker_level_");
+  const std::string file = (dir.path() / "maze1.json").string();
+  {
+    std::ofstream out(file);
+    out << scenes::scene_file_json(app::describe_scene(model.scene));
+  }
+  Ui ui;
+  app::Settings s = small_settings();
+  s.scene.name = file;
+  s.scene.level = 3;
+  const std::uint64_t serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] { return ui.settled(serial); }));
+  ASSERT_EQ(ui.status.scene, file) << ui.status.error;
+  const app::RenderStats stats = snapshot_stats(LiveStats{}, ui.status, s, renderer::Camera{});
+  EXPECT_EQ(stats.level, 1);
 }
 
 TEST(RenderWorker, ShutsDownPromptlyMidRender) {
