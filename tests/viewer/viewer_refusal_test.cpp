@@ -309,6 +309,32 @@ TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
   EXPECT_EQ(stats["spp"], 3);
 }
 
+// Snapshot, then view again from its camera (--camera-from its stats) and snapshot the same
+// settings after a scene round trip, which drops the command line's camera: the second snapshot
+// replaced the stats it had read. It is written beside them now (_2).
+TEST_F(ViewerWindow, ASecondSnapshotOfTheSameSettingsReplacesNothing) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::vector<std::string> size = {"--lights", "64", "--width", "32",
+                                         "--height", "24", "--spp",   "1"};
+  std::vector<std::string> first = size;
+  first.insert(first.end(), {"--frames", "2", "--set", "snapshot=" + path("snap") + "@0"});
+  ASSERT_EQ(run_viewer(first).exit_code, 0);
+  const fs::path camera = dir_ / "snap" / "view_building_64_lev_0.01_stats.json";
+  const std::string bytes = read_file_bytes(camera);
+  ASSERT_FALSE(bytes.empty());
+  std::vector<std::string> again = size;
+  again.insert(again.end(), {"--camera-from", camera.string(), "--frames", "6", "--set",
+                             "scene=maze@1", "--set", "scene=building@2", "--set", "await=idle@3",
+                             "--set", "snapshot=" + path("snap") + "@4"});
+  const CommandRun r = run_viewer(again);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_file_bytes(camera), bytes);
+  const nlohmann::json second = read_json(dir_ / "snap" / "view_building_64_lev_0.01_2_stats.json");
+  ASSERT_TRUE(second.is_object()) << r.output;
+  EXPECT_EQ(second["lights"], 64);
+}
+
 // As root a rename would replace the machine's /dev/full; written in place it reports ENOSPC
 // and the viewer exits 1.
 TEST_F(ViewerWindow, AFullDeviceAsTheControlsFileIsWrittenInPlaceAndExitsOne) {
