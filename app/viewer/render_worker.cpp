@@ -329,8 +329,11 @@ struct Worker {
     const renderer::Camera camera =
         kept_old_scene && view ? *view : request.camera.value_or(preset);
     const bool view_changed = !view || !same_camera(camera, *view) || restart >= Restart::view;
-    // The missed-light estimate (on while its view is shown) costs shadow rays of its own.
-    const bool main_changed = !main || view_changed || restart >= Restart::render;
+    // The missed-light estimate (on while its view is shown) costs shadow rays of its own. Fewer
+    // passes than the render has done start it again, so the image is that of the passes asked
+    // for (`levrt render --spp N`'s), not of the passes it happened to have.
+    const bool fewer_passes = main && passes_done() > s.image.spp;
+    const bool main_changed = !main || view_changed || restart >= Restart::render || fewer_passes;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
