@@ -370,6 +370,7 @@ struct Worker {
         st.tile_count = tiles;
         st.method = s.method.method;
         st.tolerance = s.method.tolerance;
+        st.method_choice = s.method;
         st.missed_draws = rs.missed_draws;
         st.setup_seconds = setup_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);

@@ -79,6 +79,12 @@ std::optional<double> parse_number(const std::string& text, double lo, double hi
   return v;
 }
 
+std::string setting_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 // The latest frame a change may name (about 19 days of frames at 60 per second).
 constexpr long kMaxScriptFrame = 100000000;
 
@@ -357,9 +363,13 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
                  static_cast<unsigned long long>(state.trade.reference_generation),
                  state.status.reference_passes_done);
     for (const TradePoint& p : state.trade.points) {
+      const lev::MethodInfo& info = lev::method_info(p.method);
+      std::string more;
+      if (info.uses_relative_error) more += " relative error " + setting_number(p.relative_error);
+      if (info.stochastic) more += " lights per point " + std::to_string(p.lights_per_point);
       std::fprintf(state.notes,
-                   "levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
-                   lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
+                   "levrt view: trade point %s tolerance %g%s: error %.6g%% over %d passes\n",
+                   info.name, p.tolerance, more.c_str(), p.error_avg_pct, p.passes);
     }
     return ScriptAction::none;
   }
