@@ -13,6 +13,17 @@ void mark_changed(ViewerState& state, const std::string& label) {
   if (!label.empty()) state.change_label = label;
 }
 
+void apply_display_defaults(ViewerState& state) {
+  Settings& s = state.settings;
+  const DisplaySettings defaults{};
+  if (!state.exposure_chosen) {
+    s.display.exposure_ev = defaults.exposure_ev;
+    s.display.exposure_auto = defaults.exposure_auto;
+  }
+  if (!state.display_chosen) s.display.curve = defaults.curve;
+  apply_scene_display_defaults(s, state.exposure_chosen, state.display_chosen);
+}
+
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label) {
   Settings& s = state.settings;
   if (s.display.exposure_ev != before.display.exposure_ev ||
@@ -26,15 +37,7 @@ void settings_changed(ViewerState& state, const Settings& before, const std::str
     // file's cameras are its own (an index past them would refuse the file).
     s.scene.camera_flags = scenes::CameraFlags{};
     if (s.scene.camera == before.scene.camera) s.scene.camera = 0;
-    // The new scene's display defaults for what the user did not choose.
-    if (before.scene.name == state.status.scene) state.display_before_scene_change = before.display;
-    const DisplaySettings defaults{};
-    if (!state.exposure_chosen) {
-      s.display.exposure_ev = defaults.exposure_ev;
-      s.display.exposure_auto = defaults.exposure_auto;
-    }
-    if (!state.display_chosen) s.display.curve = defaults.curve;
-    apply_scene_display_defaults(s, state.exposure_chosen, state.display_chosen);
+    apply_display_defaults(state);
   }
   const Restart restart = restart_needed(before, s);
   const bool new_scene = restart == Restart::scene;

@@ -98,14 +98,18 @@ struct ViewerState {
   // Whether the user chose the exposure or the display curve (a flag, the panel, a script): a
   // scene opened later keeps a choice, and gets its own default for the other (glTF files auto
   // and neutral, the rest EV 0 and linear: apply_scene_display_defaults, as `levrt render`
-  // gives them). A scene that cannot be loaded gives the display before it back.
+  // gives them): apply_display_defaults. A scene that cannot be loaded gives them back.
   bool exposure_chosen = false;
   bool display_chosen = false;
-  std::optional<DisplaySettings> display_before_scene_change;
 };
 
 // Marks the request dirty; `label` names the change in the latency report.
 void mark_changed(ViewerState& state, const std::string& label);
+
+// The display of the scene the settings name for what the user did not choose (exposure_chosen,
+// display_chosen): glTF files auto and neutral, the rest EV 0 and linear, as `levrt render` gives
+// them when --exposure and --display are not given.
+void apply_display_defaults(ViewerState& state);
 
 // Call after editing state.settings: a new scene gets its default level, a new scene or level
 // its preset camera, a typed width or height selects the typed resolution, and a new view drops

@@ -147,6 +147,20 @@ TEST(SceneOpening, AnOpenedSceneGetsItsDisplayDefaultsButTheUsersChoice) {
   EXPECT_FALSE(state.settings.display.exposure_auto);
   EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
 
+  // A file opened before the first scene is shown (a script's first frames), then failing.
+  ViewerState early;
+  ASSERT_TRUE(open_scene_file(early, "/scenes/broken.glb"));
+  EXPECT_TRUE(early.settings.display.exposure_auto);
+  early.status.scene = "building";
+  early.status.scene_serial = 1;
+  early.status.load_error = "/scenes/broken.glb: cannot read the scene file (no such file)";
+  early.status.load_error_scene = "/scenes/broken.glb";
+  early.status.load_error_serial = 1;
+  follow_scene_loads(early);
+  EXPECT_EQ(early.settings.scene.name, "building");
+  EXPECT_FALSE(early.settings.display.exposure_auto);
+  EXPECT_EQ(early.settings.display.curve, renderer::DisplayCurve::linear);
+
   // An exposure given on the command line (or typed) is kept for every scene.
   ViewerState given;
   given.exposure_chosen = true;
