@@ -250,9 +250,11 @@ void check_script(const std::vector<ScriptedChange>& changes, const Settings& in
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return changes[a].frame < changes[b].frame;
   });
-  // What a render refuses (an image over the memory budget, one missed-light draw); a fit
+  // What a render refuses (a level the model lacks, an image over the memory budget, one
+  // missed-light draw); a fit
   // resolution's size follows the window, so only a typed one is checked.
   const auto check_renders = [](const Settings& s) {
+    check_scene_level(s.scene);  // a level the model lacks, as --level refuses it
     Settings probe = s;
     if (fit_divisor(s.resolution) != 0) probe.image.width = probe.image.height = 1;
     render_settings_from(probe);

@@ -147,11 +147,12 @@ TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
 // into the path field): the good one loads and renders; the bad one keeps the good scene on
 // screen, the session goes on (exit 0), and its message is logged whole: the same line
 
-// What a script would only fail at while it runs (a light count the scene lacks, one missed-light
-// draw, a typed size over the memory budget), would wait for forever (an inspected pixel outside
-// the image) or would drop without a word (a change past the last frame) is refused before the
-// window opens: one line naming the change, exit 2, nothing written. Before: the screenshot of
-// frame 1 was written and the run ended with exit 2, exit 1 or exit 0 without the late screenshot.
+// What a script would only fail at while it runs (a light count or level the scene lacks, one
+// missed-light draw, a typed size over the memory budget), would wait for forever (an inspected
+// pixel outside the image) or would drop without a word (a change past the last frame) is refused
+// before the window opens: one line naming the change, exit 2, nothing written. Before: the
+// screenshot of frame 1 was written and the run ended with exit 2, exit 1 or exit 0 without the
+// late screenshot.
 // A bad line of a --script file is named by its number.
 TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIsWritten) {
   if (!have_xvfb())
@@ -166,6 +167,8 @@ TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIs
       {{"--set", "width=16384@2", "--set", "height=16384@3"}, "got 'height=16384@3'"},
       {{"--script", path("script.txt")}, "got 'lights=65@2'"},
       {{"--set", "inspect=100,10@2"}, "inside the 32x24 image"},
+      // A level the scene lacks, as a light count: it was logged as "cannot open hall" (exit 0).
+      {{"--set", "scene=hall@1", "--set", "level=10@2"}, "hall has levels 3..8, got '10'"},
   };
   for (const auto& [change, message] : cases) {
     std::vector<std::string> args = {"--lights", "64",
