@@ -62,6 +62,9 @@ struct ViewerState {
   int image_area_height = 0;
   bool fit_pending = false;
   std::string snapshot_folder = "out";
+  // Save snapshot was pressed: the snapshot is taken once the image holds whole passes
+  // (take_requested_snapshot), so that it is the image `levrt render --spp N` writes.
+  bool snapshot_requested = false;
   // The outputs' rule (app/output_files.h) for snapshots: the files the viewer reads besides the
   // scene the settings name (the script), and its other outputs (screenshots, controls).
   std::vector<std::string> other_inputs;

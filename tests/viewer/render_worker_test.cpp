@@ -17,6 +17,7 @@
 #include "app/scene_loading.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/live_stats.h"
+#include "app/viewer/snapshot_panel.h"
 #include "lev/methods.h"
 #include "renderer/display_transform.h"
 #include "renderer/pixel_error.h"
@@ -497,6 +498,52 @@ TEST(RenderWorker, ASnapshotStatesTheSceneFilesOwnLevel) {
   ASSERT_EQ(ui.status.scene, file) << ui.status.error;
   const app::RenderStats stats = snapshot_stats(LiveStats{}, ui.status, s, renderer::Camera{});
   EXPECT_EQ(stats.level, 1);
+}
+
+// Save snapshot pressed mid-pass is taken when the pass in flight completes: the image it saves
+// is then a render of whole passes (`levrt render --spp N`'s, N its stats' spp). It was taken at
+// once: some tiles held a sample more than the rest (hall 4,096 at 320x240: stats saying 5
+// passes, 417,101 shading points where a 5-pass render has 384,589).
+TEST(RenderWorker, ASnapshotAskedForMidPassHoldsWholePasses) {
+  Ui ui;
+  app::Settings s = small_settings();
+  s.scene.level = 5;
+  s.image.width = 160;
+  s.image.height = 120;
+  s.image.spp = 3;
+  const levrt_test::TempDir dir("levrt_worker_snapshot_");
+  ViewerState state;
+  state.settings = s;
+  state.snapshot_folder = dir.path().string();
+  SnapshotWriter writer;
+  std::vector<std::uint8_t> saved;
+  int saved_passes = 0;
+  bool asked_mid_pass = false;
+  const std::uint64_t serial = ui.worker.post(request_for(s));
+  ASSERT_TRUE(ui.run_until([&] {
+    state.status = ui.status;
+    state.image = ui.image;
+    const bool mid_pass = ui.status.generation == serial && ui.image.generation == serial &&
+                          ui.image.tiles_done_in_pass > 0 &&
+                          ui.image.tiles_done_in_pass < ui.status.tile_count;
+    if (mid_pass && !asked_mid_pass && saved.empty()) {
+      asked_mid_pass = true;
+      request_snapshot(state);
+    }
+    take_requested_snapshot(state, writer, Clock::now());
+    if (asked_mid_pass && !state.snapshot_requested && saved.empty()) {
+      saved = state.image.rgb;
+      saved_passes = state.status.passes_done;
+    }
+    return !saved.empty() && ui.settled(serial);
+  }));
+  ASSERT_TRUE(asked_mid_pass);
+  writer.wait();
+  EXPECT_FALSE(writer.failed()) << writer.message();
+  ASSERT_GE(saved_passes, 1);
+  app::Settings at = s;
+  at.image.spp = saved_passes;
+  EXPECT_EQ(saved, direct_render_rgb8(at)) << "saved at " << saved_passes << " passes";
 }
 
 TEST(RenderWorker, ShutsDownPromptlyMidRender) {
