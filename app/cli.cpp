@@ -350,6 +350,8 @@ int run_cli(int argc, char** argv) {
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
     const Settings settings = apply_scene_flags(view_flags, view_defaults);
+    view_options.exposure_given = view_flags.settings.options.at("exposure")->count() > 0;
+    view_options.display_given = view_flags.settings.options.at("display")->count() > 0;
     return run_view(settings, view_options);
   }
   if (viewer_display_available()) {

@@ -68,17 +68,22 @@ void apply_light_count_flag(scenes::SceneChoice& choice, const std::string& text
   apply_light_count_typed(choice, lights, text);
 }
 
-scenes::SceneDescription describe_scene(const scenes::SceneChoice& choice) {
-  if (is_scene_file(choice)) {
-    return scenes::load_scene_file(choice.name, {choice.camera});
-  }
+void check_scene_level(const scenes::SceneChoice& choice) {
+  if (is_scene_file(choice)) return;
   const scenes::SceneModel& model = model_for(choice);
   if (choice.level < model.min_level || choice.level > model.max_level) {
     throw UsageError("--level: " + std::string(model.name) + " has levels " +
                      std::to_string(model.min_level) + ".." + std::to_string(model.max_level) +
                      ", got '" + std::to_string(choice.level) + "'");
   }
-  return model.describe(choice.level);
+}
+
+scenes::SceneDescription describe_scene(const scenes::SceneChoice& choice) {
+  if (is_scene_file(choice)) {
+    return scenes::load_scene_file(choice.name, {choice.camera});
+  }
+  check_scene_level(choice);
+  return model_for(choice).describe(choice.level);
 }
 
 std::vector<std::string> settings_input_files(const scenes::SceneChoice& choice) {

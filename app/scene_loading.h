@@ -36,6 +36,10 @@ void apply_light_count_flag(scenes::SceneChoice& choice, const std::string& text
 // images) and --camera-from's stats file. No output may replace one of them.
 std::vector<std::string> settings_input_files(const scenes::SceneChoice& choice);
 
+// Throws UsageError ("--level: hall has levels 3..8, got '10'") for a model level the model lacks;
+// a scene file has no levels to check.
+void check_scene_level(const scenes::SceneChoice& choice);
+
 // The description --scene names: a model's level, or a scene file read and validated (throws
 // std::invalid_argument "FILE: /json/path: problem" for a bad file).
 scenes::SceneDescription describe_scene(const scenes::SceneChoice& choice);

@@ -105,6 +105,9 @@ void add_trade_point_when_ready(ViewerState& state, ErrorClock& clock, Clock::ti
   TradePoint p;
   p.method = st.method;
   p.tolerance = st.tolerance;
+  p.relative_error = st.method_choice.relative_error;
+  p.lights_per_point = st.method_choice.lights_per_point;
+  p.rt_fallback = st.method_choice.rt_fallback;
   p.seconds = st.first_pass_seconds;
   p.error_avg_pct = e.average_pct;
   p.error_max_pct = e.max_pct;

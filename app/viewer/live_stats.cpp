@@ -94,7 +94,7 @@ RenderStats snapshot_stats(const LiveStats& s, const WorkerStatus& status, const
                            const renderer::Camera& camera) {
   RenderStats r;
   r.scene = status.scene_name;
-  r.level = status.level;
+  r.level = status.scene_level;  // as render's stats: the scene's own (a file's, not the flag's)
   r.lights = status.light_count;
   r.method = lev::method_info(status.method).name;
   r.tolerance = status.tolerance;

@@ -250,6 +250,7 @@ struct Worker {
       st.loading_scene.clear();
       st.scene = s.scene.name;
       st.level = s.scene.level;
+      st.scene_level = loaded->scene.level;
       st.camera_index = s.scene.camera;
       st.camera_flags = s.scene.camera_flags;
       st.generation = 0;
@@ -328,8 +329,11 @@ struct Worker {
     const renderer::Camera camera =
         kept_old_scene && view ? *view : request.camera.value_or(preset);
     const bool view_changed = !view || !same_camera(camera, *view) || restart >= Restart::view;
-    // The missed-light estimate (on while its view is shown) costs shadow rays of its own.
-    const bool main_changed = !main || view_changed || restart >= Restart::render;
+    // The missed-light estimate (on while its view is shown) costs shadow rays of its own. Fewer
+    // passes than the render has done start it again, so the image is that of the passes asked
+    // for (`levrt render --spp N`'s), not of the passes it happened to have.
+    const bool fewer_passes = main && passes_done() > s.image.spp;
+    const bool main_changed = !main || view_changed || restart >= Restart::render || fewer_passes;
 
     // Nothing may render on the scene while its camera moves: the reference is dropped when its
     // view is gone and the main state destroyed first. A new method or tolerance changes nothing
@@ -366,6 +370,7 @@ struct Worker {
         st.tile_count = tiles;
         st.method = s.method.method;
         st.tolerance = s.method.tolerance;
+        st.method_choice = s.method;
         st.missed_draws = rs.missed_draws;
         st.setup_seconds = setup_seconds;
         st.hierarchy_bytes = lev::hierarchy_bytes(sc.lights);

@@ -63,7 +63,8 @@ struct WorkerStatus {
   std::uint64_t scene_serial = 0;  // bumps with every (re)load
   std::string scene;               // as the request named it (model name or file)
   std::string scene_name;          // as the scene calls itself
-  int level = 0;
+  int level = 0;                   // as the request named it (the settings' level)
+  int scene_level = 0;             // as the scene states it (a scene file's own; 0 for glTF)
   int camera_index = 0;
   scenes::CameraFlags camera_flags;
   std::uint64_t light_count = 0;
@@ -83,8 +84,9 @@ struct WorkerStatus {
   int tile_count = 0;
   lev::Method method = lev::Method::lev;
   double tolerance = 0.0;
-  int missed_draws = 0;        // the missed-light estimate's draws per point (0: off)
-  double setup_seconds = 0.0;  // making the render state: extent volumes and selector
+  lev::MethodChoice method_choice;  // the render's method settings (tolerance among them)
+  int missed_draws = 0;             // the missed-light estimate's draws per point (0: off)
+  double setup_seconds = 0.0;       // making the render state: extent volumes and selector
   std::size_t method_bytes = 0;
   // The probe that chose between the method and rt's loop (renderer/rt_fallback.h), if made.
   std::optional<renderer::RtFallbackProbe> rt_fallback;

@@ -61,6 +61,7 @@ void follow_scene_loads(ViewerState& state) {
       s.scene.level = st.level;
       s.scene.camera = st.camera_index;
       s.scene.camera_flags = st.camera_flags;
+      apply_display_defaults(state);
       state.camera = state.camera_before_scene_change;
       mark_changed(state, "");
     }

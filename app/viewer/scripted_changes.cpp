@@ -79,6 +79,12 @@ std::optional<double> parse_number(const std::string& text, double lo, double hi
   return v;
 }
 
+std::string setting_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 // The latest frame a change may name (about 19 days of frames at 60 per second).
 constexpr long kMaxScriptFrame = 100000000;
 
@@ -244,9 +250,11 @@ void check_script(const std::vector<ScriptedChange>& changes, const Settings& in
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return changes[a].frame < changes[b].frame;
   });
-  // What a render refuses (an image over the memory budget, one missed-light draw); a fit
+  // What a render refuses (a level the model lacks, an image over the memory budget, one
+  // missed-light draw); a fit
   // resolution's size follows the window, so only a typed one is checked.
   const auto check_renders = [](const Settings& s) {
+    check_scene_level(s.scene);  // a level the model lacks, as --level refuses it
     Settings probe = s;
     if (fit_divisor(s.resolution) != 0) probe.image.width = probe.image.height = 1;
     render_settings_from(probe);
@@ -357,9 +365,13 @@ ScriptAction apply_scripted_change(ViewerState& state, const ScriptedChange& c) 
                  static_cast<unsigned long long>(state.trade.reference_generation),
                  state.status.reference_passes_done);
     for (const TradePoint& p : state.trade.points) {
+      const lev::MethodInfo& info = lev::method_info(p.method);
+      std::string more;
+      if (info.uses_relative_error) more += " relative error " + setting_number(p.relative_error);
+      if (info.stochastic) more += " lights per point " + std::to_string(p.lights_per_point);
       std::fprintf(state.notes,
-                   "levrt view: trade point %s tolerance %g: error %.6g%% over %d passes\n",
-                   lev::method_info(p.method).name, p.tolerance, p.error_avg_pct, p.passes);
+                   "levrt view: trade point %s tolerance %g%s: error %.6g%% over %d passes\n",
+                   info.name, p.tolerance, more.c_str(), p.error_avg_pct, p.passes);
     }
     return ScriptAction::none;
   }

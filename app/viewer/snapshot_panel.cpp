@@ -69,19 +69,41 @@ SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_cloc
   return job;
 }
 
-void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer,
-                           std::chrono::steady_clock::time_point now) {
+bool image_holds_whole_passes(const ViewerState& state) {
+  const WorkerStatus& st = state.status;
+  const DisplayImage& image = state.image;
+  return st.generation != 0 && image.generation == st.generation && st.tile_count > 0 &&
+         image.tiles_done_in_pass == st.tile_count && image.pass + 1 == st.passes_done;
+}
+
+void request_snapshot(ViewerState& state) {
+  state.snapshot_requested = true;
+}
+
+void take_requested_snapshot(ViewerState& state, SnapshotWriter& writer,
+                             std::chrono::steady_clock::time_point now) {
+  if (!state.snapshot_requested || writer.busy() || !image_holds_whole_passes(state)) return;
+  state.snapshot_requested = false;
+  writer.start(make_snapshot_job(state, now));
+}
+
+void draw_snapshot_section(ViewerState& state, const SnapshotWriter& writer) {
   char folder[512];
   std::snprintf(folder, sizeof folder, "%s", state.snapshot_folder.c_str());
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
   if (ImGui::InputText("folder", folder, sizeof folder)) state.snapshot_folder = folder;
-  const bool ready = state.image.width > 0 && !writer.busy();
+  const bool ready = state.image.width > 0 && !writer.busy() && !state.snapshot_requested;
   if (!ready) ImGui::BeginDisabled();
-  if (ImGui::Button("Save snapshot")) writer.start(make_snapshot_job(state, now));
+  if (ImGui::Button("Save snapshot")) request_snapshot(state);
   if (!ready) ImGui::EndDisabled();
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("image, current heatmap, stats JSON and the EXR of the radiance");
-  if (writer.busy()) {
+    ImGui::SetTooltip(
+        "image, current heatmap, stats JSON and the EXR of the radiance, of whole passes (taken "
+        "when the pass in flight completes)");
+  if (state.snapshot_requested) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted("waiting for the pass in flight");
+  } else if (writer.busy()) {
     ImGui::SameLine();
     ImGui::ProgressBar(writer.progress(), ImVec2(-1.0f, 0.0f), "writing");
   } else if (!writer.message().empty()) {

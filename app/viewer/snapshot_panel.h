@@ -13,7 +13,18 @@ namespace app::viewer {
 // when the image itself is shown) and the stats.
 SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_clock::time_point now);
 
-void draw_snapshot_section(ViewerState& state, SnapshotWriter& writer,
-                           std::chrono::steady_clock::time_point now);
+// Whether the image holds whole passes of the render shown (every tile of its latest pass, and
+// the status counting that pass): a snapshot then is `levrt render --spp N`'s image and stats.
+// Mid-pass, some tiles hold one sample more than the rest (and before pass 1 is whole, the
+// previous render's colours show where no tile has arrived).
+bool image_holds_whole_passes(const ViewerState& state);
+
+// Save snapshot asks for one (state.snapshot_requested); once the image holds whole passes and
+// no snapshot is being written, its job starts. Call every frame.
+void request_snapshot(ViewerState& state);
+void take_requested_snapshot(ViewerState& state, SnapshotWriter& writer,
+                             std::chrono::steady_clock::time_point now);
+
+void draw_snapshot_section(ViewerState& state, const SnapshotWriter& writer);
 
 }  // namespace app::viewer

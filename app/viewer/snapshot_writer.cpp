@@ -69,11 +69,31 @@ void SnapshotWriter::run(const SnapshotJob& job) {
     // The panel's folder field, emptied: said so, not as filesystem_error's "Invalid argument []".
     if (job.folder.empty())
       throw std::invalid_argument("no folder given (the folder field is empty)");
-    const fs::path stem = fs::path(job.folder) / job.base;
-    const std::string image = stem.string() + ".png";
-    const std::string heatmap = stem.string() + "_" + job.heatmap_name + ".png";
-    const std::string stats = stem.string() + "_stats.json";
-    const std::string exr = stem.string() + ".exr";
+    // The panel names a snapshot, not the user: one whose name is taken (an earlier snapshot of
+    // the same method and tolerance, at another camera or relative error; any file) gets _2, _3,
+    // ... instead of replacing it. A pipe or character device under the name is no file to keep:
+    // it is written in place, as the outputs' rule says (a reader streaming the snapshot).
+    const std::string first_stem = (fs::path(job.folder) / job.base).string();
+    std::string stem = first_stem;
+    const auto files_of = [&job](const std::string& s) {
+      return std::vector<std::string>{s + ".png", s + "_" + job.heatmap_name + ".png",
+                                      s + "_stats.json", s + ".exr"};
+    };
+    const auto taken = [&](const std::string& s) {
+      for (const std::string& file : files_of(s)) {
+        std::error_code status_error;
+        if (!fs::exists(fs::symlink_status(file, status_error))) continue;
+        const fs::file_status target = fs::status(file, status_error);
+        if (!fs::is_fifo(target) && !fs::is_character_file(target)) return true;
+      }
+      return false;
+    };
+    for (int n = 2; taken(stem); ++n) stem = first_stem + "_" + std::to_string(n);
+    const std::vector<std::string> names = files_of(stem);
+    const std::string& image = names[0];
+    const std::string& heatmap = names[1];
+    const std::string& stats = names[2];
+    const std::string& exr = names[3];
     std::vector<OutputPath> outputs = job.other_outputs;
     outputs.push_back({"snapshot", image, ".png", "PNG"});
     outputs.push_back({"snapshot", heatmap, ".png", "PNG"});

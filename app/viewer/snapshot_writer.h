@@ -3,7 +3,8 @@
 // a thread of its own (PNG encoding of a large image takes a while) with a progress fraction the
 // panel shows. The job carries copies of the pixels, so the UI keeps drawing meanwhile. The four
 // files obey the outputs' rule (app/output_files.h): checked against the viewer's inputs and its
-// other outputs, then written all or none.
+// other outputs, then written all or none. A snapshot never replaces a file: a name taken
+// already gets _2, _3, ... (SnapshotWriter::message names the files written).
 #pragma once
 
 #include <atomic>

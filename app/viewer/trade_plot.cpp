@@ -18,10 +18,25 @@ void follow_reference(TradePlot& plot, std::uint64_t reference_generation) {
   plot.points.clear();
 }
 
+namespace {
+
+lev::MethodChoice used_choice(const TradePoint& p) {
+  lev::MethodChoice c;
+  c.method = p.method;
+  c.tolerance = p.tolerance;
+  c.relative_error = p.relative_error;
+  c.lights_per_point = p.lights_per_point;
+  c.rt_fallback = p.rt_fallback;
+  return lev::used_settings(c);
+}
+
+}  // namespace
+
 void add_trade_point(TradePlot& plot, const TradePoint& point) {
-  const auto same = [&](const TradePoint& p) {
-    return p.method == point.method && p.tolerance == point.tolerance;
-  };
+  // Two relative errors of lev_cut (or lights per point of lev_mc) are two points: keyed by the
+  // tolerance alone, each replaced the one before.
+  const lev::MethodChoice key = used_choice(point);
+  const auto same = [&](const TradePoint& p) { return used_choice(p) == key; };
   plot.points.erase(std::remove_if(plot.points.begin(), plot.points.end(), same),
                     plot.points.end());
   plot.points.push_back(point);
@@ -110,10 +125,16 @@ std::string trade_label(const TradePoint& point, double reference_pass0_seconds)
   char text[64];
   if (method.uses_tolerance) {
     std::snprintf(text, sizeof text, "%g", point.tolerance);
+  } else if (method.uses_relative_error) {
+    std::snprintf(text, sizeof text, "%g", point.relative_error);
   } else {
     std::snprintf(text, sizeof text, "%s", method.name);
   }
   std::string label = text;
+  if (method.stochastic && point.lights_per_point != 1) {
+    std::snprintf(text, sizeof text, " k=%d", point.lights_per_point);
+    label += text;
+  }
   if (reference_pass0_seconds > 0.0 && point.seconds > 0.0) {
     std::snprintf(text, sizeof text, ", %.3gx", reference_pass0_seconds / point.seconds);
     label += text;

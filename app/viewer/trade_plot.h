@@ -1,5 +1,6 @@
-// The speed/accuracy trade of one view: a (time, error) point for every method and tolerance the
-// user has tried on the rt reference of this view. Time is pass 0's render time and error the
+// The speed/accuracy trade of one view: a (time, error) point for every method and setting of it
+// (tolerance, relative error, lights per point, rt fallback) the user has tried on the rt
+// reference of this view. Time is pass 0's render time and error the
 // average pixel error against the reference over the same passes, updated as both render more
 // (the point records how many). Points measured while the reference was still rendering shared
 // its cores and are drawn hollow.
@@ -22,6 +23,10 @@ struct TradePoint {
   bool shared_cpu = false;
   int passes = 0;                // the error's: the means over this many passes of both
   std::uint64_t generation = 0;  // the render it was measured on
+  // The method's other settings (those it does not read are ignored, lev::used_settings).
+  double relative_error = lev::kDefaultRelativeError;
+  int lights_per_point = 1;
+  bool rt_fallback = true;
 };
 
 struct TradePlot {
@@ -41,14 +46,15 @@ TradeAxes trade_axes(const std::vector<TradePoint>& points);
 // A point's position in [0, 1] on each axis (0: left, bottom).
 double trade_x(const TradeAxes& axes, double seconds);
 double trade_y(const TradeAxes& axes, double error_pct);
-// The label drawn beside a point: its tolerance (its method's when it ignores the tolerance) and
-// its speedup over rt's pass 0 when that is known ("0.01, 12x").
+// The label drawn beside a point: its tolerance, else its relative error, else its method's name
+// (with the lights per point of a sampling method above 1: "0.01 k=4"), and its speedup over rt's
+// pass 0 when that is known ("0.01, 12x").
 std::string trade_label(const TradePoint& point, double reference_pass0_seconds);
 
 // Forgets the points when the reference (the view) changed.
 void follow_reference(TradePlot& plot, std::uint64_t reference_generation);
 
-// Adds a point, replacing an earlier one with the same method and tolerance.
+// Adds a point, replacing an earlier one with the same method and settings that it reads.
 void add_trade_point(TradePlot& plot, const TradePoint& point);
 
 // The passes of the point measured on `generation`; 0 when there is none.

@@ -257,7 +257,7 @@ void draw_panel(ViewerState& state, SnapshotWriter& snapshots, Clock::time_point
   if (ImGui::CollapsingHeader("rt reference", ImGuiTreeNodeFlags_DefaultOpen))
     draw_reference_section(state, now);
   if (ImGui::CollapsingHeader("Snapshot", ImGuiTreeNodeFlags_DefaultOpen)) {
-    draw_snapshot_section(state, snapshots, now);
+    draw_snapshot_section(state, snapshots);
   }
   if (!state.messages.empty() &&
       ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen))
@@ -356,6 +356,8 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   state.mouse_input = flags.frames == 0 || flags.real_input;
   state.record_controls = !flags.controls.empty();
   state.print_messages = flags.frames > 0;
+  state.exposure_chosen = flags.exposure_given;
+  state.display_chosen = flags.display_given;
   state.other_inputs = inputs;
   state.other_outputs = outputs;
   const bool output_on_stdout =
@@ -451,6 +453,7 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
       }
       update_error(state, error_clock, now, false);
       add_trade_point_when_ready(state, error_clock, now);
+      take_requested_snapshot(state, snapshots, now);  // Save snapshot, at a whole pass
       if (pending_snapshot && render_settled(state, last_posted)) {
         state.snapshot_folder = *pending_snapshot;
         pending_snapshot.reset();

@@ -19,6 +19,10 @@ struct ViewerFlags {
   std::string window = "1280x800";   // window size, WIDTHxHEIGHT
   bool real_input = false;           // scripted: the real mouse drives the picture too
   std::string controls;              // write the named controls' rectangles and the settings here
+  // Whether the command line gave --exposure or --display: a scene opened later gets its own
+  // defaults (app/settings.h, apply_scene_display_defaults) for those it did not give.
+  bool exposure_given = false;
+  bool display_given = false;
 };
 
 // There is no display to open a window on (exit code 2, like any usage error).

@@ -13,13 +13,31 @@ void mark_changed(ViewerState& state, const std::string& label) {
   if (!label.empty()) state.change_label = label;
 }
 
+void apply_display_defaults(ViewerState& state) {
+  Settings& s = state.settings;
+  const DisplaySettings defaults{};
+  if (!state.exposure_chosen) {
+    s.display.exposure_ev = defaults.exposure_ev;
+    s.display.exposure_auto = defaults.exposure_auto;
+  }
+  if (!state.display_chosen) s.display.curve = defaults.curve;
+  apply_scene_display_defaults(s, state.exposure_chosen, state.display_chosen);
+}
+
 void settings_changed(ViewerState& state, const Settings& before, const std::string& label) {
   Settings& s = state.settings;
+  if (s.display.exposure_ev != before.display.exposure_ev ||
+      s.display.exposure_auto != before.display.exposure_auto)
+    state.exposure_chosen = true;
+  if (s.display.curve != before.display.curve) state.display_chosen = true;
   if (s.scene.name != before.scene.name) {
     if (const scenes::SceneModel* model = scenes::find_scene_model(s.scene.name))
       s.scene.level = model->default_level;
-    s.scene.camera_flags =
-        scenes::CameraFlags{};  // the command line's camera was for the first scene
+    // The command line's camera (flags and glTF camera index) was for the first scene; another
+    // file's cameras are its own (an index past them would refuse the file).
+    s.scene.camera_flags = scenes::CameraFlags{};
+    if (s.scene.camera == before.scene.camera) s.scene.camera = 0;
+    apply_display_defaults(state);
   }
   const Restart restart = restart_needed(before, s);
   const bool new_scene = restart == Restart::scene;

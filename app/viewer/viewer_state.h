@@ -62,6 +62,9 @@ struct ViewerState {
   int image_area_height = 0;
   bool fit_pending = false;
   std::string snapshot_folder = "out";
+  // Save snapshot was pressed: the snapshot is taken once the image holds whole passes
+  // (take_requested_snapshot), so that it is the image `levrt render --spp N` writes.
+  bool snapshot_requested = false;
   // The outputs' rule (app/output_files.h) for snapshots: the files the viewer reads besides the
   // scene the settings name (the script), and its other outputs (screenshots, controls).
   std::vector<std::string> other_inputs;
@@ -95,10 +98,21 @@ struct ViewerState {
   // The camera the user had before asking for another scene: a scene that cannot be loaded
   // gives it back, with the old scene.
   std::optional<renderer::Camera> camera_before_scene_change;
+  // Whether the user chose the exposure or the display curve (a flag, the panel, a script): a
+  // scene opened later keeps a choice, and gets its own default for the other (glTF files auto
+  // and neutral, the rest EV 0 and linear: apply_scene_display_defaults, as `levrt render`
+  // gives them): apply_display_defaults. A scene that cannot be loaded gives them back.
+  bool exposure_chosen = false;
+  bool display_chosen = false;
 };
 
 // Marks the request dirty; `label` names the change in the latency report.
 void mark_changed(ViewerState& state, const std::string& label);
+
+// The display of the scene the settings name for what the user did not choose (exposure_chosen,
+// display_chosen): glTF files auto and neutral, the rest EV 0 and linear, as `levrt render` gives
+// them when --exposure and --display are not given.
+void apply_display_defaults(ViewerState& state);
 
 // Call after editing state.settings: a new scene gets its default level, a new scene or level
 // its preset camera, a typed width or height selects the typed resolution, and a new view drops

@@ -112,4 +112,85 @@ TEST(SceneOpening, ADropOpensTheFirstSceneFileAndIgnoresTheRest) {
   EXPECT_THROW(parse_scripted_change("drop=@3"), app::UsageError);
 }
 
+// A glTF opened in the running viewer is shown as `levrt render --scene FILE.gltf` shows it: auto
+// exposure and the neutral curve, unless the user chose them; a built-in scene after it goes
+// back to EV 0 and linear; a failed open gives the display back. It opened at linear EV 0.
+TEST(SceneOpening, AnOpenedSceneGetsItsDisplayDefaultsButTheUsersChoice) {
+  ViewerState state;
+  loaded(state, "building", 1);
+  ASSERT_TRUE(open_scene_file(state, "/scenes/lamp.gltf"));
+  EXPECT_TRUE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::neutral);
+  loaded(state, "/scenes/lamp.gltf", 2);
+  state.settings.display.exposure_ev = -4.0;  // auto's choice, as the frame loop copies it
+
+  app::Settings before = state.settings;
+  state.settings.scene.name = "maze";
+  settings_changed(state, before, "scene=maze");
+  EXPECT_FALSE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.exposure_ev, 0.0);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::linear);
+  loaded(state, "maze", 3);
+
+  // A curve chosen in the panel stays; the exposure still follows the scene.
+  before = state.settings;
+  state.settings.display.curve = renderer::DisplayCurve::srgb;
+  settings_changed(state, before, "display=srgb");
+  ASSERT_TRUE(open_scene_file(state, "/scenes/broken.gltf"));
+  EXPECT_TRUE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
+  state.status.load_error = "/scenes/broken.gltf: cannot read the scene file (no such file)";
+  state.status.load_error_scene = "/scenes/broken.gltf";
+  state.status.load_error_serial = 1;
+  follow_scene_loads(state);
+  EXPECT_EQ(state.settings.scene.name, "maze");
+  EXPECT_FALSE(state.settings.display.exposure_auto);
+  EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
+
+  // A file opened before the first scene is shown (a script's first frames), then failing.
+  ViewerState early;
+  ASSERT_TRUE(open_scene_file(early, "/scenes/broken.glb"));
+  EXPECT_TRUE(early.settings.display.exposure_auto);
+  early.status.scene = "building";
+  early.status.scene_serial = 1;
+  early.status.load_error = "/scenes/broken.glb: cannot read the scene file (no such file)";
+  early.status.load_error_scene = "/scenes/broken.glb";
+  early.status.load_error_serial = 1;
+  follow_scene_loads(early);
+  EXPECT_EQ(early.settings.scene.name, "building");
+  EXPECT_FALSE(early.settings.display.exposure_auto);
+  EXPECT_EQ(early.settings.display.curve, renderer::DisplayCurve::linear);
+
+  // An exposure given on the command line (or typed) is kept for every scene.
+  ViewerState given;
+  given.exposure_chosen = true;
+  given.settings.display.exposure_ev = 2.0;
+  loaded(given, "building", 1);
+  ASSERT_TRUE(open_scene_file(given, "/scenes/lamp.glb"));
+  EXPECT_FALSE(given.settings.display.exposure_auto);
+  EXPECT_EQ(given.settings.display.exposure_ev, 2.0);
+  EXPECT_EQ(given.settings.display.curve, renderer::DisplayCurve::neutral);
+}
+
+// The camera index picked on one glTF (its fourth camera) is not carried to the next file, which
+// may have fewer: the open failed with "camera: 3 (the file has 0 cameras in its scene)". A
+// failed open gives the index back.
+TEST(SceneOpening, AnotherFileOpensAtItsFirstCamera) {
+  ViewerState state;
+  state.settings.scene.name = "/scenes/four_cameras.gltf";
+  loaded(state, "/scenes/four_cameras.gltf", 1);
+  app::Settings before = state.settings;
+  state.settings.scene.camera = 3;
+  settings_changed(state, before, "camera=3");
+  state.status.camera_index = 3;
+  loaded(state, "/scenes/four_cameras.gltf", 2);
+  ASSERT_TRUE(open_scene_file(state, "/scenes/no_camera.glb"));
+  EXPECT_EQ(state.settings.scene.camera, 0);
+  state.status.load_error = "/scenes/no_camera.glb: cannot read the scene file (no such file)";
+  state.status.load_error_scene = "/scenes/no_camera.glb";
+  state.status.load_error_serial = 1;
+  follow_scene_loads(state);
+  EXPECT_EQ(state.settings.scene.camera, 3);
+}
+
 }  // namespace

@@ -731,6 +731,37 @@ TEST(TradePlot, PointsBelongToOneReferenceAndReplaceTheSameSetting) {
   EXPECT_TRUE(plot.points.empty());
 }
 
+// lev_cut at two relative errors (lev_mc at two lights per point) are two points, labelled with
+// the setting that tells them apart; one changed only in a setting the method ignores (lev_cut's
+// tolerance) replaces the point. Keyed by method and tolerance, each replaced the one before.
+TEST(TradePlot, EverySettingAMethodReadsMakesAPointOfItsOwn) {
+  TradePlot plot;
+  follow_reference(plot, 4);
+  TradePoint cut{lev::Method::lev_cut, 0.01, 0.5, 0.2, 3.0, false, 1, 10};
+  cut.relative_error = 0.02;
+  add_trade_point(plot, cut);
+  cut.relative_error = 0.005;
+  cut.generation = 11;
+  add_trade_point(plot, cut);
+  ASSERT_EQ(plot.points.size(), 2u);
+  EXPECT_EQ(trade_label(plot.points[0], 0.0), "0.02");
+  EXPECT_EQ(trade_label(plot.points[1], 0.0), "0.005");
+  cut.tolerance = 0.1;  // lev_cut does not read it
+  cut.generation = 12;
+  add_trade_point(plot, cut);
+  EXPECT_EQ(plot.points.size(), 2u);
+  EXPECT_EQ(trade_point_passes(plot, 12), 1);
+
+  TradePoint mc{lev::Method::lev_mc, 0.01, 0.5, 0.2, 3.0, false, 1, 20};
+  add_trade_point(plot, mc);
+  mc.lights_per_point = 4;
+  mc.generation = 21;
+  add_trade_point(plot, mc);
+  ASSERT_EQ(plot.points.size(), 4u);
+  EXPECT_EQ(trade_label(plot.points[3], 0.0), "0.01 k=4");
+  EXPECT_EQ(trade_label(plot.points[2], 0.0), "0.01");
+}
+
 TEST(FrameLog, ReportsFrameTimesAndFirstTileLatency) {
   FrameLog log;
   for (int i = 0; i < 10; ++i) record_frame(log, 16.0 + i, 5.0, i % 2 == 0);

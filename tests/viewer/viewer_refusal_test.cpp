@@ -147,11 +147,12 @@ TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
 // into the path field): the good one loads and renders; the bad one keeps the good scene on
 // screen, the session goes on (exit 0), and its message is logged whole: the same line
 
-// What a script would only fail at while it runs (a light count the scene lacks, one missed-light
-// draw, a typed size over the memory budget), would wait for forever (an inspected pixel outside
-// the image) or would drop without a word (a change past the last frame) is refused before the
-// window opens: one line naming the change, exit 2, nothing written. Before: the screenshot of
-// frame 1 was written and the run ended with exit 2, exit 1 or exit 0 without the late screenshot.
+// What a script would only fail at while it runs (a light count or level the scene lacks, one
+// missed-light draw, a typed size over the memory budget), would wait for forever (an inspected
+// pixel outside the image) or would drop without a word (a change past the last frame) is refused
+// before the window opens: one line naming the change, exit 2, nothing written. Before: the
+// screenshot of frame 1 was written and the run ended with exit 2, exit 1 or exit 0 without the
+// late screenshot.
 // A bad line of a --script file is named by its number.
 TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIsWritten) {
   if (!have_xvfb())
@@ -166,6 +167,8 @@ TEST_F(ViewerWindow, WhatAScriptWouldFailAtWhileRunningIsRefusedBeforeAnythingIs
       {{"--set", "width=16384@2", "--set", "height=16384@3"}, "got 'height=16384@3'"},
       {{"--script", path("script.txt")}, "got 'lights=65@2'"},
       {{"--set", "inspect=100,10@2"}, "inside the 32x24 image"},
+      // A level the scene lacks, as a light count: it was logged as "cannot open hall" (exit 0).
+      {{"--set", "scene=hall@1", "--set", "level=10@2"}, "hall has levels 3..8, got '10'"},
   };
   for (const auto& [change, message] : cases) {
     std::vector<std::string> args = {"--lights", "64",
@@ -307,6 +310,32 @@ TEST_F(ViewerWindow, ASnapshotRequestedBeforeTheRenderIsCompleteWaitsForIt) {
   const nlohmann::json stats = read_json(dir_ / "snap" / "view_building_256_lev_0.01_stats.json");
   ASSERT_TRUE(stats.is_object()) << r.output;
   EXPECT_EQ(stats["spp"], 3);
+}
+
+// Snapshot, then view again from its camera (--camera-from its stats) and snapshot the same
+// settings after a scene round trip, which drops the command line's camera: the second snapshot
+// replaced the stats it had read. It is written beside them now (_2).
+TEST_F(ViewerWindow, ASecondSnapshotOfTheSameSettingsReplacesNothing) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const std::vector<std::string> size = {"--lights", "64", "--width", "32",
+                                         "--height", "24", "--spp",   "1"};
+  std::vector<std::string> first = size;
+  first.insert(first.end(), {"--frames", "2", "--set", "snapshot=" + path("snap") + "@0"});
+  ASSERT_EQ(run_viewer(first).exit_code, 0);
+  const fs::path camera = dir_ / "snap" / "view_building_64_lev_0.01_stats.json";
+  const std::string bytes = read_file_bytes(camera);
+  ASSERT_FALSE(bytes.empty());
+  std::vector<std::string> again = size;
+  again.insert(again.end(), {"--camera-from", camera.string(), "--frames", "6", "--set",
+                             "scene=maze@1", "--set", "scene=building@2", "--set", "await=idle@3",
+                             "--set", "snapshot=" + path("snap") + "@4"});
+  const CommandRun r = run_viewer(again);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_file_bytes(camera), bytes);
+  const nlohmann::json second = read_json(dir_ / "snap" / "view_building_64_lev_0.01_2_stats.json");
+  ASSERT_TRUE(second.is_object()) << r.output;
+  EXPECT_EQ(second["lights"], 64);
 }
 
 // As root a rename would replace the machine's /dev/full; written in place it reports ENOSPC
