@@ -546,26 +546,16 @@ TEST(LevCut, AnExactClustersRayGoesToALightDrawnInProportionToItsRadiance) {
 
 // Faces every light with a unit response, and a wall hides every light on the near side of the
 // plane x = wall_x; counts the shadow rays it is asked for.
-class BehindAWall final : public lev::ShadingPoint {
+class BehindAWall final : public UnitResponsePoint {
  public:
-  BehindAWall(const glm::vec3& x, float wall_x) : x_(x), wall_x_(wall_x) {}
-  glm::vec3 position() const override { return x_; }
-  glm::vec3 unshadowed_radiance(const lev::Light& light) const override {
-    return lev::irradiance(light, x_);
-  }
+  BehindAWall(const glm::vec3& x, float wall_x) : UnitResponsePoint(x), wall_x_(wall_x) {}
   bool visible(const lev::Light& target) override {
     ++rays;
     return target.position.x > wall_x_;
   }
-  lev::SurfaceResponse surface_response() const override {
-    lev::SurfaceResponse unit;
-    unit.diffuse = glm::vec3(1.0f);
-    return unit;
-  }
   int rays = 0;
 
  private:
-  glm::vec3 x_;
   float wall_x_;
 };
 

@@ -29,6 +29,14 @@ void loaded(ViewerState& state, const std::string& scene, std::uint64_t loads) {
   follow_scene_loads(state);
 }
 
+// The status of a worker whose load of `scene` (its first failure) failed with `error`.
+void failed_to_load(ViewerState& state, const std::string& scene, const std::string& error) {
+  state.status.load_error = scene + ": " + error;
+  state.status.load_error_scene = scene;
+  state.status.load_error_serial = 1;
+  follow_scene_loads(state);
+}
+
 TEST(SceneOpening, APathThatIsNoSceneFileIsLoggedAndRequestsNothing) {
   ViewerState state;
   state.request_dirty = false;
@@ -52,10 +60,7 @@ TEST(SceneOpening, AFailedLoadGoesBackToTheLoadedSceneAndCamera) {
   EXPECT_TRUE(state.request_dirty);
 
   state.request_dirty = false;
-  state.status.load_error = "/scenes/broken.gltf: lights[3].range: 0 (must be above 0)";
-  state.status.load_error_scene = "/scenes/broken.gltf";
-  state.status.load_error_serial = 1;
-  follow_scene_loads(state);
+  failed_to_load(state, "/scenes/broken.gltf", "lights[3].range: 0 (must be above 0)");
   EXPECT_EQ(state.settings.scene.name, "building");
   ASSERT_TRUE(state.camera.has_value());
   EXPECT_EQ(state.camera->position, orbited_camera().position);
@@ -139,10 +144,7 @@ TEST(SceneOpening, AnOpenedSceneGetsItsDisplayDefaultsButTheUsersChoice) {
   ASSERT_TRUE(open_scene_file(state, "/scenes/broken.gltf"));
   EXPECT_TRUE(state.settings.display.exposure_auto);
   EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
-  state.status.load_error = "/scenes/broken.gltf: cannot read the scene file (no such file)";
-  state.status.load_error_scene = "/scenes/broken.gltf";
-  state.status.load_error_serial = 1;
-  follow_scene_loads(state);
+  failed_to_load(state, "/scenes/broken.gltf", "cannot read the scene file (no such file)");
   EXPECT_EQ(state.settings.scene.name, "maze");
   EXPECT_FALSE(state.settings.display.exposure_auto);
   EXPECT_EQ(state.settings.display.curve, renderer::DisplayCurve::srgb);
@@ -153,10 +155,7 @@ TEST(SceneOpening, AnOpenedSceneGetsItsDisplayDefaultsButTheUsersChoice) {
   EXPECT_TRUE(early.settings.display.exposure_auto);
   early.status.scene = "building";
   early.status.scene_serial = 1;
-  early.status.load_error = "/scenes/broken.glb: cannot read the scene file (no such file)";
-  early.status.load_error_scene = "/scenes/broken.glb";
-  early.status.load_error_serial = 1;
-  follow_scene_loads(early);
+  failed_to_load(early, "/scenes/broken.glb", "cannot read the scene file (no such file)");
   EXPECT_EQ(early.settings.scene.name, "building");
   EXPECT_FALSE(early.settings.display.exposure_auto);
   EXPECT_EQ(early.settings.display.curve, renderer::DisplayCurve::linear);
@@ -186,10 +185,7 @@ TEST(SceneOpening, AnotherFileOpensAtItsFirstCamera) {
   loaded(state, "/scenes/four_cameras.gltf", 2);
   ASSERT_TRUE(open_scene_file(state, "/scenes/no_camera.glb"));
   EXPECT_EQ(state.settings.scene.camera, 0);
-  state.status.load_error = "/scenes/no_camera.glb: cannot read the scene file (no such file)";
-  state.status.load_error_scene = "/scenes/no_camera.glb";
-  state.status.load_error_serial = 1;
-  follow_scene_loads(state);
+  failed_to_load(state, "/scenes/no_camera.glb", "cannot read the scene file (no such file)");
   EXPECT_EQ(state.settings.scene.camera, 3);
 }
 
