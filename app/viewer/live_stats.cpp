@@ -1,6 +1,7 @@
 #include "app/viewer/live_stats.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "renderer/error_bound.h"
 
@@ -54,6 +55,38 @@ std::optional<renderer::MissedLightStats> missed_light_stats(const DisplayImage&
 }
 
 }  // namespace
+
+std::string method_text(const lev::MethodChoice& choice) {
+  const lev::MethodInfo& method = lev::method_info(choice.method);
+  char text[96];
+  if (method.uses_tolerance) {
+    std::snprintf(text, sizeof text, "%s, tolerance %g", method.name, choice.tolerance);
+  } else if (method.uses_relative_error) {
+    std::snprintf(text, sizeof text, "%s, relative error %g", method.name, choice.relative_error);
+  } else {
+    std::snprintf(text, sizeof text, "%s", method.name);
+  }
+  std::string out = text;
+  if (method.stochastic) {
+    std::snprintf(text, sizeof text, ", %d light%s per point", choice.lights_per_point,
+                  choice.lights_per_point == 1 ? "" : "s");
+    out += text;
+  }
+  return out;
+}
+
+std::string nodes_visited_text(double nodes_visited_avg, std::uint64_t shading_points,
+                               const char* method_name, bool rt_loop) {
+  char text[96];
+  if (shading_points == 0 || nodes_visited_avg != 0.0) {
+    std::snprintf(text, sizeof text, "%.2f avg", nodes_visited_avg);
+  } else if (rt_loop) {
+    std::snprintf(text, sizeof text, "none (shaded with rt's loop: the rt fallback)");
+  } else {
+    std::snprintf(text, sizeof text, "none (%s walks no light hierarchy)", method_name);
+  }
+  return text;
+}
 
 LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
                              const ErrorImage& error, std::chrono::steady_clock::time_point now) {

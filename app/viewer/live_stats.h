@@ -5,11 +5,13 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "app/render_stats.h"
 #include "app/settings.h"
 #include "app/viewer/display_image.h"
 #include "app/viewer/render_worker.h"
+#include "lev/methods.h"
 #include "renderer/camera.h"
 #include "renderer/missed_light.h"
 #include "renderer/pixel_error.h"
@@ -43,6 +45,16 @@ struct LiveStats {
 // `error` is used when it has compared pixels.
 LiveStats collect_live_stats(const DisplayImage& image, const WorkerStatus& status,
                              const ErrorImage& error, std::chrono::steady_clock::time_point now);
+
+// The stats panel's method row: the method and the settings it reads (its tolerance, or its
+// relative error, and the lights a sampling method draws per point), from the render's choice.
+std::string method_text(const lev::MethodChoice& choice);
+
+// The stats panel's nodes-visited row: the average, or why there is none where points were
+// shaded without a walk (rt_loop: the rt fallback shaded with rt's loop; else the method walks no
+// hierarchy).
+std::string nodes_visited_text(double nodes_visited_avg, std::uint64_t shading_points,
+                               const char* method_name, bool rt_loop);
 
 // What a snapshot's stats JSON says (app/render_stats.h, the keys of `levrt render --stats`); the
 // heatmap ranges are the caller's.

@@ -104,10 +104,7 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   row("scene", "%s, %llu lights", st.scene_name.c_str(),
       static_cast<unsigned long long>(st.light_count));
   const lev::MethodInfo& method = lev::method_info(st.method);
-  if (!method.uses_tolerance)
-    row("method", "%s (ignores the tolerance)", method.name);
-  else
-    row("method", "%s, tolerance %g", method.name, st.tolerance);
+  row("method", "%s", method_text(st.method_choice).c_str());
   if (st.rt_fallback) {
     // Work per probe point in shadow rays; short enough for the table's column.
     row("rt fallback", "%s (%.0f vs rt %.0f rays/pt)",
@@ -120,10 +117,10 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   row("shading points", "%llu", static_cast<unsigned long long>(s.shading_points));
   row("shadow rays", "%llu", static_cast<unsigned long long>(s.shadow_rays));
   row("lights tested/point", "%.2f avg, %u max", s.lights_tested_avg, s.lights_tested_max);
-  if (s.shading_points > 0 && s.nodes_visited_avg == 0.0)
-    row("nodes visited/point", "none (%s walks no light hierarchy)", method.name);
-  else
-    row("nodes visited/point", "%.2f avg", s.nodes_visited_avg);
+  row("nodes visited/point", "%s",
+      nodes_visited_text(s.nodes_visited_avg, s.shading_points, method.name,
+                         st.rt_fallback && st.rt_fallback->use_rt)
+          .c_str());
   row("hierarchy", "%s", bytes_text(st.hierarchy_bytes).c_str());
   if (st.method_bytes > 0)
     row("method memory", "%s", bytes_text(st.method_bytes).c_str());

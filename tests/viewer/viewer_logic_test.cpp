@@ -16,6 +16,7 @@
 #include "app/viewer/display_image.h"
 #include "app/viewer/frame_log.h"
 #include "app/viewer/inspector_panel.h"
+#include "app/viewer/live_stats.h"
 #include "app/viewer/scripted_changes.h"
 #include "app/viewer/settings_panel.h"
 #include "app/viewer/trade_plot.h"
@@ -330,6 +331,28 @@ TEST(InspectorPanel, APinnedPixelOutsideTheImageSaysSoInsteadOfInspectingForever
 // A fit resolution renders what the window's image area holds: within the memory budget at any
 // window size, so a huge window shows the picture enlarged instead of failing the render (before:
 // `view --window 16000x12000` exited 2 naming --width/--height, which were never given).
+// The stats panel named lev_cut, lightcuts and rt as ignoring the tolerance and showed no relative
+// error, and said "lev_cut walks no light hierarchy" where the rt fallback shaded with rt's loop.
+TEST(LiveStats, TheMethodRowNamesWhatItsMethodReadsAndNoNodesSaysWhy) {
+  lev::MethodChoice choice;
+  choice.tolerance = 0.03;
+  choice.relative_error = 0.005;
+  choice.lights_per_point = 4;
+  choice.method = lev::Method::lev;
+  EXPECT_EQ(method_text(choice), "lev, tolerance 0.03");
+  choice.method = lev::Method::lev_cut;
+  EXPECT_EQ(method_text(choice), "lev_cut, relative error 0.005");
+  choice.method = lev::Method::rt;
+  EXPECT_EQ(method_text(choice), "rt");
+  choice.method = lev::Method::light_tree;
+  EXPECT_EQ(method_text(choice), "light_tree, 4 lights per point");
+  EXPECT_EQ(nodes_visited_text(0.0, 100, "lev_cut", true),
+            "none (shaded with rt's loop: the rt fallback)");
+  EXPECT_EQ(nodes_visited_text(0.0, 100, "ast", false), "none (ast walks no light hierarchy)");
+  EXPECT_EQ(nodes_visited_text(12.5, 100, "lev", false), "12.50 avg");
+  EXPECT_EQ(nodes_visited_text(0.0, 0, "lev", false), "0.00 avg");
+}
+
 TEST(ViewerState, AFitSizeStaysWithinTheMemoryBudgetAtAnyWindowSize) {
   EXPECT_EQ(fit_render_size(1000, 800, 2), (std::array<int, 2>{500, 400}));
   EXPECT_EQ(fit_render_size(0, -3, 1), (std::array<int, 2>{1, 1}));
