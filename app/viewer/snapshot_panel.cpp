@@ -10,18 +10,35 @@
 
 namespace app::viewer {
 
+std::string snapshot_base_name(const std::string& scene, std::uint64_t light_count,
+                               const lev::MethodChoice& choice) {
+  const lev::MethodInfo& method = lev::method_info(choice.method);
+  char text[96];
+  std::snprintf(text, sizeof text, "_%llu_%s", static_cast<unsigned long long>(light_count),
+                method.name);
+  std::string base = "view_" + scene + text;
+  if (method.uses_tolerance) {
+    std::snprintf(text, sizeof text, "_%g", choice.tolerance);
+    base += text;
+  } else if (method.uses_relative_error) {
+    std::snprintf(text, sizeof text, "_%g", choice.relative_error);
+    base += text;
+  }
+  if (method.stochastic && choice.lights_per_point != 1) {
+    std::snprintf(text, sizeof text, "_k%d", choice.lights_per_point);
+    base += text;
+  }
+  for (char& c : base) {
+    if (c == '/' || c == '\\' || c == ' ') c = '_';
+  }
+  return base;
+}
+
 SnapshotJob make_snapshot_job(const ViewerState& state, std::chrono::steady_clock::time_point now) {
   SnapshotJob job;
   const WorkerStatus& st = state.status;
   job.folder = state.snapshot_folder;
-  char base[160];
-  std::snprintf(base, sizeof base, "view_%s_%llu_%s_%g", state.settings.scene.name.c_str(),
-                static_cast<unsigned long long>(st.light_count), lev::method_info(st.method).name,
-                st.tolerance);
-  job.base = base;
-  for (char& c : job.base) {
-    if (c == '/' || c == '\\' || c == ' ') c = '_';
-  }
+  job.base = snapshot_base_name(state.settings.scene.name, st.light_count, st.method_choice);
   job.width = state.image.width;
   job.height = state.image.height;
   RenderStats stats = snapshot_stats(collect_live_stats(state.image, st, state.error, now), st,

@@ -3,11 +3,21 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
+#include <string>
 
 #include "app/viewer/snapshot_writer.h"
 #include "app/viewer/viewer_state.h"
+#include "lev/methods.h"
 
 namespace app::viewer {
+
+// The snapshot's file names before their suffixes: view_SCENE_LIGHTS_METHOD, then the setting the
+// method reads (its tolerance or its relative error; a sampler's lights per point as kN when not
+// 1), with '/', '\\' and spaces made '_'. A setting the method ignores is not named: two
+// snapshots that differ only there are the same render.
+std::string snapshot_base_name(const std::string& scene, std::uint64_t light_count,
+                               const lev::MethodChoice& choice);
 
 // The files of the render on screen: the image, the view's heatmap (the lights-tested heatmap
 // when the image itself is shown) and the stats.

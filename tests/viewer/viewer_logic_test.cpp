@@ -19,6 +19,7 @@
 #include "app/viewer/live_stats.h"
 #include "app/viewer/scripted_changes.h"
 #include "app/viewer/settings_panel.h"
+#include "app/viewer/snapshot_panel.h"
 #include "app/viewer/trade_plot.h"
 #include "renderer/framebuffer.h"
 #include "tests/support/temp_dir.h"
@@ -351,6 +352,25 @@ TEST(LiveStats, TheMethodRowNamesWhatItsMethodReadsAndNoNodesSaysWhy) {
   EXPECT_EQ(nodes_visited_text(0.0, 100, "ast", false), "none (ast walks no light hierarchy)");
   EXPECT_EQ(nodes_visited_text(12.5, 100, "lev", false), "12.50 avg");
   EXPECT_EQ(nodes_visited_text(0.0, 0, "lev", false), "0.00 avg");
+}
+
+// Snapshot names carried the tolerance whatever the method: lev_cut at two relative errors had one
+// name (told apart only by _2), rt a tolerance it ignores.
+TEST(SnapshotName, NamesTheSettingItsMethodReads) {
+  lev::MethodChoice choice;
+  choice.tolerance = 0.01;
+  choice.relative_error = 0.005;
+  choice.lights_per_point = 8;
+  choice.method = lev::Method::lev;
+  EXPECT_EQ(snapshot_base_name("building", 64, choice), "view_building_64_lev_0.01");
+  choice.method = lev::Method::lev_cut;
+  EXPECT_EQ(snapshot_base_name("hall", 4096, choice), "view_hall_4096_lev_cut_0.005");
+  choice.method = lev::Method::rt;
+  EXPECT_EQ(snapshot_base_name("my scene/x", 3, choice), "view_my_scene_x_3_rt");
+  choice.method = lev::Method::lev_mc;
+  EXPECT_EQ(snapshot_base_name("hall", 64, choice), "view_hall_64_lev_mc_0.01_k8");
+  choice.lights_per_point = 1;
+  EXPECT_EQ(snapshot_base_name("hall", 64, choice), "view_hall_64_lev_mc_0.01");
 }
 
 TEST(ViewerState, AFitSizeStaysWithinTheMemoryBudgetAtAnyWindowSize) {

@@ -238,8 +238,8 @@ TEST_F(ViewerWindow, TheNoiseViewOfASamplingMethodShowsAndSnapshotsItsEstimate) 
   ASSERT_TRUE(image.ok() && noise.ok()) << r.output;
   EXPECT_FALSE(uniform(noise));
   EXPECT_GT(picture_differences(image, noise), 1000);
-  const fs::path stats = dir_ / "snap" / "view_hall_64_lev_mc_0.3_stats.json";
-  ASSERT_TRUE(fs::exists(dir_ / "snap" / "view_hall_64_lev_mc_0.3_noise.png")) << r.output;
+  const fs::path stats = dir_ / "snap" / "view_hall_64_lev_mc_0.3_k2_stats.json";
+  ASSERT_TRUE(fs::exists(dir_ / "snap" / "view_hall_64_lev_mc_0.3_k2_noise.png")) << r.output;
   ASSERT_TRUE(fs::exists(stats)) << r.output;
   const std::string json = read_file_bytes(stats);
   EXPECT_NE(json.find("\"std_error_avg_pct\""), std::string::npos) << json;
