@@ -143,10 +143,6 @@ TEST_F(ViewerWindow, BadInputExitsTwoWithOneLineAndWritesNothing) {
   }
 }
 
-// A scene file opened while the viewer runs (a simulated drop, then the scene control as typed
-// into the path field): the good one loads and renders; the bad one keeps the good scene on
-// screen, the session goes on (exit 0), and its message is logged whole: the same line
-
 // What a script would only fail at while it runs (a light count or level the scene lacks, one
 // missed-light draw, a typed size over the memory budget), would wait for forever (an inspected
 // pixel outside the image) or would drop without a word (a change past the last frame) is refused
