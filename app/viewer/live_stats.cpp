@@ -81,7 +81,7 @@ std::string nodes_visited_text(double nodes_visited_avg, std::uint64_t shading_p
   if (shading_points == 0 || nodes_visited_avg != 0.0) {
     std::snprintf(text, sizeof text, "%.2f avg", nodes_visited_avg);
   } else if (rt_loop) {
-    std::snprintf(text, sizeof text, "none (shaded with rt's loop: the rt fallback)");
+    std::snprintf(text, sizeof text, "none (shaded with rt's loop)");
   } else {
     std::snprintf(text, sizeof text, "none (%s walks no light hierarchy)", method_name);
   }

@@ -347,8 +347,7 @@ TEST(LiveStats, TheMethodRowNamesWhatItsMethodReadsAndNoNodesSaysWhy) {
   EXPECT_EQ(method_text(choice), "rt");
   choice.method = lev::Method::light_tree;
   EXPECT_EQ(method_text(choice), "light_tree, 4 lights per point");
-  EXPECT_EQ(nodes_visited_text(0.0, 100, "lev_cut", true),
-            "none (shaded with rt's loop: the rt fallback)");
+  EXPECT_EQ(nodes_visited_text(0.0, 100, "lev_cut", true), "none (shaded with rt's loop)");
   EXPECT_EQ(nodes_visited_text(0.0, 100, "ast", false), "none (ast walks no light hierarchy)");
   EXPECT_EQ(nodes_visited_text(12.5, 100, "lev", false), "12.50 avg");
   EXPECT_EQ(nodes_visited_text(0.0, 0, "lev", false), "0.00 avg");
