@@ -643,6 +643,7 @@ void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear&
     out.push_back(chosen);
     culled.estimates->push_back(exact);
     culled.scratch->exact_clusters.push_back(out.size() - 1);
+    if (lit >= 2) culled.scratch->several_light_clusters.push_back(out.size() - 1);
     if (culled.record)
       record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
     culled.sum += glm::dvec3(irradiance);
@@ -652,6 +653,8 @@ void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear&
   out.push_back(representative);
   culled.estimates->push_back(estimate);
   if (centred) culled.centred->push_back({out.size() - 1, node, linear, translation});
+  if (culled.cut_nodes->light_counts[node] >= 2)
+    culled.scratch->several_light_clusters.push_back(out.size() - 1);
   if (culled.record)
     record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
   culled.sum += glm::dvec3(irradiance);
@@ -1176,6 +1179,7 @@ void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volume
   }
   scratch.centred_clusters.clear();
   scratch.exact_clusters.clear();
+  scratch.several_light_clusters.clear();
   culled.centred = &scratch.centred_clusters;
   walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
                                point.position(), scratch, lights, counters, culled_irradiance_bound,

@@ -175,6 +175,10 @@ struct WalkScratch {
   // one's light among those it appended, in order. Its estimate (cut_estimates) is the summed
   // unshadowed radiance of the cluster's lights; the light is the one its shadow ray goes to.
   std::vector<std::size_t> exact_clusters;
+  // find_light_cut's clusters whose one shadow ray stands for two lights or more (centred, drawn,
+  // and exact ones with two lit lights or more), the index of each one's light among those it
+  // appended, in order: where their rays are noisy (lev/visibility_noise.h).
+  std::vector<std::size_t> several_light_clusters;
   // An exact cluster's light drawn for its shadow ray, and the parts of its subtree still to
   // step through.
   Light cluster_light;

@@ -30,7 +30,8 @@ class ShadingPoint {
   // Radiance the light would add toward the viewer if unoccluded: eq. 6 without the ambient
   // term. Zero when the light is behind the surface; finite (at most the largest float).
   virtual glm::vec3 unshadowed_radiance(const Light& world_light) const = 0;
-  // Casts one shadow ray; true when nothing blocks the light.
+  // Casts one shadow ray; true when nothing blocks the light. It depends on the light's position
+  // alone (lev_cut answers a second ray to one position from the first: selector_lev_cut.cpp).
   virtual bool visible(const Light& world_light) = 0;
   // The material's side of a cluster's bound (light_bounds.h): what unshadowed_radiance can
   // be per unit irradiance from a box of positions. The default, for a point that does not say,

@@ -27,13 +27,14 @@ bool earlier_position(const CastRay& a, const CastRay& b) {
 }
 
 // The point as the shading loop sees it, its shadow rays remembered: a ray to a position already
-// answered at this point (`answered`, sorted) is not cast again; every ray cast is appended to
-// `cast`. The answer is the same either way (the same ray), so the image does not change.
+// answered at this point (`answered`, sorted) is not cast again; with `remember`, every ray cast
+// is appended to `cast`. The answer is the same either way (ShadingPoint::visible depends on the
+// light's position alone), so the image does not change.
 class RememberedRays final : public ShadingPoint {
  public:
   RememberedRays(ShadingPoint& point, const std::vector<CastRay>& answered,
-                 std::vector<CastRay>& cast)
-      : point_(point), answered_(answered), cast_(cast) {}
+                 std::vector<CastRay>& cast, bool remember)
+      : point_(point), answered_(answered), cast_(cast), remember_(remember) {}
   glm::vec3 position() const override { return point_.position(); }
   glm::vec3 normal() const override { return point_.normal(); }
   glm::vec3 unshadowed_radiance(const Light& world_light) const override {
@@ -49,7 +50,7 @@ class RememberedRays final : public ShadingPoint {
       return found->visible;
     }
     ray.visible = point_.visible(world_light);
-    cast_.push_back(ray);
+    if (remember_) cast_.push_back(ray);
     return ray.visible;
   }
   // Rays answered from `answered`, which the shading loop counted as cast.
@@ -59,6 +60,7 @@ class RememberedRays final : public ShadingPoint {
   ShadingPoint& point_;
   const std::vector<CastRay>& answered_;
   std::vector<CastRay>& cast_;
+  bool remember_;
   std::uint64_t recalled_ = 0;
 };
 
@@ -73,15 +75,19 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   own.rays_sorted.clear();
   const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
   float relative_error = relative_error_;
+  // At relative error 0 (no clusters) or with the check off nothing is refined or remembered.
+  const bool may_refine = relative_error_ > 0.0f && noise_sigmas_ > 0.0;
   for (int refinement = 0;; ++refinement) {
-    RememberedRays shading(point, own.rays_sorted, own.rays_cast);
+    // lights_tested is the size of the cut shaded: a refined one replaces the last. The rays, the
+    // nodes and the lights evaluated are work done, every cut's.
+    const std::uint64_t tested_before = counters.lights_tested;
+    RememberedRays shading(point, own.rays_sorted, own.rays_cast, may_refine);
     const glm::vec3 radiance = shade_cut(relative_error, point, shading, scratch, counters,
                                          culled_irradiance_bound, ray_visible);
     counters.shadow_rays -= shading.recalled();
-    if (refinement == kNoiseRefinements) return radiance;
-    const double noise =
-        visibility_noise(scratch.walk.cut_estimates, ray_visible, scratch.walk.centred_clusters,
-                         scratch.walk.exact_clusters);
+    if (!may_refine || refinement == kNoiseRefinements) return radiance;
+    const double noise = visibility_noise(scratch.walk.cut_estimates, ray_visible,
+                                          scratch.walk.several_light_clusters);
     // NaN-safe: refines only on a noise known to be above the setting.
     if (!(noise_sigmas_ * noise * display_scale_ > relative_error_)) return radiance;
     if (scratch.cancel && scratch.cancel->load(std::memory_order_relaxed)) return radiance;
@@ -90,6 +96,7 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
       scratch.inspect->shaded.resize(shaded_from);
       scratch.inspect->clear_walk();
     }
+    counters.lights_tested = tested_before;
     relative_error *= 0.5f;
     own.rays_sorted = own.rays_cast;
     std::sort(own.rays_sorted.begin(), own.rays_sorted.end(), earlier_position);

@@ -13,21 +13,19 @@
 
 #include <glm/glm.hpp>
 
-#include "lev/important_lights.h"
-
 namespace lev {
 
 // The standard deviation (brightest channel, radiance units) of the summed visible radiance of a
-// cut's clusters of several lights: sqrt(p (1 - p) sum_c u_c^2) over those clusters, where u_c is
-// a cluster's unshadowed estimate and p the share of their summed estimates the rays found
-// visible (pooled over the clusters: one ray says nothing of its own cluster's share). Binomial
-// noise of independent 0/1 rays with that share. `estimates` and `visible` are per entry of the
-// cut (WalkScratch::cut_estimates; the shading loop's outcome, 1 where a ray found its light);
-// the clusters are the centred ones and the exact ones (WalkScratch), whose indices ascend.
-// Single lights carry no such noise (their ray is exact), so a cut of lights alone gives 0.
+// cut's clusters whose one ray stands for several lights: sqrt(p (1 - p) sum_c u_c^2) over those
+// clusters, where u_c is a cluster's unshadowed estimate and p the share of their summed
+// estimates the rays found visible (pooled over the clusters: one ray says nothing of its own
+// cluster's share). Binomial noise of independent 0/1 rays with that share. `estimates` and
+// `visible` are per entry of the cut (WalkScratch::cut_estimates; the shading loop's outcome, 1
+// where a ray found its light); `clusters` are the entries that are such clusters
+// (WalkScratch::several_light_clusters). A ray to a single light (or to the one lit light of a
+// cluster) is exact and carries no such noise, so a cut of lights alone gives 0.
 double visibility_noise(const std::vector<glm::vec3>& estimates,
                         const std::vector<std::uint8_t>& visible,
-                        const std::vector<CutCluster>& centred_clusters,
-                        const std::vector<std::size_t>& exact_clusters);
+                        const std::vector<std::size_t>& clusters);
 
 }  // namespace lev

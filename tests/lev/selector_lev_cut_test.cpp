@@ -19,6 +19,7 @@
 
 #include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
+#include "lev/inspect_record.h"
 #include "lev/light_cut_tree.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
@@ -551,9 +552,21 @@ class BehindAWall final : public UnitResponsePoint {
   BehindAWall(const glm::vec3& x, float wall_x) : UnitResponsePoint(x), wall_x_(wall_x) {}
   bool visible(const lev::Light& target) override {
     ++rays;
+    if (std::find(asked.begin(), asked.end(), target.position) != asked.end()) ++asked_again;
+    asked.push_back(target.position);
     return target.position.x > wall_x_;
   }
+  // The summed irradiance of the lights the wall leaves seen (brightest channel: x).
+  double truth(const std::vector<lev::Light>& lights) const {
+    double sum = 0.0;
+    for (const lev::Light& l : lights) {
+      if (l.position.x > wall_x_) sum += lev::irradiance(l, position()).x;
+    }
+    return sum;
+  }
   int rays = 0;
+  int asked_again = 0;  // rays to a position asked already at this point
+  std::vector<glm::vec3> asked;
 
  private:
   float wall_x_;
@@ -572,30 +585,31 @@ TEST(LevCut, TheNoiseCheckCutsFinerWhereTheRaysFindClustersPartlyHidden) {
   const lev::LevCutSelector checked(h, 0.05f);
   const lev::LevCutSelector unchecked(h, 0.05f, 1.0f, 0.0);
   double checked_error = 0.0, unchecked_error = 0.0;
-  std::uint64_t checked_tested = 0, unchecked_tested = 0, recalled = 0;
+  std::uint64_t checked_tested = 0, unchecked_tested = 0, checked_rays = 0, unchecked_rays = 0;
   for (int k = 0; k < 40; ++k) {
     const glm::vec3 x(0.37f * static_cast<float>(k), 7.1f, 2.0f);
     const float wall_x = 3.05f + 0.2f * static_cast<float>(k % 7);
-    double truth = 0.0;
-    for (const lev::Light& l : world_lights) {
-      if (l.position.x > wall_x) truth += lev::irradiance(l, x).x;
-    }
     lev::SelectorScratch scratch;
     lev::SelectionCounters counters;
     BehindAWall point(x, wall_x);
-    checked_error += std::abs(checked.direct_radiance(point, scratch, counters).x - truth);
+    checked_error +=
+        std::abs(checked.direct_radiance(point, scratch, counters).x - point.truth(world_lights));
     ASSERT_EQ(static_cast<std::uint64_t>(point.rays), counters.shadow_rays) << k;
+    ASSERT_EQ(point.asked_again, 0) << k;
+    // The cut shaded, not every round's: a refined cut replaces the last.
+    ASSERT_EQ(counters.lights_tested, scratch.lights.size()) << k;
     checked_tested += counters.lights_tested;
-    recalled += counters.lights_tested - counters.shadow_rays;
+    checked_rays += counters.shadow_rays;
     lev::SelectionCounters unchecked_counters;
     BehindAWall same(x, wall_x);
-    unchecked_error +=
-        std::abs(unchecked.direct_radiance(same, scratch, unchecked_counters).x - truth);
+    unchecked_error += std::abs(unchecked.direct_radiance(same, scratch, unchecked_counters).x -
+                                same.truth(world_lights));
     unchecked_tested += unchecked_counters.lights_tested;
+    unchecked_rays += unchecked_counters.shadow_rays;
   }
   EXPECT_GT(checked_tested, unchecked_tested + unchecked_tested / 2);
   EXPECT_LT(checked_error, 0.5 * unchecked_error);
-  EXPECT_GT(recalled, 40u);
+  EXPECT_GT(checked_rays, unchecked_rays);
   // Every light seen: no refinement, the same radiance and work.
   for (int k = 0; k < 20; ++k) {
     const glm::vec3 x(0.8f * static_cast<float>(k), 5.0f, -3.0f);
@@ -608,6 +622,128 @@ TEST(LevCut, TheNoiseCheckCutsFinerWhereTheRaysFindClustersPartlyHidden) {
     EXPECT_EQ(a.lights_tested, b.lights_tested) << k;
     EXPECT_EQ(a.shadow_rays, b.shadow_rays) << k;
   }
+}
+
+// Eight fixtures of 40 spots aimed apart (a ring, each spot tilted out): a cluster of a fixture is
+// neither centred (its axes spread) nor exact (more than kExactClusterLights): a drawn one.
+lev::LightDescription fixtures_of_forty_spots_aimed_apart() {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> spots;
+  for (int k = 0; k < 40; ++k) {
+    const float azimuth = 0.15707963f * static_cast<float>(k);
+    const glm::vec3 aim(0.766f * std::cos(azimuth), 0.766f * std::sin(azimuth), -0.643f);
+    spots.push_back(lev::light_node(
+        lev::make_spot_light(glm::vec3(2.0f * std::cos(azimuth), 2.0f * std::sin(azimuth), 0.0f),
+                             aim, glm::vec3(40.0f), 1.2f, 0.0f)));
+  }
+  tree.masters.push_back(lev::union_node(std::move(spots)));
+  std::vector<lev::LightDescriptionNode> fixtures;
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 at(6.0f * static_cast<float>(k), 0.0f, 10.0f);
+    fixtures.push_back(lev::affine_node(lev::make_translation(at), lev::instance_node(0)));
+  }
+  tree.root = lev::union_node(std::move(fixtures));
+  return tree;
+}
+
+// A drawn cluster's one ray stands for its forty lights as a centred one's does: a wall through
+// the fixtures makes the check refine there too (it counted centred and exact clusters alone).
+// Every cluster of the cut is one the noise counts.
+TEST(LevCut, TheNoiseCheckCountsDrawnClustersOfManyLights) {
+  const lev::LightDescription tree = fixtures_of_forty_spots_aimed_apart();
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+  const lev::LevCutSelector checked(h, 0.5f);
+  const lev::LevCutSelector unchecked(h, 0.5f, 1.0f, 0.0);
+  std::uint64_t checked_tested = 0, unchecked_tested = 0;
+  double checked_error = 0.0, unchecked_error = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const glm::vec3 x(2.4f * static_cast<float>(k) - 2.0f, 1.0f, 0.0f);
+    const float wall_x = 6.0f * static_cast<float>(k % 8);
+    lev::SelectorScratch scratch;
+    lev::InspectRecord record;
+    scratch.inspect = &record;
+    scratch.walk.inspect = &record;
+    lev::SelectionCounters a, b;
+    BehindAWall p(x, wall_x);
+    checked_error += std::abs(checked.direct_radiance(p, scratch, a).x - p.truth(world_lights));
+    std::size_t several = 0;
+    for (const lev::ShadedLight& s : record.shaded) several += s.walk_cluster >= 0;
+    EXPECT_EQ(scratch.walk.several_light_clusters.size(), several) << k;
+    lev::SelectorScratch plain;
+    BehindAWall q(x, wall_x);
+    unchecked_error += std::abs(unchecked.direct_radiance(q, plain, b).x - q.truth(world_lights));
+    checked_tested += a.lights_tested;
+    unchecked_tested += b.lights_tested;
+  }
+  EXPECT_GT(checked_tested, unchecked_tested);
+  EXPECT_LT(checked_error, unchecked_error);
+}
+
+// Lights each below its own translation: the cut's kept subtrees are clusters of one light, whose
+// ray goes to that light, exact: nothing to refine, whatever the wall hides.
+TEST(LevCut, TheNoiseCheckLeavesClustersOfOneLight) {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> lights;
+  for (int k = 0; k < 20; ++k) {
+    lights.push_back(lev::affine_node(
+        lev::make_translation({1.5f * static_cast<float>(k), 0.0f, 6.0f}),
+        lev::light_node(lev::make_point_light(glm::vec3(0.0f), glm::vec3(40.0f)))));
+  }
+  tree.root = lev::union_node(std::move(lights));
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const lev::LevCutSelector checked(h, 0.3f);
+  const lev::LevCutSelector unchecked(h, 0.3f, 1.0f, 0.0);
+  std::uint64_t singles = 0;
+  for (int k = 0; k < 20; ++k) {
+    const glm::vec3 x(1.5f * static_cast<float>(k), 2.0f, 0.0f);
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters a, b;
+    BehindAWall p(x, 1.5f * static_cast<float>(k) + 0.7f);
+    BehindAWall q(x, 1.5f * static_cast<float>(k) + 0.7f);
+    const glm::vec3 with_check = checked.direct_radiance(p, scratch, a);
+    singles += scratch.walk.exact_clusters.size();
+    lev::SelectorScratch plain;
+    EXPECT_EQ(with_check, unchecked.direct_radiance(q, plain, b)) << k;
+    EXPECT_EQ(a.nodes_visited, b.nodes_visited) << k;
+    EXPECT_EQ(a.lights_tested, b.lights_tested) << k;
+  }
+  EXPECT_GT(singles, 0u);
+}
+
+// After a refinement the inspector lists the last cut alone: its shaded lights are the cut's,
+// their contributions sum to the radiance, and its clusters are the walk's.
+TEST(LevCut, AfterTheNoiseCheckTheInspectorListsTheLastCut) {
+  const lev::LightHierarchy h = lev::build_hierarchy(rig_of_fixtures());
+  const lev::LevCutSelector checked(h, 0.05f);
+  const lev::LevCutSelector unchecked(h, 0.05f, 1.0f, 0.0);
+  int refined = 0;
+  for (int k = 0; k < 40; ++k) {
+    const glm::vec3 x(0.37f * static_cast<float>(k), 7.1f, 2.0f);
+    const float wall_x = 3.05f + 0.2f * static_cast<float>(k % 7);
+    BehindAWall point(x, wall_x);
+    lev::SelectorScratch scratch;
+    lev::InspectRecord record;
+    scratch.inspect = &record;
+    scratch.walk.inspect = &record;
+    lev::SelectionCounters counters;
+    const glm::vec3 radiance = checked.direct_radiance(point, scratch, counters);
+    ASSERT_EQ(record.shaded.size(), scratch.lights.size()) << k;
+    glm::dvec3 sum(0.0);
+    std::size_t cluster_entries = 0;
+    for (const lev::ShadedLight& s : record.shaded) {
+      sum += glm::dvec3(s.contribution);
+      cluster_entries += s.walk_cluster >= 0;
+    }
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], radiance[c], 1e-5 * (1.0 + sum[c])) << k;
+    EXPECT_EQ(cluster_entries, record.walk_clusters.size()) << k;
+    lev::SelectorScratch plain;
+    lev::SelectionCounters once;
+    BehindAWall same(x, wall_x);
+    unchecked.direct_radiance(same, plain, once);
+    if (counters.lights_tested > once.lights_tested) ++refined;
+  }
+  EXPECT_GT(refined, 5);
 }
 
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
