@@ -32,9 +32,11 @@ inline constexpr float kDropToleranceOfRelativeError = 1.0f / 255.0f;
 
 // The noise check (LevCutSelector::direct_radiance): a point's cut is refined while this many
 // standard deviations of its rays' visibility noise, times the exposure, exceed the relative
-// error (a share of the display's white, as the pixel error is measured), at most this many
-// times, halving the relative error each time. Three deviations: among thousands of pixels a few
-// sit that far out, and the maximum error is set by those.
+// error (a share of the display's white before the display curve: the pixel error's scale under
+// the linear display; a curve steeper in the darks, sRGB's, shows dark pixels' noise larger),
+// at most this many times, halving the relative error each time. Three deviations: among
+// thousands of pixels a few sit that far out, and the maximum error is set by those (hall 16,384
+// at 0.03: two deviations leave max 3.01 %, four spend 16 % more rays; docs/results/lev_cut.md).
 inline constexpr double kNoiseSigmas = 3.0;
 inline constexpr int kNoiseRefinements = 3;
 
