@@ -572,44 +572,64 @@ class BehindAWall final : public UnitResponsePoint {
   float wall_x_;
 };
 
+// The noise check against none, summed over the points compared: the errors against the lights
+// the wall leaves seen, the lights tested and the rays cast.
+struct CheckAgainstNone {
+  double checked_error = 0.0, unchecked_error = 0.0;
+  std::uint64_t checked_tested = 0, unchecked_tested = 0, checked_rays = 0, unchecked_rays = 0;
+};
+
+// Shades x behind the wall with `checked` (into scratch and counters, which the caller reads) and
+// with `unchecked`, adding both to `totals`; returns the checked point, with the rays it was asked.
+BehindAWall compare_behind_a_wall(const lev::LevCutSelector& checked,
+                                  const lev::LevCutSelector& unchecked,
+                                  const std::vector<lev::Light>& lights, const glm::vec3& x,
+                                  float wall_x, lev::SelectorScratch& scratch,
+                                  lev::SelectionCounters& counters, CheckAgainstNone& totals) {
+  BehindAWall point(x, wall_x);
+  const glm::vec3 radiance = checked.direct_radiance(point, scratch, counters);
+  totals.checked_error += std::abs(radiance.x - point.truth(lights));
+  totals.checked_tested += counters.lights_tested;
+  totals.checked_rays += counters.shadow_rays;
+  BehindAWall same(x, wall_x);
+  lev::SelectorScratch plain;
+  lev::SelectionCounters once;
+  totals.unchecked_error +=
+      std::abs(unchecked.direct_radiance(same, plain, once).x - same.truth(lights));
+  totals.unchecked_tested += once.lights_tested;
+  totals.unchecked_rays += once.shadow_rays;
+  return point;
+}
+
 // The rig of fixtures half behind a wall that runs through its fixtures: clusters with some
 // lights seen and some hidden, each shaded through one 0/1 ray. The noise check cuts finer at
 // such points (more lights tested), and the radiance comes nearer the truth (the seen lights'
 // sum) over the points; a ray to a position asked already at the point is answered again, not
-// cast: the shadow rays counted are the rays the point was asked for, fewer than the lights
-// tested where the cut was refined. Where every light is seen the check changes nothing.
+// cast: no position is asked twice, the shadow rays counted are the rays the point was asked
+// for, and lights_tested is the size of the cut shaded. Where every light is seen the check
+// changes nothing.
 TEST(LevCut, TheNoiseCheckCutsFinerWhereTheRaysFindClustersPartlyHidden) {
   const lev::LightDescription tree = rig_of_fixtures();
   const lev::LightHierarchy h = lev::build_hierarchy(tree);
   const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
   const lev::LevCutSelector checked(h, 0.05f);
   const lev::LevCutSelector unchecked(h, 0.05f, 1.0f, 0.0);
-  double checked_error = 0.0, unchecked_error = 0.0;
-  std::uint64_t checked_tested = 0, unchecked_tested = 0, checked_rays = 0, unchecked_rays = 0;
+  CheckAgainstNone totals;
   for (int k = 0; k < 40; ++k) {
     const glm::vec3 x(0.37f * static_cast<float>(k), 7.1f, 2.0f);
-    const float wall_x = 3.05f + 0.2f * static_cast<float>(k % 7);
     lev::SelectorScratch scratch;
     lev::SelectionCounters counters;
-    BehindAWall point(x, wall_x);
-    checked_error +=
-        std::abs(checked.direct_radiance(point, scratch, counters).x - point.truth(world_lights));
+    const BehindAWall point =
+        compare_behind_a_wall(checked, unchecked, world_lights, x,
+                              3.05f + 0.2f * static_cast<float>(k % 7), scratch, counters, totals);
     ASSERT_EQ(static_cast<std::uint64_t>(point.rays), counters.shadow_rays) << k;
     ASSERT_EQ(point.asked_again, 0) << k;
     // The cut shaded, not every round's: a refined cut replaces the last.
     ASSERT_EQ(counters.lights_tested, scratch.lights.size()) << k;
-    checked_tested += counters.lights_tested;
-    checked_rays += counters.shadow_rays;
-    lev::SelectionCounters unchecked_counters;
-    BehindAWall same(x, wall_x);
-    unchecked_error += std::abs(unchecked.direct_radiance(same, scratch, unchecked_counters).x -
-                                same.truth(world_lights));
-    unchecked_tested += unchecked_counters.lights_tested;
-    unchecked_rays += unchecked_counters.shadow_rays;
   }
-  EXPECT_GT(checked_tested, unchecked_tested + unchecked_tested / 2);
-  EXPECT_LT(checked_error, 0.5 * unchecked_error);
-  EXPECT_GT(checked_rays, unchecked_rays);
+  EXPECT_GT(totals.checked_tested, totals.unchecked_tested + totals.unchecked_tested / 2);
+  EXPECT_LT(totals.checked_error, 0.5 * totals.unchecked_error);
+  EXPECT_GT(totals.checked_rays, totals.unchecked_rays);
   // Every light seen: no refinement, the same radiance and work.
   for (int k = 0; k < 20; ++k) {
     const glm::vec3 x(0.8f * static_cast<float>(k), 5.0f, -3.0f);
@@ -655,29 +675,22 @@ TEST(LevCut, TheNoiseCheckCountsDrawnClustersOfManyLights) {
   const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
   const lev::LevCutSelector checked(h, 0.5f);
   const lev::LevCutSelector unchecked(h, 0.5f, 1.0f, 0.0);
-  std::uint64_t checked_tested = 0, unchecked_tested = 0;
-  double checked_error = 0.0, unchecked_error = 0.0;
+  CheckAgainstNone totals;
   for (int k = 0; k < 20; ++k) {
     const glm::vec3 x(2.4f * static_cast<float>(k) - 2.0f, 1.0f, 0.0f);
-    const float wall_x = 6.0f * static_cast<float>(k % 8);
     lev::SelectorScratch scratch;
     lev::InspectRecord record;
     scratch.inspect = &record;
     scratch.walk.inspect = &record;
-    lev::SelectionCounters a, b;
-    BehindAWall p(x, wall_x);
-    checked_error += std::abs(checked.direct_radiance(p, scratch, a).x - p.truth(world_lights));
+    lev::SelectionCounters counters;
+    compare_behind_a_wall(checked, unchecked, world_lights, x, 6.0f * static_cast<float>(k % 8),
+                          scratch, counters, totals);
     std::size_t several = 0;
     for (const lev::ShadedLight& s : record.shaded) several += s.walk_cluster >= 0;
     EXPECT_EQ(scratch.walk.several_light_clusters.size(), several) << k;
-    lev::SelectorScratch plain;
-    BehindAWall q(x, wall_x);
-    unchecked_error += std::abs(unchecked.direct_radiance(q, plain, b).x - q.truth(world_lights));
-    checked_tested += a.lights_tested;
-    unchecked_tested += b.lights_tested;
   }
-  EXPECT_GT(checked_tested, unchecked_tested);
-  EXPECT_LT(checked_error, unchecked_error);
+  EXPECT_GT(totals.checked_tested, totals.unchecked_tested);
+  EXPECT_LT(totals.checked_error, totals.unchecked_error);
 }
 
 // Lights each below its own translation: the cut's kept subtrees are clusters of one light, whose
