@@ -110,6 +110,14 @@ struct CulledSoFar {
   // The radiance error the clusters of the cut may make: per cluster, its estimate E stands for
   // a shadowed radiance C in [0, its radiance bound B], so |E - C| <= max(E, B) (per channel).
   glm::dvec3 cluster_error{0.0};
+  // When relative: the clusters' irradiance bounds (apart from `sum`, what the volumes dropped,
+  // which a finer cut keeps), and, when set, the record of each cluster kept, for a finer cut
+  // (WalkScratch::kept_clusters).
+  glm::dvec3 cluster_sum{0.0};
+  std::vector<CutSubtree>* kept = nullptr;
+  // When relative and set: the walk goes on from a cut before (refine_light_cut): it starts
+  // from the subtrees put aside, not from the root.
+  bool go_on = false;
   // When relative: the clusters of the cut stood for by a centred representative (CutCluster),
   // and what the cut reads of each node (CutNodeTable).
   std::vector<CutCluster>* centred = nullptr;
@@ -609,11 +617,14 @@ std::uint64_t point_hash(const glm::vec3& point) {
 // for 1.51x the selector's instructions (docs/results/lev_cut.md). A centred representative's
 // unshadowed radiance is close to its lights' sum (the hall), so those stay as they were. An
 // exact cluster whose lights give nothing here is dropped (no ray).
-void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear& linear,
-                  const glm::vec3& translation, const Light& representative,
-                  const glm::vec3& estimate, const glm::vec3& irradiance, const glm::vec3& radiance,
-                  bool centred, std::vector<Light>& out, CulledSoFar& culled) {
-  if (!centred && culled.cut_nodes->light_counts[node] <= kExactClusterLights) {
+void keep_cluster(const LightHierarchy& h, const CutSubtree& subtree, const Light& representative,
+                  std::vector<Light>& out, CulledSoFar& culled) {
+  const std::uint32_t node = subtree.node;
+  const WalkLinear& linear = subtree.linear;
+  const glm::vec3& translation = subtree.world_translation;
+  glm::vec3 estimate = subtree.estimate;
+  bool several = culled.cut_nodes->light_counts[node] >= 2;
+  if (!subtree.centred && culled.cut_nodes->light_counts[node] <= kExactClusterLights) {
     // One pass: the summed radiance, and the ray's light by weighted reservoir sampling (each
     // light kept with its weight over the weight so far), one draw of the cluster's stream (the
     // renderer's splitmix64, RandomStream) per lit light.
@@ -639,26 +650,48 @@ void keep_cluster(const LightHierarchy& h, std::uint32_t node, const WalkLinear&
       if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
       return;
     }
-    const glm::vec3 exact(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
+    estimate = glm::vec3(glm::min(sum, glm::dvec3(std::numeric_limits<float>::max())));
     out.push_back(chosen);
-    culled.estimates->push_back(exact);
     culled.scratch->exact_clusters.push_back(out.size() - 1);
-    if (lit >= 2) culled.scratch->several_light_clusters.push_back(out.size() - 1);
-    if (culled.record)
-      record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
-    culled.sum += glm::dvec3(irradiance);
-    culled.cluster_error += glm::dvec3(glm::max(exact, radiance));
-    return;
+    several = lit >= 2;
+  } else {
+    out.push_back(representative);
+    if (subtree.centred) culled.centred->push_back({out.size() - 1, node, linear, translation});
   }
-  out.push_back(representative);
   culled.estimates->push_back(estimate);
-  if (centred) culled.centred->push_back({out.size() - 1, node, linear, translation});
-  if (culled.cut_nodes->light_counts[node] >= 2)
-    culled.scratch->several_light_clusters.push_back(out.size() - 1);
+  if (several) culled.scratch->several_light_clusters.push_back(out.size() - 1);
   if (culled.record)
     record_subtree_cluster(*culled.record, out.size() - 1, node, linear, translation);
-  culled.sum += glm::dvec3(irradiance);
-  culled.cluster_error += glm::dvec3(glm::max(estimate, radiance));
+  culled.cluster_sum += glm::dvec3(subtree.irradiance_bound);
+  culled.cluster_error += glm::dvec3(glm::max(estimate, subtree.radiance_bound));
+  if (culled.kept) {
+    CutSubtree& kept = culled.kept->emplace_back(subtree);
+    kept.estimate = estimate;
+    kept.kept_as = static_cast<std::uint32_t>(out.size() - 1);
+    kept.several = several;
+  }
+}
+
+// A cluster of the cut before kept again by a finer one (refine_light_cut): its light (the
+// representative, or an exact cluster's light drawn) and its estimate are the ones that cut
+// made, so it costs no work, and it is listed and summed as keep_cluster lists and sums it.
+void keep_cluster_again(const CutSubtree& subtree, std::vector<Light>& out, CulledSoFar& culled) {
+  WalkScratch& scratch = *culled.scratch;
+  const std::uint32_t node = subtree.node;
+  out.push_back(scratch.previous_lights[subtree.kept_as]);
+  const std::size_t index = out.size() - 1;
+  if (subtree.centred) {
+    culled.centred->push_back({index, node, subtree.linear, subtree.world_translation});
+  } else if (culled.cut_nodes->light_counts[node] <= kExactClusterLights) {
+    scratch.exact_clusters.push_back(index);
+  }
+  culled.estimates->push_back(subtree.estimate);
+  if (subtree.several) scratch.several_light_clusters.push_back(index);
+  if (culled.record)
+    record_subtree_cluster(*culled.record, index, node, subtree.linear, subtree.world_translation);
+  culled.cluster_sum += glm::dvec3(subtree.irradiance_bound);
+  culled.cluster_error += glm::dvec3(glm::max(subtree.estimate, subtree.radiance_bound));
+  if (culled.kept) culled.kept->emplace_back(subtree).kept_as = static_cast<std::uint32_t>(index);
 }
 
 // The relative cut's decision on a subtree the volumes kept (find_light_cut), entered with
@@ -689,25 +722,29 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
               : drawn_representative(h, *culled.cut_nodes, node, linear, translation);
   const glm::vec3 estimate = culled.shading->unshadowed_radiance(representative);
   culled.total += glm::dvec3(estimate);
-  if (bound <= largest_cluster_bound(culled)) {
-    keep_cluster(h, node, linear, translation, representative, estimate, irradiance, radiance,
-                 centred, out, culled);
-    return;
+  const bool keep = bound <= largest_cluster_bound(culled);
+  if (!keep) {
+    heap.push_back({bound, culled.deferrals++, static_cast<std::uint32_t>(deferred.size())});
+    std::push_heap(heap.begin(), heap.end(), smaller_deferred_bound);
   }
-  heap.push_back({bound, culled.deferrals++, static_cast<std::uint32_t>(deferred.size())});
-  std::push_heap(heap.begin(), heap.end(), smaller_deferred_bound);
-  DeferredSubtree& d = deferred.emplace_back();
-  d.representative = representative;
-  d.estimate = estimate;
-  d.irradiance_bound = irradiance;
-  d.radiance_bound = radiance;
+  CutSubtree kept_here;
+  DeferredSubtree* put_aside = keep ? nullptr : &deferred.emplace_back();
+  CutSubtree& d = put_aside ? *put_aside : kept_here;
   d.node = node;
   d.volume_tested = volume_tested;
   d.identity = identity;
+  d.centred = centred;
   d.local_point = local_point;
   d.world_translation = translation;
   d.linear = linear;
-  d.centred = centred;
+  d.estimate = estimate;
+  d.irradiance_bound = irradiance;
+  d.radiance_bound = radiance;
+  if (put_aside) {
+    put_aside->representative = representative;
+  } else {
+    keep_cluster(h, d, representative, out, culled);
+  }
 }
 
 // The translation of compose(world_from_local, xf), world_from_local = (linear, translation).
@@ -732,8 +769,11 @@ bool resume_deferred(const LightHierarchy& h, std::vector<WalkFrame>& stack,
     heap.pop_back();
     const DeferredSubtree& d = deferred[key.subtree];
     if (key.bound <= largest_cluster_bound(culled)) {
-      keep_cluster(h, d.node, d.linear, d.world_translation, d.representative, d.estimate,
-                   d.irradiance_bound, d.radiance_bound, d.centred, out, culled);
+      if (d.kept_as != CutSubtree::kNotKept) {
+        keep_cluster_again(d, out, culled);
+      } else {
+        keep_cluster(h, d, d.representative, out, culled);
+      }
       continue;
     }
     culled.total -= glm::dvec3(d.estimate);
@@ -770,11 +810,13 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
   stack.clear();
   linear.clear();
   linear.emplace_back();
-  push_frame(stack, point, h.root, glm::vec3(0.0f), 0, false);
   std::vector<DeferredSubtree>& deferred = scratch.deferred;
   std::vector<DeferredKey>& deferred_heap = scratch.deferred_heap;
-  deferred.clear();
-  deferred_heap.clear();
+  if (!culled.go_on) {
+    push_frame(stack, point, h.root, glm::vec3(0.0f), 0, false);
+    deferred.clear();
+    deferred_heap.clear();
+  }
   culled.record = scratch.inspect;
   for (;;) {
     if (stack.empty()) {
@@ -923,18 +965,23 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
   }
   counters.nodes_visited += visited;
   counters.lights_evaluated += culled.lights_evaluated;
-  if constexpr (kCulled == Culled::tight || kCulled == Culled::relative) {
-    if (culled.radiance) answer_culled_radiance(h, tolerance, culled);
-  }
   if constexpr (kCulled == Culled::relative) {
-    if (culled.radiance) {
-      // The clusters' error on top of what the volumes dropped.
-      culled.radiance->bound =
-          round_up_sum(glm::dvec3(culled.radiance->bound) + culled.cluster_error);
+    // Answered once the cut is final (answer_light_cut_bounds): a finer one may go on from it.
+    LightCutSums& sums = culled.scratch->cut_sums;
+    sums.total = culled.total;
+    sums.culled = culled.sum;
+    sums.clusters = culled.cluster_sum;
+    sums.cluster_error = culled.cluster_error;
+    sums.radiance_culled = culled.radiance_sum;
+    sums.radiance_parts_made = culled.radiance_parts_made;
+    sums.deferrals = culled.deferrals;
+    sums.radiance = culled.radiance != nullptr;
+    (void)culled_irradiance_bound;
+  } else {
+    if constexpr (kCulled == Culled::tight) {
+      if (culled.radiance) answer_culled_radiance(h, tolerance, culled);
     }
-  }
-  if constexpr (kCulled != Culled::dropped && kCulled != Culled::collected) {
-    if (kCulled != Culled::relative || culled_irradiance_bound) {
+    if constexpr (kCulled != Culled::dropped && kCulled != Culled::collected) {
       *culled_irradiance_bound = round_up_sum(culled.sum);
     }
   }
@@ -1154,36 +1201,122 @@ void find_lights_and_clusters(const LightHierarchy& hierarchy, const ExtentVolum
                                 culled_irradiance_bound ? culled_irradiance_bound : &bound, culled);
 }
 
-void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
-                    const CutNodeTable& table, float tolerance, float relative_error,
-                    ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
-                    WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
-  assert(volumes.nodes.size() == hierarchy.nodes.size());
-  assert(table.draw_weights.size() == hierarchy.nodes.size());
-  assert(volumes.tolerance <= tolerance);
+namespace {
+
+// The relative cut's state for one walk at this point: what every cut reads, and the lists it
+// appends to (WalkScratch's), the culled radiance bound's parts when bound_radiance.
+CulledSoFar light_cut_state(const CutNodeTable& table, float relative_error, ShadingPoint& point,
+                            WalkScratch& scratch, bool may_refine, bool bound_radiance) {
   CulledSoFar culled;
   culled.cut_nodes = &table;
-  scratch.cut_estimates.clear();
+  culled.scratch = &scratch;
   if (relative_error > 0.0f) {  // at 0 nothing is cut: find_important_lights' walk
     culled.shading = &point;
     culled.estimates = &scratch.cut_estimates;
     culled.surface = point.surface_response();
     culled.relative_error = relative_error;
     culled.point_seed = point_hash(point.position());
-    culled.scratch = &scratch;
+    if (may_refine) culled.kept = &scratch.kept_clusters;
   }
-  if (scratch.radiance && culled_irradiance_bound) {
+  if (bound_radiance) {
+    assert(scratch.radiance);
     culled.radiance = scratch.radiance;
     culled.radiance_parts = &scratch.radiance_parts;
-    scratch.radiance_parts.clear();
   }
+  culled.centred = &scratch.centred_clusters;
+  scratch.cut_estimates.clear();
   scratch.centred_clusters.clear();
   scratch.exact_clusters.clear();
   scratch.several_light_clusters.clear();
-  culled.centred = &scratch.centred_clusters;
+  scratch.kept_clusters.clear();
+  return culled;
+}
+
+}  // namespace
+
+void start_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                     const CutNodeTable& table, float tolerance, float relative_error,
+                     ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
+                     WalkCounters& counters, bool may_refine, bool bound_radiance) {
+  assert(volumes.nodes.size() == hierarchy.nodes.size());
+  assert(table.draw_weights.size() == hierarchy.nodes.size());
+  assert(volumes.tolerance <= tolerance);
+  CulledSoFar culled =
+      light_cut_state(table, relative_error, point, scratch, may_refine, bound_radiance);
+  scratch.radiance_parts.clear();
   walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
-                               point.position(), scratch, lights, counters, culled_irradiance_bound,
-                               culled);
+                               point.position(), scratch, lights, counters, nullptr, culled);
+}
+
+void refine_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                      const CutNodeTable& table, float tolerance, float relative_error,
+                      ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
+                      WalkCounters& counters, bool may_refine) {
+  assert(relative_error > 0.0f);
+  // The cut before: its lights, estimates and clusters, which the new lists replace.
+  scratch.previous_lights.swap(lights);
+  scratch.previous_estimates.swap(scratch.cut_estimates);
+  scratch.previous_kept.swap(scratch.kept_clusters);
+  lights.clear();
+  const LightCutSums sums = scratch.cut_sums;
+  CulledSoFar culled =
+      light_cut_state(table, relative_error, point, scratch, may_refine, sums.radiance);
+  culled.total = sums.total;
+  culled.sum = sums.culled;
+  culled.radiance_sum = sums.radiance_culled;
+  culled.radiance_parts_made = sums.radiance_parts_made;
+  culled.deferrals = sums.deferrals;
+  culled.go_on = true;
+  // Its own lights stay; its clusters are put aside again, each with the estimate the total
+  // counted for it, in the order they were kept (the heap's ties).
+  std::vector<DeferredSubtree>& deferred = scratch.deferred;
+  std::vector<DeferredKey>& heap = scratch.deferred_heap;
+  deferred.clear();
+  heap.clear();
+  const std::vector<CutSubtree>& kept = scratch.previous_kept;
+  std::size_t next_kept = 0;
+  for (std::size_t i = 0; i < scratch.previous_lights.size(); ++i) {
+    if (next_kept < kept.size() && kept[next_kept].kept_as == i) {
+      const CutSubtree& cluster = kept[next_kept++];
+      float bound = brightest(cluster.radiance_bound);
+      if (!(bound >= 0.0f)) bound = std::numeric_limits<float>::infinity();
+      heap.push_back({bound, culled.deferrals++, static_cast<std::uint32_t>(deferred.size())});
+      static_cast<CutSubtree&>(deferred.emplace_back()) = cluster;
+      continue;
+    }
+    lights.push_back(scratch.previous_lights[i]);
+    scratch.cut_estimates.push_back(scratch.previous_estimates[i]);
+  }
+  assert(next_kept == kept.size());
+  std::make_heap(heap.begin(), heap.end(), smaller_deferred_bound);
+  walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
+                               point.position(), scratch, lights, counters, nullptr, culled);
+}
+
+void answer_light_cut_bounds(const LightHierarchy& hierarchy, float tolerance, WalkScratch& scratch,
+                             glm::vec3* culled_irradiance_bound) {
+  const LightCutSums& sums = scratch.cut_sums;
+  CulledSoFar culled;
+  culled.sum = sums.culled;
+  if (sums.radiance) {
+    culled.radiance = scratch.radiance;
+    culled.radiance_parts = &scratch.radiance_parts;
+    culled.radiance_sum = sums.radiance_culled;
+    culled.radiance_parts_made = sums.radiance_parts_made;
+    answer_culled_radiance(hierarchy, tolerance, culled);
+    // The clusters' error on top of what the volumes dropped.
+    culled.radiance->bound = round_up_sum(glm::dvec3(culled.radiance->bound) + sums.cluster_error);
+  }
+  if (culled_irradiance_bound) *culled_irradiance_bound = round_up_sum(culled.sum + sums.clusters);
+}
+
+void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                    const CutNodeTable& table, float tolerance, float relative_error,
+                    ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
+                    WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
+  start_light_cut(hierarchy, volumes, table, tolerance, relative_error, point, scratch, lights,
+                  counters, false, scratch.radiance && culled_irradiance_bound);
+  answer_light_cut_bounds(hierarchy, tolerance, scratch, culled_irradiance_bound);
 }
 
 std::vector<Light> flatten_lights(const LightHierarchy& hierarchy) {

@@ -126,21 +126,49 @@ struct CutCluster {
   glm::vec3 translation{0.0f};
 };
 
-// A subtree the relative cut (find_light_cut) put aside because its cluster bound was too large
-// for the point's running total: walked later, largest bound first, or kept as a cluster when
-// the total allows. Its frame is kept whole, the rotation by value: it leaves the stack's order.
-struct DeferredSubtree {
+// A subtree of the relative cut (find_light_cut) decided as a whole, put aside or kept as a
+// cluster, entered with world_from_local = (linear, world_translation) and the walk's point
+// local_point in that frame. Its frame is kept whole, the rotation by value: it leaves the
+// stack's order.
+struct CutSubtree {
   std::uint32_t node = 0;
   bool volume_tested = false;
   bool identity = true;  // the frame's rotation and scale are the identity
+  bool centred = false;  // its representative is centred (CutCluster)
   glm::vec3 local_point{0.0f};
   glm::vec3 world_translation{0.0f};
   WalkLinear linear;
-  Light representative;              // in world space, carrying the subtree's intensity
-  glm::vec3 estimate{0.0f};          // its unshadowed radiance, counted in the running total
+  // Its unshadowed radiance, as the running total counts it: its representative's, or an exact
+  // cluster's sum over its lights.
+  glm::vec3 estimate{0.0f};
   glm::vec3 irradiance_bound{0.0f};  // of the subtree: what its cluster leaves uncertain
   glm::vec3 radiance_bound{0.0f};    // of the subtree at the point's surface (RGB)
-  bool centred = false;              // its representative is centred (CutCluster)
+  // When it is a cluster of the cut before (refine_light_cut): its light's index among those
+  // that cut appended (WalkScratch::previous_lights), and whether its ray stood for two lights or
+  // more (WalkScratch::several_light_clusters); kNotKept otherwise.
+  std::uint32_t kept_as = kNotKept;
+  bool several = false;
+  static constexpr std::uint32_t kNotKept = ~0u;
+};
+
+// A subtree the relative cut put aside because its cluster bound was too large for the point's
+// running total: walked later, largest bound first, or kept as a cluster when the total allows.
+struct DeferredSubtree : CutSubtree {
+  Light representative;  // in world space, carrying the subtree's intensity
+};
+
+// What a relative cut summed at a point (find_light_cut's walk), kept so that a finer cut can go
+// on from it (refine_light_cut) and the bounds be answered once, for the last cut
+// (answer_light_cut_bounds).
+struct LightCutSums {
+  glm::dvec3 total{0.0};            // the running total: the estimate of the cut
+  glm::dvec3 culled{0.0};           // the irradiance bounds of what the volumes dropped
+  glm::dvec3 clusters{0.0};         // the clusters' irradiance bounds
+  glm::dvec3 cluster_error{0.0};    // the clusters' radiance error (CulledSoFar::cluster_error)
+  glm::dvec3 radiance_culled{0.0};  // the culled lights' radiance bounds
+  std::uint32_t radiance_parts_made = 0;
+  std::uint32_t deferrals = 0;
+  bool radiance = false;  // the culled radiance bound's parts are collected (scratch.radiance)
 };
 
 // The heap's entry for a DeferredSubtree: the order is read from these 12 bytes alone, so the
@@ -183,6 +211,13 @@ struct WalkScratch {
   // step through.
   Light cluster_light;
   std::vector<SubtreePart> subtree_parts;
+  // The last relative cut's sums, and (when it may be refined) the clusters it kept, in the
+  // order of their lights; refine_light_cut moves that cut's lights to previous_lights.
+  LightCutSums cut_sums;
+  std::vector<CutSubtree> kept_clusters;
+  std::vector<CutSubtree> previous_kept;
+  std::vector<Light> previous_lights;
+  std::vector<glm::vec3> previous_estimates;
 };
 
 // A subtree the walk culled: its node, entered in the frame world_from_local, and the query point
@@ -325,6 +360,30 @@ void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volume
                     const CutNodeTable& table, float tolerance, float relative_error,
                     ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
                     WalkCounters& counters, glm::vec3* culled_irradiance_bound = nullptr);
+
+// find_light_cut in steps, for a method that may cut a point again finer (lev_cut's noise
+// check): start_light_cut makes the cut and leaves its bounds unanswered; with may_refine it
+// keeps its clusters (WalkScratch::kept_clusters) for refine_light_cut. bound_radiance collects
+// the culled radiance bound's parts (scratch.radiance must be set).
+void start_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                     const CutNodeTable& table, float tolerance, float relative_error,
+                     ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
+                     WalkCounters& counters, bool may_refine, bool bound_radiance);
+// Goes on from the last cut at this point (start_light_cut or refine_light_cut with may_refine,
+// its lights in `lights`) to a cut at a smaller relative_error, without walking from the root
+// again: its lights stay, each cluster is put aside again with its bound and walked if that now
+// exceeds relative_error times the cut's total, and the walk goes on as find_light_cut's does.
+// What the volumes dropped stays dropped; an exact cluster kept again keeps its light and sum.
+// `lights` and the walk's lists (cut_estimates, centred, exact and several-light clusters) are
+// those of the finer cut: its own lights first, then its clusters in the order decided.
+void refine_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
+                      const CutNodeTable& table, float tolerance, float relative_error,
+                      ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
+                      WalkCounters& counters, bool may_refine);
+// The last cut's bounds, as find_light_cut answers them: culled_irradiance_bound when given, and
+// scratch.radiance when the cut collected its parts.
+void answer_light_cut_bounds(const LightHierarchy& hierarchy, float tolerance, WalkScratch& scratch,
+                             glm::vec3* culled_irradiance_bound);
 
 // Where a centred cluster's shadow ray goes (CutCluster): one of its lights in world space,
 // drawn in proportion to intensity, fixed per cluster and different between the instances of one

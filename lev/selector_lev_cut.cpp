@@ -74,52 +74,63 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   own.rays_cast.clear();
   own.rays_sorted.clear();
   const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
+  // The culled radiance bound is answered once, for the last cut (answer_light_cut_bounds).
+  CulledRadianceBound culled_radiance;
+  const bool bound_radiance = scratch.culled_radiance && culled_irradiance_bound;
+  if (bound_radiance) {
+    culled_radiance.surface = point.surface_response();
+    scratch.walk.radiance = &culled_radiance;
+  }
   float relative_error = relative_error_;
   // At relative error 0 (no clusters) or with the check off nothing is refined or remembered.
   const bool may_refine = relative_error_ > 0.0f && noise_sigmas_ > 0.0;
+  glm::vec3 radiance(0.0f);
   for (int refinement = 0;; ++refinement) {
+    const bool last = !may_refine || refinement == kNoiseRefinements;
+    // A refined cut goes on from the last one (refine_light_cut) rather than from the root.
+    WalkCounters walk_counters;
+    if (refinement == 0) {
+      scratch.lights.clear();
+      start_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error, point,
+                      scratch.walk, scratch.lights, walk_counters, !last, bound_radiance);
+    } else {
+      refine_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error, point,
+                       scratch.walk, scratch.lights, walk_counters, !last);
+    }
+    counters.nodes_visited += walk_counters.nodes_visited;
+    counters.lights_evaluated += walk_counters.lights_evaluated;
     // lights_tested is the size of the cut shaded: a refined one replaces the last. The rays, the
     // nodes and the lights evaluated are work done, every cut's.
     const std::uint64_t tested_before = counters.lights_tested;
-    RememberedRays shading(point, own.rays_sorted, own.rays_cast, may_refine);
-    const glm::vec3 radiance = shade_cut(relative_error, point, shading, scratch, counters,
-                                         culled_irradiance_bound, ray_visible);
+    RememberedRays shading(point, own.rays_sorted, own.rays_cast, !last);
+    radiance = shade_cut(shading, scratch, counters, ray_visible);
     counters.shadow_rays -= shading.recalled();
-    if (!may_refine || refinement == kNoiseRefinements) return radiance;
+    if (last) break;
     const double noise = visibility_noise(scratch.walk.cut_estimates, ray_visible,
                                           scratch.walk.several_light_clusters);
     // NaN-safe: refines only on a noise known to be above the setting.
-    if (!(noise_sigmas_ * noise * display_scale_ > relative_error_)) return radiance;
-    if (scratch.cancel && scratch.cancel->load(std::memory_order_relaxed)) return radiance;
-    // The inspector lists what the last cut did: the refined one.
+    if (!(noise_sigmas_ * noise * display_scale_ > relative_error_)) break;
+    if (scratch.cancel && scratch.cancel->load(std::memory_order_relaxed)) break;
+    // The inspector lists what the last cut did: the refined one. What the volumes dropped
+    // stays dropped (and recorded); the clusters are decided again.
     if (scratch.inspect) {
       scratch.inspect->shaded.resize(shaded_from);
-      scratch.inspect->clear_walk();
+      scratch.inspect->walk_clusters.clear();
     }
     counters.lights_tested = tested_before;
     relative_error *= 0.5f;
     own.rays_sorted = own.rays_cast;
     std::sort(own.rays_sorted.begin(), own.rays_sorted.end(), earlier_position);
   }
-}
-
-glm::vec3 LevCutSelector::shade_cut(float relative_error, ShadingPoint& point,
-                                    ShadingPoint& shading, SelectorScratch& scratch,
-                                    SelectionCounters& counters, glm::vec3* culled_irradiance_bound,
-                                    std::vector<std::uint8_t>& ray_visible) const {
-  scratch.lights.clear();
-  WalkCounters walk_counters;
-  CulledRadianceBound culled_radiance;
-  if (scratch.culled_radiance && culled_irradiance_bound) {
-    culled_radiance.surface = point.surface_response();
-    scratch.walk.radiance = &culled_radiance;
-  }
-  find_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error, point, scratch.walk,
-                 scratch.lights, walk_counters, culled_irradiance_bound);
+  answer_light_cut_bounds(hierarchy_, tolerance_, scratch.walk, culled_irradiance_bound);
   scratch.walk.radiance = nullptr;
   if (culled_radiance.bounded) *scratch.culled_radiance = culled_radiance;
-  counters.nodes_visited += walk_counters.nodes_visited;
-  counters.lights_evaluated += walk_counters.lights_evaluated;
+  return radiance;
+}
+
+glm::vec3 LevCutSelector::shade_cut(ShadingPoint& shading, SelectorScratch& scratch,
+                                    SelectionCounters& counters,
+                                    std::vector<std::uint8_t>& ray_visible) const {
   // The lights and the clusters' representatives alike: one shadow ray each.
   const std::size_t shaded_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
   // A centred cluster's ray goes to one of its lights (CutCluster); the rest to the light itself.

@@ -9,9 +9,11 @@
 // volumes drop at is tied to it (kDropToleranceOfRelativeError), so a tighter setting both drops
 // less and cuts finer, and at 0 it drops nothing and cuts nothing: the image is `rt`'s bit for bit.
 // Where the cut's rays find its clusters partly hidden, their 0/1 rays are noisy
-// (visibility_noise.h): at such a point the cut is made again at half the relative error, up to
+// (visibility_noise.h): at such a point the cut is made finer, at half the relative error, up to
 // kNoiseRefinements times, until kNoiseSigmas times that noise, on the display, is within the
-// relative error. Deterministic: the cut depends on the point only.
+// relative error; a finer cut goes on from the last one (refine_light_cut: its clusters opened
+// where their bounds now exceed the criterion) rather than walking from the root again.
+// Deterministic: the cut depends on the point only.
 #pragma once
 
 #include <cstdint>
@@ -73,11 +75,9 @@ class LevCutSelector final : public LightSelector {
   }
 
  private:
-  // One cut at `relative_error` shaded (its shadow rays cast), the outcomes in `ray_visible`.
-  // `shading` is `point` with its rays remembered (RememberedRays in the .cpp).
-  glm::vec3 shade_cut(float relative_error, ShadingPoint& point, ShadingPoint& shading,
-                      SelectorScratch& scratch, SelectionCounters& counters,
-                      glm::vec3* culled_irradiance_bound,
+  // The cut in scratch.lights shaded (its shadow rays cast through `shading`: `point` with its
+  // rays remembered, RememberedRays in the .cpp), the outcomes in `ray_visible`.
+  glm::vec3 shade_cut(ShadingPoint& shading, SelectorScratch& scratch, SelectionCounters& counters,
                       std::vector<std::uint8_t>& ray_visible) const;
 
   const LightHierarchy& hierarchy_;

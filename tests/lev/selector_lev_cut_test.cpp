@@ -441,6 +441,129 @@ lev::LightDescription fixtures_of_spots_aimed_apart() {
   return tree;
 }
 
+// Index lists of the walk: strictly increasing, each below `size`.
+bool increasing_below(const std::vector<std::size_t>& indices, std::size_t size) {
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    if (indices[k] >= size || (k > 0 && indices[k] <= indices[k - 1])) return false;
+  }
+  return true;
+}
+
+// What check_refined_cuts saw: points whose refined cut grew, and exact clusters in refined cuts.
+struct RefinedCuts {
+  std::uint64_t finer = 0;
+  std::uint64_t exact_clusters = 0;
+};
+
+// A cut at x, then two cuts made finer by going on from the last one (refine_light_cut), each
+// halving the relative error, checked as a cut: its lists are parallel to its lights, its running
+// total is the sum of its estimates, its error against the sum over every light is within its
+// bound.
+void check_refined_cuts(const lev::LightHierarchy& h, const lev::ExtentVolumes& volumes,
+                        const lev::CutNodeTable& table, const std::vector<lev::Light>& world_lights,
+                        float tau, float relative_error, const glm::vec3& x,
+                        lev::WalkScratch& scratch, const std::string& where, RefinedCuts& seen) {
+  UnitResponsePoint point(x);
+  const glm::dvec3 exact = summed_irradiance(world_lights, x);
+  std::vector<lev::Light> cut;
+  lev::WalkCounters counters;
+  std::size_t last_size = 0;
+  float e = relative_error;
+  for (int round = 0; round < 3; ++round) {
+    SCOPED_TRACE(where + " relative error " + std::to_string(e));
+    const bool may_refine = round < 2;
+    if (round == 0) {
+      lev::start_light_cut(h, volumes, table, tau, e, point, scratch, cut, counters, may_refine,
+                           false);
+    } else {
+      lev::refine_light_cut(h, volumes, table, tau, e, point, scratch, cut, counters, may_refine);
+      seen.exact_clusters += scratch.exact_clusters.size();
+    }
+    ASSERT_EQ(scratch.cut_estimates.size(), cut.size());
+    ASSERT_TRUE(increasing_below(scratch.exact_clusters, cut.size()));
+    ASSERT_TRUE(increasing_below(scratch.several_light_clusters, cut.size()));
+    std::vector<std::size_t> centred;
+    for (const lev::CutCluster& c : scratch.centred_clusters) {
+      ASSERT_NE(table.centred[c.node], 0);
+      centred.push_back(c.index);
+    }
+    ASSERT_TRUE(increasing_below(centred, cut.size()));
+    if (may_refine) {  // one record per cluster, in the order of their lights
+      std::vector<std::size_t> kept;
+      for (const lev::CutSubtree& c : scratch.kept_clusters) {
+        kept.push_back(c.kept_as);
+        ASSERT_EQ(c.centred, std::binary_search(centred.begin(), centred.end(), c.kept_as));
+      }
+      ASSERT_TRUE(increasing_below(kept, cut.size()));
+      for (const std::size_t i : centred)
+        ASSERT_TRUE(std::binary_search(kept.begin(), kept.end(), i));
+      for (const std::size_t i : scratch.exact_clusters)
+        ASSERT_TRUE(std::binary_search(kept.begin(), kept.end(), i));
+    }
+    glm::dvec3 estimate(0.0);
+    for (std::size_t i = 0; i < cut.size(); ++i) {
+      estimate += glm::dvec3(scratch.cut_estimates[i]);
+      if (std::binary_search(scratch.exact_clusters.begin(), scratch.exact_clusters.end(), i))
+        continue;
+      ASSERT_EQ(scratch.cut_estimates[i], point.unshadowed_radiance(cut[i])) << i;
+    }
+    glm::vec3 bound(-1.0f);
+    lev::answer_light_cut_bounds(h, tau, scratch, &bound);
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_NEAR(scratch.cut_sums.total[c], estimate[c], 1e-4 * (1.0 + estimate[c])) << c;
+      ASSERT_LE(std::abs(estimate[c] - exact[c]),
+                static_cast<double>(bound[c]) * (1.0 + 1e-4) + 1e-6 * exact[c])
+          << c;
+    }
+    if (round > 0 && cut.size() > last_size) ++seen.finer;
+    last_size = cut.size();
+    e *= 0.5f;
+  }
+}
+
+// Cuts made finer by going on from the last one are cuts (check_refined_cuts), on random
+// instanced scenes and on fixtures of spots aimed apart (exact clusters kept again), and finer
+// at many points (a cluster opened may also leave nothing: its parts dark or dropped by the
+// volumes).
+TEST(LevCut, ARefinedCutGoesOnFromTheLastOne) {
+  RefinedCuts seen;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    Random r(seed);
+    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+    const lev::CutNodeTable table = lev::make_cut_node_table(h);
+    lev::WalkScratch scratch;
+    for (const float tau : {0.0f, 1e-2f}) {
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+      for (const float relative_error : {0.02f, 0.3f, 1.0f}) {
+        for (int k = 0; k < 25; ++k) {
+          const glm::vec3 x(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
+          check_refined_cuts(h, volumes, table, world_lights, tau, relative_error, x, scratch,
+                             "seed " + std::to_string(seed) + " k " + std::to_string(k), seen);
+          if (HasFatalFailure()) return;
+        }
+      }
+    }
+  }
+  EXPECT_GT(seen.finer, 200u);
+  const lev::LightDescription tree = fixtures_of_spots_aimed_apart();
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);
+  const lev::CutNodeTable table = lev::make_cut_node_table(h);
+  lev::WalkScratch scratch;
+  Random r(11);
+  const RefinedCuts random_scenes = seen;
+  for (int k = 0; k < 100; ++k) {
+    const glm::vec3 x(r.uniform(-12, 12), r.uniform(-6, 6), r.uniform(-2, 2));
+    check_refined_cuts(h, volumes, table, world_lights, 0.0f, 1.0f, x, scratch,
+                       "fixtures k " + std::to_string(k), seen);
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(seen.exact_clusters - random_scenes.exact_clusters, 30u);
+}
+
 // Every light is seen; each shadow ray's target is kept.
 class RecordsItsRays final : public UnitResponsePoint {
  public:
@@ -725,9 +848,18 @@ TEST(LevCut, TheNoiseCheckLeavesClustersOfOneLight) {
 }
 
 // After a refinement the inspector lists the last cut alone: its shaded lights are the cut's,
-// their contributions sum to the radiance, and its clusters are the walk's.
+// their contributions sum to the radiance, its clusters are the walk's, and with what was dropped
+// they hold every light once.
 TEST(LevCut, AfterTheNoiseCheckTheInspectorListsTheLastCut) {
-  const lev::LightHierarchy h = lev::build_hierarchy(rig_of_fixtures());
+  lev::LightDescription tree = rig_of_fixtures();
+  // Far fixtures, below the tolerance at every point: dropped by the volumes in the first cut.
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 at(300.0f + 2.0f * static_cast<float>(k), 0.0f, 10.0f);
+    tree.root.children.push_back(
+        lev::affine_node(lev::make_translation(at), lev::instance_node(0)));
+  }
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const std::size_t light_count = lev::flatten_light_description(tree).size();
   const lev::LevCutSelector checked(h, 0.05f);
   const lev::LevCutSelector unchecked(h, 0.05f, 1.0f, 0.0);
   int refined = 0;
@@ -750,6 +882,13 @@ TEST(LevCut, AfterTheNoiseCheckTheInspectorListsTheLastCut) {
     }
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c], radiance[c], 1e-5 * (1.0 + sum[c])) << k;
     EXPECT_EQ(cluster_entries, record.walk_clusters.size()) << k;
+    // Every light once: shaded, in a cluster of the last cut, or dropped by a cut before (a
+    // refined cut goes on from the last one and keeps what it dropped).
+    lev::complete_inspection(h, point, record);
+    std::size_t accounted = record.culled.size();
+    for (const lev::ShadedLight& s : record.shaded)
+      accounted += s.role == lev::InspectRole::cluster ? s.members.size() : 1;
+    EXPECT_EQ(accounted, light_count) << k;
     lev::SelectorScratch plain;
     lev::SelectionCounters once;
     BehindAWall same(x, wall_x);
