@@ -58,6 +58,18 @@ glm::dvec3 summed_irradiance(const std::vector<lev::Light>& lights, const glm::v
   return sum;
 }
 
+// A description with what the cut's tests read of it: its hierarchy, its lights in world space
+// (flattened without the walk) and the cut's node table.
+struct CutScene {
+  explicit CutScene(const lev::LightDescription& tree)
+      : h(lev::build_hierarchy(tree)),
+        world_lights(lev::flatten_light_description(tree)),
+        table(lev::make_cut_node_table(h)) {}
+  lev::LightHierarchy h;
+  std::vector<lev::Light> world_lights;
+  lev::CutNodeTable table;
+};
+
 TEST(LevCut, RelativeErrorZeroIsLevsWalk) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Random r(seed);
@@ -90,10 +102,10 @@ TEST(LevCut, ErrorWithinTheCulledBoundAndClustersFormed) {
   std::uint64_t clustered_points = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Random r(seed);
-    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
-    const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
-    const lev::CutNodeTable table = lev::make_cut_node_table(h);
+    const CutScene scene(lev_test::random_instanced_tree(r));
+    const lev::LightHierarchy& h = scene.h;
+    const std::vector<lev::Light>& world_lights = scene.world_lights;
+    const lev::CutNodeTable& table = scene.table;
     lev::WalkScratch scratch;
     for (const float tau : {0.0f, 1e-3f, 1e-1f}) {
       const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
@@ -459,10 +471,12 @@ struct RefinedCuts {
 // halving the relative error, checked as a cut: its lists are parallel to its lights, its running
 // total is the sum of its estimates, its error against the sum over every light is within its
 // bound.
-void check_refined_cuts(const lev::LightHierarchy& h, const lev::ExtentVolumes& volumes,
-                        const lev::CutNodeTable& table, const std::vector<lev::Light>& world_lights,
-                        float tau, float relative_error, const glm::vec3& x,
-                        lev::WalkScratch& scratch, const std::string& where, RefinedCuts& seen) {
+void check_refined_cuts(const CutScene& scene, const lev::ExtentVolumes& volumes, float tau,
+                        float relative_error, const glm::vec3& x, lev::WalkScratch& scratch,
+                        const std::string& where, RefinedCuts& seen) {
+  const lev::LightHierarchy& h = scene.h;
+  const lev::CutNodeTable& table = scene.table;
+  const std::vector<lev::Light>& world_lights = scene.world_lights;
   UnitResponsePoint point(x);
   const glm::dvec3 exact = summed_irradiance(world_lights, x);
   std::vector<lev::Light> cut;
@@ -529,17 +543,14 @@ TEST(LevCut, ARefinedCutGoesOnFromTheLastOne) {
   RefinedCuts seen;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     Random r(seed);
-    const lev::LightDescription tree = lev_test::random_instanced_tree(r);
-    const lev::LightHierarchy h = lev::build_hierarchy(tree);
-    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
-    const lev::CutNodeTable table = lev::make_cut_node_table(h);
+    const CutScene scene(lev_test::random_instanced_tree(r));
     lev::WalkScratch scratch;
     for (const float tau : {0.0f, 1e-2f}) {
-      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tau);
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(scene.h, tau);
       for (const float relative_error : {0.02f, 0.3f, 1.0f}) {
         for (int k = 0; k < 25; ++k) {
           const glm::vec3 x(r.uniform(-40, 40), r.uniform(-40, 40), r.uniform(-10, 10));
-          check_refined_cuts(h, volumes, table, world_lights, tau, relative_error, x, scratch,
+          check_refined_cuts(scene, volumes, tau, relative_error, x, scratch,
                              "seed " + std::to_string(seed) + " k " + std::to_string(k), seen);
           if (HasFatalFailure()) return;
         }
@@ -547,18 +558,15 @@ TEST(LevCut, ARefinedCutGoesOnFromTheLastOne) {
     }
   }
   EXPECT_GT(seen.finer, 200u);
-  const lev::LightDescription tree = fixtures_of_spots_aimed_apart();
-  const lev::LightHierarchy h = lev::build_hierarchy(tree);
-  const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
-  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, 0.0f);
-  const lev::CutNodeTable table = lev::make_cut_node_table(h);
+  const CutScene fixtures(fixtures_of_spots_aimed_apart());
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(fixtures.h, 0.0f);
   lev::WalkScratch scratch;
   Random r(11);
   const RefinedCuts random_scenes = seen;
   for (int k = 0; k < 100; ++k) {
     const glm::vec3 x(r.uniform(-12, 12), r.uniform(-6, 6), r.uniform(-2, 2));
-    check_refined_cuts(h, volumes, table, world_lights, 0.0f, 1.0f, x, scratch,
-                       "fixtures k " + std::to_string(k), seen);
+    check_refined_cuts(fixtures, volumes, 0.0f, 1.0f, x, scratch, "fixtures k " + std::to_string(k),
+                       seen);
     if (HasFatalFailure()) return;
   }
   EXPECT_GT(seen.exact_clusters - random_scenes.exact_clusters, 30u);
