@@ -39,8 +39,11 @@ inline constexpr float kDropToleranceOfRelativeError = 1.0f / 255.0f;
 // at most this many times, halving the relative error each time. Three deviations: among
 // thousands of pixels a few sit that far out, and the maximum error is set by those (hall 16,384
 // at 0.03: two deviations leave max 3.01 %, four spend 16 % more rays; docs/results/lev_cut.md).
+// Two refinements: a third, where the noise still exceeds the setting at a quarter of it, left
+// every maximum error as it was and cost 8-15 % more rays (hall 4,096 at 0.02 and 0.025, hall
+// 16,384 at 0.025 and 0.03, the stage at 0.01 and 0.02; averages 0.00-0.01 points lower).
 inline constexpr double kNoiseSigmas = 3.0;
-inline constexpr int kNoiseRefinements = 3;
+inline constexpr int kNoiseRefinements = 2;
 
 // A shadow ray cast at the current point: the light's position (its float bits) and whether the
 // ray found it. A refined cut keeps many of the cut's clusters and lights, whose rays go to the
