@@ -338,6 +338,55 @@ TEST(Extremes, LevEstNeverEstimatesMoreThanTheBoundOfWhatItCulls) {
   }
 }
 
+// Lights with ranges from 1e-30 to 1e30 (points, and smooth spots of 1e-6 to 180 degrees), a flat
+// list as a scene file gives it. At tolerance 0 lev's walk culls only lights dark at the point
+// (past their ranges) and its image is rt's, but the culled subtrees' aggregate bounds know no
+// range: lev certified up to 10 % of error there, and lev_mc drew from those dark lights (to
+// no effect) and certified nothing (100 %).
+renderer::Scene ranged_lights_scene() {
+  renderer::Scene scene;
+  scene.name = "ranged lights";
+  scene.materials.push_back({});
+  scene.geometry.prototypes.push_back(floor_and_box(0));
+  scene.geometry.instances.push_back({0, lev::Similarity{}});
+  const float point_ranges[] = {1e-30f, 1e-3f, 1.0f, 3.0001f, 1e30f};
+  const float spot_ranges[] = {1e-30f, 3.0f, 1e30f};
+  const float cones[] = {1.7453292e-8f, 1.5707964f, 3.1415927f, 0.5235988f};
+  std::vector<lev::Light> lights;
+  for (int i = 0; i < 40; ++i) {
+    const float x = 0.3f * static_cast<float>(i) - 7.0f;
+    lev::Light point = lev::make_point_light({x, 0, 3}, glm::vec3(1.0f));
+    point.range = point_ranges[i % 5];
+    lights.push_back(point);
+    lev::Light spot =
+        lev::make_smooth_spot_light({x, 2, 3}, {0, 0, -1}, glm::vec3(1.0f), 0.0f, cones[i % 4]);
+    spot.range = spot_ranges[i % 3];
+    lights.push_back(spot);
+  }
+  scene.light_description.root = lev::build_light_bvh(lights);
+  scene.lights = lev::build_hierarchy(scene.light_description);
+  scene.camera.position = {0, -18, 9};
+  scene.camera.target = {0, 0, 0};
+  return scene;
+}
+
+TEST(Extremes, AtToleranceZeroLevAndLevMcCertifyZeroPastTheLightsRanges) {
+  renderer::Scene scene = ranged_lights_scene();
+  const renderer::RayScene rays(scene);
+  const renderer::Framebuffer rt = render_extreme(scene, rays, lev::Method::rt, 0.0f);
+  for (const lev::Method method : {lev::Method::lev, lev::Method::lev_mc}) {
+    const renderer::Framebuffer fb = render_extreme(scene, rays, method, 0.0f);
+    EXPECT_TRUE(bitwise_equal(fb, rt)) << lev::method_info(method).name;
+    int bounded_above_zero = 0;
+    for (const glm::vec3& bound : fb.error_bound_sum)
+      if (bound != glm::vec3(0.0f)) ++bounded_above_zero;
+    EXPECT_EQ(bounded_above_zero, 0) << lev::method_info(method).name;
+    EXPECT_EQ(renderer::sum_framebuffer(fb).lights_tested,
+              renderer::sum_framebuffer(rt).lights_tested)
+        << lev::method_info(method).name;
+  }
+}
+
 TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene);
