@@ -105,7 +105,7 @@ glm::vec3 LevEstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   // [0, lev's culled radiance bound R] per channel: E above R is wrong by more than min(E, R) is,
   // so it is taken down to R. A representative sits at its cluster's centre, which may lie next
   // to the point while every light of the cluster is far: seen there, it stood for 0.67 (white at
-  // the pixel) where R was 0.01 and the lights were all hidden. R costs one more walk, made only
+  // the pixel) where R was 0.2 and the lights were all hidden. R costs one more walk, made only
   // where clusters were cut (or where the bound is asked).
   CulledRadianceBound culled_radiance;
   const bool radiance_bound_asked = scratch.culled_radiance && culled_irradiance_bound;
