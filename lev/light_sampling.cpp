@@ -314,7 +314,8 @@ glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint&
   }
   const double total = limited.finish();
   counters.nodes_visited += part_weights.size();
-  if (!(total > 0.0)) return glm::vec3(0.0f);
+  scratch.nothing_to_draw = !(total > 0.0);
+  if (scratch.nothing_to_draw) return glm::vec3(0.0f);
   glm::dvec3 sum(0.0);
   SampledLight sampled;
   for (int draw = 0; draw < k; ++draw) {

@@ -30,8 +30,12 @@ glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& s
     if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(0.0f);
     return tested;
   }
-  return tested + sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random, sampling,
-                                   counters, nullptr, scratch.inspect);
+  const glm::vec3 sampled = sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random,
+                                             sampling, counters, nullptr, scratch.inspect);
+  // What the walk culled cannot reach the point (every importance zero): exact, as above.
+  if (sampling.nothing_to_draw && culled_irradiance_bound)
+    *culled_irradiance_bound = glm::vec3(0.0f);
+  return tested + sampled;
 }
 
 }  // namespace lev

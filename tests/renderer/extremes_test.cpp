@@ -387,6 +387,45 @@ TEST(Extremes, AtToleranceZeroLevAndLevMcCertifyZeroPastTheLightsRanges) {
   }
 }
 
+// A floor lit only from below: every light lies behind the surface the camera sees, so the
+// sampling methods' importances are all zero there and they draw nothing. The radiance is rt's
+// (the ambient term) and is certified so: the bound said +inf (100 %), as for any sampled estimate.
+renderer::Scene lights_under_the_floor_scene() {
+  renderer::Scene scene;
+  scene.name = "lights under the floor";
+  scene.materials.push_back({});
+  renderer::Prototype room;
+  renderer::TriangleMesh floor;
+  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
+  room.meshes.push_back(floor);
+  scene.geometry.prototypes.push_back(room);
+  scene.geometry.instances.push_back({0, lev::Similarity{}});
+  std::vector<lev::Light> lights;
+  for (int i = 0; i < 16; ++i) {
+    const glm::vec3 p(static_cast<float>(i % 4) - 1.5f, static_cast<float>(i / 4) - 1.5f, -2.0f);
+    lights.push_back(lev::make_point_light(p, glm::vec3(0.5f)));
+  }
+  scene.light_description.root = lev::build_light_bvh(lights);
+  scene.lights = lev::build_hierarchy(scene.light_description);
+  scene.camera.position = {0, -6, 8};
+  scene.camera.target = {0, 0, 0};
+  return scene;
+}
+
+TEST(Extremes, SamplingMethodsCertifyZeroWhereNoLightCanReachThePoint) {
+  renderer::Scene scene = lights_under_the_floor_scene();
+  const renderer::RayScene rays(scene);
+  const renderer::Framebuffer rt = render_extreme(scene, rays, lev::Method::rt, 0.0f);
+  for (const lev::Method method : {lev::Method::light_tree, lev::Method::lev_mc}) {
+    const renderer::Framebuffer fb = render_extreme(scene, rays, method, 0.01f);
+    EXPECT_TRUE(bitwise_equal(fb, rt)) << lev::method_info(method).name;
+    int bounded_above_zero = 0;
+    for (const glm::vec3& bound : fb.error_bound_sum)
+      if (bound != glm::vec3(0.0f)) ++bounded_above_zero;
+    EXPECT_EQ(bounded_above_zero, 0) << lev::method_info(method).name;
+  }
+}
+
 TEST(Extremes, LevAtToleranceZeroStillEqualsRt) {
   renderer::Scene scene = extreme_scene();
   const renderer::RayScene rays(scene);
