@@ -94,7 +94,8 @@ void pass_through(const LightHierarchy& h, std::uint32_t& node, DescentFrame& fr
   });
 }
 
-double light_weight(const Light& light, const FramePoint& x, const glm::vec3& normal, bool& edge) {
+double light_draw_weight(const Light& light, const FramePoint& x, const glm::vec3& normal,
+                         bool& edge) {
   edge = false;
   double e = channel_sum(irradiance(light, x.point));
   if (e > 0.0 && normal != glm::vec3(0.0f)) {
@@ -108,8 +109,8 @@ double light_weight(const Light& light, const FramePoint& x, const glm::vec3& no
   return kEdgeShare * aggregate_importance(light_aggregate(light), x, normal);
 }
 
-double subtree_weight(const LightHierarchy& h, std::uint32_t node, const FramePoint& local,
-                      const glm::vec3& local_normal, bool& edge) {
+double subtree_draw_weight(const LightHierarchy& h, std::uint32_t node, const FramePoint& local,
+                           const glm::vec3& local_normal, bool& edge) {
   edge = false;
   // Point and normal only, as pass_through moves them: the importance needs no world_from_local.
   FramePoint point = local;
@@ -117,7 +118,8 @@ double subtree_weight(const LightHierarchy& h, std::uint32_t node, const FramePo
   node = pass_transforms(h, node,
                          [&](const HierarchyNode& n) { enter_transform(h, n, point, normal); });
   const HierarchyNode& n = h.nodes[node];
-  if (node_role(n) == NodeRole::light) return light_weight(leaf_light(h, n), point, normal, edge);
+  if (node_role(n) == NodeRole::light)
+    return light_draw_weight(leaf_light(h, n), point, normal, edge);
   return aggregate_importance(kept_aggregate(h, node), point, normal);
 }
 
@@ -171,7 +173,7 @@ double child_weights(const LightHierarchy& h, std::uint32_t union_node, const De
   EdgeLimitedWeights limited{weights};
   for (const std::uint32_t child : children) {
     bool edge = false;
-    const double w = subtree_weight(h, child, frame.point, frame.normal, edge);
+    const double w = subtree_draw_weight(h, child, frame.point, frame.normal, edge);
     limited.push(w, edge);
   }
   const double total = limited.finish();
@@ -212,13 +214,13 @@ SubtreeRef whole_hierarchy(const LightHierarchy& hierarchy, const glm::vec3& wor
 
 double light_importance(const Light& light, const FramePoint& x, const glm::vec3& normal) {
   bool edge = false;
-  return light_weight(light, x, normal, edge);
+  return light_draw_weight(light, x, normal, edge);
 }
 
 double subtree_importance(const LightHierarchy& h, std::uint32_t node, const FramePoint& local,
                           const glm::vec3& local_normal) {
   bool edge = false;
-  return subtree_weight(h, node, local, local_normal, edge);
+  return subtree_draw_weight(h, node, local, local_normal, edge);
 }
 
 std::size_t choose_weighted(const std::vector<double>& weights, double total, float u) {
@@ -303,13 +305,13 @@ glm::vec3 sampled_radiance(const LightHierarchy& hierarchy, int k, ShadingPoint&
   for (const SubtreeRef& subtree : parts.subtrees) {
     bool edge = false;
     const double w =
-        subtree_weight(hierarchy, subtree.node, subtree.point,
-                       glm::transpose(subtree.world_from_local.rotation) * at.normal, edge);
+        subtree_draw_weight(hierarchy, subtree.node, subtree.point,
+                            glm::transpose(subtree.world_from_local.rotation) * at.normal, edge);
     limited.push(w, edge);
   }
   for (const Light& light : parts.lights) {
     bool edge = false;
-    const double w = light_weight(light, world_point, at.normal, edge);
+    const double w = light_draw_weight(light, world_point, at.normal, edge);
     limited.push(w, edge);
   }
   const double total = limited.finish();
