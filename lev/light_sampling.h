@@ -107,6 +107,9 @@ struct SamplingScratch final : MethodScratch {
   std::vector<SubtreeRef> queue;
   std::vector<double> part_weights;
   std::vector<double> weights;
+  // Set by sampled_radiance: every part's importance was zero at the point (their lights behind
+  // the surface, dark there or of no intensity), so they add nothing and no draw was made.
+  bool nothing_to_draw = false;
 };
 
 // The estimator both sampling methods use on scratch.parts: first opened (open_wide_parts, within

@@ -1,6 +1,7 @@
 #include "lev/selector_ast.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "lev/important_lights.h"
@@ -74,13 +75,29 @@ glm::vec3 AstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scr
   // stands in for step 3's certainty sums r(i)). The sum is a float running sum, unlike the
   // double one of sum_visible_lights: usually it adds a few large terms, where float drifts
   // little, and ast's images are defined by it (a double sum would change them).
+  // The running rest is a difference of sums, which a huge potential swamps: after 1e36 + 0.3 +
+  // 0.3 less 1e36 it says 0 (or less, after one more 0.3) while 0.6 is untested, and testing
+  // stopped there, at tolerance 0 too. Every partial sum is at most the first one and each
+  // operation rounds by at most its epsilon, so where the running rest is within that slack of
+  // the tolerance the rest is summed again from the candidates left.
+  const double epsilon = std::numeric_limits<double>::epsilon();
+  double slack = static_cast<double>(heap.size()) * untested * epsilon;
+  const auto rest_below_tolerance = [&]() {
+    if (untested >= tolerance_) return false;
+    if (untested + slack < tolerance_) return true;
+    untested = 0.0;
+    for (std::size_t k = 0; k < remaining; ++k) untested += heap[k].potential;
+    slack = static_cast<double>(remaining) * untested * epsilon;
+    return untested < tolerance_;
+  };
   glm::vec3 sum(0.0f);
   std::uint32_t point_hits = 0, point_tests = 0;
-  while (remaining > 0 && untested >= tolerance_) {
+  while (remaining > 0 && !rest_below_tolerance()) {
     std::pop_heap(heap.begin(), heap.begin() + static_cast<std::ptrdiff_t>(remaining), smaller);
     --remaining;
     const AstCandidate& c = heap[remaining];
     untested -= c.potential;
+    slack += std::abs(untested) * epsilon;
     ++point_tests;
     if (cancelled(point_tests)) return sum;
     ++counters.lights_tested;

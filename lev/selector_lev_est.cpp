@@ -97,17 +97,37 @@ glm::vec3 LevEstSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
   // The estimate is not exact, so the bound still counts every culled cluster.
   if (culled_irradiance_bound) *culled_irradiance_bound = culled_bound;
   const std::size_t clusters_from = scratch.inspect ? scratch.inspect->shaded.size() : 0;
-  const glm::vec3 estimate = sum_visible_lights(
+  glm::vec3 estimate = sum_visible_lights(
       clusters, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
       scratch.inspect);
   if (scratch.inspect) scratch.inspect->attach_walk_clusters(clusters_from);
-  // The radiance error at the surface: the clusters' estimate E stands for what lev culls, whose
-  // shadowed radiance C lies in [0, lev's culled radiance bound R] per channel, so |E - C| is at
-  // most max(E, R).
-  if (scratch.culled_radiance && culled_irradiance_bound) {
-    CulledRadianceBound culled_radiance = lev_culled_radiance_bound(
+  // The clusters' estimate E stands for what lev culls, whose shadowed radiance C lies in
+  // [0, lev's culled radiance bound R] per channel: E above R is wrong by more than min(E, R) is,
+  // so it is taken down to R. A representative sits at its cluster's centre, which may lie next
+  // to the point while every light of the cluster is far: seen there, it stood for 0.67 (white at
+  // the pixel) where R was 0.2 and the lights were all hidden. R costs one more walk, made only
+  // where clusters were cut (or where the bound is asked).
+  CulledRadianceBound culled_radiance;
+  const bool radiance_bound_asked = scratch.culled_radiance && culled_irradiance_bound;
+  if (!clusters.empty() || radiance_bound_asked) {
+    culled_radiance = lev_culled_radiance_bound(
         hierarchy_, volumes_, tolerance_, x, point.surface_response(), scratch.walk,
         method_scratch<LevEstScratch>(scratch).bound_lights);
+    if (culled_radiance.bounded) {
+      const glm::vec3 bounded = glm::min(estimate, culled_radiance.bound);
+      // The inspector's cluster rows add up to the pixel as shaded: each scaled alike.
+      if (scratch.inspect && bounded != estimate) {
+        for (std::size_t i = clusters_from; i < scratch.inspect->shaded.size(); ++i) {
+          glm::vec3& contribution = scratch.inspect->shaded[i].contribution;
+          for (int c = 0; c < 3; ++c)
+            if (estimate[c] > 0.0f) contribution[c] *= bounded[c] / estimate[c];
+        }
+      }
+      estimate = bounded;
+    }
+  }
+  // The radiance error at the surface: |E - C| is at most max(E, R).
+  if (radiance_bound_asked) {
     culled_radiance.bound = glm::max(culled_radiance.bound, estimate);
     *scratch.culled_radiance = culled_radiance;
   }

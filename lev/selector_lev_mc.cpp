@@ -22,14 +22,20 @@ glm::vec3 LevMcSelector::direct_radiance(ShadingPoint& point, SelectorScratch& s
   const glm::vec3 tested = sum_visible_lights(
       scratch.lights, [](const Light&) { return true; }, point, counters, scratch.cancel, nullptr,
       scratch.inspect);
-  if (sampling.parts.subtrees.empty() && sampling.parts.lights.empty()) {
-    // Nothing culled here (tolerance 0, or a point every light reaches): the radiance is rt's,
-    // exact, so the certified bound is 0, not the sampled estimate's +inf.
+  if (tolerance_ == 0.0f || (sampling.parts.subtrees.empty() && sampling.parts.lights.empty())) {
+    // Nothing culled here (a point every light reaches), or only lights dark at the point
+    // (tolerance 0: is_important asks for an irradiance above 0; past their ranges the walk culls
+    // lights there, and their draws found nothing): the radiance is rt's, exact, so the
+    // certified bound is 0, not the sampled estimate's +inf, and no draw is made.
     if (culled_irradiance_bound) *culled_irradiance_bound = glm::vec3(0.0f);
     return tested;
   }
-  return tested + sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random, sampling,
-                                   counters, nullptr, scratch.inspect);
+  const glm::vec3 sampled = sampled_radiance(hierarchy_, lights_per_point_, point, scratch.random,
+                                             sampling, counters, nullptr, scratch.inspect);
+  // What the walk culled cannot reach the point (every importance zero): exact, as above.
+  if (sampling.nothing_to_draw && culled_irradiance_bound)
+    *culled_irradiance_bound = glm::vec3(0.0f);
+  return tested + sampled;
 }
 
 }  // namespace lev
