@@ -118,6 +118,11 @@ struct CulledSoFar {
   // When relative and set: the walk goes on from a cut before (refine_light_cut): it starts
   // from the subtrees put aside, not from the root.
   bool go_on = false;
+  // When relative and cutting: the radiance bounds (at the point's surface) of what the volumes
+  // dropped, and the most their brightest channel may reach: past it, a subtree the volumes
+  // would drop is cut instead, and a light they would drop is kept (start_light_cut).
+  glm::dvec3 dropped{0.0};
+  float drop_budget = std::numeric_limits<float>::infinity();
   // When relative: the clusters of the cut stood for by a centred representative (CutCluster),
   // and what the cut reads of each node (CutNodeTable).
   std::vector<CutCluster>* centred = nullptr;
@@ -177,14 +182,10 @@ bool smaller_radiance_part(const RadiancePart& a, const RadiancePart& b) {
 
 // Adds the subtree at `node` to the radiance parts' heap with its radiance bound at x (both in
 // the frame the node is entered with, as the surface's directions), unless it is dark there.
-void push_radiance_part(const LightHierarchy& h, std::uint32_t node, const FramePoint& x,
-                        const glm::vec3& normal, const glm::vec3& mirrored_view,
-                        CulledSoFar& culled) {
-  SurfaceResponse surface = culled.radiance->surface;
-  surface.normal = normal;
-  surface.mirrored_view = mirrored_view;
-  glm::vec3 irradiance;
-  const glm::vec3 bound = radiance_bound(h, node, x, surface, &irradiance);
+// add_radiance_part takes the bounds made already.
+void add_radiance_part(std::uint32_t node, const FramePoint& x, const glm::vec3& normal,
+                       const glm::vec3& mirrored_view, const glm::vec3& bound,
+                       const glm::vec3& irradiance, CulledSoFar& culled) {
   float key = brightest(bound);
   if (key == 0.0f) {  // dark at this surface, yet its irradiance still counts
     culled.sum += glm::dvec3(irradiance);
@@ -196,6 +197,16 @@ void push_radiance_part(const LightHierarchy& h, std::uint32_t node, const Frame
   std::push_heap(culled.radiance_parts->begin(), culled.radiance_parts->end(),
                  smaller_radiance_part);
 }
+void push_radiance_part(const LightHierarchy& h, std::uint32_t node, const FramePoint& x,
+                        const glm::vec3& normal, const glm::vec3& mirrored_view,
+                        CulledSoFar& culled) {
+  SurfaceResponse surface = culled.radiance->surface;
+  surface.normal = normal;
+  surface.mirrored_view = mirrored_view;
+  glm::vec3 irradiance;
+  const glm::vec3 bound = radiance_bound(h, node, x, surface, &irradiance);
+  add_radiance_part(node, x, normal, mirrored_view, bound, irradiance, culled);
+}
 
 // The exact test of one world-space light (is_important, one falloff for both uses); a light
 // that fails it adds its irradiance to `culled`, and under a budget it is kept (it passes) when
@@ -205,7 +216,19 @@ template <Culled kCulled>
 inline bool passes(const Light& world, const glm::vec3& point, float tolerance,
                    CulledSoFar& culled) {
   const float falloff = irradiance_falloff(world, point);
-  if (is_important_from_falloff(world, falloff, tolerance)) {
+  bool important = is_important_from_falloff(world, falloff, tolerance);
+  glm::dvec3 dropped_radiance(0.0);
+  if constexpr (kCulled == Culled::relative) {
+    if (!important && culled.shading && falloff > 0.0f) {
+      // The light's own radiance bound, as the culled radiance bound takes it (below).
+      const Bounds at_light{world.position, world.position};
+      dropped_radiance =
+          product_bound(irradiance_from_falloff(world, falloff),
+                        response_bound(culled.surface, at_light, FramePoint{point, 0.0f}));
+      important = brightest(culled.dropped + dropped_radiance) > culled.drop_budget;
+    }
+  }
+  if (important) {
     if constexpr (kCulled == Culled::relative) {
       if (culled.shading) {
         const glm::vec3 estimate = culled.shading->unshadowed_radiance(world);
@@ -221,14 +244,17 @@ inline bool passes(const Light& world, const glm::vec3& point, float tolerance,
     const glm::dvec3 e(irradiance_from_falloff(world, falloff));
     if (kCulled == Culled::budgeted && !fits_budget(culled.sum, e, tolerance)) return true;
     culled.sum += e;
+    if constexpr (kCulled == Culled::relative) culled.dropped += dropped_radiance;
     if constexpr (kCulled == Culled::tight || kCulled == Culled::relative) {
       // The light's own radiance bound: its exact irradiance times the response toward it, the
       // same floats rt shades (the point's rounding is the response bound's slack).
       if (culled.radiance) {
         const Bounds at_light{world.position, world.position};
-        culled.radiance_sum += product_bound(
-            glm::vec3(e),
-            response_bound(culled.radiance->surface, at_light, FramePoint{point, 0.0f}));
+        culled.radiance_sum +=
+            kCulled == Culled::relative && culled.shading
+                ? dropped_radiance
+                : product_bound(glm::vec3(e), response_bound(culled.radiance->surface, at_light,
+                                                             FramePoint{point, 0.0f}));
       }
     }
     if (kCulled == Culled::clustered && brightest(e) > culled.cut.keep_above) {
@@ -384,6 +410,21 @@ inline bool cull_subtree(const LightHierarchy& h, std::uint32_t node, const glm:
     return true;
   }
   if constexpr (kCulled == Culled::relative) {
+    if (culled.shading) {  // cutting: what it drops is within the drop budget, or it is cut
+      const SurfaceResponse surface = surface_in_frame(culled.surface, linear.rotation);
+      glm::vec3 irradiance;
+      const glm::vec3 radiance = radiance_bound(h, node, x, surface, &irradiance);
+      if (brightest(culled.dropped + glm::dvec3(radiance)) > culled.drop_budget) return false;
+      culled.dropped += glm::dvec3(radiance);
+      if (culled.radiance) {  // the same bounds (culled.surface is the point's surface too)
+        add_radiance_part(node, x, surface.normal, surface.mirrored_view, radiance, irradiance,
+                          culled);
+      } else {
+        culled.sum += glm::dvec3(irradiance);
+      }
+      if (culled.record) record_culled_subtree(*culled.record, node, linear, translation);
+      return true;
+    }
     if (culled.radiance) {  // as tight's: bounded, and opened, at the surface once the walk ends
       const glm::mat3 local_from_world = glm::transpose(linear.rotation);
       push_radiance_part(h, node, x, local_from_world * culled.radiance->surface.normal,
@@ -976,6 +1017,8 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     sums.radiance_parts_made = culled.radiance_parts_made;
     sums.deferrals = culled.deferrals;
     sums.radiance = culled.radiance != nullptr;
+    sums.dropped = culled.dropped;
+    sums.drop_budget = culled.drop_budget;
     (void)culled_irradiance_bound;
   } else {
     if constexpr (kCulled == Culled::tight) {
@@ -1237,15 +1280,33 @@ CulledSoFar light_cut_state(const CutNodeTable& table, float relative_error, Sha
 void start_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
                      const CutNodeTable& table, float tolerance, float relative_error,
                      ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
-                     WalkCounters& counters, bool may_refine, bool bound_radiance) {
+                     WalkCounters& counters, bool may_refine, bool bound_radiance,
+                     float display_white) {
   assert(volumes.nodes.size() == hierarchy.nodes.size());
   assert(table.draw_weights.size() == hierarchy.nodes.size());
   assert(volumes.tolerance <= tolerance);
-  CulledSoFar culled =
-      light_cut_state(table, relative_error, point, scratch, may_refine, bound_radiance);
-  scratch.radiance_parts.clear();
-  walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
-                               point.position(), scratch, lights, counters, nullptr, culled);
+  const std::size_t first = lights.size();
+  for (float drop_budget = std::numeric_limits<float>::infinity();;) {
+    CulledSoFar culled =
+        light_cut_state(table, relative_error, point, scratch, may_refine, bound_radiance);
+    culled.drop_budget = drop_budget;
+    scratch.radiance_parts.clear();
+    walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
+                                 point.position(), scratch, lights, counters, nullptr, culled);
+    // What the volumes dropped errs as one more cluster would: within the relative error of the
+    // cut's total (or of kDropFloorOfWhite of the display's white, where the total is about 0:
+    // bounds are loose where nothing lights the point), or the point is walked again with that as
+    // the drop's budget (many lights each below the tolerance, which together light the point).
+    const float within = std::max(relative_error * brightest(scratch.cut_sums.total),
+                                  relative_error * kDropFloorOfWhite * display_white);
+    if (relative_error == 0.0f || drop_budget != std::numeric_limits<float>::infinity() ||
+        !(brightest(scratch.cut_sums.dropped) > within)) {
+      return;
+    }
+    drop_budget = within;
+    lights.resize(first);
+    if (scratch.inspect) scratch.inspect->clear_walk();
+  }
 }
 
 void refine_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
@@ -1266,6 +1327,8 @@ void refine_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volu
   culled.radiance_sum = sums.radiance_culled;
   culled.radiance_parts_made = sums.radiance_parts_made;
   culled.deferrals = sums.deferrals;
+  culled.dropped = sums.dropped;
+  culled.drop_budget = sums.drop_budget;
   culled.go_on = true;
   // Its own lights stay; its clusters are put aside again, each with the estimate the total
   // counted for it, in the order they were kept (the heap's ties).
@@ -1313,9 +1376,10 @@ void answer_light_cut_bounds(const LightHierarchy& hierarchy, float tolerance, W
 void find_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,
                     const CutNodeTable& table, float tolerance, float relative_error,
                     ShadingPoint& point, WalkScratch& scratch, std::vector<Light>& lights,
-                    WalkCounters& counters, glm::vec3* culled_irradiance_bound) {
+                    WalkCounters& counters, glm::vec3* culled_irradiance_bound,
+                    float display_white) {
   start_light_cut(hierarchy, volumes, table, tolerance, relative_error, point, scratch, lights,
-                  counters, false, scratch.radiance && culled_irradiance_bound);
+                  counters, false, scratch.radiance && culled_irradiance_bound, display_white);
   answer_light_cut_bounds(hierarchy, tolerance, scratch, culled_irradiance_bound);
 }
 

@@ -92,7 +92,8 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
     if (refinement == 0) {
       scratch.lights.clear();
       start_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error, point,
-                      scratch.walk, scratch.lights, walk_counters, !last, bound_radiance);
+                      scratch.walk, scratch.lights, walk_counters, !last, bound_radiance,
+                      1.0f / display_scale_);
     } else {
       refine_light_cut(hierarchy_, volumes_, cut_nodes_, tolerance_, relative_error, point,
                        scratch.walk, scratch.lights, walk_counters, !last);

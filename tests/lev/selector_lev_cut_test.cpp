@@ -20,6 +20,7 @@
 #include "lev/hierarchy_cursor.h"
 #include "lev/important_lights.h"
 #include "lev/inspect_record.h"
+#include "lev/light_bvh.h"
 #include "lev/light_cut_tree.h"
 #include "lev/light_hierarchy.h"
 #include "lev/methods.h"
@@ -488,7 +489,7 @@ void check_refined_cuts(const CutScene& scene, const lev::ExtentVolumes& volumes
     const bool may_refine = round < 2;
     if (round == 0) {
       lev::start_light_cut(h, volumes, table, tau, e, point, scratch, cut, counters, may_refine,
-                           false);
+                           false, 1.0f);
     } else {
       lev::refine_light_cut(h, volumes, table, tau, e, point, scratch, cut, counters, may_refine);
       seen.exact_clusters += scratch.exact_clusters.size();
@@ -570,6 +571,49 @@ TEST(LevCut, ARefinedCutGoesOnFromTheLastOne) {
     if (HasFatalFailure()) return;
   }
   EXPECT_GT(seen.exact_clusters - random_scenes.exact_clusters, 30u);
+}
+
+// A panel of 10,000 dim lights (a flat list: the automatic hierarchy), each below the tolerance
+// lev_cut's volumes drop at, that together light the points below it: the drop is held within the
+// relative error of the total, so the panel is cut (its clusters shaded) rather than dropped
+// whole (it was: no light tested, the radiance 0). Where the panel lights a point little (far
+// off to the side), the drop stays within its floor.
+TEST(LevCut, ManyLightsEachBelowTheToleranceAreCutNotDropped) {
+  std::vector<lev::Light> panel;
+  for (int k = 0; k < 10000; ++k) {
+    const glm::vec3 at(0.1f * static_cast<float>(k % 100) - 5.0f,
+                       0.1f * static_cast<float>(k / 100) - 5.0f, 3.0f);
+    panel.push_back(lev::make_point_light(at, glm::vec3(2e-4f)));
+  }
+  lev::LightDescription tree;
+  tree.root = lev::build_light_bvh(panel);
+  const lev::LightHierarchy h = lev::build_hierarchy(tree);
+  const float relative_error = 0.02f;
+  const lev::LevCutSelector selector(h, relative_error);
+  Random r(5);
+  for (int k = 0; k < 30; ++k) {
+    const glm::vec3 x(r.uniform(-4, 4), r.uniform(-4, 4), 0.0f);
+    UnitResponsePoint point(x);
+    const double truth = summed_irradiance(panel, x).x;
+    // Each light is below the drop's tolerance (irradiance, at exposure 1) at every such point.
+    ASSERT_LT(2e-4 / 9.0, relative_error * lev::kDropToleranceOfRelativeError);
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters counters;
+    const glm::vec3 radiance = selector.direct_radiance(point, scratch, counters);
+    EXPECT_GT(counters.lights_tested, 0u) << k;
+    EXPECT_NEAR(radiance.x, truth, 2.0 * relative_error * truth) << k;
+  }
+  // Far to the side the panel adds little: the drop, within its floor, is left as it is.
+  for (int k = 0; k < 10; ++k) {
+    const glm::vec3 x(400.0f + 10.0f * static_cast<float>(k), 0.0f, 0.0f);
+    UnitResponsePoint point(x);
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters counters;
+    const glm::vec3 radiance = selector.direct_radiance(point, scratch, counters);
+    EXPECT_EQ(counters.lights_tested, 0u) << k;
+    EXPECT_LE(summed_irradiance(panel, x).x - radiance.x, relative_error * lev::kDropFloorOfWhite)
+        << k;
+  }
 }
 
 // Every light is seen; each shadow ray's target is kept.
