@@ -5,6 +5,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -260,14 +261,17 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
                                    settings.display.curve, nullptr);
   }
   const renderer::RenderSettings render_settings = render_settings_from(settings);
+  // The render's selector: where its rt fallback shades with rt's loop, so does the inspector.
+  std::optional<renderer::RtFallbackProbe> rt_fallback;
   const std::unique_ptr<lev::LightSelector> selector =
-      lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
+      renderer::make_render_selector(loaded->scene, *loaded->rays, render_settings, &rt_fallback);
   const auto start = std::chrono::steady_clock::now();
   const renderer::PixelInspection inspection =
       renderer::inspect_pixel(loaded->scene, *loaded->rays, render_settings, *selector, x, y);
   const double inspect_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const nlohmann::ordered_json json = inspection_json(inspection);
+  nlohmann::ordered_json json = inspection_json(inspection);
+  json["rt_fallback"] = rt_fallback ? nlohmann::ordered_json(rt_fallback->use_rt) : nullptr;
   if (!flags.json.empty())
     write_output_files({{flags.json, [&json] { return json_text(json, 1); }}});
   // The scene's name is the file's to choose: escaped, so it cannot split the header line or
@@ -278,8 +282,13 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
                 static_cast<unsigned long long>(loaded->scene.lights.light_count),
                 lev::method_info(settings.method.method).name, settings.method.tolerance,
                 settings.display.exposure_ev, inspect_ms);
+  const std::string fallback_note =
+      rt_fallback && rt_fallback->use_rt
+          ? "rt fallback: the render shades this frame with rt's loop (its probe found the "
+            "method's work at least rt's), so the lists are rt's\n"
+          : "";
   const std::string table = scenes::escape_control_characters(loaded->scene.name) + header +
-                            inspection_table(inspection, flags.top);
+                            fallback_note + inspection_table(inspection, flags.top);
   // On standard output the table is the command's output: a write that fails (a full disk, a
   // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE.
   if (table_on_stdout) {

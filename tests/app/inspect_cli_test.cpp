@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -65,9 +66,9 @@ TEST(InspectCli, PrintsTheTableAndWritesTheCompleteListsAsJson) {
 }
 
 TEST(InspectCli, ClusteringMethodsListClustersWithTheirMembers) {
-  const auto run =
-      run_levrt({"inspect", "--scene", "hall", "--level", "3", "--method", "lightcuts", "--width",
-                 "80", "--height", "60", "--pixel", "40,40", "--json", "-"});
+  const auto run = run_levrt({"inspect", "--scene", "hall", "--level", "3", "--method", "lightcuts",
+                              "--width", "80", "--height", "60", "--pixel", "40,40", "--json", "-",
+                              "--rt-fallback", "off"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::size_t start = run.output.find('{');
   ASSERT_NE(start, std::string::npos);
@@ -87,6 +88,43 @@ TEST(InspectCli, ClusteringMethodsListClustersWithTheirMembers) {
     }
     EXPECT_EQ(lights, 64u);
   }
+}
+
+// The JSON `levrt inspect` writes for car park pixel 30,21 of 32x24 with `flags`.
+nlohmann::json inspect_fallback_json(const levrt_test::TempDir& dir,
+                                     const std::vector<std::string>& flags) {
+  const std::string json_path = (dir.path() / "pixel.json").string();
+  std::vector<std::string> args = {"inspect", "--scene", "carpark", "--width", "32",     "--height",
+                                   "24",      "--pixel", "30,21",   "--json",  json_path};
+  args.insert(args.end(), flags.begin(), flags.end());
+  const auto run = run_levrt(args);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return read_json(json_path);
+}
+
+TEST(InspectCli, WhereTheRenderFallsBackToRtTheInspectorTracesRtsLoopToo) {
+  // Car park 32x24, lightcuts: the probe picks rt's loop (the render's stats say so), so the
+  // render's pixel is rt's. The inspector traced lightcuts' cut anyway: 100,97,85 where the
+  // render wrote 99,96,84, and a lost sum that the render did not lose.
+  const levrt_test::TempDir dir("levrt-inspect-fallback-");
+  const std::string stats_path = (dir.path() / "stats.json").string();
+  const auto render = run_levrt({"render", "--scene", "carpark", "--width", "32", "--height", "24",
+                                 "--method", "lightcuts", "--quiet", "--stats", stats_path});
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  ASSERT_EQ(read_json(stats_path)["rt_fallback"]["used"], true);
+
+  const nlohmann::json rt = inspect_fallback_json(dir, {"--method", "rt"});
+  const nlohmann::json fallback = inspect_fallback_json(dir, {"--method", "lightcuts"});
+  EXPECT_EQ(fallback["rt_fallback"], true);
+  EXPECT_EQ(fallback["radiance"], rt["radiance"]);
+  EXPECT_EQ(fallback["totals"]["clusters"], 0);
+  EXPECT_EQ(rt["rt_fallback"], nullptr) << "rt has no fallback";
+
+  const nlohmann::json own =
+      inspect_fallback_json(dir, {"--method", "lightcuts", "--rt-fallback", "off"});
+  EXPECT_EQ(own["rt_fallback"], nullptr);
+  EXPECT_GT(own["totals"]["clusters"].get<int>(), 0);
+  EXPECT_NE(own["radiance"], rt["radiance"]);
 }
 
 TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
