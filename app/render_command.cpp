@@ -206,6 +206,13 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
 
 int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   Settings settings = typed_settings;
+  const lev::MethodInfo& method = lev::method_info(settings.method.method);
+  if (!heatmap_path(outputs, ViewMode::missed).empty() && !method.missed_light_known) {
+    throw UsageError("--heatmap-missed: method " + std::string(method.name) +
+                     " does not estimate the light it leaves out (the heatmap would read 0 where "
+                     "its pixels differ from rt's), got '" +
+                     heatmap_path(outputs, ViewMode::missed) + "'");
+  }
   if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.image.missed_draws == 0) {
     settings.image.missed_draws = kDefaultMissedDraws;
   }
