@@ -276,12 +276,12 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
     write_output_files({{flags.json, [&json] { return json_text(json, 1); }}});
   // The scene's name is the file's to choose: escaped, so it cannot split the header line or
   // drive the terminal.
-  char header[256];
+  // The method with the settings it reads (lightcuts has a relative error, rt nothing).
+  char header[384];
   std::snprintf(header, sizeof header,
-                ", %llu lights, %s, tolerance %g at exposure %g EV (inspected in %.1f ms)\n",
+                ", %llu lights, %s at exposure %g EV (inspected in %.1f ms)\n",
                 static_cast<unsigned long long>(loaded->scene.lights.light_count),
-                lev::method_info(settings.method.method).name, settings.method.tolerance,
-                settings.display.exposure_ev, inspect_ms);
+                method_settings_text(settings).c_str(), settings.display.exposure_ev, inspect_ms);
   const std::string fallback_note =
       rt_fallback && rt_fallback->use_rt
           ? "rt fallback: the render shades this frame with rt's loop (its probe found the "

@@ -351,20 +351,7 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
-  // The method and the settings it reads ("rt", "lev, tolerance 0.01").
-  const lev::MethodInfo& method = lev::method_info(settings.method.method);
-  std::string method_text = method.name;
-  char setting[64];
-  if (method.uses_tolerance) {
-    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.method.tolerance);
-    method_text += setting;
-  }
-  if (method.uses_relative_error) {
-    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.method.relative_error);
-    method_text += setting;
-  }
-  if (method.stochastic)
-    method_text += ", " + std::to_string(settings.method.lights_per_point) + " lights per point";
+  const std::string method_text = method_settings_text(settings);
   std::fprintf(summary,
                "%s level %d, %llu lights, %s: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",

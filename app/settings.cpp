@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -331,6 +332,23 @@ void apply_scene_display_defaults(Settings& settings, bool exposure_given, bool 
   if (!scenes::is_gltf_file_name(settings.scene.name)) return;
   if (!exposure_given) settings.display.exposure_auto = true;
   if (!display_given) settings.display.curve = renderer::DisplayCurve::neutral;
+}
+
+std::string method_settings_text(const Settings& settings) {
+  const lev::MethodInfo& method = lev::method_info(settings.method.method);
+  std::string text = method.name;
+  char setting[64];
+  if (method.uses_tolerance) {
+    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.method.tolerance);
+    text += setting;
+  }
+  if (method.uses_relative_error) {
+    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.method.relative_error);
+    text += setting;
+  }
+  if (method.stochastic)
+    text += ", " + std::to_string(settings.method.lights_per_point) + " lights per point";
+  return text;
 }
 
 renderer::Display display_from(const Settings& settings) {

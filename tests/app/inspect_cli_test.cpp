@@ -127,6 +127,28 @@ TEST(InspectCli, WhereTheRenderFallsBackToRtTheInspectorTracesRtsLoopToo) {
   EXPECT_NE(own["radiance"], rt["radiance"]);
 }
 
+// The table's header names the method with the settings it reads, as `render`'s summary does:
+// it said "lightcuts, tolerance 0.01" (a setting lightcuts ignores) and "rt, tolerance 0.01".
+TEST(InspectCli, TheHeaderNamesTheSettingsTheMethodReads) {
+  const auto header = [](const std::vector<std::string>& method) {
+    std::vector<std::string> args = {"inspect", "--width", "16", "--height",
+                                     "12",      "--pixel", "8,6"};
+    args.insert(args.end(), method.begin(), method.end());
+    const auto run = run_levrt(args);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return run.output.substr(0, run.output.find('\n'));
+  };
+  EXPECT_NE(header({"--method", "lightcuts", "--relative-error", "0.05"})
+                .find(", lightcuts, relative error 0.05 at exposure 0 EV"),
+            std::string::npos);
+  EXPECT_NE(header({"--method", "rt"}).find(", rt at exposure 0 EV"), std::string::npos);
+  EXPECT_NE(header({"--method", "lev_mc", "--lights-per-point", "3"})
+                .find(", lev_mc, tolerance 0.01, 3 lights per point at exposure"),
+            std::string::npos);
+  EXPECT_NE(header({"--tolerance", "0.2"}).find(", lev, tolerance 0.2 at exposure"),
+            std::string::npos);
+}
+
 TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
   const levrt_test::TempDir dir("levrt-inspect-cli-bad-");
   const std::string json_path = (dir.path() / "pixel.json").string();
