@@ -199,6 +199,17 @@ Settings apply_scene_flags(const SceneFlags& flags, const Settings& defaults) {
   return settings;
 }
 
+// A headless command (render, inspect) sizes its image by --width and --height alone: the viewer's
+// sizing rule is refused rather than ignored.
+void refuse_viewer_only_flags(const SceneFlags& flags) {
+  if (flags.settings.options.at("resolution")->count() > 0) {
+    throw UsageError(
+        "--resolution: only the viewer sizes its image by it (headless commands render "
+        "--width x --height), got '" +
+        flags.settings.text.at("resolution") + "'");
+  }
+}
+
 int run_snapshot() {
   // The main job without a window: a snapshot of the default scene into out/. A name "out" that
   // is not a folder (a file, a dangling symlink) is the user's: refused, left as it is.
@@ -327,6 +338,7 @@ int run_cli(int argc, char** argv) {
 
   if (render->parsed()) {
     const Settings settings = apply_scene_flags(render_flags, Settings{});
+    refuse_viewer_only_flags(render_flags);
     for (const CLI::Option* option : output_options) {
       if (option->count() > 0 && option->as<std::string>().empty()) {
         throw UsageError(option->get_name() + ": needs a file name, got ''");
@@ -345,6 +357,7 @@ int run_cli(int argc, char** argv) {
   }
   if (inspect->parsed()) {
     const Settings settings = apply_scene_flags(inspect_flags, Settings{});
+    refuse_viewer_only_flags(inspect_flags);
     return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);

@@ -199,6 +199,25 @@ TEST_F(Cli, AFlagTheMethodIgnoresIsRefused) {
   }
 }
 
+// --resolution sizes the viewer's image; render and inspect took it and rendered --width x
+// --height (exit 0): one line naming the flag, exit 2, nothing written.
+TEST_F(Cli, TheViewersResolutionIsRefusedHeadless) {
+  for (const char* value : {"fit/4", "typed", "fit"}) {
+    const CommandRun render = run_levrt({"render", "--resolution", value, "--width", "8",
+                                         "--height", "8", "--out", path("image.png")});
+    EXPECT_EQ(render.exit_code, 2) << render.output;
+    EXPECT_EQ(render.output.rfind("levrt: --resolution: only the viewer", 0), 0u) << render.output;
+    EXPECT_NE(render.output.find(std::string("got '") + value + "'"), std::string::npos);
+    EXPECT_EQ(std::count(render.output.begin(), render.output.end(), '\n'), 1) << render.output;
+    const CommandRun inspect = run_levrt(
+        {"inspect", "--resolution", value, "--width", "8", "--height", "8", "--pixel", "1,1"});
+    EXPECT_EQ(inspect.exit_code, 2) << inspect.output;
+    EXPECT_EQ(inspect.output.rfind("levrt: --resolution: only the viewer", 0), 0u)
+        << inspect.output;
+  }
+  EXPECT_TRUE(folder_is_empty());
+}
+
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
   const CommandRun r =
       run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
