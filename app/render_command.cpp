@@ -229,6 +229,14 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   }
   check_memory_budget(settings, outputs.reference_rt);
   check_output_paths(render_output_paths(outputs), settings_input_files(settings.scene));
+  // The noise is the spread across passes: one pass has none to show (the stats say null).
+  if (!heatmap_path(outputs, ViewMode::noise).empty() && settings.image.spp < 2) {
+    throw UsageError(
+        "--heatmap-noise: the noise is the spread across passes and needs --spp 2 or "
+        "more (--spp " +
+        std::to_string(settings.image.spp) + " would draw it blank), got '" +
+        heatmap_path(outputs, ViewMode::noise) + "'");
+  }
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   // Until the outputs are written nothing is, so Ctrl-C may end the process outright.

@@ -218,6 +218,21 @@ TEST_F(Cli, TheViewersResolutionIsRefusedHeadless) {
   EXPECT_TRUE(folder_is_empty());
 }
 
+// The noise heatmap of one pass was written blank (range 0..0) while the stats said the noise
+// is unknown (std_error_avg_pct null): refused, one line and exit 2, nothing written.
+TEST_F(Cli, TheNoiseHeatmapOfOnePassIsRefused) {
+  const CommandRun r = run_levrt({"render", "--width", "8", "--height", "8", "--heatmap-noise",
+                                  path("noise.png"), "--stats", path("s.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: --heatmap-noise: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find("--spp 2"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_TRUE(folder_is_empty());
+  const CommandRun two = run_levrt({"render", "--width", "8", "--height", "8", "--spp", "2",
+                                    "--heatmap-noise", path("noise.png")});
+  EXPECT_EQ(two.exit_code, 0) << two.output;
+}
+
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
   const CommandRun r =
       run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
