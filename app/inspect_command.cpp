@@ -245,6 +245,13 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
   render_settings_from(settings);  // refuses what a render refuses, before the scene is built
   int x = 0, y = 0;
   parse_inspect_pixel(flags.pixel, settings.image.width, settings.image.height, x, y);
+  // A render with --subsample N traces only the pixels whose x and y are multiples of N.
+  const int stride = settings.image.subsample;
+  if (x % stride != 0 || y % stride != 0) {
+    throw UsageError("--pixel: a render with --subsample " + std::to_string(stride) +
+                     " does not trace it (x and y must be multiples of " + std::to_string(stride) +
+                     "), got '" + flags.pixel + "'");
+  }
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
   // The table is an output too: on standard output (a file it is redirected to may not be an

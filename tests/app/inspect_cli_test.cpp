@@ -149,6 +149,22 @@ TEST(InspectCli, TheHeaderNamesTheSettingsTheMethodReads) {
             std::string::npos);
 }
 
+// With --subsample N a render traces only the pixels on the N grid: inspect listed lights and a
+// radiance for a pixel the render leaves unrendered. Refused in one line; a pixel on the grid is
+// inspected.
+TEST(InspectCli, APixelTheSubsampledRenderSkipsIsRefused) {
+  for (const char* pixel : {"1,0", "0,3", "5,5"}) {
+    const auto run = run_levrt(
+        {"inspect", "--width", "16", "--height", "12", "--subsample", "4", "--pixel", pixel});
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_EQ(run.output.rfind("levrt: --pixel: a render with --subsample 4", 0), 0u) << run.output;
+    EXPECT_EQ(line_count(run.output), 1) << run.output;
+  }
+  const auto on_grid = run_levrt(
+      {"inspect", "--width", "16", "--height", "12", "--subsample", "4", "--pixel", "8,4"});
+  EXPECT_EQ(on_grid.exit_code, 0) << on_grid.output;
+}
+
 TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
   const levrt_test::TempDir dir("levrt-inspect-cli-bad-");
   const std::string json_path = (dir.path() / "pixel.json").string();
