@@ -319,14 +319,14 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
                             fallback_note + inspection_table(inspection, flags.top);
   watchdog.reset();
   InterruptScope::throw_if_interrupted();  // from here on every output is written in full
-  if (!flags.json.empty()) write_output_files({{flags.json, [&json_bytes] { return json_bytes; }}});
-  // On standard output the table is the command's output: a write that fails (a full disk, a
-  // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE.
-  if (table_on_stdout) {
-    write_output_files({{kStandardOutputName, [&table] { return table; }}});
-  } else {
-    std::fputs(table.c_str(), stderr);
-  }
+  // One write for both outputs (all or none): a table that cannot be written (a full disk, a
+  // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE, and the JSON
+  // is not written either.
+  std::vector<OutputFile> files;
+  if (!flags.json.empty()) files.push_back({flags.json, [&json_bytes] { return json_bytes; }});
+  if (table_on_stdout) files.push_back({kStandardOutputName, [&table] { return table; }});
+  write_output_files(files);
+  if (!table_on_stdout) std::fputs(table.c_str(), stderr);
   return 0;
 }
 

@@ -272,6 +272,15 @@ TEST(InspectCli, TheTableIsAnOutputThatMayNotBeAnInputAndReportsAFailedWrite) {
   EXPECT_EQ(line_count(output), 1) << output;
   EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
       << output;
+
+  // The JSON and the table are written all or none: the JSON was written before the table's
+  // write failed (exit 1 with pixel.json in place).
+  const std::string json = (dir.path() / "pixel.json").string();
+  const int with_json = levrt_test::run_levrt_into_closed_pipe(
+      {"inspect", "--width", "32", "--height", "24", "--pixel", "16,12", "--json", json}, messages);
+  ASSERT_TRUE(WIFEXITED(with_json)) << levrt_test::read_file(messages);
+  EXPECT_EQ(WEXITSTATUS(with_json), 1) << levrt_test::read_file(messages);
+  EXPECT_FALSE(std::filesystem::exists(json));
 }
 
 }  // namespace
