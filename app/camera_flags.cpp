@@ -194,9 +194,19 @@ renderer::Camera apply_camera_flags(const renderer::Camera& preset, const Camera
     basis = renderer::camera_basis(camera);
   }
   if (basis.forward == glm::vec3(0.0f)) {
-    // Named by what gave the camera: a stats file's camera may have no view of its own.
-    const std::string source =
-        flags.from_file.empty() ? "--camera-target" : "--camera-from: " + flags.from_file;
+    // Named by what gave the camera: a stats file's camera may have no view of its own; else the
+    // flag given that moved it (an up alone, along the preset's view; a position alone, at the
+    // preset's target), the target when both ends were given.
+    std::string source = "--camera-from: " + flags.from_file;
+    if (flags.from_file.empty()) {
+      if (flags.target) {
+        source = "--camera-target";
+      } else if (flags.position) {
+        source = "--camera-position";
+      } else {
+        source = "--camera-up";
+      }
+    }
     throw UsageError(source + ": the camera at " + vec3_text(camera.position + world_origin) +
                      " looking at " + vec3_text(camera.target + world_origin) + " with up " +
                      vec3_text(camera.up) +

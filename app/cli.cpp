@@ -152,15 +152,17 @@ Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults
   if (flags.options.at("level")->count() > 0 && is_scene_file(settings.scene)) {
     throw UsageError("--level: a scene file has no levels, got '" + flags.text.at("level") + "'");
   }
-  if (flags.options.at("camera")->count() > 0 && !scenes::reads_camera_index(settings.scene)) {
-    throw UsageError("--camera: only glTF files have cameras of their own, got '" +
-                     flags.text.at("camera") + "'");
-  }
-  if (flags.options.at("relative-error")->count() > 0 &&
-      !lev::method_info(settings.method.method).uses_relative_error) {
-    throw UsageError("--relative-error: method " +
-                     std::string(lev::method_info(settings.method.method).name) +
-                     " ignores it, got '" + flags.text.at("relative-error") + "'");
+  // A setting given for a scene or method that ignores it (the table's unused_because, which the
+  // viewer greys) is refused, not ignored: --tolerance with rt, --lights-per-point with lev, ...
+  for (const SettingSpec& spec : setting_table()) {
+    if (flags.options.at(spec.name)->count() == 0 || !spec.unused_because) continue;
+    if (const char* reason = spec.unused_because(settings)) {
+      const std::string method = lev::method_info(settings.method.method).name;
+      const std::string who =
+          std::string(spec.name) == "camera" ? std::string() : "method " + method + " ignores it: ";
+      throw UsageError("--" + std::string(spec.name) + ": " + who + reason + ", got '" +
+                       flags.text.at(spec.name) + "'");
+    }
   }
   apply_scene_display_defaults(settings, flags.options.at("exposure")->count() > 0,
                                flags.options.at("display")->count() > 0);
@@ -195,6 +197,17 @@ Settings apply_scene_flags(const SceneFlags& flags, const Settings& defaults) {
       apply_setting_flags(flags.settings, defaults, flags.lights, flags.lights_text);
   settings.scene.camera_flags = parse_camera_flags(flags.camera);
   return settings;
+}
+
+// A headless command (render, inspect) sizes its image by --width and --height alone: the viewer's
+// sizing rule is refused rather than ignored.
+void refuse_viewer_only_flags(const SceneFlags& flags) {
+  if (flags.settings.options.at("resolution")->count() > 0) {
+    throw UsageError(
+        "--resolution: only the viewer sizes its image by it (headless commands render "
+        "--width x --height), got '" +
+        flags.settings.text.at("resolution") + "'");
+  }
 }
 
 int run_snapshot() {
@@ -325,6 +338,7 @@ int run_cli(int argc, char** argv) {
 
   if (render->parsed()) {
     const Settings settings = apply_scene_flags(render_flags, Settings{});
+    refuse_viewer_only_flags(render_flags);
     for (const CLI::Option* option : output_options) {
       if (option->count() > 0 && option->as<std::string>().empty()) {
         throw UsageError(option->get_name() + ": needs a file name, got ''");
@@ -343,6 +357,7 @@ int run_cli(int argc, char** argv) {
   }
   if (inspect->parsed()) {
     const Settings settings = apply_scene_flags(inspect_flags, Settings{});
+    refuse_viewer_only_flags(inspect_flags);
     return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);

@@ -5,10 +5,12 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/interrupt.h"
 #include "app/json_text.h"
 #include "app/output_files.h"
 #include "app/scene_loading.h"
@@ -243,6 +245,13 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
   render_settings_from(settings);  // refuses what a render refuses, before the scene is built
   int x = 0, y = 0;
   parse_inspect_pixel(flags.pixel, settings.image.width, settings.image.height, x, y);
+  // A render with --subsample N traces only the pixels whose x and y are multiples of N.
+  const int stride = settings.image.subsample;
+  if (x % stride != 0 || y % stride != 0) {
+    throw UsageError("--pixel: a render with --subsample " + std::to_string(stride) +
+                     " does not trace it (x and y must be multiples of " + std::to_string(stride) +
+                     "), got '" + flags.pixel + "'");
+  }
   if (flags.top < 0)
     throw UsageError("--top: must be >= 0, got '" + std::to_string(flags.top) + "'");
   // The table is an output too: on standard output (a file it is redirected to may not be an
@@ -251,42 +260,73 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
   std::vector<OutputPath> outputs = {{"--json", flags.json, ".json", "JSON"}};
   if (table_on_stdout) outputs.push_back({"the table", kStandardOutputName, ".txt", "text"});
   check_output_paths(outputs, settings_input_files(settings.scene));
-  const std::unique_ptr<LoadedScene> loaded = load_scene(settings.scene);
+  // Ctrl-C and SIGTERM end the command as they end `render`: one line naming where it stopped,
+  // exit 130, nothing written (app/interrupt.h).
+  const InterruptScope interrupt_scope;
+  const std::atomic<bool>* cancel = &InterruptScope::flag();
+  std::optional<InterruptWatchdog> watchdog(std::in_place);
+  std::unique_ptr<LoadedScene> loaded;
+  try {
+    loaded = load_scene(settings.scene, cancel);
+  } catch (...) {
+    InterruptScope::throw_if_interrupted();
+    throw;
+  }
   // The tolerance is in displayed units: an auto exposure (a glTF's default) is chosen as
   // `render` chooses it, so the selector culls what the render's culls.
   if (settings.display.exposure_auto) {
+    const CommandStage stage("choosing the exposure");
     settings.display.exposure_ev =
         renderer::auto_exposure_ev(loaded->scene, *loaded->rays, render_settings_from(settings),
-                                   settings.display.curve, nullptr);
+                                   settings.display.curve, cancel);
+    InterruptScope::throw_if_interrupted();
   }
   const renderer::RenderSettings render_settings = render_settings_from(settings);
+  const CommandStage stage("inspecting the pixel");
+  // The render's selector: where its rt fallback shades with rt's loop, so does the inspector.
+  std::optional<renderer::RtFallbackProbe> rt_fallback;
   const std::unique_ptr<lev::LightSelector> selector =
-      lev::make_selector(loaded->scene.lights, renderer::method_params(render_settings));
+      renderer::make_render_selector(loaded->scene, *loaded->rays, render_settings, &rt_fallback);
+  InterruptScope::throw_if_interrupted();
   const auto start = std::chrono::steady_clock::now();
-  const renderer::PixelInspection inspection =
-      renderer::inspect_pixel(loaded->scene, *loaded->rays, render_settings, *selector, x, y);
+  const renderer::PixelInspection inspection = renderer::inspect_pixel(
+      loaded->scene, *loaded->rays, render_settings, *selector, x, y, cancel);
   const double inspect_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const nlohmann::ordered_json json = inspection_json(inspection);
-  if (!flags.json.empty())
-    write_output_files({{flags.json, [&json] { return json_text(json, 1); }}});
+  InterruptScope::throw_if_interrupted();  // a cancelled inspection's lists are discarded
+  // Both outputs are made before either is written (with a million lights, minutes of text):
+  // Ctrl-C ends the making as it ends the inspection, with nothing written.
+  const CommandStage formatting("formatting the lists");
+  nlohmann::ordered_json json = inspection_json(inspection);
+  json["rt_fallback"] = rt_fallback ? nlohmann::ordered_json(rt_fallback->use_rt) : nullptr;
+  const std::string json_bytes = flags.json.empty() ? std::string() : json_text(json, 1);
+  json = nullptr;
+  InterruptScope::throw_if_interrupted();
   // The scene's name is the file's to choose: escaped, so it cannot split the header line or
-  // drive the terminal.
-  char header[256];
+  // drive the terminal. The method with the settings it reads (lightcuts has a relative error,
+  // rt nothing).
+  char header[384];
   std::snprintf(header, sizeof header,
-                ", %llu lights, %s, tolerance %g at exposure %g EV (inspected in %.1f ms)\n",
+                ", %llu lights, %s at exposure %g EV (inspected in %.1f ms)\n",
                 static_cast<unsigned long long>(loaded->scene.lights.light_count),
-                lev::method_info(settings.method.method).name, settings.method.tolerance,
-                settings.display.exposure_ev, inspect_ms);
+                method_settings_text(settings).c_str(), settings.display.exposure_ev, inspect_ms);
+  const std::string fallback_note =
+      rt_fallback && rt_fallback->use_rt
+          ? "rt fallback: the render shades this frame with rt's loop (its probe found the "
+            "method's work at least rt's), so the lists are rt's\n"
+          : "";
   const std::string table = scenes::escape_control_characters(loaded->scene.name) + header +
-                            inspection_table(inspection, flags.top);
-  // On standard output the table is the command's output: a write that fails (a full disk, a
-  // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE.
-  if (table_on_stdout) {
-    write_output_files({{kStandardOutputName, [&table] { return table; }}});
-  } else {
-    std::fputs(table.c_str(), stderr);
-  }
+                            fallback_note + inspection_table(inspection, flags.top);
+  watchdog.reset();
+  InterruptScope::throw_if_interrupted();  // from here on every output is written in full
+  // One write for both outputs (all or none): a table that cannot be written (a full disk, a
+  // reader gone: `| head`) is one line and exit 1, not exit 0 or death by SIGPIPE, and the JSON
+  // is not written either.
+  std::vector<OutputFile> files;
+  if (!flags.json.empty()) files.push_back({flags.json, [&json_bytes] { return json_bytes; }});
+  if (table_on_stdout) files.push_back({kStandardOutputName, [&table] { return table; }});
+  write_output_files(files);
+  if (!table_on_stdout) std::fputs(table.c_str(), stderr);
   return 0;
 }
 

@@ -206,6 +206,13 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
 
 int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   Settings settings = typed_settings;
+  const lev::MethodInfo& method = lev::method_info(settings.method.method);
+  if (!heatmap_path(outputs, ViewMode::missed).empty() && !method.missed_light_known) {
+    throw UsageError("--heatmap-missed: method " + std::string(method.name) +
+                     " does not estimate the light it leaves out (the heatmap would read 0 where "
+                     "its pixels differ from rt's), got '" +
+                     heatmap_path(outputs, ViewMode::missed) + "'");
+  }
   if (!heatmap_path(outputs, ViewMode::missed).empty() && settings.image.missed_draws == 0) {
     settings.image.missed_draws = kDefaultMissedDraws;
   }
@@ -222,6 +229,14 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   }
   check_memory_budget(settings, outputs.reference_rt);
   check_output_paths(render_output_paths(outputs), settings_input_files(settings.scene));
+  // The noise is the spread across passes: one pass has none to show (the stats say null).
+  if (!heatmap_path(outputs, ViewMode::noise).empty() && settings.image.spp < 2) {
+    throw UsageError(
+        "--heatmap-noise: the noise is the spread across passes and needs --spp 2 or "
+        "more (--spp " +
+        std::to_string(settings.image.spp) + " would draw it blank), got '" +
+        heatmap_path(outputs, ViewMode::noise) + "'");
+  }
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   // Until the outputs are written nothing is, so Ctrl-C may end the process outright.
@@ -344,20 +359,7 @@ void print_render_summary(const LoadedScene& loaded, const Settings& settings,
   for (const OutputPath& output : render_output_paths(outputs)) {
     if (output.path == app::kStandardOutputName) summary = stderr;
   }
-  // The method and the settings it reads ("rt", "lev, tolerance 0.01").
-  const lev::MethodInfo& method = lev::method_info(settings.method.method);
-  std::string method_text = method.name;
-  char setting[64];
-  if (method.uses_tolerance) {
-    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.method.tolerance);
-    method_text += setting;
-  }
-  if (method.uses_relative_error) {
-    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.method.relative_error);
-    method_text += setting;
-  }
-  if (method.stochastic)
-    method_text += ", " + std::to_string(settings.method.lights_per_point) + " lights per point";
+  const std::string method_text = method_settings_text(settings);
   std::fprintf(summary,
                "%s level %d, %llu lights, %s: %.3f s render, %.2f lights tested/point, "
                "%.2f nodes visited/point",

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -103,6 +104,13 @@ const char* rt_fallback_summary(const std::string& option) {
                         : "always the method's own selection";
 }
 
+const char* missed_draws_unused(const Settings& s) {
+  return lev::method_info(s.method.method).missed_light_known
+             ? nullptr
+             : "this method does not estimate the light it leaves out (the estimate would read 0 "
+               "where its pixels differ from rt's)";
+}
+
 const char* camera_unused(const Settings& s) {
   return scenes::reads_camera_index(s.scene) ? nullptr
                                              : "only glTF files have cameras of their own";
@@ -195,7 +203,8 @@ const std::vector<SettingSpec>& setting_table() {
        "missed-light estimate and its standard error (0: off; --heatmap-missed turns it on with "
        "16; at least 2)",
        IntRange{in_group<&Settings::image, &renderer::ImageSettings::missed_draws>(), 0,
-                lev::kMaxLightsPerPoint}},
+                lev::kMaxLightsPerPoint},
+       missed_draws_unused},
   };
   return table;
 }
@@ -325,22 +334,53 @@ void apply_scene_display_defaults(Settings& settings, bool exposure_given, bool 
   if (!display_given) settings.display.curve = renderer::DisplayCurve::neutral;
 }
 
+std::string method_settings_text(const Settings& settings) {
+  const lev::MethodInfo& method = lev::method_info(settings.method.method);
+  std::string text = method.name;
+  char setting[64];
+  if (method.uses_tolerance) {
+    std::snprintf(setting, sizeof(setting), ", tolerance %g", settings.method.tolerance);
+    text += setting;
+  }
+  if (method.uses_relative_error) {
+    std::snprintf(setting, sizeof(setting), ", relative error %g", settings.method.relative_error);
+    text += setting;
+  }
+  if (method.stochastic)
+    text += ", " + std::to_string(settings.method.lights_per_point) + " lights per point";
+  return text;
+}
+
 renderer::Display display_from(const Settings& settings) {
   return {settings.display.exposure_ev, settings.display.curve};
 }
 
+namespace {
+
+// The image settings a render of these settings reads: the missed-light draws of a method that
+// does not estimate the missed light change nothing (missed_draws_unused).
+renderer::ImageSettings used_image_settings(const Settings& settings) {
+  renderer::ImageSettings image = settings.image;
+  if (missed_draws_unused(settings)) image.missed_draws = 0;
+  return image;
+}
+
+}  // namespace
+
 Restart restart_needed(const Settings& before, const Settings& after) {
   if (before.scene != after.scene) return Restart::scene;
+  const renderer::ImageSettings before_image = used_image_settings(before);
+  const renderer::ImageSettings after_image = used_image_settings(after);
   // The image settings the rt reference renders without (the method's render reads them) and
   // the pass count, taken from before: any other image setting restarts the view.
-  renderer::ImageSettings view = after.image;
-  view.threads = before.image.threads;
-  view.missed_draws = before.image.missed_draws;
-  view.spp = before.image.spp;
-  if (view != before.image) return Restart::view;
-  renderer::ImageSettings render = after.image;
-  render.spp = before.image.spp;
-  if (render != before.image || before.method != after.method) return Restart::render;
+  renderer::ImageSettings view = after_image;
+  view.threads = before_image.threads;
+  view.missed_draws = before_image.missed_draws;
+  view.spp = before_image.spp;
+  if (view != before_image) return Restart::view;
+  renderer::ImageSettings render = after_image;
+  render.spp = before_image.spp;
+  if (render != before_image || before.method != after.method) return Restart::render;
   // The tolerance (and lev_cut's drop) is in displayed units: a method that reads the display
   // scale renders other images at another exposure. Its radiance is all the rt reference and
   // the display curve depend on, so they go on. The auto flag by itself changes nothing: the
@@ -349,7 +389,7 @@ Restart restart_needed(const Settings& before, const Settings& after) {
           renderer::exposure_scale(after.display.exposure_ev) &&
       lev::method_info(after.method.method).reads_display_scale)
     return Restart::render;
-  if (before.image != after.image) return Restart::passes;
+  if (before_image != after_image) return Restart::passes;
   return Restart::nothing;
 }
 

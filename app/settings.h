@@ -150,6 +150,11 @@ std::vector<std::string> scene_options();
 // neutral (as their authors' viewers show them), everything else linear at EV 0.
 void apply_scene_display_defaults(Settings& settings, bool exposure_given, bool display_given);
 
+// The method and the settings it reads, as the commands' summaries name them: "rt",
+// "lev, tolerance 0.01", "lightcuts, relative error 0.02", "lev_mc, tolerance 0.01, 1 lights per
+// point".
+std::string method_settings_text(const Settings& settings);
+
 // The display the settings ask for (an auto exposure as last resolved).
 renderer::Display display_from(const Settings& settings);
 

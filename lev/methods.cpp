@@ -47,7 +47,7 @@ std::vector<MethodInfo> built_in_rows() {
        "lev",
        "LEV (extent volumes)",
        "walk the light extent volume hierarchy; shadow rays only to the lights returned",
-       kUsesTolerance,
+       kUsesTolerance | kEstimatesMissedLight,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevSelector>(h, scene_tolerance(p));
@@ -58,7 +58,7 @@ std::vector<MethodInfo> built_in_rows() {
        "LEV that culls only while the summed irradiance bound of what it culled at the point stays "
        "within the tolerance",
        // Where many lights add up it shadow-tests nearly all of them (building: 3,998 of 4,096).
-       kUsesTolerance | kScansEveryLight,
+       kUsesTolerance | kScansEveryLight | kEstimatesMissedLight,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevBoundedSelector>(h, scene_tolerance(p));
@@ -68,7 +68,7 @@ std::vector<MethodInfo> built_in_rows() {
        "LEV estimated (clusters)",
        "LEV, plus an estimate of what it culled: the culled subtrees cut into clusters, each a "
        "representative light with the cluster's intensity and one shadow ray (Lightcuts)",
-       kUsesTolerance,
+       kUsesTolerance | kEstimatesMissedLight,
        {0.1, 0.03, 0.01, 0.003, 0.001},
        [](const LightHierarchy& h, const MethodParams& p) -> std::unique_ptr<LightSelector> {
          return std::make_unique<LevEstSelector>(h, scene_tolerance(p), p.display_scale);
@@ -160,6 +160,7 @@ MethodInfo::MethodInfo(Method id_, const char* name_, const char* label_, const 
       stochastic((traits & kStochastic) != 0),
       scans_every_light((traits & kScansEveryLight) != 0),
       reads_display_scale((traits & (kUsesTolerance | kReadsDisplayScale)) != 0),
+      missed_light_known((traits & (kEstimatesMissedLight | kIsReference | kStochastic)) != 0),
       bench_tolerances(std::move(bench_tolerances_)),
       make_selector(make_selector_),
       work_cost(work_cost_) {}

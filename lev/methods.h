@@ -102,6 +102,8 @@ enum MethodTrait : unsigned {
   // Reads MethodParams::display_scale beyond the tolerance (lev_cut's drop of what cannot reach
   // the display); a method with kUsesTolerance reads it through scene_tolerance already.
   kReadsDisplayScale = 1u << 5,
+  // Estimates the light it left out when asked (MissedLight, lev/missed_light.h).
+  kEstimatesMissedLight = 1u << 6,
 };
 
 // What a method's work at one shading point costs, in shadow rays, per unit of what it counts
@@ -139,6 +141,11 @@ struct MethodInfo {
   // Its images depend on the exposure (the tolerance, or a drop, in displayed units): a new
   // exposure renders it again. rt's radiance, and every sampler's, do not depend on it.
   bool reads_display_scale;
+  // The missed-light estimate (lev/missed_light.h) is known for it: estimated from draws of what
+  // it left out (kEstimatesMissedLight), or 0 by construction (rt, and the samplers, which leave
+  // nothing out on average). False for a method that errs without estimating it (ast, lightcuts,
+  // lev_cut): its estimate would read 0 where its pixels differ from rt's.
+  bool missed_light_known;
   // The trade experiment's sweep, largest first: of the tolerance, or of the relative error for a
   // method that uses that and not the tolerance (swept_setting).
   std::vector<double> bench_tolerances;

@@ -164,6 +164,27 @@ bool operator!=(const ImageSettings& a, const ImageSettings& b) {
   return !(a == b);
 }
 
+std::unique_ptr<lev::LightSelector> make_render_selector(const Scene& scene, const RayScene& rays,
+                                                         const RenderSettings& settings,
+                                                         std::optional<RtFallbackProbe>* probe) {
+  if (probe) probe->reset();
+  std::unique_ptr<lev::LightSelector> selector =
+      lev::make_selector(scene.lights, method_params(settings));
+  if (!settings.rt_fallback || !lev::rt_fallback_applies(lev::method_info(settings.method)))
+    return selector;
+  // A selector that learns would learn from the probe's points: it is probed through a copy.
+  std::unique_ptr<lev::LightSelector> probed;
+  if (selector->learns_between_passes())
+    probed = lev::make_selector(scene.lights, method_params(settings));
+  const RtFallbackProbe made =
+      probe_rt_fallback(scene, rays, settings, probed ? *probed : *selector);
+  if (probe) *probe = made;
+  if (!made.use_rt) return selector;
+  lev::MethodParams rt = method_params(settings);
+  rt.method = lev::reference_method();
+  return lev::make_selector(scene.lights, rt);
+}
+
 RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
                                  const RenderSettings& settings) {
   if (settings.width < 1 || settings.height < 1 || settings.tile_size < 1 ||
@@ -175,20 +196,7 @@ RenderStatePtr make_render_state(const Scene& scene, const RayScene& rays,
     throw std::invalid_argument("render settings out of range");
   }
   RenderStatePtr state(new RenderState(scene, rays, settings));
-  state->selector = lev::make_selector(scene.lights, method_params(settings));
-  if (settings.rt_fallback && lev::rt_fallback_applies(lev::method_info(settings.method))) {
-    // A selector that learns would learn from the probe's points: it is probed through a copy.
-    std::unique_ptr<lev::LightSelector> probed;
-    if (state->selector->learns_between_passes())
-      probed = lev::make_selector(scene.lights, method_params(settings));
-    state->rt_fallback =
-        probe_rt_fallback(scene, rays, settings, probed ? *probed : *state->selector);
-    if (state->rt_fallback->use_rt) {
-      lev::MethodParams rt = method_params(settings);
-      rt.method = lev::reference_method();
-      state->selector = lev::make_selector(scene.lights, rt);
-    }
-  }
+  state->selector = make_render_selector(scene, rays, settings, &state->rt_fallback);
   state->framebuffer = make_framebuffer(settings.width, settings.height);
   state->framebuffer.exposure_scale = exposure_scale(settings.exposure_ev);
   if (settings.missed_draws > 0) allocate_missed_light(state->framebuffer);

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "lev/methods.h"
 #include "renderer/framebuffer.h"
@@ -99,6 +100,15 @@ struct RenderStateDeleter {
   void operator()(RenderState* state) const;
 };
 using RenderStatePtr = std::unique_ptr<RenderState, RenderStateDeleter>;
+
+// The selector a render of `settings` shades with: the method's, or rt's where settings.rt_fallback
+// is on, the method can fall back, and the probe (rt_fallback.h) chose rt's loop. *probe (when not
+// null) receives the probe, or nothing when none was made. make_render_state and the pixel
+// inspector (`levrt inspect`) both make theirs here, so the inspector traces what the render
+// shades.
+std::unique_ptr<lev::LightSelector> make_render_selector(const Scene& scene, const RayScene& rays,
+                                                         const RenderSettings& settings,
+                                                         std::optional<RtFallbackProbe>* probe);
 
 // Makes the method's selector for settings.tolerance (a `lev` state fits its own extent volumes;
 // the scene is only read, so states with different tolerances and methods may render one scene

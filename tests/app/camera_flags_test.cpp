@@ -250,18 +250,21 @@ TEST_F(CameraCli, FarCamerasAreRefusedNamingTheFlagAndTheLimitRenders) {
 // the scene file's camera; before, a release build rendered the background alone (exit 0, no
 // shading point) and a checked build aborted on a ray with no direction.
 TEST_F(CameraCli, ACameraDegenerateInTheRenderFloatModeIsRefused) {
-  const std::vector<std::vector<std::string>> cases = {
-      {"--camera-up", "1e-38,0,0"},
-      {"--camera-position", "0,0,0", "--camera-target", "1e-38,0,0"},
+  // Each named by the flag that moved the camera (the up alone was blamed on --camera-target).
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--camera-up", "1e-38,0,0"}, "--camera-up"},
+      {{"--camera-up", "0,1,-1.0379746835443038"}, "--camera-up"},  // along the preset's view
+      {{"--camera-position", "40,37.6,0"}, "--camera-position"},    // at the preset's target
+      {{"--camera-position", "0,0,0", "--camera-target", "1e-38,0,0"}, "--camera-target"},
   };
-  for (const std::vector<std::string>& flags : cases) {
+  for (const auto& [flags, named] : cases) {
     std::vector<std::string> args = flags;
     args.push_back("--out");
     args.push_back(path("out.png"));
     const CommandRun r = render(args);
     EXPECT_EQ(r.exit_code, 2) << flags[1] << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-    EXPECT_NE(r.output.find("--camera-target: the camera at"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.rfind("levrt: " + named + ": the camera at", 0), 0u) << r.output;
     EXPECT_NE(r.output.find("has no view"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("out.png"))) << r.output;
   }

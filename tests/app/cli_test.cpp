@@ -154,6 +154,85 @@ TEST_F(Cli, RelativeErrorOutOfRangeOrIgnoredIsRefused) {
   EXPECT_NE(rt.output.find(" lights, rt: "), std::string::npos) << rt.output;
 }
 
+// Every flag the chosen method ignores is refused, as --relative-error was: --tolerance with rt
+// rendered rt (exit 0), --lights-per-point with lev, --rt-fallback with a sampler, and the
+// missed-light estimate with a method that does not estimate it (ast, lightcuts, lev_cut: its
+// stats, EXR channel and heatmap read 0 where the pixels differ from rt's). One line naming the
+// flag, the method and the value, exit 2, nothing written; in `inspect` too.
+TEST_F(Cli, AFlagTheMethodIgnoresIsRefused) {
+  const std::string out = path("image.png");
+  const std::vector<std::vector<std::string>> cases = {
+      {"--method", "rt", "--tolerance", "0.5"},
+      {"--method", "lightcuts", "--tolerance", "0.001"},
+      {"--method", "lev_cut", "--tolerance", "0"},
+      {"--method", "lev", "--lights-per-point", "4"},
+      {"--method", "rt", "--rt-fallback", "off"},
+      {"--method", "light_tree", "--rt-fallback", "on"},
+      {"--method", "ast", "--missed-draws", "8"},
+      {"--method", "lightcuts", "--missed-draws", "8"},
+      {"--method", "lev_cut", "--missed-draws", "2"},
+      {"--method", "lev_cut", "--heatmap-missed", path("missed.png")},
+  };
+  for (std::vector<std::string> args : cases) {
+    const std::string flag = args[2], label = args[1] + " " + args[2];
+    args.insert(args.begin(), "render");
+    for (const char* a : {"--width", "8", "--height", "8", "--out"}) args.emplace_back(a);
+    args.push_back(out);
+    const CommandRun r = run_levrt(args);
+    EXPECT_EQ(r.exit_code, 2) << label << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("levrt: " + flag + ": method " + args[2], 0), 0u)
+        << label << ": " << r.output;
+    EXPECT_NE(r.output.find("got '" + args[4] + "'"), std::string::npos) << label << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << label << ": " << r.output;
+    EXPECT_TRUE(folder_is_empty()) << label;
+  }
+  const CommandRun inspect = run_levrt({"inspect", "--method", "rt", "--tolerance", "0.1",
+                                        "--width", "8", "--height", "8", "--pixel", "1,1"});
+  EXPECT_EQ(inspect.exit_code, 2) << inspect.output;
+  EXPECT_EQ(inspect.output.rfind("levrt: --tolerance: method rt ignores it", 0), 0u)
+      << inspect.output;
+  // What the methods read is taken, the missed light of those that estimate it or leave none out.
+  for (const char* method : {"lev", "lev_est", "lev_bounded", "rt", "lev_mc", "light_tree"}) {
+    const CommandRun ok = run_levrt({"render", "--method", method, "--missed-draws", "2", "--width",
+                                     "8", "--height", "8", "--out", out});
+    EXPECT_EQ(ok.exit_code, 0) << method << ": " << ok.output;
+  }
+}
+
+// --resolution sizes the viewer's image; render and inspect took it and rendered --width x
+// --height (exit 0): one line naming the flag, exit 2, nothing written.
+TEST_F(Cli, TheViewersResolutionIsRefusedHeadless) {
+  for (const char* value : {"fit/4", "typed", "fit"}) {
+    const CommandRun render = run_levrt({"render", "--resolution", value, "--width", "8",
+                                         "--height", "8", "--out", path("image.png")});
+    EXPECT_EQ(render.exit_code, 2) << render.output;
+    EXPECT_EQ(render.output.rfind("levrt: --resolution: only the viewer", 0), 0u) << render.output;
+    EXPECT_NE(render.output.find(std::string("got '") + value + "'"), std::string::npos);
+    EXPECT_EQ(std::count(render.output.begin(), render.output.end(), '\n'), 1) << render.output;
+    const CommandRun inspect = run_levrt(
+        {"inspect", "--resolution", value, "--width", "8", "--height", "8", "--pixel", "1,1"});
+    EXPECT_EQ(inspect.exit_code, 2) << inspect.output;
+    EXPECT_EQ(inspect.output.rfind("levrt: --resolution: only the viewer", 0), 0u)
+        << inspect.output;
+  }
+  EXPECT_TRUE(folder_is_empty());
+}
+
+// The noise heatmap of one pass was written blank (range 0..0) while the stats said the noise
+// is unknown (std_error_avg_pct null): refused, one line and exit 2, nothing written.
+TEST_F(Cli, TheNoiseHeatmapOfOnePassIsRefused) {
+  const CommandRun r = run_levrt({"render", "--width", "8", "--height", "8", "--heatmap-noise",
+                                  path("noise.png"), "--stats", path("s.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: --heatmap-noise: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find("--spp 2"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_TRUE(folder_is_empty());
+  const CommandRun two = run_levrt({"render", "--width", "8", "--height", "8", "--spp", "2",
+                                    "--heatmap-noise", path("noise.png")});
+  EXPECT_EQ(two.exit_code, 0) << two.output;
+}
+
 TEST_F(Cli, AbsurdImageSizeIsRefusedBeforeRendering) {
   const CommandRun r =
       run_levrt({"render", "--width", "16384", "--height", "16384", "--out", path("a.png")});
@@ -375,10 +454,24 @@ TEST_F(Cli, TheSnapshotWritesTheErrorBoundHeatmapBesideTheOthers) {
 // that reach them (at 0.01 lev culls only lights that cannot, and its bound there is 0).
 TEST_F(Cli, StatsReportTheErrorBoundWithoutAReference) {
   const auto bound = [&](const std::string& method) {
-    const CommandRun r =
-        run_levrt({"render", "--scene", "hall", "--lights", "64", "--method", method, "--tolerance",
-                   "0.1", "--width", "16", "--height", "12", "--stats", path(method + ".json"),
-                   "--heatmap-bound", path(method + ".png"), "--quiet"});
+    std::vector<std::string> args = {"render",
+                                     "--scene",
+                                     "hall",
+                                     "--lights",
+                                     "64",
+                                     "--method",
+                                     method,
+                                     "--width",
+                                     "16",
+                                     "--height",
+                                     "12",
+                                     "--stats",
+                                     path(method + ".json"),
+                                     "--heatmap-bound",
+                                     path(method + ".png"),
+                                     "--quiet"};
+    if (method != "rt") args.insert(args.end(), {"--tolerance", "0.1"});  // rt has none
+    const CommandRun r = run_levrt(args);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     std::ifstream in(path(method + ".json"));
     const nlohmann::json stats = nlohmann::json::parse(in);
@@ -396,12 +489,20 @@ TEST_F(Cli, SamplingMethodsWriteTheNoiseHeatmapAndItsEstimate) {
   for (const char* method : {"lev_mc", "light_tree"}) {
     const std::string stats = path(std::string(method) + ".json");
     const std::string noise = path(std::string(method) + "_noise.png");
-    const CommandRun r = run_levrt({"render", "--scene",         "hall", "--lights",
-                                    "64",     "--method",        method, "--tolerance",
-                                    "0.3",    "--width",         "32",   "--height",
-                                    "24",     "--spp",           "4",    "--lights-per-point",
-                                    "2",      "--heatmap-noise", noise,  "--stats",
-                                    stats,    "--reference",     "rt"});
+    std::vector<std::string> args = {"render", "--scene",
+                                     "hall",   "--lights",
+                                     "64",     "--method",
+                                     method,   "--width",
+                                     "32",     "--height",
+                                     "24",     "--spp",
+                                     "4",      "--lights-per-point",
+                                     "2",      "--heatmap-noise",
+                                     noise,    "--stats",
+                                     stats,    "--reference",
+                                     "rt"};
+    // light_tree draws from the whole hierarchy: it has no tolerance.
+    if (std::string(method) == "lev_mc") args.insert(args.end(), {"--tolerance", "0.3"});
+    const CommandRun r = run_levrt(args);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("std error avg"), std::string::npos) << r.output;
     const std::string png = read_file(noise);

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -65,9 +66,9 @@ TEST(InspectCli, PrintsTheTableAndWritesTheCompleteListsAsJson) {
 }
 
 TEST(InspectCli, ClusteringMethodsListClustersWithTheirMembers) {
-  const auto run =
-      run_levrt({"inspect", "--scene", "hall", "--level", "3", "--method", "lightcuts", "--width",
-                 "80", "--height", "60", "--pixel", "40,40", "--json", "-"});
+  const auto run = run_levrt({"inspect", "--scene", "hall", "--level", "3", "--method", "lightcuts",
+                              "--width", "80", "--height", "60", "--pixel", "40,40", "--json", "-",
+                              "--rt-fallback", "off"});
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const std::size_t start = run.output.find('{');
   ASSERT_NE(start, std::string::npos);
@@ -87,6 +88,81 @@ TEST(InspectCli, ClusteringMethodsListClustersWithTheirMembers) {
     }
     EXPECT_EQ(lights, 64u);
   }
+}
+
+// The JSON `levrt inspect` writes for car park pixel 30,21 of 32x24 with `flags`.
+nlohmann::json inspect_fallback_json(const levrt_test::TempDir& dir,
+                                     const std::vector<std::string>& flags) {
+  const std::string json_path = (dir.path() / "pixel.json").string();
+  std::vector<std::string> args = {"inspect", "--scene", "carpark", "--width", "32",     "--height",
+                                   "24",      "--pixel", "30,21",   "--json",  json_path};
+  args.insert(args.end(), flags.begin(), flags.end());
+  const auto run = run_levrt(args);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return read_json(json_path);
+}
+
+TEST(InspectCli, WhereTheRenderFallsBackToRtTheInspectorTracesRtsLoopToo) {
+  // Car park 32x24, lightcuts: the probe picks rt's loop (the render's stats say so), so the
+  // render's pixel is rt's. The inspector traced lightcuts' cut anyway: 100,97,85 where the
+  // render wrote 99,96,84, and a lost sum that the render did not lose.
+  const levrt_test::TempDir dir("levrt-inspect-fallback-");
+  const std::string stats_path = (dir.path() / "stats.json").string();
+  const auto render = run_levrt({"render", "--scene", "carpark", "--width", "32", "--height", "24",
+                                 "--method", "lightcuts", "--quiet", "--stats", stats_path});
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  ASSERT_EQ(read_json(stats_path)["rt_fallback"]["used"], true);
+
+  const nlohmann::json rt = inspect_fallback_json(dir, {"--method", "rt"});
+  const nlohmann::json fallback = inspect_fallback_json(dir, {"--method", "lightcuts"});
+  EXPECT_EQ(fallback["rt_fallback"], true);
+  EXPECT_EQ(fallback["radiance"], rt["radiance"]);
+  EXPECT_EQ(fallback["totals"]["clusters"], 0);
+  EXPECT_EQ(rt["rt_fallback"], nullptr) << "rt has no fallback";
+
+  const nlohmann::json own =
+      inspect_fallback_json(dir, {"--method", "lightcuts", "--rt-fallback", "off"});
+  EXPECT_EQ(own["rt_fallback"], nullptr);
+  EXPECT_GT(own["totals"]["clusters"].get<int>(), 0);
+  EXPECT_NE(own["radiance"], rt["radiance"]);
+}
+
+// The table's header names the method with the settings it reads, as `render`'s summary does:
+// it said "lightcuts, tolerance 0.01" (a setting lightcuts ignores) and "rt, tolerance 0.01".
+TEST(InspectCli, TheHeaderNamesTheSettingsTheMethodReads) {
+  const auto header = [](const std::vector<std::string>& method) {
+    std::vector<std::string> args = {"inspect", "--width", "16", "--height",
+                                     "12",      "--pixel", "8,6"};
+    args.insert(args.end(), method.begin(), method.end());
+    const auto run = run_levrt(args);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return run.output.substr(0, run.output.find('\n'));
+  };
+  EXPECT_NE(header({"--method", "lightcuts", "--relative-error", "0.05"})
+                .find(", lightcuts, relative error 0.05 at exposure 0 EV"),
+            std::string::npos);
+  EXPECT_NE(header({"--method", "rt"}).find(", rt at exposure 0 EV"), std::string::npos);
+  EXPECT_NE(header({"--method", "lev_mc", "--lights-per-point", "3"})
+                .find(", lev_mc, tolerance 0.01, 3 lights per point at exposure"),
+            std::string::npos);
+  EXPECT_NE(header({"--tolerance", "0.2"}).find(", lev, tolerance 0.2 at exposure"),
+            std::string::npos);
+}
+
+// With --subsample N a render traces only the pixels on the N grid: inspect listed lights and a
+// radiance for a pixel the render leaves unrendered. Refused in one line; a pixel on the grid is
+// inspected.
+TEST(InspectCli, APixelTheSubsampledRenderSkipsIsRefused) {
+  for (const char* pixel : {"1,0", "0,3", "5,5"}) {
+    const auto run = run_levrt(
+        {"inspect", "--width", "16", "--height", "12", "--subsample", "4", "--pixel", pixel});
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_EQ(run.output.rfind("levrt: --pixel: a render with --subsample 4", 0), 0u) << run.output;
+    EXPECT_EQ(line_count(run.output), 1) << run.output;
+  }
+  const auto on_grid = run_levrt(
+      {"inspect", "--width", "16", "--height", "12", "--subsample", "4", "--pixel", "8,4"});
+  EXPECT_EQ(on_grid.exit_code, 0) << on_grid.output;
 }
 
 TEST(InspectCli, BadPixelOrFlagsAreOneLineAndExitTwoWithNothingWritten) {
@@ -196,6 +272,15 @@ TEST(InspectCli, TheTableIsAnOutputThatMayNotBeAnInputAndReportsAFailedWrite) {
   EXPECT_EQ(line_count(output), 1) << output;
   EXPECT_NE(output.find("write to standard output failed (Broken pipe)"), std::string::npos)
       << output;
+
+  // The JSON and the table are written all or none: the JSON was written before the table's
+  // write failed (exit 1 with pixel.json in place).
+  const std::string json = (dir.path() / "pixel.json").string();
+  const int with_json = levrt_test::run_levrt_into_closed_pipe(
+      {"inspect", "--width", "32", "--height", "24", "--pixel", "16,12", "--json", json}, messages);
+  ASSERT_TRUE(WIFEXITED(with_json)) << levrt_test::read_file(messages);
+  EXPECT_EQ(WEXITSTATUS(with_json), 1) << levrt_test::read_file(messages);
+  EXPECT_FALSE(std::filesystem::exists(json));
 }
 
 }  // namespace

@@ -136,6 +136,27 @@ TEST(Interrupt, SignalDuringTheSceneLoadStopsTheLoadWithNothingWritten) {
   }
 }
 
+// `levrt inspect` installed no handlers: SIGINT and SIGTERM killed it (no line, no exit 130), and
+// once it had traced the pixel a signal was not looked at again, so the minutes of formatting a
+// million lights' lists ran on and wrote them. Now it stops as render does, in the load, the
+// inspection or the formatting, with nothing written (the JSON, the table on standard output).
+TEST(Interrupt, SignalDuringInspectStopsItWithNothingWritten) {
+  const levrt_test::TempDir temp("levrt_interrupt_inspect_");
+  const fs::path& dir = temp.path();
+  for (int sig : {SIGINT, SIGTERM}) {
+    for (int delay_ms : {0, 1500}) {  // as the scene loads; formatting the lists
+      const InterruptedRun run = levrt_test::interrupt_and_read(
+          {LEVRT_BINARY, "inspect", "--scene", "building", "--lights", "1048576", "--method", "rt",
+           "--pixel", "160,120", "--json", (dir / "pixel.json").string()},
+          sig, std::chrono::milliseconds(delay_ms));
+      EXPECT_EQ(run.exit_code, 130) << "signal " << sig << " after " << delay_ms << " ms\n"
+                                    << run.errors;
+      EXPECT_TRUE(levrt_test::interrupted_stage(run.errors).found) << run.errors;
+      EXPECT_TRUE(fs::is_empty(dir)) << "signal " << sig << " after " << delay_ms << " ms";
+    }
+  }
+}
+
 TEST(Interrupt, SignalDuringBenchLeavesNoOutputAndKeepsEarlierResults) {
   const levrt_test::TempDir temp("levrt_interrupt_bench_");
   const fs::path& dir = temp.path();
