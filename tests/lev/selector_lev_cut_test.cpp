@@ -928,7 +928,7 @@ class WallOnEveryChannel final : public UnitResponsePoint {
 // After the noise check's refinements (each going on from the last cut) the culled bounds the
 // selector answers, for the last cut, still hold its error against every light with the wall's
 // shadows: the radiance bound (clusters' error on top of what the volumes dropped) and the
-// irradiance bound (a unit response).
+// irradiance bound (a unit response); the inspector holds every light once.
 TEST(LevCut, AfterRefinementsTheErrorIsWithinTheCulledBounds) {
   std::uint64_t refined = 0, points = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
@@ -956,6 +956,9 @@ TEST(LevCut, AfterRefinementsTheErrorIsWithinTheCulledBounds) {
         lev::SelectorScratch scratch;
         lev::CulledRadianceBound culled_radiance;
         scratch.culled_radiance = &culled_radiance;
+        lev::InspectRecord record;
+        scratch.inspect = &record;
+        scratch.walk.inspect = &record;
         lev::SelectionCounters counters;
         glm::vec3 irradiance_bound(-1.0f);
         const glm::vec3 radiance =
@@ -970,6 +973,13 @@ TEST(LevCut, AfterRefinementsTheErrorIsWithinTheCulledBounds) {
           ASSERT_LE(error, static_cast<double>(irradiance_bound[c]) * (1.0 + 1e-4) + slack)
               << context << ", channel " << c;
         }
+        // The inspector holds every light once: shaded, in a cluster of the last cut, or dropped.
+        ASSERT_EQ(record.shaded.size(), scratch.lights.size()) << context;
+        lev::complete_inspection(h, point, record);
+        std::size_t accounted = record.culled.size();
+        for (const lev::ShadedLight& s : record.shaded)
+          accounted += s.role == lev::InspectRole::cluster ? s.members.size() : 1;
+        ASSERT_EQ(accounted, world_lights.size()) << context;
         WallOnEveryChannel same(x, wall_x);
         lev::SelectorScratch plain;
         lev::SelectionCounters once;
