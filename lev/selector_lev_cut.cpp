@@ -112,6 +112,8 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
     // NaN-safe: refines only on a noise known to be above the setting.
     if (!(noise_sigmas_ * noise * display_scale_ > relative_error_)) break;
     if (scratch.cancel && scratch.cancel->load(std::memory_order_relaxed)) break;
+    // Half the smallest relative error rounds to 0, which refine_light_cut cannot go on to.
+    if (!(relative_error * 0.5f > 0.0f)) break;
     // The inspector lists what the last cut did: the refined one. What the volumes dropped
     // stays dropped (and recorded); the clusters are decided again.
     if (scratch.inspect) {
