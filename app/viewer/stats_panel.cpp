@@ -148,6 +148,8 @@ void draw_stats_section(const ViewerState& state, std::chrono::steady_clock::tim
   if (s.missed) {
     row("missed light", "%.4f%% avg (+- %.4f%%), %.3f%% max", s.missed->average_pct,
         s.missed->std_error_avg_pct, s.missed->max_pct);
+  } else if (!lev::method_info(st.method).missed_light_known) {
+    row("missed light", "not estimated by %s", lev::method_info(st.method).name);
   } else {
     row("missed light", "with the Missed light view");
   }

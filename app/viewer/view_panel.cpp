@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/viewer/heatmap_scale.h"
+#include "lev/methods.h"
 
 namespace app::viewer {
 namespace {
@@ -145,6 +146,13 @@ void draw_view_section(ViewerState& state) {
       record_item(&state.control_rects, std::string("view:") + views[i].name);
   }
   const ViewInfo& info = view_info(state.view);
+  const lev::MethodInfo& method = lev::method_info(state.settings.method.method);
+  if (info.needs_missed && !method.missed_light_known) {
+    ImGui::TextWrapped(
+        "%s does not estimate the light it leaves out: the Error view compares it with rt.",
+        method.name);
+    return;
+  }
   const bool rendered =
       info.needs_reference ? state.error.pixels_compared > 0 : state.image.tiles_seen > 0;
   switch (info.colour_map) {

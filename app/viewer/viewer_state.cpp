@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/render_command.h"
+#include "lev/methods.h"
 #include "scenes/scene_models.h"
 
 namespace app::viewer {
@@ -162,8 +163,13 @@ void set_inspect_pixel(ViewerState& state, const std::optional<std::array<int, 2
 RenderRequest make_request(const ViewerState& state) {
   RenderRequest r;
   r.settings = state.settings;
-  if (view_info(state.view).needs_missed)
+  // The Missed light view turns the estimate on for a method that estimates what it leaves out;
+  // one that does not (ast, lightcuts, lev_cut) would read 0 where its pixels differ from rt's
+  // (the view says so instead: view_panel.cpp).
+  if (view_info(state.view).needs_missed &&
+      lev::method_info(state.settings.method.method).missed_light_known) {
     r.settings.image.missed_draws = std::max(r.settings.image.missed_draws, kDefaultMissedDraws);
+  }
   r.camera = state.camera;
   r.want_reference = state.want_reference;
   r.inspect_pixel = state.inspect_pixel;

@@ -444,6 +444,25 @@ TEST(ScriptedChanges, HoversAreCheckedOnlyAgainstTypedSizesAndWindowSizesParse) 
   EXPECT_EQ(h, 640);
 }
 
+// The Missed light view asks for the estimate where the method makes one; ast, lightcuts and
+// lev_cut do not (their estimate would read 0 where their pixels differ from rt's).
+TEST(ViewerState, TheMissedLightViewTurnsTheEstimateOnOnlyForMethodsThatMakeIt) {
+  ViewerState s;
+  select_view(s, ViewMode::missed);
+  for (const lev::MethodInfo& method : lev::method_table()) {
+    s.settings.method.method = method.id;
+    const int draws = make_request(s).settings.image.missed_draws;
+    if (method.missed_light_known) {
+      EXPECT_GT(draws, 0) << method.name;
+    } else {
+      EXPECT_EQ(draws, 0) << method.name;
+    }
+  }
+  s.settings.method.method = lev::Method::lev;
+  select_view(s, ViewMode::image);
+  EXPECT_EQ(make_request(s).settings.image.missed_draws, 0);
+}
+
 TEST(ViewerState, NewSceneResetsTheCameraAndAViewChangeDropsTheReference) {
   ViewerState s;
   s.camera = renderer::Camera{};
