@@ -1036,6 +1036,103 @@ TEST(LevCut, AfterRefinementsTheErrorIsWithinTheCulledBounds) {
   EXPECT_GT(refined, points / 20) << points;
 }
 
+// Two instances of a panel of 2,500 dim lights (one turned and scaled), each light below the
+// drop's tolerance, and a few bright lights: the drop often exceeds its budget, so the point is
+// walked again. After that walk (and the noise check's refinements) the culled bounds still hold
+// the error against every light with the wall's shadows, the inspector holds every light once
+// (the first walk's records are gone), and the same point gives the same radiance again; at
+// exposures 2^8 and 2^-8 alike (the intensities scaled to match).
+lev::LightDescription dim_panels_and_bright_lights(Random& r, float scale) {
+  lev::LightDescription tree;
+  std::vector<lev::Light> panel;
+  for (int k = 0; k < 2500; ++k) {
+    const glm::vec3 at(0.2f * static_cast<float>(k % 50) - 5.0f,
+                       0.2f * static_cast<float>(k / 50) - 5.0f, 3.0f);
+    panel.push_back(lev::make_point_light(at, glm::vec3(2e-4f, 1e-4f, 5e-5f) * scale));
+  }
+  tree.masters.push_back(lev::build_light_bvh(panel));
+  std::vector<lev::LightDescriptionNode> children;
+  children.push_back(
+      lev::affine_node(lev::make_translation({0.0f, 0.0f, 0.5f}), lev::instance_node(0)));
+  children.push_back(lev::affine_node(
+      lev::compose(lev::make_rotation({1.0f, 1.0f, 0.0f}, 0.3f), lev::make_scale(1.5f)),
+      lev::instance_node(0)));
+  for (int k = 0; k < 3; ++k) {
+    const glm::vec3 at(r.uniform(-6, 6), r.uniform(-6, 6), r.uniform(4, 8));
+    children.push_back(
+        lev::light_node(lev::make_point_light(at, glm::vec3(r.uniform(0.05f, 1.0f)) * scale)));
+  }
+  tree.root = lev::union_node(std::move(children));
+  return tree;
+}
+
+TEST(LevCut, AfterASecondWalkTheErrorIsWithinTheCulledBoundsAndEveryLightIsCountedOnce) {
+  std::uint64_t walked_again = 0, points = 0;
+  for (const float display_scale : {1.0f, 256.0f, 1.0f / 256.0f}) {
+    Random r(7);
+    const lev::LightDescription tree = dim_panels_and_bright_lights(r, 1.0f / display_scale);
+    const lev::LightHierarchy h = lev::build_hierarchy(tree);
+    const lev::CutNodeTable table = lev::make_cut_node_table(h);
+    const std::vector<lev::Light> world_lights = lev::flatten_light_description(tree);
+    for (const float relative_error : {0.02f, 0.3f, 1.0f}) {
+      const lev::LevCutSelector selector(h, relative_error, display_scale);
+      const float tolerance = relative_error * lev::kDropToleranceOfRelativeError / display_scale;
+      const lev::ExtentVolumes volumes = lev::fit_extent_volumes(h, tolerance);
+      for (int k = 0; k < 20; ++k) {
+        const glm::vec3 x(r.uniform(-6, 6), r.uniform(-6, 6), r.uniform(-4, 2));
+        const float wall_x = r.uniform(-6, 6);
+        const std::string context = "display scale " + std::to_string(display_scale) +
+                                    " relative error " + std::to_string(relative_error) + " k " +
+                                    std::to_string(k);
+        // Walked again: the cut differs from the one whose drop has no budget (white at inf).
+        UnitResponsePoint unit(x);
+        lev::WalkScratch walk;
+        std::vector<lev::Light> budgeted, unbudgeted;
+        lev::WalkCounters counters_budgeted, counters_unbudgeted;
+        lev::find_light_cut(h, volumes, table, tolerance, relative_error, unit, walk, budgeted,
+                            counters_budgeted, nullptr, 1.0f / display_scale);
+        lev::find_light_cut(h, volumes, table, tolerance, relative_error, unit, walk, unbudgeted,
+                            counters_unbudgeted, nullptr, std::numeric_limits<float>::infinity());
+        if (counters_budgeted.nodes_visited != counters_unbudgeted.nodes_visited) ++walked_again;
+        WallOnEveryChannel point(x, wall_x);
+        lev::SelectorScratch scratch;
+        lev::CulledRadianceBound culled_radiance;
+        scratch.culled_radiance = &culled_radiance;
+        lev::InspectRecord record;
+        scratch.inspect = &record;
+        scratch.walk.inspect = &record;
+        lev::SelectionCounters counters;
+        glm::vec3 irradiance_bound(-1.0f);
+        const glm::vec3 radiance =
+            selector.direct_radiance(point, scratch, counters, &irradiance_bound);
+        ASSERT_TRUE(culled_radiance.bounded) << context;
+        const glm::dvec3 truth = point.truth(world_lights);
+        for (int c = 0; c < 3; ++c) {
+          const double error = std::abs(static_cast<double>(radiance[c]) - truth[c]);
+          const double slack = 1e-4 * truth[c] + 1e-12;
+          ASSERT_LE(error, static_cast<double>(culled_radiance.bound[c]) * (1.0 + 1e-4) + slack)
+              << context << ", channel " << c;
+          ASSERT_LE(error, static_cast<double>(irradiance_bound[c]) * (1.0 + 1e-4) + slack)
+              << context << ", channel " << c;
+        }
+        ASSERT_EQ(record.shaded.size(), scratch.lights.size()) << context;
+        lev::complete_inspection(h, point, record);
+        std::size_t accounted = record.culled.size();
+        for (const lev::ShadedLight& s : record.shaded)
+          accounted += s.role == lev::InspectRole::cluster ? s.members.size() : 1;
+        ASSERT_EQ(accounted, world_lights.size()) << context;
+        WallOnEveryChannel same(x, wall_x);
+        lev::SelectorScratch again;
+        lev::SelectionCounters counters_again;
+        EXPECT_EQ(selector.direct_radiance(same, again, counters_again), radiance) << context;
+        EXPECT_EQ(counters_again.nodes_visited, counters.nodes_visited) << context;
+        ++points;
+      }
+    }
+  }
+  EXPECT_GT(walked_again, points / 4) << points;
+}
+
 // At the smallest relative error above 0 the noise check cannot halve it (half of it rounds to
 // 0, where nothing is cut and no estimates are kept): a refinement there would leave the cut's
 // estimates apart from its lights (and assert in refine_light_cut). Dim fixtures half behind a
