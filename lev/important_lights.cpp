@@ -1301,6 +1301,11 @@ void start_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volum
                                   relative_error * kDropFloorOfWhite * display_white);
     if (relative_error == 0.0f || drop_budget != std::numeric_limits<float>::infinity() ||
         !(brightest(scratch.cut_sums.dropped) > within)) {
+      // A finer cut going on from this one (refine_light_cut) holds its drop within it too: it
+      // opens clusters whose parts the volumes may drop.
+      if (drop_budget == std::numeric_limits<float>::infinity()) {
+        scratch.cut_sums.drop_budget = within;
+      }
       return;
     }
     drop_budget = within;

@@ -394,7 +394,8 @@ void start_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volum
 // its lights in `lights`) to a cut at a smaller relative_error, without walking from the root
 // again: its lights stay, each cluster is put aside again with its bound and walked if that now
 // exceeds relative_error times the cut's total, and the walk goes on as find_light_cut's does.
-// What the volumes dropped stays dropped; an exact cluster kept again keeps its light and sum.
+// What the volumes dropped stays dropped, and what they drop now is held within the first cut's
+// drop budget (find_light_cut); an exact cluster kept again keeps its light and sum.
 // `lights` and the walk's lists (cut_estimates, centred, exact and several-light clusters) are
 // those of the finer cut: its own lights first, then its clusters in the order decided.
 void refine_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volumes,

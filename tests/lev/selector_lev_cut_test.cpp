@@ -1133,6 +1133,78 @@ TEST(LevCut, AfterASecondWalkTheErrorIsWithinTheCulledBoundsAndEveryLightIsCount
   EXPECT_GT(walked_again, points / 4) << points;
 }
 
+// Twenty fixtures, each a light above the drop's tolerance among 100 dim lights below it, and a
+// light near the points: each fixture is a cluster of the first cut (no drop, so no second walk)
+// and is opened by a finer one (refine_light_cut), whose volumes then drop the dim lights.
+lev::LightDescription fixtures_of_a_light_among_dim_ones() {
+  lev::LightDescription tree;
+  std::vector<lev::LightDescriptionNode> parts;
+  parts.push_back(lev::light_node(lev::make_point_light({0.0f, 0.0f, 0.0f}, glm::vec3(0.05f))));
+  std::vector<lev::Light> dim;
+  for (int k = 0; k < 100; ++k) {
+    const glm::vec3 at(0.05f * static_cast<float>(k % 10), 0.05f * static_cast<float>(k / 10),
+                       0.3f);
+    dim.push_back(lev::make_point_light(at, glm::vec3(5e-3f)));
+  }
+  parts.push_back(lev::build_light_bvh(dim));
+  tree.masters.push_back(lev::union_node(std::move(parts)));
+  std::vector<lev::LightDescriptionNode> fixtures;
+  for (int k = 0; k < 20; ++k) {
+    const glm::vec3 at(2.0f * static_cast<float>(k % 5) - 4.0f, 2.0f * static_cast<float>(k / 5),
+                       10.0f);
+    fixtures.push_back(lev::affine_node(lev::make_translation(at), lev::instance_node(0)));
+  }
+  fixtures.push_back(lev::light_node(lev::make_point_light({0.0f, 0.0f, 1.0f}, glm::vec3(0.4f))));
+  tree.root = lev::union_node(std::move(fixtures));
+  return tree;
+}
+
+// A finer cut going on from one that was not walked again holds what its volumes drop within the
+// first cut's budget too (the relative error of the total, or the floor): it had no budget, and
+// dropped every fixture's dim lights (error 20-29 % at relative error 0.02, both directly and
+// through the noise check's refinements behind a wall).
+TEST(LevCut, AFinerCutHoldsItsDropWithinTheBudget) {
+  const CutScene scene(fixtures_of_a_light_among_dim_ones());
+  const float relative_error = 0.02f;
+  const float tau = relative_error * lev::kDropToleranceOfRelativeError;
+  const lev::ExtentVolumes volumes = lev::fit_extent_volumes(scene.h, tau);
+  const lev::LevCutSelector selector(scene.h, relative_error);
+  const lev::LevCutSelector unchecked(scene.h, relative_error, 1.0f, 0.0);
+  lev::WalkScratch scratch;
+  Random r(3);
+  int refined = 0;
+  for (int k = 0; k < 40; ++k) {
+    const glm::vec3 x(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-0.5f, 0.5f));
+    UnitResponsePoint point(x);
+    std::vector<lev::Light> cut;
+    lev::WalkCounters counters;
+    lev::start_light_cut(scene.h, volumes, scene.table, tau, relative_error, point, scratch, cut,
+                         counters, true, false, 1.0f);
+    const float within = std::max(relative_error * lev::brightest(scratch.cut_sums.total),
+                                  relative_error * lev::kDropFloorOfWhite);
+    lev::refine_light_cut(scene.h, volumes, scene.table, tau, 0.5f * relative_error, point, scratch,
+                          cut, counters, false);
+    EXPECT_LE(lev::brightest(scratch.cut_sums.dropped), within * (1.0f + 1e-5f)) << k;
+    glm::dvec3 estimate(0.0);
+    for (const glm::vec3& e : scratch.cut_estimates) estimate += glm::dvec3(e);
+    const double exact = summed_irradiance(scene.world_lights, x).x;
+    EXPECT_NEAR(estimate.x, exact, 2.0 * relative_error * exact) << k;
+    // Through the noise check: the wall hides some fixtures' lights, so their clusters are noisy.
+    const float wall_x = r.uniform(-4, 4);
+    BehindAWall walled(x, wall_x);
+    lev::SelectorScratch selector_scratch;
+    lev::SelectionCounters selected;
+    const glm::vec3 radiance = selector.direct_radiance(walled, selector_scratch, selected);
+    EXPECT_NEAR(radiance.x, walled.truth(scene.world_lights), 3.0 * relative_error * exact) << k;
+    BehindAWall same(x, wall_x);
+    lev::SelectorScratch plain;
+    lev::SelectionCounters once;
+    unchecked.direct_radiance(same, plain, once);
+    if (selected.lights_tested != once.lights_tested) ++refined;
+  }
+  EXPECT_GT(refined, 5);
+}
+
 // At the smallest relative error above 0 the noise check cannot halve it (half of it rounds to
 // 0, where nothing is cut and no estimates are kept): a refinement there would leave the cut's
 // estimates apart from its lights (and assert in refine_light_cut). Dim fixtures half behind a
