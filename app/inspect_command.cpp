@@ -265,13 +265,7 @@ int run_inspect(const Settings& flag_settings, const InspectFlags& flags) {
   const InterruptScope interrupt_scope;
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   std::optional<InterruptWatchdog> watchdog(std::in_place);
-  std::unique_ptr<LoadedScene> loaded;
-  try {
-    loaded = load_scene(settings.scene, cancel);
-  } catch (...) {
-    InterruptScope::throw_if_interrupted();
-    throw;
-  }
+  std::unique_ptr<LoadedScene> loaded = load_scene_or_interrupt(settings.scene, cancel);
   // The tolerance is in displayed units: an auto exposure (a glTF's default) is chosen as
   // `render` chooses it, so the selector culls what the render's culls.
   if (settings.display.exposure_auto) {

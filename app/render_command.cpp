@@ -241,14 +241,7 @@ int run_render(const Settings& typed_settings, const RenderOutputs& outputs) {
   const std::atomic<bool>* cancel = &InterruptScope::flag();
   // Until the outputs are written nothing is, so Ctrl-C may end the process outright.
   std::optional<InterruptWatchdog> watchdog(std::in_place);
-  std::unique_ptr<LoadedScene> loaded;
-  try {
-    loaded = load_scene(settings.scene, cancel);
-  } catch (...) {
-    // Cancelled, or a read the signal broke off (EINTR): the interrupt, not the file, ended it.
-    InterruptScope::throw_if_interrupted();
-    throw;
-  }
+  std::unique_ptr<LoadedScene> loaded = load_scene_or_interrupt(settings.scene, cancel);
   if (settings.display.exposure_auto) {
     const CommandStage stage("choosing the exposure");
     settings.display.exposure_ev =

@@ -118,4 +118,14 @@ std::unique_ptr<LoadedScene> load_scene(const scenes::SceneChoice& choice,
   return loaded;
 }
 
+std::unique_ptr<LoadedScene> load_scene_or_interrupt(const scenes::SceneChoice& choice,
+                                                     const std::atomic<bool>* cancel) {
+  try {
+    return load_scene(choice, cancel);
+  } catch (...) {
+    InterruptScope::throw_if_interrupted();
+    throw;
+  }
+}
+
 }  // namespace app

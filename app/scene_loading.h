@@ -51,5 +51,10 @@ struct LoadCancelled : std::runtime_error {
 };
 std::unique_ptr<LoadedScene> load_scene(const scenes::SceneChoice& choice,
                                         const std::atomic<bool>* cancel = nullptr);
+// load_scene for a command under an InterruptScope (render, inspect), cancel its flag: a load
+// that a signal cancelled, or a read the signal broke off (EINTR), throws the interrupt
+// (InterruptScope::throw_if_interrupted), not the file's error.
+std::unique_ptr<LoadedScene> load_scene_or_interrupt(const scenes::SceneChoice& choice,
+                                                     const std::atomic<bool>* cancel);
 
 }  // namespace app

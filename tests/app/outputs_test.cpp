@@ -678,51 +678,36 @@ TEST_F(Outputs, AFullFileSystemWritesNoOutputAndKeepsTheOldFiles) {
   std::ofstream(full / "image.png") << "old image";
   std::ofstream(full / "stats.json") << "old stats";
   const auto before = snapshot_of(full);
-  const CommandRun r = run_levrt({"render",
-                                  "--width",
-                                  "192",
-                                  "--height",
-                                  "144",
-                                  "--spp",
-                                  "2",
-                                  "--quiet",
-                                  "--out",
-                                  (full / "image.png").string(),
-                                  "--heatmap-lights",
-                                  (full / "lights.png").string(),
-                                  "--heatmap-nodes",
-                                  (full / "nodes.png").string(),
-                                  "--heatmap-bound",
-                                  (full / "bound.png").string(),
-                                  "--heatmap-noise",
-                                  (full / "noise.png").string(),
-                                  "--stats",
-                                  (full / "stats.json").string()});
+  // Every output of one render, each in `folder`.
+  const auto render_into = [](const fs::path& folder) {
+    return run_levrt({"render",
+                      "--width",
+                      "192",
+                      "--height",
+                      "144",
+                      "--spp",
+                      "2",
+                      "--quiet",
+                      "--out",
+                      (folder / "image.png").string(),
+                      "--heatmap-lights",
+                      (folder / "lights.png").string(),
+                      "--heatmap-nodes",
+                      (folder / "nodes.png").string(),
+                      "--heatmap-bound",
+                      (folder / "bound.png").string(),
+                      "--heatmap-noise",
+                      (folder / "noise.png").string(),
+                      "--stats",
+                      (folder / "stats.json").string()});
+  };
+  const CommandRun r = render_into(full);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
   EXPECT_EQ(snapshot_of(full), before);
   // The same render fits on a roomy file system: the failure was the space, not the outputs.
-  const CommandRun roomy = run_levrt({"render",
-                                      "--width",
-                                      "192",
-                                      "--height",
-                                      "144",
-                                      "--spp",
-                                      "2",
-                                      "--quiet",
-                                      "--out",
-                                      path("image.png"),
-                                      "--heatmap-lights",
-                                      path("lights.png"),
-                                      "--heatmap-nodes",
-                                      path("nodes.png"),
-                                      "--heatmap-bound",
-                                      path("bound.png"),
-                                      "--heatmap-noise",
-                                      path("noise.png"),
-                                      "--stats",
-                                      path("stats.json")});
+  const CommandRun roomy = render_into(fs::path(path("image.png")).parent_path());
   EXPECT_EQ(roomy.exit_code, 0) << roomy.output;
   std::uintmax_t total = 0;
   for (const char* f :

@@ -969,6 +969,47 @@ class WallOnEveryChannel final : public UnitResponsePoint {
   float wall_x_;
 };
 
+// What shade_behind_the_wall found: the radiance and the selector's counters.
+struct ShadedBehindTheWall {
+  glm::vec3 radiance{0.0f};
+  lev::SelectionCounters counters;
+};
+
+// x shaded by `selector` behind a wall at wall_x on every channel, its culled bounds asked for and
+// the inspector on: the error against every light with the wall's shadows is within both bounds
+// (relative slack 1e-4, absolute `floor`), and the inspector holds every light once (shaded, in a
+// cluster of the last cut, or dropped). A fatal failure ends it: the caller checks.
+void shade_behind_the_wall(const lev::LevCutSelector& selector, const lev::LightHierarchy& h,
+                           const std::vector<lev::Light>& world_lights, const glm::vec3& x,
+                           float wall_x, double floor, const std::string& context,
+                           ShadedBehindTheWall& shaded) {
+  WallOnEveryChannel point(x, wall_x);
+  lev::SelectorScratch scratch;
+  lev::CulledRadianceBound culled_radiance;
+  scratch.culled_radiance = &culled_radiance;
+  lev::InspectRecord record;
+  scratch.inspect = &record;
+  scratch.walk.inspect = &record;
+  glm::vec3 irradiance_bound(-1.0f);
+  shaded.radiance = selector.direct_radiance(point, scratch, shaded.counters, &irradiance_bound);
+  ASSERT_TRUE(culled_radiance.bounded) << context;
+  const glm::dvec3 truth = point.truth(world_lights);
+  for (int c = 0; c < 3; ++c) {
+    const double error = std::abs(static_cast<double>(shaded.radiance[c]) - truth[c]);
+    const double slack = 1e-4 * truth[c] + floor;
+    ASSERT_LE(error, static_cast<double>(culled_radiance.bound[c]) * (1.0 + 1e-4) + slack)
+        << context << ", channel " << c;
+    ASSERT_LE(error, static_cast<double>(irradiance_bound[c]) * (1.0 + 1e-4) + slack)
+        << context << ", channel " << c;
+  }
+  ASSERT_EQ(record.shaded.size(), scratch.lights.size()) << context;
+  lev::complete_inspection(h, point, record);
+  std::size_t accounted = record.culled.size();
+  for (const lev::ShadedLight& s : record.shaded)
+    accounted += s.role == lev::InspectRole::cluster ? s.members.size() : 1;
+  ASSERT_EQ(accounted, world_lights.size()) << context;
+}
+
 // After the noise check's refinements (each going on from the last cut) the culled bounds the
 // selector answers, for the last cut, still hold its error against every light with the wall's
 // shadows: the radiance bound (clusters' error on top of what the volumes dropped) and the
@@ -996,40 +1037,15 @@ TEST(LevCut, AfterRefinementsTheErrorIsWithinTheCulledBounds) {
         const float wall_x = r.uniform(low, high);
         const std::string context = "seed " + std::to_string(seed) + " relative error " +
                                     std::to_string(relative_error) + " k " + std::to_string(k);
-        WallOnEveryChannel point(x, wall_x);
-        lev::SelectorScratch scratch;
-        lev::CulledRadianceBound culled_radiance;
-        scratch.culled_radiance = &culled_radiance;
-        lev::InspectRecord record;
-        scratch.inspect = &record;
-        scratch.walk.inspect = &record;
-        lev::SelectionCounters counters;
-        glm::vec3 irradiance_bound(-1.0f);
-        const glm::vec3 radiance =
-            checked.direct_radiance(point, scratch, counters, &irradiance_bound);
-        ASSERT_TRUE(culled_radiance.bounded) << context;
-        const glm::dvec3 truth = point.truth(world_lights);
-        for (int c = 0; c < 3; ++c) {
-          const double error = std::abs(static_cast<double>(radiance[c]) - truth[c]);
-          const double slack = 1e-4 * truth[c] + 1e-9;
-          ASSERT_LE(error, static_cast<double>(culled_radiance.bound[c]) * (1.0 + 1e-4) + slack)
-              << context << ", channel " << c;
-          ASSERT_LE(error, static_cast<double>(irradiance_bound[c]) * (1.0 + 1e-4) + slack)
-              << context << ", channel " << c;
-        }
-        // The inspector holds every light once: shaded, in a cluster of the last cut, or dropped.
-        ASSERT_EQ(record.shaded.size(), scratch.lights.size()) << context;
-        lev::complete_inspection(h, point, record);
-        std::size_t accounted = record.culled.size();
-        for (const lev::ShadedLight& s : record.shaded)
-          accounted += s.role == lev::InspectRole::cluster ? s.members.size() : 1;
-        ASSERT_EQ(accounted, world_lights.size()) << context;
+        ShadedBehindTheWall shaded;
+        shade_behind_the_wall(checked, h, world_lights, x, wall_x, 1e-9, context, shaded);
+        if (HasFatalFailure()) return;
         WallOnEveryChannel same(x, wall_x);
         lev::SelectorScratch plain;
         lev::SelectionCounters once;
         unchecked.direct_radiance(same, plain, once);
         ++points;
-        if (counters.lights_tested != once.lights_tested) ++refined;
+        if (shaded.counters.lights_tested != once.lights_tested) ++refined;
       }
     }
   }
@@ -1094,38 +1110,15 @@ TEST(LevCut, AfterASecondWalkTheErrorIsWithinTheCulledBoundsAndEveryLightIsCount
         lev::find_light_cut(h, volumes, table, tolerance, relative_error, unit, walk, unbudgeted,
                             counters_unbudgeted, nullptr, std::numeric_limits<float>::infinity());
         if (counters_budgeted.nodes_visited != counters_unbudgeted.nodes_visited) ++walked_again;
-        WallOnEveryChannel point(x, wall_x);
-        lev::SelectorScratch scratch;
-        lev::CulledRadianceBound culled_radiance;
-        scratch.culled_radiance = &culled_radiance;
-        lev::InspectRecord record;
-        scratch.inspect = &record;
-        scratch.walk.inspect = &record;
-        lev::SelectionCounters counters;
-        glm::vec3 irradiance_bound(-1.0f);
-        const glm::vec3 radiance =
-            selector.direct_radiance(point, scratch, counters, &irradiance_bound);
-        ASSERT_TRUE(culled_radiance.bounded) << context;
-        const glm::dvec3 truth = point.truth(world_lights);
-        for (int c = 0; c < 3; ++c) {
-          const double error = std::abs(static_cast<double>(radiance[c]) - truth[c]);
-          const double slack = 1e-4 * truth[c] + 1e-12;
-          ASSERT_LE(error, static_cast<double>(culled_radiance.bound[c]) * (1.0 + 1e-4) + slack)
-              << context << ", channel " << c;
-          ASSERT_LE(error, static_cast<double>(irradiance_bound[c]) * (1.0 + 1e-4) + slack)
-              << context << ", channel " << c;
-        }
-        ASSERT_EQ(record.shaded.size(), scratch.lights.size()) << context;
-        lev::complete_inspection(h, point, record);
-        std::size_t accounted = record.culled.size();
-        for (const lev::ShadedLight& s : record.shaded)
-          accounted += s.role == lev::InspectRole::cluster ? s.members.size() : 1;
-        ASSERT_EQ(accounted, world_lights.size()) << context;
+        ShadedBehindTheWall shaded;
+        shade_behind_the_wall(selector, h, world_lights, x, wall_x, 1e-12, context, shaded);
+        if (HasFatalFailure()) return;
         WallOnEveryChannel same(x, wall_x);
         lev::SelectorScratch again;
         lev::SelectionCounters counters_again;
-        EXPECT_EQ(selector.direct_radiance(same, again, counters_again), radiance) << context;
-        EXPECT_EQ(counters_again.nodes_visited, counters.nodes_visited) << context;
+        EXPECT_EQ(selector.direct_radiance(same, again, counters_again), shaded.radiance)
+            << context;
+        EXPECT_EQ(counters_again.nodes_visited, shaded.counters.nodes_visited) << context;
         ++points;
       }
     }

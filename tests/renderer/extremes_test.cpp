@@ -21,12 +21,25 @@
 
 namespace {
 
+// The extreme scenes' 20x20 floor, at z = 0 around the origin.
+renderer::TriangleMesh twenty_metre_floor() {
+  renderer::TriangleMesh floor;
+  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
+  return floor;
+}
+
+// The pixels whose certified error bound is not 0.
+int pixels_bounded_above_zero(const renderer::Framebuffer& fb) {
+  int count = 0;
+  for (const glm::vec3& bound : fb.error_bound_sum)
+    if (bound != glm::vec3(0.0f)) ++count;
+  return count;
+}
+
 // A 20x20 floor with a 2x2x2 box on it, the box of material `box_material`.
 renderer::Prototype floor_and_box(std::uint32_t box_material) {
   renderer::Prototype room;
-  renderer::TriangleMesh floor;
-  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
-  room.meshes.push_back(floor);
+  room.meshes.push_back(twenty_metre_floor());
   renderer::TriangleMesh box;
   box.material = box_material;
   renderer::add_box(box, {-2, -2, 0}, {0, 0, 2});
@@ -239,9 +252,7 @@ renderer::Scene ast_hidden_giant_scene() {
   scene.name = "hidden giant";
   scene.materials.push_back({});
   renderer::Prototype room;
-  renderer::TriangleMesh floor;
-  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
-  room.meshes.push_back(floor);
+  room.meshes.push_back(twenty_metre_floor());
   renderer::TriangleMesh boxes;
   renderer::add_box(boxes, {-10, 5, 0}, {10, 6, 10});  // the wall before the giant
   std::vector<lev::LightDescriptionNode> lights;
@@ -294,9 +305,7 @@ renderer::Scene boxed_lights_scene() {
   scene.name = "boxed lights";
   scene.materials.push_back({});
   renderer::Prototype room;
-  renderer::TriangleMesh floor;
-  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
-  room.meshes.push_back(floor);
+  room.meshes.push_back(twenty_metre_floor());
   renderer::TriangleMesh boxes;
   renderer::add_box(boxes, {-3.5f, -0.5f, 0.5f}, {-2.5f, 0.5f, 1.5f});
   renderer::add_box(boxes, {2.5f, -0.5f, 0.5f}, {3.5f, 0.5f, 1.5f});
@@ -377,10 +386,7 @@ TEST(Extremes, AtToleranceZeroLevAndLevMcCertifyZeroPastTheLightsRanges) {
   for (const lev::Method method : {lev::Method::lev, lev::Method::lev_mc}) {
     const renderer::Framebuffer fb = render_extreme(scene, rays, method, 0.0f);
     EXPECT_TRUE(bitwise_equal(fb, rt)) << lev::method_info(method).name;
-    int bounded_above_zero = 0;
-    for (const glm::vec3& bound : fb.error_bound_sum)
-      if (bound != glm::vec3(0.0f)) ++bounded_above_zero;
-    EXPECT_EQ(bounded_above_zero, 0) << lev::method_info(method).name;
+    EXPECT_EQ(pixels_bounded_above_zero(fb), 0) << lev::method_info(method).name;
     EXPECT_EQ(renderer::sum_framebuffer(fb).lights_tested,
               renderer::sum_framebuffer(rt).lights_tested)
         << lev::method_info(method).name;
@@ -395,9 +401,7 @@ renderer::Scene lights_under_the_floor_scene() {
   scene.name = "lights under the floor";
   scene.materials.push_back({});
   renderer::Prototype room;
-  renderer::TriangleMesh floor;
-  renderer::add_quad(floor, {-10, -10, 0}, {20, 0, 0}, {0, 20, 0});
-  room.meshes.push_back(floor);
+  room.meshes.push_back(twenty_metre_floor());
   scene.geometry.prototypes.push_back(room);
   scene.geometry.instances.push_back({0, lev::Similarity{}});
   std::vector<lev::Light> lights;
@@ -419,10 +423,7 @@ TEST(Extremes, SamplingMethodsCertifyZeroWhereNoLightCanReachThePoint) {
   for (const lev::Method method : {lev::Method::light_tree, lev::Method::lev_mc}) {
     const renderer::Framebuffer fb = render_extreme(scene, rays, method, 0.01f);
     EXPECT_TRUE(bitwise_equal(fb, rt)) << lev::method_info(method).name;
-    int bounded_above_zero = 0;
-    for (const glm::vec3& bound : fb.error_bound_sum)
-      if (bound != glm::vec3(0.0f)) ++bounded_above_zero;
-    EXPECT_EQ(bounded_above_zero, 0) << lev::method_info(method).name;
+    EXPECT_EQ(pixels_bounded_above_zero(fb), 0) << lev::method_info(method).name;
   }
 }
 
