@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cassert>
 #include <cstring>
+#include <limits>
 
 #include "lev/visibility_noise.h"
 
@@ -64,6 +65,19 @@ class RememberedRays final : public ShadingPoint {
   std::uint64_t recalled_ = 0;
 };
 
+// The relative error, against the cut's unshadowed total, that holds each cluster's error within
+// `relative_error` of what the rays showed (totals.visible, or kDropFloorOfWhite of the display's
+// white where less is shown: below that a pixel's error is not worth its rays, as for the drop
+// budget). +inf where the cut holds nothing; at least the smallest normal float, which
+// refine_light_cut can go on to.
+float relative_error_against_shown(const CutTotals& totals, float relative_error,
+                                   float display_scale) {
+  const double shown = std::max(totals.visible, double(kDropFloorOfWhite) / display_scale);
+  const double error = double(relative_error) * shown / totals.unshadowed;
+  if (!(error < double(relative_error))) return std::numeric_limits<float>::infinity();
+  return std::max(float(error), std::numeric_limits<float>::min());
+}
+
 }  // namespace
 
 glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& scratch,
@@ -110,10 +124,16 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
     const double noise = visibility_noise(scratch.walk.cut_estimates, ray_visible,
                                           scratch.walk.several_light_clusters);
     // NaN-safe: refines only on a noise known to be above the setting.
-    if (!(noise_sigmas_ * noise * display_scale_ > relative_error_)) break;
+    const bool noisy = noise_sigmas_ * noise * display_scale_ > relative_error_;
+    const float shown_error = relative_error_against_shown(
+        cut_totals(scratch.walk.cut_estimates, ray_visible), relative_error_, display_scale_);
+    const bool hidden = relative_error > kShownErrorAllowance * shown_error;
+    if (!noisy && !hidden) break;
     if (scratch.cancel && scratch.cancel->load(std::memory_order_relaxed)) break;
-    // Half the smallest relative error rounds to 0, which refine_light_cut cannot go on to.
-    if (!(relative_error * 0.5f > 0.0f)) break;
+    float finer = noisy ? relative_error * 0.5f : relative_error;
+    if (hidden) finer = std::min(finer, shown_error);
+    // The smallest relative errors halve or scale to 0, which refine_light_cut cannot go on to.
+    if (!(finer > 0.0f)) break;
     // The inspector lists what the last cut did: the refined one. What the volumes dropped
     // stays dropped (and recorded); the clusters are decided again.
     if (scratch.inspect) {
@@ -121,7 +141,7 @@ glm::vec3 LevCutSelector::direct_radiance(ShadingPoint& point, SelectorScratch& 
       scratch.inspect->walk_clusters.clear();
     }
     counters.lights_tested = tested_before;
-    relative_error *= 0.5f;
+    relative_error = finer;
     own.rays_sorted = own.rays_cast;
     std::sort(own.rays_sorted.begin(), own.rays_sorted.end(), earlier_position);
   }

@@ -12,7 +12,9 @@
 // (visibility_noise.h): at such a point the cut is made finer, at half the relative error, up to
 // kNoiseRefinements times, until kNoiseSigmas times that noise, on the display, is within the
 // relative error; a finer cut goes on from the last one (refine_light_cut: its clusters opened
-// where their bounds now exceed the criterion) rather than walking from the root again.
+// where their bounds now exceed the criterion) rather than walking from the root again. Where the
+// rays hide most of the total the cut was made relative to, it is refined relative to what they
+// show (kShownErrorAllowance), on the same rounds.
 // Deterministic: the cut depends on the point only.
 #pragma once
 
@@ -44,6 +46,14 @@ inline constexpr float kDropToleranceOfRelativeError = 1.0f / 255.0f;
 // 16,384 at 0.025 and 0.03, the stage at 0.01 and 0.02; averages 0.00-0.01 points lower).
 inline constexpr double kNoiseSigmas = 3.0;
 inline constexpr int kNoiseRefinements = 2;
+
+// The hidden check (LevCutSelector::direct_radiance): the cut is made relative to the total its
+// lights would give unshadowed; where its rays show less of that total than 1 / this factor (a
+// bright light behind a wall), each cluster's bound may exceed the relative error of what the
+// pixel shows by more than this factor, and the cut is refined at the relative error that holds
+// them within it, on the same rounds as the noise check. Not 1: the usual partly hidden point (a
+// wall behind it, the rig's cans) is not cut again for bounds at most twice the setting.
+inline constexpr float kShownErrorAllowance = 2.0f;
 
 // A shadow ray cast at the current point: the light's position (its float bits) and whether the
 // ray found it. A refined cut keeps many of the cut's clusters and lights, whose rays go to the

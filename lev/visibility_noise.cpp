@@ -27,4 +27,16 @@ double visibility_noise(const std::vector<glm::vec3>& estimates,
   return std::sqrt(p * (1.0 - p) * square_sum);
 }
 
+CutTotals cut_totals(const std::vector<glm::vec3>& estimates,
+                     const std::vector<std::uint8_t>& visible) {
+  assert(visible.size() == estimates.size());
+  glm::dvec3 unshadowed(0.0);
+  glm::dvec3 found_visible(0.0);
+  for (std::size_t i = 0; i < estimates.size(); ++i) {
+    unshadowed += glm::dvec3(estimates[i]);
+    if (visible[i] != 0) found_visible += glm::dvec3(estimates[i]);
+  }
+  return {brightest(unshadowed), brightest(found_visible)};
+}
+
 }  // namespace lev

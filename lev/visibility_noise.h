@@ -28,4 +28,15 @@ double visibility_noise(const std::vector<glm::vec3>& estimates,
                         const std::vector<std::uint8_t>& visible,
                         const std::vector<std::size_t>& clusters);
 
+// A cut's summed estimates (brightest channel, radiance units): all of them, the running total
+// the cut was made relative to, and those whose rays found their lights. The cut assumes every
+// light visible; where the rays hide most of that total (a huge light behind a wall), the pixel
+// is the visible part, and the cut's clusters were judged against a total it does not show.
+struct CutTotals {
+  double unshadowed = 0.0;
+  double visible = 0.0;
+};
+CutTotals cut_totals(const std::vector<glm::vec3>& estimates,
+                     const std::vector<std::uint8_t>& visible);
+
 }  // namespace lev

@@ -870,7 +870,8 @@ TEST(LevCut, TheNoiseCheckCountsDrawnClustersOfManyLights) {
 }
 
 // Lights each below its own translation: the cut's kept subtrees are clusters of one light, whose
-// ray goes to that light, exact: nothing to refine, whatever the wall hides.
+// ray goes to that light, exact: nothing to refine, whatever the wall hides (less than half of
+// the total at each point, which the hidden check would refine for).
 TEST(LevCut, TheNoiseCheckLeavesClustersOfOneLight) {
   lev::LightDescription tree;
   std::vector<lev::LightDescriptionNode> lights;
@@ -884,12 +885,12 @@ TEST(LevCut, TheNoiseCheckLeavesClustersOfOneLight) {
   const lev::LevCutSelector checked(h, 0.3f);
   const lev::LevCutSelector unchecked(h, 0.3f, 1.0f, 0.0);
   std::uint64_t singles = 0;
-  for (int k = 0; k < 20; ++k) {
+  for (int k = 0; k < 10; ++k) {
     const glm::vec3 x(1.5f * static_cast<float>(k), 2.0f, 0.0f);
     lev::SelectorScratch scratch;
     lev::SelectionCounters a, b;
-    BehindAWall p(x, 1.5f * static_cast<float>(k) + 0.7f);
-    BehindAWall q(x, 1.5f * static_cast<float>(k) + 0.7f);
+    BehindAWall p(x, 1.5f * static_cast<float>(k) - 0.7f);
+    BehindAWall q(x, 1.5f * static_cast<float>(k) - 0.7f);
     const glm::vec3 with_check = checked.direct_radiance(p, scratch, a);
     singles += scratch.walk.exact_clusters.size();
     lev::SelectorScratch plain;
@@ -1232,6 +1233,46 @@ TEST(LevCut, TheNoiseCheckStopsWhereHalfTheRelativeErrorIsZero) {
     ASSERT_EQ(scratch.walk.cut_estimates.size(), scratch.lights.size()) << k;
   }
   EXPECT_GT(clustered, 0u);
+}
+
+// A light a million times brighter than each of 200 dim ones, behind a wall (x < 0) that leaves
+// the dim grid seen: the cut is made relative to a total the wall hides, so at first the grid is
+// one coarse cluster. The hidden check refines it relative to what the rays show: the error is
+// within the relative error of the seen lights' sum, and is far larger without the check.
+TEST(LevCut, TheHiddenCheckCutsRelativeToWhatTheRaysShow) {
+  lev::LightDescription tree;
+  std::vector<lev::Light> dim;
+  for (int k = 0; k < 200; ++k) {
+    const glm::vec3 at(1.0f + 0.2f * static_cast<float>(k % 20), 1.0f * static_cast<float>(k / 20),
+                       3.0f);
+    dim.push_back(lev::make_point_light(at, glm::vec3(1.0f)));
+  }
+  std::vector<lev::LightDescriptionNode> root;
+  root.push_back(lev::build_light_bvh(dim));
+  root.push_back(lev::light_node(lev::make_point_light({-2.0f, 5.0f, 3.0f}, glm::vec3(1e6f))));
+  tree.root = lev::union_node(std::move(root));
+  const CutScene scene(tree);
+  const float relative_error = 0.02f;
+  const lev::LevCutSelector checked(scene.h, relative_error);
+  const lev::LevCutSelector unchecked(scene.h, relative_error, 1.0f, 0.0);
+  double worst_checked = 0.0, worst_unchecked = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const glm::vec3 x(0.3f * static_cast<float>(k), 0.5f * static_cast<float>(k), 0.0f);
+    BehindAWall point(x, 0.0f);
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters counters;
+    const double truth = point.truth(scene.world_lights);
+    const double error = std::abs(checked.direct_radiance(point, scratch, counters).x - truth);
+    worst_checked = std::max(worst_checked, error / truth);
+    ASSERT_EQ(scratch.walk.cut_estimates.size(), scratch.lights.size()) << k;
+    BehindAWall same(x, 0.0f);
+    lev::SelectorScratch plain;
+    lev::SelectionCounters once;
+    worst_unchecked = std::max(
+        worst_unchecked, std::abs(unchecked.direct_radiance(same, plain, once).x - truth) / truth);
+  }
+  EXPECT_LE(worst_checked, relative_error);
+  EXPECT_GT(worst_unchecked, 5.0 * relative_error);
 }
 
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
