@@ -123,6 +123,9 @@ struct CulledSoFar {
   // would drop is cut instead, and a light they would drop is kept (start_light_cut).
   glm::dvec3 dropped{0.0};
   float drop_budget = std::numeric_limits<float>::infinity();
+  // When relative and cutting: the least total a cluster's bound is judged against
+  // (kTotalFloorOfWhite of the display's white; start_light_cut).
+  float total_floor = 0.0f;
   // When relative: the clusters of the cut stood for by a centred representative (CutCluster),
   // and what the cut reads of each node (CutNodeTable).
   std::vector<CutCluster>* centred = nullptr;
@@ -154,7 +157,7 @@ void record_subtree_cluster(InspectRecord& record, std::size_t index, std::uint3
 
 // The most a cluster's bound (brightest channel) may be at this point of the walk.
 inline float largest_cluster_bound(const CulledSoFar& culled) {
-  return culled.relative_error * static_cast<float>(brightest(culled.total));
+  return culled.relative_error * std::max(brightest(culled.total), culled.total_floor);
 }
 
 // The sum of culled bounds may grow by `more` and stay within the budget: compared on the scale
@@ -1019,6 +1022,7 @@ void walk(const LightHierarchy& h, const Nodes nodes, const float tolerance, con
     sums.radiance = culled.radiance != nullptr;
     sums.dropped = culled.dropped;
     sums.drop_budget = culled.drop_budget;
+    sums.total_floor = culled.total_floor;
     (void)culled_irradiance_bound;
   } else {
     if constexpr (kCulled == Culled::tight) {
@@ -1290,15 +1294,16 @@ void start_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volum
     CulledSoFar culled =
         light_cut_state(table, relative_error, point, scratch, may_refine, bound_radiance);
     culled.drop_budget = drop_budget;
+    culled.total_floor = kTotalFloorOfWhite * display_white;
     scratch.radiance_parts.clear();
     walk<true, Culled::relative>(hierarchy, FittedNodes{volumes.nodes.data()}, tolerance,
                                  point.position(), scratch, lights, counters, nullptr, culled);
     // What the volumes dropped errs as one more cluster would: within the relative error of the
-    // cut's total (or of kDropFloorOfWhite of the display's white, where the total is about 0:
+    // cut's total (or of kTotalFloorOfWhite of the display's white, where the total is about 0:
     // bounds are loose where nothing lights the point), or the point is walked again with that as
     // the drop's budget (many lights each below the tolerance, which together light the point).
     const float within = std::max(relative_error * brightest(scratch.cut_sums.total),
-                                  relative_error * kDropFloorOfWhite * display_white);
+                                  relative_error * kTotalFloorOfWhite * display_white);
     if (relative_error == 0.0f || drop_budget != std::numeric_limits<float>::infinity() ||
         !(brightest(scratch.cut_sums.dropped) > within)) {
       // A finer cut going on from this one (refine_light_cut) holds its drop within it too: it
@@ -1334,6 +1339,7 @@ void refine_light_cut(const LightHierarchy& hierarchy, const ExtentVolumes& volu
   culled.deferrals = sums.deferrals;
   culled.dropped = sums.dropped;
   culled.drop_budget = sums.drop_budget;
+  culled.total_floor = sums.total_floor;
   culled.go_on = true;
   // Its own lights stay; its clusters are put aside again, each with the estimate the total
   // counted for it, in the order they were kept (the heap's ties).

@@ -111,7 +111,8 @@ std::vector<MethodInfo> built_in_rows() {
        "LEV cut (relative)",
        "LEV's walk, its volumes dropping what cannot reach the display (below the relative error "
        "times one 8-bit step), what they keep cut into clusters whose error bound is below the "
-       "relative error (--relative-error) times the point's running total; one shadow ray per "
+       "relative error (--relative-error) times the point's running total (at least a tenth of "
+       "white); one shadow ray per "
        "cluster, and a finer cut where those rays find clusters partly hidden (their noise on the "
        "display above the relative error)",
        kUsesRelativeError | kReadsDisplayScale,

@@ -66,13 +66,13 @@ class RememberedRays final : public ShadingPoint {
 };
 
 // The relative error, against the cut's unshadowed total, that holds each cluster's error within
-// `relative_error` of what the rays showed (totals.visible, or kDropFloorOfWhite of the display's
+// `relative_error` of what the rays showed (totals.visible, or kTotalFloorOfWhite of the display's
 // white where less is shown: below that a pixel's error is not worth its rays, as for the drop
 // budget). +inf where the cut holds nothing; at least the smallest normal float, which
 // refine_light_cut can go on to.
 float relative_error_against_shown(const CutTotals& totals, float relative_error,
                                    float display_scale) {
-  const double shown = std::max(totals.visible, double(kDropFloorOfWhite) / display_scale);
+  const double shown = std::max(totals.visible, double(kTotalFloorOfWhite) / display_scale);
   const double error = double(relative_error) * shown / totals.unshadowed;
   if (!(error < double(relative_error))) return std::numeric_limits<float>::infinity();
   return std::max(float(error), std::numeric_limits<float>::min());

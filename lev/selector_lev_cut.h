@@ -2,6 +2,7 @@
 // cannot reach the display (below the tolerance), and what they keep is cut relative to the
 // shading point, as Lightcuts cuts (Walter et al. 2005): a subtree whose cluster bound
 // (light_bounds.h's radiance_bound) is within the relative error of the point's running total
+// (or of kTotalFloorOfWhite of the display's white, where the total is less)
 // costs one shadow ray (to its representative, or, for a centred one, to one of its lights:
 // important_lights.h's CutCluster; a small cluster of spots aimed apart is shaded from its own
 // lights' summed radiance, its ray to one of them: WalkScratch::exact_clusters); a larger one is
