@@ -761,9 +761,11 @@ inline void cut_or_defer(const LightHierarchy& h, std::uint32_t node, const glm:
   }
   if (!(bound >= 0.0f)) bound = std::numeric_limits<float>::infinity();  // NaN: walk it first
   const bool centred = culled.cut_nodes->centred[node] != 0;
-  const Light representative =
-      centred ? representative_light(h, culled.cut_nodes, node, linear, translation)
-              : drawn_representative(h, *culled.cut_nodes, node, linear, translation);
+  const Light representative = culled.scratch->representatives.find_or_make(
+      node, linear.rotation, linear.scale, translation, [&] {
+        return centred ? representative_light(h, culled.cut_nodes, node, linear, translation)
+                       : drawn_representative(h, *culled.cut_nodes, node, linear, translation);
+      });
   const glm::vec3 estimate = culled.shading->unshadowed_radiance(representative);
   culled.total += glm::dvec3(estimate);
   const bool keep = bound <= largest_cluster_bound(culled);
@@ -1257,6 +1259,7 @@ CulledSoFar light_cut_state(const CutNodeTable& table, float relative_error, Sha
   CulledSoFar culled;
   culled.cut_nodes = &table;
   culled.scratch = &scratch;
+  scratch.representatives.serve(table.first_lights.data(), table.draw_weights.data());
   if (relative_error > 0.0f) {  // at 0 nothing is cut: find_important_lights' walk
     culled.shading = &point;
     culled.estimates = &scratch.cut_estimates;

@@ -13,6 +13,7 @@
 #include "lev/light_bounds.h"
 #include "lev/light_description.h"
 #include "lev/light_hierarchy.h"
+#include "lev/placed_light_memo.h"
 
 namespace lev {
 
@@ -200,6 +201,10 @@ struct WalkScratch {
   InspectRecord* inspect = nullptr;
   // find_light_cut's clusters with a centred representative, in the order of their lights.
   std::vector<CutCluster> centred_clusters;
+  // find_light_cut's representatives of the subtrees it decides, and lev_cut's shadow-ray targets
+  // of its centred clusters (cluster_shadow_target), by node and frame.
+  PlacedLightMemo representatives;
+  PlacedLightMemo shadow_targets;
   // find_light_cut's unshadowed radiance of each light and representative it appends, in their
   // order, as its running total counted them (when it cuts: relative error above 0; else empty),
   // so that shading them need not compute it again.

@@ -160,10 +160,15 @@ glm::vec3 LevCutSelector::shade_cut(ShadingPoint& shading, SelectorScratch& scra
   const std::vector<CutCluster>& centred = scratch.walk.centred_clusters;
   std::size_t next_centred = 0;
   Light target;
+  PlacedLightMemo& targets = scratch.walk.shadow_targets;
+  targets.serve(cut_nodes_.first_lights.data(), cut_nodes_.draw_weights.data());
   const auto shadow_target = [&](std::size_t i, const Light&) -> const Light* {
     while (next_centred < centred.size() && centred[next_centred].index < i) ++next_centred;
     if (next_centred == centred.size() || centred[next_centred].index != i) return nullptr;
-    target = cluster_shadow_target(hierarchy_, cut_nodes_, centred[next_centred]);
+    const CutCluster& cluster = centred[next_centred];
+    target = targets.find_or_make(
+        cluster.node, cluster.linear.rotation, cluster.linear.scale, cluster.translation,
+        [&] { return cluster_shadow_target(hierarchy_, cut_nodes_, cluster); });
     return &target;
   };
   // The walk computed each one's unshadowed radiance for its total when it cut (the same floats).

@@ -1321,6 +1321,51 @@ TEST(LevCut, TheHiddenCheckCutsRelativeToWhatTheRaysShow) {
   EXPECT_GT(worst_unchecked, 5.0 * relative_error);
 }
 
+// One scratch shading with the selectors of two hierarchies alike in shape (the same nodes) but
+// with their lights moved and brightened: each gives what it gives with a scratch of its own, so
+// the representatives and shadow targets the scratch keeps (PlacedLightMemo) are never the other
+// hierarchy's.
+TEST(LevCut, AScratchReusedWithAnotherHierarchyKeepsNoneOfItsLights) {
+  Random r(17);
+  const lev::LightDescription first_tree = rig_of_fixtures();
+  lev::LightDescription second_tree = first_tree;
+  // Every light of the masters (the fixtures) moved and made brighter; the shape stays.
+  std::vector<lev::LightDescriptionNode*> open;
+  for (lev::LightDescriptionNode& master : second_tree.masters) open.push_back(&master);
+  while (!open.empty()) {
+    lev::LightDescriptionNode* node = open.back();
+    open.pop_back();
+    if (node->kind == lev::NodeKind::point_light || node->kind == lev::NodeKind::spot_light) {
+      node->light.intensity *= 3.0f;
+      node->light.position += glm::vec3(0.2f, -0.1f, 0.05f);
+    }
+    for (lev::LightDescriptionNode& child : node->children) open.push_back(&child);
+  }
+  const lev::LightHierarchy first = lev::build_hierarchy(first_tree);
+  const lev::LightHierarchy second = lev::build_hierarchy(second_tree);
+  ASSERT_EQ(first.nodes.size(), second.nodes.size());
+  const lev::LevCutSelector first_cut(first, 0.05f);
+  const lev::LevCutSelector second_cut(second, 0.05f);
+  lev::SelectorScratch shared;
+  int differing = 0;
+  for (int k = 0; k < 30; ++k) {
+    const glm::vec3 x(r.uniform(0, 10), r.uniform(0, 10), r.uniform(-3, 1));
+    const float wall_x = r.uniform(2, 8);
+    for (const lev::LevCutSelector* selector : {&first_cut, &second_cut}) {
+      BehindAWall point(x, wall_x), same(x, wall_x);
+      lev::SelectionCounters a, b;
+      lev::SelectorScratch own;
+      const glm::vec3 with_shared = selector->direct_radiance(point, shared, a);
+      ASSERT_EQ(with_shared, selector->direct_radiance(same, own, b)) << k;
+    }
+    BehindAWall p(x, wall_x), q(x, wall_x);
+    lev::SelectionCounters a, b;
+    lev::SelectorScratch one, two;
+    if (first_cut.direct_radiance(p, one, a) != second_cut.direct_radiance(q, two, b)) ++differing;
+  }
+  EXPECT_GT(differing, 20);
+}
+
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
   const std::optional<lev::Method> method = lev::parse_method("lev_cut");
   ASSERT_TRUE(method.has_value());
