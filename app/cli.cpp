@@ -210,6 +210,18 @@ void refuse_viewer_only_flags(const SceneFlags& flags) {
   }
 }
 
+// The inspector traces one pixel's pass-0 sample and lists its lights: it makes no missed-light
+// estimate, so draws asked for it would change nothing (refused, as a flag the method ignores).
+void refuse_inspect_ignored_flags(const SceneFlags& flags) {
+  const std::string& draws = flags.settings.text.at("missed-draws");
+  if (flags.settings.options.at("missed-draws")->count() > 0 && draws != "0") {
+    throw UsageError(
+        "--missed-draws: inspect makes no missed-light estimate (its lists give each culled "
+        "light's loss; render --heatmap-missed estimates it), got '" +
+        draws + "'");
+  }
+}
+
 int run_snapshot() {
   // The main job without a window: a snapshot of the default scene into out/. A name "out" that
   // is not a folder (a file, a dangling symlink) is the user's: refused, left as it is.
@@ -265,7 +277,7 @@ int run_cli(int argc, char** argv) {
       render
           ->add_option("--heatmap-range", heatmap_range,
                        "draw every heatmap over LO..HI (log scale above LO) instead of its own "
-                       "min..max, to compare renders on one scale")
+                       "0..max, to compare renders on one scale")
           ->type_name("LO,HI");
   std::string fail_above;
   CLI::Option* fail_above_option =
@@ -358,6 +370,7 @@ int run_cli(int argc, char** argv) {
   if (inspect->parsed()) {
     const Settings settings = apply_scene_flags(inspect_flags, Settings{});
     refuse_viewer_only_flags(inspect_flags);
+    refuse_inspect_ignored_flags(inspect_flags);
     return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);
