@@ -303,6 +303,14 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
             ScriptAction::screenshot);
 }
 
+// The relative error's 0 button said "tolerance 0: no culling" (the tolerance's tooltip) on hover.
+TEST(SettingsPanel, EachZeroButtonsTooltipNamesItsOwnSetting) {
+  EXPECT_EQ(zero_button_tooltip(*app::find_setting("tolerance")).rfind("tolerance 0", 0), 0u);
+  const std::string relative = zero_button_tooltip(*app::find_setting("relative-error"));
+  EXPECT_EQ(relative.rfind("relative-error 0", 0), 0u) << relative;
+  EXPECT_EQ(relative.find("tolerance"), std::string::npos) << relative;
+}
+
 TEST(SettingsPanel, ANumberFieldStepsOverTheValuesARenderRefuses) {
   const app::SettingSpec& draws = *app::find_setting("missed-draws");
   const auto& range = std::get<app::IntRange>(draws.kind);
