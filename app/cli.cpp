@@ -138,6 +138,30 @@ void check_renamed_flags(int argc, char** argv) {
   }
 }
 
+// CLI11 refuses a flag given twice as "--tolerance: At Most 1 required but received 2": said with
+// the values given, each as typed, as every refusal names its value.
+std::string repeated_flag_message(const std::string& what, int argc, char** argv) {
+  const std::size_t colon = what.find(": At Most 1 required");
+  if (colon == std::string::npos || what.rfind("--", 0) != 0) return what;
+  const std::string flag = what.substr(0, colon);
+  std::string values;
+  int count = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string value;
+    if (arg == flag && i + 1 < argc) {
+      value = argv[++i];
+    } else if (arg.rfind(flag + "=", 0) == 0) {
+      value = arg.substr(flag.size() + 1);
+    } else {
+      continue;
+    }
+    values += std::string(count++ == 0 ? "" : ", then ") + "'" + value + "'";
+  }
+  if (count < 2) return what;
+  return flag + ": may be given once, got " + values;
+}
+
 Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults,
                              CLI::Option* lights_option, const std::string& lights_text) {
   Settings settings = defaults;
@@ -344,6 +368,8 @@ int run_cli(int argc, char** argv) {
     return cli.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return cli.exit(e);
+  } catch (const CLI::ArgumentMismatch& e) {
+    throw UsageError(repeated_flag_message(e.what(), argc, argv));
   } catch (const CLI::ParseError& e) {
     throw UsageError(e.what());
   }

@@ -259,6 +259,21 @@ TEST_F(Cli, TheViewersHelpNamesEveryScriptedChangeKey) {
   EXPECT_GE(named, 10);
 }
 
+// A flag given twice was refused in CLI11's words, "--tolerance: At Most 1 required but received
+// 2", naming no value: one line naming the flag and each value as typed, exit 2, nothing written.
+TEST_F(Cli, AFlagGivenTwiceIsRefusedNamingBothValues) {
+  const CommandRun r = run_levrt({"render", "--tolerance", "0.1", "--width", "8", "--height", "8",
+                                  "--tolerance=0.2", "--out", path("image.png")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output, "levrt: --tolerance: may be given once, got '0.1', then '0.2'\n");
+  const CommandRun out = run_levrt(
+      {"render", "--width", "8", "--height", "8", "--out", path("a.png"), "--out", path("b.png")});
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("--out: may be given once, got "), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find(path("b.png")), std::string::npos) << out.output;
+  EXPECT_TRUE(folder_is_empty());
+}
+
 // The noise heatmap of one pass was written blank (range 0..0) while the stats said the noise
 // is unknown (std_error_avg_pct null): refused, one line and exit 2, nothing written.
 TEST_F(Cli, TheNoiseHeatmapOfOnePassIsRefused) {
