@@ -376,9 +376,13 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   // What the session wrote, named when a signal ends it (never "no output written" then).
   std::vector<std::string> written;
   std::string snapshot_noted;
+  std::vector<std::string> snapshot_messages;  // each snapshot's "wrote ...", printed at the end
   const auto note_snapshot = [&] {
     const std::string m = snapshots.busy() || snapshots.failed() ? "" : snapshots.message();
-    if (m != snapshot_noted && m.rfind("wrote ", 0) == 0) written.push_back(m.substr(6));
+    if (m != snapshot_noted && m.rfind("wrote ", 0) == 0) {
+      written.push_back(m.substr(6));
+      snapshot_messages.push_back(m);
+    }
     if (!m.empty()) snapshot_noted = m;
   };
   {
@@ -565,9 +569,11 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   InterruptScope::throw_if_interrupted();
   if (!bad_input_error.empty()) throw UsageError(bad_input_error);
   if (!snapshot_error.empty()) throw std::runtime_error("view: " + snapshot_error);
-  if (!snapshots.message().empty() && flags.frames > 0)
-    std::fprintf(state.notes, "levrt view: %s\n",
-                 scenes::escape_control_characters(snapshots.message()).c_str());
+  // Every snapshot of the session, not only the last.
+  const std::string last = snapshots.message();
+  if (!last.empty() && last.rfind("wrote ", 0) != 0) snapshot_messages.push_back(last);
+  for (const std::string& m : flags.frames > 0 ? snapshot_messages : std::vector<std::string>{})
+    std::fprintf(state.notes, "levrt view: %s\n", scenes::escape_control_characters(m).c_str());
   if (flags.report_fps) std::fputs(frame_report(log).c_str(), state.notes);
   if (!flags.screenshot.empty()) {
     int width = 0, height = 0;

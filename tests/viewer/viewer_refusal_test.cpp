@@ -389,6 +389,23 @@ TEST_F(ViewerWindow, ASignalAfterASnapshotNamesTheFilesWrittenBeforeIt) {
   }
 }
 
+// A script of two snapshots printed only the last one's "wrote" line: each is named.
+TEST_F(ViewerWindow, EverySnapshotOfAScriptedSessionIsNamed) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const CommandRun r =
+      run_viewer({"--lights", "64", "--width", "32", "--height", "24", "--spp", "1", "--window",
+                  "640x480", "--frames", "4", "--set", "snapshot=" + path("snap") + "@0", "--set",
+                  "method=rt@1", "--set", "snapshot=" + path("snap") + "@2"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string stem : {"view_building_64_lev_0.01", "view_building_64_rt"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "snap" / (stem + "_stats.json"))) << stem;
+    EXPECT_NE(r.output.find("levrt view: wrote " + path("snap") + "/" + stem + ".png"),
+              std::string::npos)
+        << stem << ": " << r.output;
+  }
+}
+
 // Ctrl-C while the viewer's worker loads a scene that takes seconds (tests/support/slow_gltf.h):
 // the viewer exits 130 promptly (the load stops at its next step, or the load watchdog ends it),
 // with no screenshot written.
