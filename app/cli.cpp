@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -389,8 +390,18 @@ int run_cli(int argc, char** argv) {
       outputs.reference_rt = true;
     }
     if (fail_above_option->count() > 0) outputs.fail_above = parse_accuracy_gate(fail_above);
-    if (heatmap_range_option->count() > 0)
+    if (heatmap_range_option->count() > 0) {
       outputs.heatmap_range = parse_heatmap_range(heatmap_range);
+      // It draws the heatmaps and sets the stats' ranges: with neither it would change nothing.
+      const bool heatmap = std::any_of(outputs.heatmaps.begin(), outputs.heatmaps.end(),
+                                       [](const auto& h) { return !h.second.empty(); });
+      if (!heatmap && outputs.stats.empty()) {
+        throw UsageError(
+            "--heatmap-range: no heatmap (--heatmap-lights, ...) or --stats is "
+            "written, so it would change nothing, got '" +
+            heatmap_range + "'");
+      }
+    }
     return run_render(settings, outputs);
   }
   if (inspect->parsed()) {
