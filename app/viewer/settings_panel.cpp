@@ -73,7 +73,7 @@ bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range
 }
 
 bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& range,
-               ControlRects* rects) {
+               ControlRects* rects, std::string& refusal) {
   double value = range.field.get(settings);
   bool changed = false;
   bool word_chosen = false;
@@ -142,7 +142,8 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
   double typed = value;
   if (ImGui::InputDouble(spec.label, &typed, 0.0, 0.0, "%g",
                          ImGuiInputTextFlags_EnterReturnsTrue)) {
-    if (typed >= range.min && typed <= range.max) {
+    refusal = typed_value_refusal(spec, range, typed);
+    if (refusal.empty()) {
       value = typed;
       changed = true;
     }
@@ -197,6 +198,14 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
 
 }  // namespace
 
+std::string typed_value_refusal(const SettingSpec& spec, const RealRange& range, double typed) {
+  if (typed >= range.min && typed <= range.max) return "";
+  char text[192];
+  std::snprintf(text, sizeof text, "%s: must be in [%g, %g], got %g (the value before is kept)",
+                spec.name, range.min, range.max, typed);
+  return text;
+}
+
 std::string zero_button_tooltip(const SettingSpec& spec) {
   if (std::string(spec.name) == "tolerance") return "tolerance 0: no culling, the image equals rt";
   return std::string(spec.name) + " 0: exact, every light (the image equals rt)";
@@ -221,7 +230,9 @@ void draw_settings_section(ViewerState& state) {
     if (const auto* i = std::get_if<IntRange>(&spec.kind)) {
       changed = draw_int(state.settings, spec, *i, rects);
     } else if (const auto* r = std::get_if<RealRange>(&spec.kind)) {
-      changed = draw_real(state.settings, spec, *r, rects);
+      std::string refusal;
+      changed = draw_real(state.settings, spec, *r, rects, refusal);
+      if (!refusal.empty()) log_message(state, refusal, true);
     } else {
       changed = draw_choice(state.settings, spec, std::get<Choice>(spec.kind), rects);
     }

@@ -260,6 +260,17 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
   c = wait_for_controls([](const Json& j) { return setting(j, "relative-error") == "0.05"; });
   EXPECT_EQ(setting(c, "relative-error"), "0.05");
 
+  // A value outside the range is refused with a message (the scripted session prints it), not
+  // dropped without a word; the setting keeps its value.
+  ASSERT_TRUE(hover("relative-error_field", 0.5));
+  xdotool("click 1 sleep 0.2 type --delay 50 5");
+  xdotool("sleep 0.2 keydown Return sleep 0.1 keyup Return");
+  EXPECT_TRUE(wait_for([&] {
+    return read_file(path("viewer.rc.log")).find("relative-error: must be in [0, 1], got 5") !=
+           std::string::npos;
+  })) << read_file(path("viewer.rc.log"));
+  EXPECT_EQ(setting(controls(), "relative-error"), "0.05");
+
   c = click_and_wait("view:nodes", 0.5, "view", "image");
   EXPECT_EQ(setting(c, "view"), "nodes");
 

@@ -311,6 +311,16 @@ TEST(SettingsPanel, EachZeroButtonsTooltipNamesItsOwnSetting) {
   EXPECT_EQ(relative.find("tolerance"), std::string::npos) << relative;
 }
 
+// A value typed outside the setting's range (a relative error of 5) was dropped without a word.
+TEST(SettingsPanel, AValueTypedOutsideItsRangeIsNamedWhyItIsRefused) {
+  const app::SettingSpec& relative = *app::find_setting("relative-error");
+  const auto& range = std::get<app::RealRange>(relative.kind);
+  EXPECT_EQ(typed_value_refusal(relative, range, 0.05), "");
+  const std::string refused = typed_value_refusal(relative, range, 5.0);
+  EXPECT_EQ(refused.rfind("relative-error: must be in [0, 1], got 5", 0), 0u) << refused;
+  EXPECT_NE(typed_value_refusal(relative, range, -1.0), "");
+}
+
 TEST(SettingsPanel, ANumberFieldStepsOverTheValuesARenderRefuses) {
   const app::SettingSpec& draws = *app::find_setting("missed-draws");
   const auto& range = std::get<app::IntRange>(draws.kind);
