@@ -247,6 +247,20 @@ void refuse_inspect_ignored_flags(const SceneFlags& flags) {
   }
 }
 
+// A typed --width or --height selects --resolution typed; beside --resolution fit (or fit/2,
+// fit/4), which sizes the image by the window, it was ignored without a word.
+void refuse_size_beside_a_fitted_resolution(const SceneFlags& flags, const Settings& settings) {
+  if (flags.settings.options.at("resolution")->count() == 0 || settings.resolution == "typed")
+    return;
+  for (const char* flag : {"width", "height"}) {
+    if (flags.settings.options.at(flag)->count() == 0) continue;
+    throw UsageError(std::string("--") + flag + ": --resolution " + settings.resolution +
+                     " sizes the image by the window (give --resolution typed for a typed size), "
+                     "got '" +
+                     flags.settings.text.at(flag) + "'");
+  }
+}
+
 int run_snapshot() {
   // The main job without a window: a snapshot of the default scene into out/. A name "out" that
   // is not a folder (a file, a dangling symlink) is the user's: refused, left as it is.
@@ -415,6 +429,7 @@ int run_cli(int argc, char** argv) {
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
     const Settings settings = apply_scene_flags(view_flags, view_defaults);
+    refuse_size_beside_a_fitted_resolution(view_flags, settings);
     view_options.exposure_given = view_flags.settings.options.at("exposure")->count() > 0;
     view_options.display_given = view_flags.settings.options.at("display")->count() > 0;
     return run_view(settings, view_options);

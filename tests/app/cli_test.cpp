@@ -274,6 +274,21 @@ TEST_F(Cli, AFlagGivenTwiceIsRefusedNamingBothValues) {
   EXPECT_TRUE(folder_is_empty());
 }
 
+// view --resolution fit/2 --width 100 opened the window at the fitted size, the typed width
+// ignored without a word: refused before the window opens, one line naming the flag.
+TEST_F(Cli, TheViewerRefusesATypedSizeBesideAFittedResolution) {
+  for (const char* flag : {"--width", "--height"}) {
+    const CommandRun r = run_levrt({"view", "--resolution", "fit/2", flag, "100", "--frames", "1",
+                                    "--screenshot", path("shot.png")});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.rfind(std::string("levrt: ") + flag + ": --resolution fit/2 sizes", 0), 0u)
+        << r.output;
+    EXPECT_NE(r.output.find("got '100'"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+  EXPECT_TRUE(folder_is_empty());
+}
+
 // The noise heatmap of one pass was written blank (range 0..0) while the stats said the noise
 // is unknown (std_error_avg_pct null): refused, one line and exit 2, nothing written.
 TEST_F(Cli, TheNoiseHeatmapOfOnePassIsRefused) {
