@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -138,6 +139,30 @@ void check_renamed_flags(int argc, char** argv) {
   }
 }
 
+// CLI11 refuses a flag given twice as "--tolerance: At Most 1 required but received 2": said with
+// the values given, each as typed, as every refusal names its value.
+std::string repeated_flag_message(const std::string& what, int argc, char** argv) {
+  const std::size_t colon = what.find(": At Most 1 required");
+  if (colon == std::string::npos || what.rfind("--", 0) != 0) return what;
+  const std::string flag = what.substr(0, colon);
+  std::string values;
+  int count = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string value;
+    if (arg == flag && i + 1 < argc) {
+      value = argv[++i];
+    } else if (arg.rfind(flag + "=", 0) == 0) {
+      value = arg.substr(flag.size() + 1);
+    } else {
+      continue;
+    }
+    values += std::string(count++ == 0 ? "" : ", then ") + "'" + value + "'";
+  }
+  if (count < 2) return what;
+  return flag + ": may be given once, got " + values;
+}
+
 Settings apply_setting_flags(const SettingFlags& flags, const Settings& defaults,
                              CLI::Option* lights_option, const std::string& lights_text) {
   Settings settings = defaults;
@@ -210,6 +235,32 @@ void refuse_viewer_only_flags(const SceneFlags& flags) {
   }
 }
 
+// The inspector traces one pixel's pass-0 sample and lists its lights: it makes no missed-light
+// estimate, so draws asked for it would change nothing (refused, as a flag the method ignores).
+void refuse_inspect_ignored_flags(const SceneFlags& flags) {
+  const std::string& draws = flags.settings.text.at("missed-draws");
+  if (flags.settings.options.at("missed-draws")->count() > 0 && draws != "0") {
+    throw UsageError(
+        "--missed-draws: inspect makes no missed-light estimate (its lists give each culled "
+        "light's loss; render --heatmap-missed estimates it), got '" +
+        draws + "'");
+  }
+}
+
+// A typed --width or --height selects --resolution typed; beside --resolution fit (or fit/2,
+// fit/4), which sizes the image by the window, it was ignored without a word.
+void refuse_size_beside_a_fitted_resolution(const SceneFlags& flags, const Settings& settings) {
+  if (flags.settings.options.at("resolution")->count() == 0 || settings.resolution == "typed")
+    return;
+  for (const char* flag : {"width", "height"}) {
+    if (flags.settings.options.at(flag)->count() == 0) continue;
+    throw UsageError(std::string("--") + flag + ": --resolution " + settings.resolution +
+                     " sizes the image by the window (give --resolution typed for a typed size), "
+                     "got '" +
+                     flags.settings.text.at(flag) + "'");
+  }
+}
+
 int run_snapshot() {
   // The main job without a window: a snapshot of the default scene into out/. A name "out" that
   // is not a folder (a file, a dangling symlink) is the user's: refused, left as it is.
@@ -265,7 +316,7 @@ int run_cli(int argc, char** argv) {
       render
           ->add_option("--heatmap-range", heatmap_range,
                        "draw every heatmap over LO..HI (log scale above LO) instead of its own "
-                       "min..max, to compare renders on one scale")
+                       "0..max, to compare renders on one scale")
           ->type_name("LO,HI");
   std::string fail_above;
   CLI::Option* fail_above_option =
@@ -332,6 +383,8 @@ int run_cli(int argc, char** argv) {
     return cli.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return cli.exit(e);
+  } catch (const CLI::ArgumentMismatch& e) {
+    throw UsageError(repeated_flag_message(e.what(), argc, argv));
   } catch (const CLI::ParseError& e) {
     throw UsageError(e.what());
   }
@@ -351,13 +404,24 @@ int run_cli(int argc, char** argv) {
       outputs.reference_rt = true;
     }
     if (fail_above_option->count() > 0) outputs.fail_above = parse_accuracy_gate(fail_above);
-    if (heatmap_range_option->count() > 0)
+    if (heatmap_range_option->count() > 0) {
       outputs.heatmap_range = parse_heatmap_range(heatmap_range);
+      // It draws the heatmaps and sets the stats' ranges: with neither it would change nothing.
+      const bool heatmap = std::any_of(outputs.heatmaps.begin(), outputs.heatmaps.end(),
+                                       [](const auto& h) { return !h.second.empty(); });
+      if (!heatmap && outputs.stats.empty()) {
+        throw UsageError(
+            "--heatmap-range: no heatmap (--heatmap-lights, ...) or --stats is "
+            "written, so it would change nothing, got '" +
+            heatmap_range + "'");
+      }
+    }
     return run_render(settings, outputs);
   }
   if (inspect->parsed()) {
     const Settings settings = apply_scene_flags(inspect_flags, Settings{});
     refuse_viewer_only_flags(inspect_flags);
+    refuse_inspect_ignored_flags(inspect_flags);
     return run_inspect(settings, inspect_options);
   }
   if (export_command->parsed()) return run_export(export_flags);
@@ -365,6 +429,7 @@ int run_cli(int argc, char** argv) {
   if (snapshot->parsed()) return run_snapshot();
   if (view->parsed()) {
     const Settings settings = apply_scene_flags(view_flags, view_defaults);
+    refuse_size_beside_a_fitted_resolution(view_flags, settings);
     view_options.exposure_given = view_flags.settings.options.at("exposure")->count() > 0;
     view_options.display_given = view_flags.settings.options.at("display")->count() > 0;
     return run_view(settings, view_options);

@@ -63,6 +63,9 @@ std::string interrupted_message();
 
 struct Interrupted : std::runtime_error {
   Interrupted() : std::runtime_error(interrupted_message()) {}
+  // A command that wrote files before the signal (the viewer's screenshots and snapshots) says
+  // which, in place of "no output written".
+  explicit Interrupted(const std::string& message) : std::runtime_error(message) {}
 };
 
 class InterruptScope {

@@ -29,7 +29,7 @@ struct RenderOutputs {
   // gate (exit 3 above it) need reference_rt.
   std::map<ViewMode, std::string> heatmaps;
   // --heatmap-range: every heatmap drawn over this range (renderer::heatmap_position's scale)
-  // instead of its own min..max, so renders are compared on one scale.
+  // instead of its own 0..max, so renders are compared on one scale.
   std::optional<renderer::HeatmapRange> heatmap_range;
   std::string reference_image;
   std::optional<AccuracyGate> fail_above;

@@ -158,8 +158,8 @@ const std::vector<SettingSpec>& setting_table() {
                 lev::kMaxLightsPerPoint},
        samples_unused},
       {"relative-error", "Relative error",
-       "lightcuts: refine the cut until every cluster's error bound is below this share of the "
-       "point's estimated radiance (0 = exact)",
+       "lightcuts and lev_cut: refine the cut until every cluster's error bound is below this "
+       "share of the point's estimated radiance (0 = exact)",
        RealRange{in_group<&Settings::method, &lev::MethodChoice::relative_error>(), 0.0, 1.0, true,
                  1e-4, 1.0},
        relative_error_unused},

@@ -31,7 +31,9 @@ void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags) {
         return std::string();
       },
       "", "frame count");
-  command.add_option("--frames", flags.frames, "scripted: run this many UI frames, then exit")
+  command
+      .add_option("--frames", flags.frames,
+                  "scripted: run this many UI frames, then exit (0, the default: interactive)")
       ->check(frame_count);
   command
       .add_option("--screenshot", flags.screenshot,
@@ -40,7 +42,8 @@ void add_view_flags(CLI::App& command, viewer::ViewerFlags& flags) {
   command.add_option(
       "--set", flags.changes,
       "scripted: change a control at a frame, key=value@frame (a setting, lights, view, "
-      "reference, snapshot, screenshot, await, memory)");
+      "reference, ab, swipe, mask_threshold, range_lock, hover, inspect, inspect_row, window, "
+      "snapshot, screenshot, drop, copy, await, memory, trade)");
   command
       .add_option("--script", flags.script,
                   "scripted: a file of --set changes, one key=value@frame per line")

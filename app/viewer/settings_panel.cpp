@@ -73,12 +73,13 @@ bool draw_int(Settings& settings, const SettingSpec& spec, const IntRange& range
 }
 
 bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& range,
-               ControlRects* rects) {
+               ControlRects* rects, std::string& refusal) {
   double value = range.field.get(settings);
   bool changed = false;
   bool word_chosen = false;
   ImGui::PushID(spec.name);
   const float full = ImGui::CalcItemWidth();
+  float field_width = full;  // the typed value's frame, without its label
   if (range.logarithmic) {
     // One row: the log slider, a 0 button and the typed value.
     const LogSpan span{std::max(range.min, range.slider_min),
@@ -101,12 +102,12 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
       changed = true;
     }
     record_item(rects, std::string(spec.name) + "_zero");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("tolerance 0: no culling, the image equals rt");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", zero_button_tooltip(spec).c_str());
     ImGui::SameLine(0.0f, 2.0f);
-    ImGui::SetNextItemWidth(std::max(full -
-                                         (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
-                                         ImGui::GetStyle().WindowPadding.x,
-                                     40.0f));
+    field_width = std::max(full - (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
+                               ImGui::GetStyle().WindowPadding.x,
+                           40.0f);
+    ImGui::SetNextItemWidth(field_width);
   }
   if (!range.logarithmic && range.slider_max > range.slider_min) {
     // One row: a linear slider (the exposure's EV), the word button ("auto") and the typed value.
@@ -133,20 +134,24 @@ bool draw_real(Settings& settings, const SettingSpec& spec, const RealRange& ran
       record_item(rects, std::string(spec.name) + "_" + range.word);
     }
     ImGui::SameLine(0.0f, 2.0f);
-    ImGui::SetNextItemWidth(std::max(full -
-                                         (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
-                                         ImGui::GetStyle().WindowPadding.x,
-                                     40.0f));
+    field_width = std::max(full - (ImGui::GetCursorScreenPos().x - ImGui::GetWindowPos().x) +
+                               ImGui::GetStyle().WindowPadding.x,
+                           40.0f);
+    ImGui::SetNextItemWidth(field_width);
   }
   double typed = value;
   if (ImGui::InputDouble(spec.label, &typed, 0.0, 0.0, "%g",
                          ImGuiInputTextFlags_EnterReturnsTrue)) {
-    if (typed >= range.min && typed <= range.max) {
+    refusal = typed_value_refusal(spec, range, typed);
+    if (refusal.empty()) {
       value = typed;
       changed = true;
     }
   }
-  record_item(rects, std::string(spec.name) + "_field");
+  // The frame alone, not the label beside it: a click at the rectangle's centre types here.
+  const ImVec2 field_min = ImGui::GetItemRectMin(), field_max = ImGui::GetItemRectMax();
+  record_rect(rects, std::string(spec.name) + "_field", field_min.x, field_min.y,
+              field_min.x + field_width, field_max.y);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s (--%s); type a value and press Enter", spec.help, spec.name);
   ImGui::PopID();
@@ -193,6 +198,19 @@ bool draw_choice(Settings& settings, const SettingSpec& spec, const Choice& choi
 
 }  // namespace
 
+std::string typed_value_refusal(const SettingSpec& spec, const RealRange& range, double typed) {
+  if (typed >= range.min && typed <= range.max) return "";
+  char text[192];
+  std::snprintf(text, sizeof text, "%s: must be in [%g, %g], got %g (the value before is kept)",
+                spec.name, range.min, range.max, typed);
+  return text;
+}
+
+std::string zero_button_tooltip(const SettingSpec& spec) {
+  if (std::string(spec.name) == "tolerance") return "tolerance 0: no culling, the image equals rt";
+  return std::string(spec.name) + " 0: exact, every light (the image equals rt)";
+}
+
 int panel_int_value(const SettingSpec& spec, const IntRange& range, int held, int asked) {
   const int value = std::clamp(asked, range.min, range.max);
   if (std::string(spec.name) == "missed-draws" && value > 0 && value < renderer::kMinMissedDraws)
@@ -212,7 +230,9 @@ void draw_settings_section(ViewerState& state) {
     if (const auto* i = std::get_if<IntRange>(&spec.kind)) {
       changed = draw_int(state.settings, spec, *i, rects);
     } else if (const auto* r = std::get_if<RealRange>(&spec.kind)) {
-      changed = draw_real(state.settings, spec, *r, rects);
+      std::string refusal;
+      changed = draw_real(state.settings, spec, *r, rects, refusal);
+      if (!refusal.empty()) log_message(state, refusal, true);
     } else {
       changed = draw_choice(state.settings, spec, std::get<Choice>(spec.kind), rects);
     }

@@ -373,6 +373,18 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
   int exit_code = 0;
   std::string bad_input_error;  // the first scene's
   std::string snapshot_error;   // the first scripted snapshot that failed
+  // What the session wrote, named when a signal ends it (never "no output written" then).
+  std::vector<std::string> written;
+  std::string snapshot_noted;
+  std::vector<std::string> snapshot_messages;  // each snapshot's "wrote ...", printed at the end
+  const auto note_snapshot = [&] {
+    const std::string m = snapshots.busy() || snapshots.failed() ? "" : snapshots.message();
+    if (m != snapshot_noted && m.rfind("wrote ", 0) == 0) {
+      written.push_back(m.substr(6));
+      snapshot_messages.push_back(m);
+    }
+    if (!m.empty()) snapshot_noted = m;
+  };
   {
     RenderWorker worker;
     std::uint64_t last_posted = 0;
@@ -462,6 +474,7 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
         snapshots.wait();  // scripted: its outcome decides the exit code
         if (snapshots.failed() && snapshot_error.empty()) snapshot_error = snapshots.message();
       }
+      note_snapshot();
       int window_width = 0, window_height = 0;
       glfwGetWindowSize(window.get(), &window_width, &window_height);
       if ((awaiting == Await::idle && render_settled(state, last_posted)) ||
@@ -494,7 +507,10 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
         const std::string controls =
             controls_json(state.control_rects, state.settings, state.view,
                           ImGui::IsAnyItemActive() || ImGui::IsAnyMouseDown());
-        if (controls != controls_written) write_text_file(flags.controls, controls);
+        if (controls != controls_written) {
+          write_text_file(flags.controls, controls);
+          if (controls_written.empty()) written.push_back(flags.controls);
+        }
         controls_written = controls;
       }
 
@@ -517,7 +533,10 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
       glClearColor(background.x, background.y, background.z, 1.0f);
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      for (const std::string& path : screenshots) write_screenshot(window.get(), path);
+      for (const std::string& path : screenshots) {
+        write_screenshot(window.get(), path);
+        written.push_back(path);
+      }
       if (last_frame && !flags.screenshot.empty()) write_screenshot(window.get(), flags.screenshot);
       glfwSwapBuffers(window.get());
 
@@ -540,13 +559,21 @@ int run_viewer(const Settings& settings, const ViewerFlags& flags) {
     }
   }
   snapshots.wait();
+  note_snapshot();
   destroy_texture(picture.texture);
+  if (InterruptScope::flag().load() && !written.empty()) {
+    std::string files;
+    for (const std::string& w : written) files += (files.empty() ? "" : ", ") + w;
+    throw Interrupted("interrupted after writing " + files + "; nothing else written");
+  }
   InterruptScope::throw_if_interrupted();
   if (!bad_input_error.empty()) throw UsageError(bad_input_error);
   if (!snapshot_error.empty()) throw std::runtime_error("view: " + snapshot_error);
-  if (!snapshots.message().empty() && flags.frames > 0)
-    std::fprintf(state.notes, "levrt view: %s\n",
-                 scenes::escape_control_characters(snapshots.message()).c_str());
+  // Every snapshot of the session, not only the last.
+  const std::string last = snapshots.message();
+  if (!last.empty() && last.rfind("wrote ", 0) != 0) snapshot_messages.push_back(last);
+  for (const std::string& m : flags.frames > 0 ? snapshot_messages : std::vector<std::string>{})
+    std::fprintf(state.notes, "levrt view: %s\n", scenes::escape_control_characters(m).c_str());
   if (flags.report_fps) std::fputs(frame_report(log).c_str(), state.notes);
   if (!flags.screenshot.empty()) {
     int width = 0, height = 0;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -214,6 +215,76 @@ TEST_F(Cli, TheViewersResolutionIsRefusedHeadless) {
     EXPECT_EQ(inspect.exit_code, 2) << inspect.output;
     EXPECT_EQ(inspect.output.rfind("levrt: --resolution: only the viewer", 0), 0u)
         << inspect.output;
+  }
+  EXPECT_TRUE(folder_is_empty());
+}
+
+// inspect lists a pixel's lights and makes no missed-light estimate: it took --missed-draws 4 and
+// ignored it (exit 0). Refused now as a flag the method ignores is: one line, exit 2.
+TEST_F(Cli, InspectRefusesTheMissedLightDrawsItWouldIgnore) {
+  const CommandRun r = run_levrt({"inspect", "--missed-draws", "4", "--width", "8", "--height", "8",
+                                  "--pixel", "1,1", "--json", path("pixel.json")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: --missed-draws: inspect makes no missed-light estimate", 0), 0u)
+      << r.output;
+  EXPECT_NE(r.output.find("got '4'"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_TRUE(folder_is_empty());
+  const CommandRun off = run_levrt(
+      {"inspect", "--missed-draws", "0", "--width", "8", "--height", "8", "--pixel", "1,1"});
+  EXPECT_EQ(off.exit_code, 0) << off.output;
+}
+
+// view --help listed eight of the scripted changes' keys (no ab, swipe, hover, inspect, window,
+// drop, copy, trade, ...): every key the --set refusal names, but the settings (their own flags),
+// is in the help.
+TEST_F(Cli, TheViewersHelpNamesEveryScriptedChangeKey) {
+  const CommandRun help = run_levrt({"view", "--help"});
+  ASSERT_EQ(help.exit_code, 0) << help.output;
+  const CommandRun refused = run_levrt({"view", "--frames", "1", "--set", "no_such_key=1@0"});
+  ASSERT_EQ(refused.exit_code, 2) << refused.output;
+  const std::string marker = "key must be one of ";
+  const std::size_t at = refused.output.find(marker);
+  ASSERT_NE(at, std::string::npos) << refused.output;
+  std::stringstream keys(
+      refused.output.substr(at + marker.size(), refused.output.find(',', at) - at - marker.size()));
+  int named = 0;
+  for (std::string key; std::getline(keys, key, '|');) {
+    if (help.output.find("--" + key + " ") != std::string::npos) continue;  // a setting's flag
+    ++named;
+    EXPECT_TRUE(help.output.find(" " + key + ",") != std::string::npos ||
+                help.output.find(" " + key + ")") != std::string::npos)
+        << key << " is not named by view --help";
+  }
+  EXPECT_GE(named, 10);
+}
+
+// A flag given twice was refused in CLI11's words, "--tolerance: At Most 1 required but received
+// 2", naming no value: one line naming the flag and each value as typed, exit 2, nothing written.
+TEST_F(Cli, AFlagGivenTwiceIsRefusedNamingBothValues) {
+  const CommandRun r = run_levrt({"render", "--tolerance", "0.1", "--width", "8", "--height", "8",
+                                  "--tolerance=0.2", "--out", path("image.png")});
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output, "levrt: --tolerance: may be given once, got '0.1', then '0.2'\n");
+  const CommandRun out = run_levrt(
+      {"render", "--width", "8", "--height", "8", "--out", path("a.png"), "--out", path("b.png")});
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("--out: may be given once, got "), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find(path("b.png")), std::string::npos) << out.output;
+  EXPECT_TRUE(folder_is_empty());
+}
+
+// view --resolution fit/2 --width 100 opened the window at the fitted size, the typed width
+// ignored without a word: refused before the window opens, one line naming the flag.
+TEST_F(Cli, TheViewerRefusesATypedSizeBesideAFittedResolution) {
+  for (const char* flag : {"--width", "--height"}) {
+    const CommandRun r = run_levrt({"view", "--resolution", "fit/2", flag, "100", "--frames", "1",
+                                    "--screenshot", path("shot.png")});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.rfind(std::string("levrt: ") + flag + ": --resolution fit/2 sizes", 0), 0u)
+        << r.output;
+    EXPECT_NE(r.output.find("got '100'"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   }
   EXPECT_TRUE(folder_is_empty());
 }

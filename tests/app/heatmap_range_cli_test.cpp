@@ -69,6 +69,24 @@ TEST(HeatmapRangeCli, ABadRangeExitsTwoWithOneLineAndWritesNothing) {
   }
 }
 
+// A range with no heatmap and no stats to draw it into was taken and changed nothing (exit 0):
+// refused as a flag the method ignores is, one line naming it, exit 2, nothing written.
+TEST(HeatmapRangeCli, ARangeWithNoHeatmapOrStatsIsRefused) {
+  const levrt_test::TempDir dir("levrt_range_unused_");
+  const fs::path image = dir.path() / "image.png";
+  const CommandRun r =
+      run_levrt(heatmap_render_args({"--heatmap-range", "0,5", "--out", image.string()}));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.output.rfind("levrt: --heatmap-range: ", 0), 0u) << r.output;
+  EXPECT_NE(r.output.find("got '0,5'"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(fs::exists(image));
+  const fs::path stats = dir.path() / "s.json";
+  const CommandRun with_stats =
+      run_levrt(heatmap_render_args({"--heatmap-range", "0,5", "--stats", stats.string()}));
+  EXPECT_EQ(with_stats.exit_code, 0) << with_stats.output;
+}
+
 TEST(HeatmapRangeCli, ASubnormalEndIsTakenAsTypedLikeEverySetting) {
   const renderer::HeatmapRange tiny = app::parse_heatmap_range("1e-320,1");
   EXPECT_GT(tiny.min, 0.0);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "app/settings.h"
+#include "lev/methods.h"
 
 namespace {
 
@@ -89,6 +90,17 @@ TEST(Settings, EveryNumericSettingRefusesSignsSpacesAndHex) {
         EXPECT_EQ(message.rfind(std::string("--") + spec.name + ": must be ", 0), 0u) << message;
         EXPECT_NE(message.find("got '" + bad + "'"), std::string::npos) << message;
       }
+    }
+  }
+}
+
+// The help of --relative-error (the CLI's --help, the viewer's tooltip) named lightcuts alone,
+// while lev_cut reads it too: every method that reads a setting is named in its help.
+TEST(Settings, TheRelativeErrorsHelpNamesEveryMethodThatReadsIt) {
+  const std::string help = app::find_setting("relative-error")->help;
+  for (const lev::MethodInfo& m : lev::method_table()) {
+    if (m.uses_relative_error) {
+      EXPECT_NE(help.find(m.name), std::string::npos) << m.name;
     }
   }
 }

@@ -242,6 +242,35 @@ TEST_F(RealInput, ClicksAndDragsOnThePanelSetWhatTheControlsShow) {
   ASSERT_TRUE(hover("image", 0.5));
   xdotool("click --repeat 600 --delay 1 5 sleep 1");
 
+  // A typed value's rectangle is its frame alone: it held the label beside it too, so its centre
+  // fell on the label "Relative error", where a click focuses nothing and the typing was lost.
+  ASSERT_TRUE(hover("method", 0.5));
+  xdotool("click 1");
+  c = wait_for_controls([](const Json& j) { return j["controls"].contains("method:lightcuts"); });
+  c = click_and_wait("method:lightcuts", 0.5, "method", "rt");
+  ASSERT_EQ(setting(c, "method"), "lightcuts");
+  for (const char* field : {"tolerance_field", "relative-error_field", "exposure_field"}) {
+    ASSERT_TRUE(c["controls"].contains(field)) << field;
+    EXPECT_LE(c["controls"][field][2].get<double>(), c["controls"]["depth+"][2].get<double>())
+        << field << " reaches past the panel's number column onto its label";
+  }
+  ASSERT_TRUE(hover("relative-error_field", 0.5));
+  xdotool("click 1 sleep 0.2 type --delay 50 0.05");
+  xdotool("sleep 0.2 keydown Return sleep 0.1 keyup Return");
+  c = wait_for_controls([](const Json& j) { return setting(j, "relative-error") == "0.05"; });
+  EXPECT_EQ(setting(c, "relative-error"), "0.05");
+
+  // A value outside the range is refused with a message (the scripted session prints it), not
+  // dropped without a word; the setting keeps its value.
+  ASSERT_TRUE(hover("relative-error_field", 0.5));
+  xdotool("click 1 sleep 0.2 type --delay 50 5");
+  xdotool("sleep 0.2 keydown Return sleep 0.1 keyup Return");
+  EXPECT_TRUE(wait_for([&] {
+    return read_file(path("viewer.rc.log")).find("relative-error: must be in [0, 1], got 5") !=
+           std::string::npos;
+  })) << read_file(path("viewer.rc.log"));
+  EXPECT_EQ(setting(controls(), "relative-error"), "0.05");
+
   c = click_and_wait("view:nodes", 0.5, "view", "image");
   EXPECT_EQ(setting(c, "view"), "nodes");
 

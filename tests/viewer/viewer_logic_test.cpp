@@ -303,6 +303,24 @@ TEST(ScriptedChanges, ApplyChangesTheState) {
             ScriptAction::screenshot);
 }
 
+// The relative error's 0 button said "tolerance 0: no culling" (the tolerance's tooltip) on hover.
+TEST(SettingsPanel, EachZeroButtonsTooltipNamesItsOwnSetting) {
+  EXPECT_EQ(zero_button_tooltip(*app::find_setting("tolerance")).rfind("tolerance 0", 0), 0u);
+  const std::string relative = zero_button_tooltip(*app::find_setting("relative-error"));
+  EXPECT_EQ(relative.rfind("relative-error 0", 0), 0u) << relative;
+  EXPECT_EQ(relative.find("tolerance"), std::string::npos) << relative;
+}
+
+// A value typed outside the setting's range (a relative error of 5) was dropped without a word.
+TEST(SettingsPanel, AValueTypedOutsideItsRangeIsNamedWhyItIsRefused) {
+  const app::SettingSpec& relative = *app::find_setting("relative-error");
+  const auto& range = std::get<app::RealRange>(relative.kind);
+  EXPECT_EQ(typed_value_refusal(relative, range, 0.05), "");
+  const std::string refused = typed_value_refusal(relative, range, 5.0);
+  EXPECT_EQ(refused.rfind("relative-error: must be in [0, 1], got 5", 0), 0u) << refused;
+  EXPECT_NE(typed_value_refusal(relative, range, -1.0), "");
+}
+
 TEST(SettingsPanel, ANumberFieldStepsOverTheValuesARenderRefuses) {
   const app::SettingSpec& draws = *app::find_setting("missed-draws");
   const auto& range = std::get<app::IntRange>(draws.kind);

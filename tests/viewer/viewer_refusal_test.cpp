@@ -354,6 +354,58 @@ TEST_F(ViewerWindow, AFullDeviceAsTheControlsFileIsWrittenInPlaceAndExitsOne) {
   expect_same_device("/dev/full", full_before);
 }
 
+// A signal after the session wrote a snapshot, a screenshot and its controls file: it said
+// "interrupted; no output written" while the files stood in the folder. Exit 130 and one line
+// naming each file written before the signal.
+TEST_F(ViewerWindow, ASignalAfterASnapshotNamesTheFilesWrittenBeforeIt) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const XvfbServer xvfb;
+  ASSERT_FALSE(xvfb.display().empty());
+  ::setenv("DISPLAY", xvfb.display().c_str(), 1);
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":detect_leaks=0").c_str(), 1);
+  const fs::path stats = dir_ / "snap" / "view_building_64_lev_0.01_stats.json";
+  const levrt_test::InterruptedRun run = levrt_test::interrupt_and_read(
+      {LEVRT_BINARY, "view",
+       "--lights",   "64",
+       "--width",    "32",
+       "--height",   "24",
+       "--spp",      "1",
+       "--window",   "640x480",
+       "--frames",   "100000000",
+       "--controls", path("controls.json"),
+       "--set",      "snapshot=" + path("snap") + "@0",
+       "--set",      "screenshot=" + path("shot.png") + "@1"},
+      SIGTERM, std::chrono::milliseconds(0),
+      [&](pid_t) { return fs::exists(stats) && fs::exists(path("shot.png")); });
+  EXPECT_EQ(run.exit_code, 130) << run.errors;
+  EXPECT_EQ(line_count(run.errors), 1) << run.errors;
+  EXPECT_EQ(run.errors.find("no output written"), std::string::npos) << run.errors;
+  EXPECT_NE(run.errors.find("levrt: interrupted after writing "), std::string::npos) << run.errors;
+  for (const std::string& file :
+       {path("controls.json"), path("shot.png"), (dir_ / "snap").string() + "/view_building"}) {
+    EXPECT_NE(run.errors.find(file), std::string::npos) << file << ": " << run.errors;
+  }
+}
+
+// A script of two snapshots printed only the last one's "wrote" line: each is named.
+TEST_F(ViewerWindow, EverySnapshotOfAScriptedSessionIsNamed) {
+  if (!have_xvfb())
+    GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
+  const CommandRun r =
+      run_viewer({"--lights", "64", "--width", "32", "--height", "24", "--spp", "1", "--window",
+                  "640x480", "--frames", "4", "--set", "snapshot=" + path("snap") + "@0", "--set",
+                  "method=rt@1", "--set", "snapshot=" + path("snap") + "@2"});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string stem : {"view_building_64_lev_0.01", "view_building_64_rt"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "snap" / (stem + "_stats.json"))) << stem;
+    EXPECT_NE(r.output.find("levrt view: wrote " + path("snap") + "/" + stem + ".png"),
+              std::string::npos)
+        << stem << ": " << r.output;
+  }
+}
+
 // Ctrl-C while the viewer's worker loads a scene that takes seconds (tests/support/slow_gltf.h):
 // the viewer exits 130 promptly (the load stops at its next step, or the load watchdog ends it),
 // with no screenshot written.
