@@ -354,6 +354,15 @@ TEST_F(ViewerWindow, AFullDeviceAsTheControlsFileIsWrittenInPlaceAndExitsOne) {
   expect_same_device("/dev/full", full_before);
 }
 
+// For a test that starts the viewer itself (to signal it): this process's DISPLAY is `xvfb`, and
+// LeakSanitizer's exit-time scan is off, as run_viewer_on_xvfb sets them: its report of Mesa's
+// one-off allocations is no part of how the viewer exits.
+void run_here_on_xvfb(const XvfbServer& xvfb) {
+  ::setenv("DISPLAY", xvfb.display().c_str(), 1);
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":detect_leaks=0").c_str(), 1);
+}
+
 // A signal after the session wrote a snapshot, a screenshot and its controls file: it said
 // "interrupted; no output written" while the files stood in the folder. Exit 130 and one line
 // naming each file written before the signal.
@@ -362,9 +371,7 @@ TEST_F(ViewerWindow, ASignalAfterASnapshotNamesTheFilesWrittenBeforeIt) {
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const XvfbServer xvfb;
   ASSERT_FALSE(xvfb.display().empty());
-  ::setenv("DISPLAY", xvfb.display().c_str(), 1);
-  const char* asan = std::getenv("ASAN_OPTIONS");
-  ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":detect_leaks=0").c_str(), 1);
+  run_here_on_xvfb(xvfb);
   const fs::path stats = dir_ / "snap" / "view_building_64_lev_0.01_stats.json";
   const levrt_test::InterruptedRun run = levrt_test::interrupt_and_read(
       {LEVRT_BINARY, "view",
@@ -414,11 +421,7 @@ TEST_F(ViewerWindow, SignalDuringTheSceneLoadExitsPromptlyWithNothingWritten) {
     GTEST_SKIP() << "Xvfb is not installed (apt-get install xvfb): viewer test skipped";
   const XvfbServer xvfb;
   ASSERT_FALSE(xvfb.display().empty());
-  ::setenv("DISPLAY", xvfb.display().c_str(), 1);
-  // As run_viewer_on_xvfb does: LeakSanitizer's exit-time scan (and its report of Mesa's one-off
-  // allocations) is no part of how promptly the viewer exits.
-  const char* asan = std::getenv("ASAN_OPTIONS");
-  ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":detect_leaks=0").c_str(), 1);
+  run_here_on_xvfb(xvfb);
   const fs::path scene = levrt_test::write_slow_loading_gltf(dir_);
   fs::create_directories(dir_ / "out");
   for (int sig : {SIGINT, SIGTERM}) {
