@@ -1369,6 +1369,33 @@ TEST(LevCut, AScratchReusedWithAnotherHierarchyKeepsNoneOfItsLights) {
   EXPECT_GT(differing, 20);
 }
 
+// The errors of cut_against_the_truth's points: signed, summed, and the truth summed.
+struct SignedError {
+  double signed_sum = 0.0, truth_sum = 0.0;
+};
+
+// lev_cut at relative_error (no noise check: every light is seen) on 40 points drawn by `seed`
+// over [0, width]^2 x [0, height], each within twice the relative error of the summed irradiance
+// of every light of the scene.
+SignedError cut_against_the_truth(const CutScene& scene, float relative_error, std::uint64_t seed,
+                                  float width, float height) {
+  const lev::LevCutSelector selector(scene.h, relative_error, 1.0f, 0.0);
+  Random r(seed);
+  SignedError error;
+  for (int k = 0; k < 40; ++k) {
+    const glm::vec3 x(r.uniform(0, width), r.uniform(0, width), r.uniform(0.0f, height));
+    UnitResponsePoint point(x);
+    lev::SelectorScratch scratch;
+    lev::SelectionCounters counters;
+    const double radiance = selector.direct_radiance(point, scratch, counters).x;
+    const double truth = summed_irradiance(scene.world_lights, x).x;
+    EXPECT_NEAR(radiance, truth, 2.0 * relative_error * truth) << k;
+    error.signed_sum += radiance - truth;
+    error.truth_sum += truth;
+  }
+  return error;
+}
+
 // A lamp master of a dim bulb (a point light, first) and a bright spot aimed down, placed 256
 // times: a centred representative takes its first light's kind with the whole intensity, so every
 // lamp's spot shone as a point light everywhere, the same way in every instance (classteam D1:
@@ -1393,23 +1420,9 @@ TEST(LevCut, ASmallClusterOfLightsThatShineDifferentlyIsShadedFromItsOwnLights) 
     lamps.push_back({std::move(node), lights});
   }
   tree.root = lev::build_bvh(std::move(lamps));
-  const CutScene scene(tree);
   const float relative_error = 0.02f;
-  const lev::LevCutSelector selector(scene.h, relative_error, 1.0f, 0.0);
-  Random r(23);
-  double signed_sum = 0.0, truth_sum = 0.0;
-  for (int k = 0; k < 40; ++k) {
-    const glm::vec3 x(r.uniform(0, 22), r.uniform(0, 22), r.uniform(0.0f, 2.0f));
-    UnitResponsePoint point(x);
-    lev::SelectorScratch scratch;
-    lev::SelectionCounters counters;
-    const double radiance = selector.direct_radiance(point, scratch, counters).x;
-    const double truth = summed_irradiance(scene.world_lights, x).x;
-    EXPECT_NEAR(radiance, truth, 2.0 * relative_error * truth) << k;
-    signed_sum += radiance - truth;
-    truth_sum += truth;
-  }
-  EXPECT_LT(signed_sum, 0.5 * relative_error * truth_sum);
+  const SignedError error = cut_against_the_truth(CutScene(tree), relative_error, 23, 22.0f, 2.0f);
+  EXPECT_LT(error.signed_sum, 0.5 * relative_error * error.truth_sum);
 }
 
 // Point lights whose ranges differ (every other one dark beyond 3.2 units, the rest unlimited):
@@ -1427,19 +1440,7 @@ TEST(LevCut, ASmallClusterOfLightsOfDifferentRangesIsShadedFromItsOwnLights) {
   }
   lev::LightDescription tree;
   tree.root = lev::build_light_bvh(lights);
-  const CutScene scene(tree);
-  const float relative_error = 0.02f;
-  const lev::LevCutSelector selector(scene.h, relative_error, 1.0f, 0.0);
-  Random r(29);
-  for (int k = 0; k < 40; ++k) {
-    const glm::vec3 x(r.uniform(0, 8), r.uniform(0, 8), r.uniform(0.0f, 1.0f));
-    UnitResponsePoint point(x);
-    lev::SelectorScratch scratch;
-    lev::SelectionCounters counters;
-    const double radiance = selector.direct_radiance(point, scratch, counters).x;
-    const double truth = summed_irradiance(scene.world_lights, x).x;
-    EXPECT_NEAR(radiance, truth, 2.0 * relative_error * truth) << k;
-  }
+  cut_against_the_truth(CutScene(tree), 0.02f, 29, 8.0f, 1.0f);
 }
 
 TEST(LevCut, InTheMethodTableSweptOverTheRelativeError) {
